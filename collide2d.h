@@ -1,0 +1,6 @@
+// collide2d: exact 2D collision detection between oriented rectangles, ellipses and circles.
+// Include this one header; link collide2d::collide2d.
+#pragma once
+
+#include "narrowphase/query.h"
+#include "shapes/shapes.h"

@@ -1,0 +1,78 @@
+#include "narrowphase/distance_point_ellipse.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collide2d {
+namespace {
+
+// The root of g(s) for z0, z1 > 0 and r0 = (e0/e1)^2 >= 1; g0 = g at s = 0 tells which side of
+// zero the root lies, which fixes the upper end of the bracket.
+double secular_root(double r0, double z0, double z1, double g0) {
+  const double n0 = r0 * z0;
+  double lo = z1 - 1.0;
+  double hi = g0 < 0.0 ? 0.0 : std::hypot(n0, z1) - 1.0;
+  double s = lo;
+  for (;;) {
+    s = 0.5 * (lo + hi);
+    if (s == lo || s == hi) return s;
+    const double r_0 = n0 / (s + r0);
+    const double r_1 = z1 / (s + 1.0);
+    const double g = r_0 * r_0 + r_1 * r_1 - 1.0;
+    if (g > 0.0) {
+      lo = s;
+    } else if (g < 0.0) {
+      hi = s;
+    } else {
+      return s;
+    }
+  }
+}
+
+// First quadrant, e0 >= e1 > 0, y0 >= 0, y1 >= 0. Returns the closest point; distance by caller.
+Vec2 closest_in_quadrant(double e0, double e1, double y0, double y1) {
+  if (y1 > 0.0) {
+    if (y0 > 0.0) {
+      const double z0 = y0 / e0;
+      const double z1 = y1 / e1;
+      const double g0 = z0 * z0 + z1 * z1 - 1.0;
+      if (g0 == 0.0) return {y0, y1};
+      const double r0 = (e0 / e1) * (e0 / e1);
+      const double s = secular_root(r0, z0, z1, g0);
+      return {r0 * y0 / (s + r0), y1 / (s + 1.0)};
+    }
+    return {0.0, e1};
+  }
+  // On the major axis: the nearest point leaves the axis only inside the evolute's cusp.
+  const double numer = e0 * y0;
+  const double denom = e0 * e0 - e1 * e1;
+  if (numer < denom) {
+    const double x = numer / denom;
+    return {e0 * x, e1 * std::sqrt(std::max(0.0, 1.0 - x * x))};
+  }
+  return {e0, 0.0};
+}
+
+}  // namespace
+
+PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p) {
+  const bool swap_axes = b > a;
+  const double e0 = swap_axes ? b : a;
+  const double e1 = swap_axes ? a : b;
+  const double y0 = std::abs(swap_axes ? p.y() : p.x());
+  const double y1 = std::abs(swap_axes ? p.x() : p.y());
+
+  const Vec2 q = closest_in_quadrant(e0, e1, y0, y1);
+  const double u = y0 / e0;
+  const double v = y1 / e1;
+
+  PointEllipseResult result;
+  result.inside = u * u + v * v <= 1.0;
+  result.distance = std::hypot(q.x() - y0, q.y() - y1);
+  const double x = std::copysign(swap_axes ? q.y() : q.x(), p.x());
+  const double y = std::copysign(swap_axes ? q.x() : q.y(), p.y());
+  result.closest = Vec2(x, y);
+  return result;
+}
+
+}  // namespace collide2d

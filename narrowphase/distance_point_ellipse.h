@@ -1,0 +1,30 @@
+// Distance from a point to an ellipse curve, and whether the point lies in the solid ellipse.
+//
+// Frame: the ellipse's own frame (centre at the origin, semi-axis a along x, b along y); callers
+// transform the point first, which also keeps the computation accurate far from the world origin.
+//
+// Method: D. Eberly, "Distance from a Point to an Ellipse, an Ellipsoid, or a Hyperellipsoid"
+// (Geometric Tools, 2013): reflect into the first quadrant, reduce the Lagrange conditions to one
+// root of the secular function g(s) = (r0 z0 / (s + r0))^2 + (z1 / (s + 1))^2 - 1, which is
+// strictly decreasing on the bracket [z1 - 1, |(r0 z0, z1)| - 1], and bisect it to the last bit.
+// The axis cases (a zero coordinate) are closed forms.
+//
+// Accuracy: the closest point and the distance are correct to a few ulps of max(a, b, |p|) for any
+// aspect ratio (tested to 1e6) and for points on, near, inside and far from the curve. Bisection
+// costs up to ~1100 halvings in the worst case (a root near a power-of-two boundary of the bracket),
+// typically 60 to 150.
+#pragma once
+
+#include "shapes/shapes.h"
+
+namespace collide2d {
+
+struct PointEllipseResult {
+  double distance = 0.0;          // from the point to the nearest point of the curve
+  Vec2 closest = Vec2::Zero();    // that nearest point, in the ellipse frame
+  bool inside = false;            // the point lies in the closed solid ellipse
+};
+
+PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p);
+
+}  // namespace collide2d

@@ -1,0 +1,39 @@
+#include "narrowphase/overlap_rect_circle.h"
+
+#include "narrowphase/box_local.h"
+#include "shapes/rotation.h"
+
+namespace collide2d {
+namespace {
+
+struct CircleInRect {
+  detail::Rotation<double> rot;
+  Vec2 center;   // circle centre in the rectangle frame
+  Vec2 nearest;  // rectangle point nearest to it
+};
+
+CircleInRect circle_in_rect(const Rect& r, const Circle& c) {
+  const auto rot = detail::Rotation<double>::of(r.angle);
+  const Vec2 p = rot.apply_inverse(Vec2(c.center - r.center));
+  return {rot, p, detail::clamp_to_box(p, r.half_extents)};
+}
+
+}  // namespace
+
+bool overlap_rect_circle(const Rect& r, const Circle& c) {
+  const CircleInRect f = circle_in_rect(r, c);
+  return (f.center - f.nearest).squaredNorm() <= c.radius * c.radius;
+}
+
+DistanceResult distance_rect_circle(const Rect& r, const Circle& c) {
+  const CircleInRect f = circle_in_rect(r, c);
+  const auto to_world = [&](const Vec2& p) -> Vec2 { return r.center + f.rot.apply(p); };
+  const Vec2 d = f.center - f.nearest;
+  const double n = d.norm();
+  if (n == 0.0) return DistanceResult::touching(c.center);
+  if (n <= c.radius) return DistanceResult::touching(to_world(f.nearest));
+  return DistanceResult::apart(n - c.radius, to_world(f.nearest),
+                               to_world(Vec2(f.center - (c.radius / n) * d)));
+}
+
+}  // namespace collide2d

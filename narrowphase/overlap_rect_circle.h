@@ -1,0 +1,14 @@
+// Rectangle–circle overlap and distance: exact closed forms. The circle centre is moved into the
+// rectangle's frame (centres subtracted first) and clamped to the box; that clamp is the rectangle
+// point nearest the centre. Overlap witness: the circle centre when it is inside the rectangle,
+// else that nearest rectangle point.
+#pragma once
+
+#include "narrowphase/distance_result.h"
+
+namespace collide2d {
+
+bool overlap_rect_circle(const Rect& r, const Circle& c);
+DistanceResult distance_rect_circle(const Rect& r, const Circle& c);
+
+}  // namespace collide2d

@@ -1,0 +1,108 @@
+#include "narrowphase/overlap_rect_ellipse.h"
+
+#include "narrowphase/rect_ellipse_frame.h"
+
+#include <cmath>
+#include <limits>
+
+namespace collide2d {
+namespace {
+
+using detail::RectEllipseFrame;
+using detail::V2;
+
+constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
+
+// One corner P = (s0 e0, s1 e1) of the Minkowski test; see the header for the geometry.
+FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double s1, double err) {
+  const V2<double> u = f.to_ellipse_axes(V2<double>(s0 * f.e[0], s1 * f.e[1]));
+  // u is P - K in ellipse axes; Eberly's Delta = K - P flips the sign of the cone coordinates.
+  const double inv_a2 = 1.0 / (f.a * f.a);
+  const double inv_b2 = 1.0 / (f.b * f.b);
+  const double q0 = -u[0] * inv_a2;
+  const double q1 = -u[1] * inv_b2;
+  const double z0 = s0 * (f.c * q0 - f.s * q1);  // s0 * (M Delta)_0
+  const double z1 = s1 * (f.s * q0 + f.c * q1);  // s1 * (M Delta)_1
+  const double q_abs = std::abs(q0) + std::abs(q1);
+  const double z_err = 2.0 * (err * (inv_a2 + inv_b2) + 8.0 * kUnitRoundoff * q_abs);
+  if (z0 < -z_err || z1 < -z_err) return FilterVerdict::overlap;
+  const double q = u[0] * u[0] * inv_a2 + u[1] * u[1] * inv_b2;
+  const double q_err =
+      2.0 * (2.0 * err * q_abs + err * err * (inv_a2 + inv_b2) + 8.0 * kUnitRoundoff * q);
+  if (q - 1.0 < -q_err) return FilterVerdict::overlap;
+  if (z0 > z_err && z1 > z_err && q - 1.0 > q_err) return FilterVerdict::separated;
+  return FilterVerdict::uncertain;
+}
+
+FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
+  const double l[2] = {std::sqrt(f.l0_squared()), std::sqrt(f.l1_squared())};
+  const double scale = std::abs(f.x[0]) + std::abs(f.x[1]) + f.e[0] + f.e[1] + f.a + f.b;
+  const double err = 16.0 * kUnitRoundoff * scale;
+  bool unsure = false;
+  for (int i = 0; i < 2; ++i) {
+    const double margin = f.e[i] + l[i] - std::abs(f.x[i]);
+    if (margin < -err) return FilterVerdict::separated;
+    unsure = unsure || margin <= err;
+  }
+  for (const double s0 : {-1.0, 1.0}) {
+    for (const double s1 : {-1.0, 1.0}) {
+      const FilterVerdict v = corner_piece(f, s0, s1, err);
+      if (v == FilterVerdict::separated) return v;
+      unsure = unsure || v == FilterVerdict::uncertain;
+    }
+  }
+  return unsure ? FilterVerdict::uncertain : FilterVerdict::overlap;
+}
+
+// The segment p -> q (rectangle frame) meets the solid ellipse. In ellipse-normalised coordinates
+// w = (u0/a, u1/b) the ellipse is the unit disc and the edge is w(t) = p + t d, t in [0, 1].
+template <class Real>
+bool edge_meets_ellipse(const RectEllipseFrame<Real>& f, const V2<Real>& p, const V2<Real>& q) {
+  const V2<Real> up = f.to_ellipse_axes(p);
+  const V2<Real> uq = f.to_ellipse_axes(q);
+  const V2<Real> w(up[0] / f.a, up[1] / f.b);
+  const V2<Real> d(uq[0] / f.a - w[0], uq[1] / f.b - w[1]);
+  const Real dd = d.squaredNorm();
+  const Real cross = w[0] * d[1] - w[1] * d[0];
+  const Real disc = dd - cross * cross;  // = dd * (q1^2 - q0 q2) / dd^2 without the cancellation
+  if (disc < 0) return false;
+  const Real root = std::sqrt(disc);
+  const Real wd = w.dot(d);
+  const Real t0 = (-wd - root) / dd;
+  const Real t1 = (-wd + root) / dd;
+  return t0 <= Real(1) && t1 >= Real(0);
+}
+
+template <class Real>
+bool all_features_overlap(const RectEllipseFrame<Real>& f) {
+  const V2<Real> corners[4] = {{-f.e[0], -f.e[1]}, {f.e[0], -f.e[1]}, {f.e[0], f.e[1]}, {-f.e[0], f.e[1]}};
+  for (const V2<Real>& p : corners) {
+    if (f.quadratic(p) <= Real(1)) return true;
+  }
+  for (int k = 0; k < 4; ++k) {
+    if (edge_meets_ellipse(f, corners[k], corners[(k + 1) % 4])) return true;
+  }
+  return std::abs(f.x[0]) <= f.e[0] && std::abs(f.x[1]) <= f.e[1];
+}
+
+}  // namespace
+
+FilterVerdict overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e) {
+  return minkowski_filter(detail::rect_ellipse_frame<double>(r, e));
+}
+
+bool overlap_rect_ellipse(const Rect& r, const Ellipse& e, RectEllipseMethod method) {
+  switch (method) {
+    case RectEllipseMethod::closest_features:
+      return detail::closest_features_overlap(detail::rect_ellipse_frame<double>(r, e));
+    case RectEllipseMethod::all_features:
+      return all_features_overlap(detail::rect_ellipse_frame<double>(r, e));
+    case RectEllipseMethod::minkowski:
+      break;
+  }
+  const FilterVerdict v = overlap_rect_ellipse_filter(r, e);
+  if (v != FilterVerdict::uncertain) return v == FilterVerdict::overlap;
+  return detail::closest_features_overlap(detail::rect_ellipse_frame<long double>(r, e));
+}
+
+}  // namespace collide2d

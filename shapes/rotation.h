@@ -1,0 +1,36 @@
+// Private helper: a planar rotation stored as its cosine and sine, generic over the scalar so that
+// the extended-precision fallbacks in narrowphase/ reuse it.
+#pragma once
+
+#include <cmath>
+
+namespace collide2d::detail {
+
+template <class Real>
+struct Rotation {
+  Real c = 1;
+  Real s = 0;
+
+  static Rotation of(double angle) {
+    using std::cos;
+    using std::sin;
+    return {cos(static_cast<Real>(angle)), sin(static_cast<Real>(angle))};
+  }
+  // Rotates (x, y) by this rotation.
+  template <class V>
+  V apply(const V& v) const {
+    return V(c * v[0] - s * v[1], s * v[0] + c * v[1]);
+  }
+  // Rotates (x, y) by the inverse rotation: the coordinates of a world vector in this frame.
+  template <class V>
+  V apply_inverse(const V& v) const {
+    return V(c * v[0] + s * v[1], -s * v[0] + c * v[1]);
+  }
+  // This rotation seen from `frame`: frame^-1 * this. Composed from the two cosines and sines
+  // rather than from the angle difference, which loses digits when the angles are large.
+  Rotation relative_to(const Rotation& frame) const {
+    return {frame.c * c + frame.s * s, frame.c * s - frame.s * c};
+  }
+};
+
+}  // namespace collide2d::detail

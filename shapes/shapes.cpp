@@ -1,0 +1,136 @@
+#include "shapes/shapes.h"
+
+#include "shapes/rotation.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace collide2d {
+namespace {
+
+using Rot = detail::Rotation<double>;
+
+[[noreturn]] void reject(const char* shape, const char* field, double value, const char* rule) {
+  std::ostringstream msg;
+  msg.precision(17);
+  msg << shape << ' ' << field << ' ' << rule << " (got " << value << ')';
+  throw InvalidShape(msg.str());
+}
+
+void require_finite(const char* shape, const char* field, double value) {
+  if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
+}
+
+void require_size(const char* shape, const char* field, double value) {
+  require_finite(shape, field, value);
+  if (!(value > 0.0)) reject(shape, field, value, "must be positive");
+}
+
+// Half-widths of the AABB of a box or ellipse whose local axes carry lengths (u, v) after rotation.
+Vec2 rotated_half_widths(const Rot& r, double u, double v, bool elliptic) {
+  if (elliptic) {
+    return {std::hypot(u * r.c, v * r.s), std::hypot(u * r.s, v * r.c)};
+  }
+  return {u * std::abs(r.c) + v * std::abs(r.s), u * std::abs(r.s) + v * std::abs(r.c)};
+}
+
+Aabb around(const Vec2& center, const Vec2& half) { return {center - half, center + half}; }
+
+}  // namespace
+
+void validate(const Circle& c) {
+  require_finite("circle", "cx", c.center.x());
+  require_finite("circle", "cy", c.center.y());
+  require_size("circle", "radius", c.radius);
+}
+
+void validate(const Ellipse& e) {
+  require_finite("ellipse", "cx", e.center.x());
+  require_finite("ellipse", "cy", e.center.y());
+  require_size("ellipse", "a", e.a);
+  require_size("ellipse", "b", e.b);
+  require_finite("ellipse", "angle", e.angle);
+}
+
+void validate(const Rect& r) {
+  require_finite("rect", "cx", r.center.x());
+  require_finite("rect", "cy", r.center.y());
+  require_size("rect", "hx", r.half_extents.x());
+  require_size("rect", "hy", r.half_extents.y());
+  require_finite("rect", "angle", r.angle);
+}
+
+void validate(const Shape& s) {
+  std::visit([](const auto& shape) { validate(shape); }, s);
+}
+
+const char* shape_name(const Shape& s) {
+  constexpr const char* names[] = {"circle", "ellipse", "rect"};
+  return names[s.index()];
+}
+
+Aabb aabb(const Circle& c) { return around(c.center, Vec2::Constant(c.radius)); }
+
+Aabb aabb(const Ellipse& e) {
+  return around(e.center, rotated_half_widths(Rot::of(e.angle), e.a, e.b, true));
+}
+
+Aabb aabb(const Rect& r) {
+  return around(r.center,
+                rotated_half_widths(Rot::of(r.angle), r.half_extents.x(), r.half_extents.y(), false));
+}
+
+Aabb aabb(const Shape& s) {
+  return std::visit([](const auto& shape) { return aabb(shape); }, s);
+}
+
+Vec2 support(const Circle& c, const Vec2& d) {
+  const double n = d.norm();
+  return n > 0.0 ? Vec2(c.center + (c.radius / n) * d) : c.center;
+}
+
+Vec2 support(const Ellipse& e, const Vec2& d) {
+  // Support of {K + V diag(a,b) u : |u| <= 1} in direction d is K + V diag(a,b)^2 w / |diag(a,b) w|
+  // with w = V^T d; d is scaled by its largest component first so that squares cannot overflow.
+  const double m = d.cwiseAbs().maxCoeff();
+  if (!(m > 0.0)) return e.center;
+  const Rot r = Rot::of(e.angle);
+  const Vec2 w = r.apply_inverse(Vec2(d / m));
+  const Vec2 scaled(e.a * w.x(), e.b * w.y());
+  const Vec2 local(e.a * scaled.x(), e.b * scaled.y());
+  return e.center + r.apply(Vec2(local / scaled.norm()));
+}
+
+Vec2 support(const Rect& r, const Vec2& d) {
+  const Rot rot = Rot::of(r.angle);
+  const Vec2 w = rot.apply_inverse(d);
+  const Vec2 corner(w.x() >= 0.0 ? r.half_extents.x() : -r.half_extents.x(),
+                    w.y() >= 0.0 ? r.half_extents.y() : -r.half_extents.y());
+  return r.center + rot.apply(corner);
+}
+
+Vec2 support(const Shape& s, const Vec2& d) {
+  return std::visit([&d](const auto& shape) { return support(shape, d); }, s);
+}
+
+bool contains(const Circle& c, const Vec2& p) {
+  return (p - c.center).squaredNorm() <= c.radius * c.radius;
+}
+
+bool contains(const Ellipse& e, const Vec2& p) {
+  const Vec2 q = Rot::of(e.angle).apply_inverse(Vec2(p - e.center));
+  const double u = q.x() / e.a;
+  const double v = q.y() / e.b;
+  return u * u + v * v <= 1.0;
+}
+
+bool contains(const Rect& r, const Vec2& p) {
+  const Vec2 q = Rot::of(r.angle).apply_inverse(Vec2(p - r.center));
+  return std::abs(q.x()) <= r.half_extents.x() && std::abs(q.y()) <= r.half_extents.y();
+}
+
+bool contains(const Shape& s, const Vec2& p) {
+  return std::visit([&p](const auto& shape) { return contains(shape, p); }, s);
+}
+
+}  // namespace collide2d

@@ -1,0 +1,81 @@
+// collide2d shapes: solid circles, ellipses and oriented rectangles in double precision.
+//
+// Shapes are plain value structs (no virtuals, no pointers). All angles are in radians, measured
+// counter-clockwise from +x. A shape describes the closed solid region: boundary points belong to it.
+//
+// Validity: every field finite, every size strictly positive. Kernels in narrowphase/ assume valid
+// shapes; the dispatch in narrowphase/query.h and the command line call validate() first.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+namespace collide2d {
+
+using Vec2 = Eigen::Vector2d;
+
+struct Circle {
+  Vec2 center = Vec2::Zero();
+  double radius = 1.0;
+};
+
+// a is the semi-axis along the direction `angle`, b the one perpendicular to it (either may be larger).
+struct Ellipse {
+  Vec2 center = Vec2::Zero();
+  double a = 1.0;
+  double b = 1.0;
+  double angle = 0.0;
+};
+
+// half_extents.x() lies along the direction `angle`, half_extents.y() perpendicular to it.
+struct Rect {
+  Vec2 center = Vec2::Zero();
+  Vec2 half_extents = Vec2::Ones();
+  double angle = 0.0;
+};
+
+using Shape = std::variant<Circle, Ellipse, Rect>;
+
+struct Aabb {
+  Vec2 min = Vec2::Zero();
+  Vec2 max = Vec2::Zero();
+};
+
+// Thrown for a shape that breaks the validity rule; the message names the offending field.
+class InvalidShape : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+void validate(const Circle& c);
+void validate(const Ellipse& e);
+void validate(const Rect& r);
+void validate(const Shape& s);
+
+// The word used for the shape on the command line and in messages: "circle", "ellipse", "rect".
+const char* shape_name(const Shape& s);
+
+// The tightest axis-aligned box around the shape.
+Aabb aabb(const Circle& c);
+Aabb aabb(const Ellipse& e);
+Aabb aabb(const Rect& r);
+Aabb aabb(const Shape& s);
+
+// A point of the shape farthest in direction d (d need not be unit length; d = 0 gives the centre
+// for circles and ellipses, and a corner for rectangles). On a rectangle edge facing d exactly, the
+// corner with the larger coordinate along the other axis is returned.
+Vec2 support(const Circle& c, const Vec2& d);
+Vec2 support(const Ellipse& e, const Vec2& d);
+Vec2 support(const Rect& r, const Vec2& d);
+Vec2 support(const Shape& s, const Vec2& d);
+
+// Whether p lies in the closed solid shape.
+bool contains(const Circle& c, const Vec2& p);
+bool contains(const Ellipse& e, const Vec2& p);
+bool contains(const Rect& r, const Vec2& p);
+bool contains(const Shape& s, const Vec2& p);
+
+}  // namespace collide2d

@@ -1,0 +1,48 @@
+// collide2d: the command line. `collide2d query [--method NAME] < queries` (see query_command.h).
+#include "tools/query_command.h"
+
+#include <cstring>
+#include <iostream>
+#include <string_view>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: collide2d query [--method minkowski|closest-features|all-features]\n"
+    "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being\n"
+    "    circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta   (radians)\n"
+    "  and writes 'overlap distance ax ay bx by' per line (errors as 'error: <reason>').\n"
+    "  --method picks the rectangle-ellipse overlap test (default minkowski).\n";
+
+int query(int argc, char** argv) {
+  collide2d::OverlapOptions options;
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--method" && i + 1 < argc) {
+      options.rect_ellipse = collide2d::tool::parse_method(argv[++i]);
+    } else {
+      throw collide2d::tool::ParseError("unknown argument '" + std::string(arg) + "'");
+    }
+  }
+  std::ios::sync_with_stdio(false);
+  return collide2d::tool::run_query(std::cin, std::cout, std::cerr, options);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (argc < 2 || std::strcmp(argv[1], "query") != 0) {
+    std::cerr << kUsage;
+    return 2;
+  }
+  try {
+    return query(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "collide2d: " << e.what() << '\n' << kUsage;
+    return 2;
+  }
+}

@@ -1,0 +1,122 @@
+#include "tools/query_command.h"
+
+#include <array>
+#include <charconv>
+#include <cstdio>
+#include <istream>
+#include <ostream>
+#include <vector>
+
+namespace collide2d::tool {
+namespace {
+
+std::vector<std::string_view> split_words(std::string_view text) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r')) ++i;
+    std::size_t j = i;
+    while (j < text.size() && text[j] != ' ' && text[j] != '\t' && text[j] != '\r') ++j;
+    if (j > i) words.push_back(text.substr(i, j - i));
+    i = j;
+  }
+  return words;
+}
+
+double parse_number(std::string_view word) {
+  double value = 0.0;
+  const char* begin = word.data();
+  const char* end = begin + word.size();
+  if (!word.empty() && *begin == '+') ++begin;  // from_chars rejects a leading '+'
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (ec == std::errc::result_out_of_range) throw ParseError("'" + std::string(word) + "' is out of range");
+  if (ec != std::errc() || ptr != end) throw ParseError("'" + std::string(word) + "' is not a number");
+  return value;
+}
+
+struct ShapeGrammar {
+  std::string_view word;
+  std::size_t count;
+  std::string_view fields;
+};
+constexpr std::array<ShapeGrammar, 3> kGrammar{{
+    {"circle", 3, "cx cy r"},
+    {"ellipse", 5, "cx cy a b theta"},
+    {"rect", 5, "cx cy hx hy theta"},
+}};
+
+Shape make_shape(std::string_view word, const std::vector<double>& v) {
+  if (word == "circle") return Circle{Vec2(v[0], v[1]), v[2]};
+  if (word == "ellipse") return Ellipse{Vec2(v[0], v[1]), v[2], v[3], v[4]};
+  return Rect{Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]};
+}
+
+Shape parse_shape(std::string_view text, const char* side) {
+  const std::vector<std::string_view> words = split_words(text);
+  if (words.empty()) throw ParseError(std::string("shape ") + side + " is missing");
+  for (const ShapeGrammar& g : kGrammar) {
+    if (words[0] != g.word) continue;
+    if (words.size() - 1 != g.count) {
+      throw ParseError(std::string(g.word) + " takes " + std::to_string(g.count) + " numbers (" +
+                       std::string(g.fields) + "), got " + std::to_string(words.size() - 1));
+    }
+    std::vector<double> values;
+    for (std::size_t k = 1; k < words.size(); ++k) values.push_back(parse_number(words[k]));
+    Shape shape = make_shape(g.word, values);
+    validate(shape);
+    return shape;
+  }
+  throw ParseError("unknown shape '" + std::string(words[0]) + "' (expected circle, ellipse or rect)");
+}
+
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+}  // namespace
+
+std::optional<QueryLine> parse_query_line(std::string_view line) {
+  const std::string_view body = trimmed(line);
+  if (body.empty() || body.front() == '#') return std::nullopt;
+  const auto sep = body.find(';');
+  if (sep == std::string_view::npos) throw ParseError("expected '<shape> ; <shape>', found no ';'");
+  if (body.find(';', sep + 1) != std::string_view::npos) throw ParseError("expected one ';', found more");
+  return QueryLine{parse_shape(body.substr(0, sep), "A"), parse_shape(body.substr(sep + 1), "B")};
+}
+
+RectEllipseMethod parse_method(std::string_view name) {
+  if (name == "minkowski") return RectEllipseMethod::minkowski;
+  if (name == "closest-features") return RectEllipseMethod::closest_features;
+  if (name == "all-features") return RectEllipseMethod::all_features;
+  throw ParseError("unknown method '" + std::string(name) +
+                   "' (expected minkowski, closest-features or all-features)");
+}
+
+std::string answer(const QueryLine& q, const OverlapOptions& options) {
+  const bool hit = overlaps(q.a, q.b, options);
+  const DistanceResult d = distance(q.a, q.b);
+  char buf[160];
+  const int n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance,
+                              d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
+  return std::string(buf, static_cast<std::size_t>(n));
+}
+
+int run_query(std::istream& in, std::ostream& out, std::ostream& err, const OverlapOptions& options) {
+  int status = 0;
+  std::string line;
+  for (long number = 1; std::getline(in, line); ++number) {
+    try {
+      const std::optional<QueryLine> q = parse_query_line(line);
+      if (q) out << answer(*q, options) << '\n';
+    } catch (const std::exception& e) {  // ParseError, InvalidShape, UnsupportedPair
+      out << "error: " << e.what() << '\n';
+      err << "line " << number << ": " << e.what() << '\n';
+      status = 2;
+    }
+  }
+  return status;
+}
+
+}  // namespace collide2d::tool

@@ -1,0 +1,46 @@
+// The `collide2d query` command as a library, so that tests drive it without a process.
+//
+// Input: one query a line, `<shapeA> ; <shapeB>`, each shape one of
+//   circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta     (theta in radians)
+// Blank lines and lines starting with '#' are skipped (they produce no output).
+// Output: one line per query, `overlap distance ax ay bx by` (overlap 1/0 for the solids; distance 0
+// when they overlap; a and b the closest points, a common point when overlapping), numbers in %.17g
+// so they round-trip. A malformed or invalid line prints `error: <reason>` in its place and
+// `line N: <reason>` on the error stream; processing goes on.
+#pragma once
+
+#include "narrowphase/query.h"
+
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace collide2d::tool {
+
+// Thrown for a line that does not follow the grammar; the message says what is wrong.
+class ParseError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct QueryLine {
+  Shape a;
+  Shape b;
+};
+
+// nullopt for blank and comment lines. Throws ParseError or InvalidShape.
+std::optional<QueryLine> parse_query_line(std::string_view line);
+
+// The rect–ellipse overlap method named on the command line; throws ParseError for other names.
+RectEllipseMethod parse_method(std::string_view name);
+
+// The output line for one query (without newline). Throws UnsupportedPair.
+std::string answer(const QueryLine& q, const OverlapOptions& options);
+
+// Streams queries from `in` to `out`, reporting bad lines on `err`. Returns the exit status: 0 when
+// every line was answered, 2 when any line was in error.
+int run_query(std::istream& in, std::ostream& out, std::ostream& err, const OverlapOptions& options);
+
+}  // namespace collide2d::tool
