@@ -4,6 +4,7 @@
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/rect_ellipse_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -35,8 +36,9 @@ Supports supports(const Frame& f) {
   return {{l0, l1}, {m01 / l0, m01 / l1}};
 }
 
-// K beyond the straight edge of S facing axis i, inside its strip: the edge's Voronoi region.
-std::optional<LocalPair> edge_region(const Frame& f, const Supports& sp, int i) {
+// K beyond the straight edge of S facing axis i (within tol), inside its strip: the edge's Voronoi
+// region.
+std::optional<LocalPair> edge_region(const Frame& f, const Supports& sp, int i, double tol) {
   const int j = 1 - i;
   const double sgn = f.x[i] > 0 ? 1.0 : -1.0;
   const double gap = std::abs(f.x[i]) - f.e[i] - sp.l[i];
@@ -44,10 +46,10 @@ std::optional<LocalPair> edge_region(const Frame& f, const Supports& sp, int i) 
   support[i] = sp.l[i];
   support[j] = sp.t[i];
   const Vec2 on_ellipse = f.x - sgn * support;
-  if (gap < 0.0 || std::abs(on_ellipse[j]) > f.e[j]) return std::nullopt;
+  if (gap < -tol || std::abs(on_ellipse[j]) > f.e[j]) return std::nullopt;
   Vec2 on_rect = on_ellipse;
   on_rect[i] = sgn * f.e[i];
-  return LocalPair{gap, on_rect, on_ellipse};
+  return LocalPair{std::max(gap, 0.0), on_rect, on_ellipse};
 }
 
 LocalPair nearest_corner(const Frame& f, const Supports& sp, double tol) {
@@ -78,17 +80,17 @@ DistanceResult distance_rect_ellipse(const Rect& r, const Ellipse& e) {
   if (overlap_rect_ellipse(r, e)) return witness();
 
   const Supports sp = supports(f);
-  for (int i = 0; i < 2; ++i) {
-    if (const auto pair = edge_region(f, sp, i)) {
-      return DistanceResult::apart(pair->distance, to_world(pair->on_rect), to_world(pair->on_ellipse));
-    }
-  }
+  // Classification slack: about a hundred ulps of the pair's scale, well above the rounding of the
+  // compared quantities, so that a centre on a region boundary is served by at least one region.
   const double scale = std::abs(f.x[0]) + std::abs(f.x[1]) + f.e[0] + f.e[1] + f.a + f.b;
-  const LocalPair best = nearest_corner(f, sp, 64.0 * std::numeric_limits<double>::epsilon() * scale);
-  // No corner serves, or the corner lies in the ellipse, only when K is in S up to rounding: the
-  // filter's verdict was on the wrong side of a margin below its error bound.
-  if (!(best.distance > 0.0)) return witness();
-  return DistanceResult::apart(best.distance, to_world(best.on_rect), to_world(best.on_ellipse));
+  const double tol = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  std::optional<LocalPair> best = edge_region(f, sp, 0, tol);
+  if (!best) best = edge_region(f, sp, 1, tol);
+  if (!best) best = nearest_corner(f, sp, tol);
+  // A zero or missing distance means K lies in S up to rounding: the filter's verdict fell on the
+  // wrong side of a margin below its error bound, and the pair touches.
+  if (!(best->distance > 0.0) || !std::isfinite(best->distance)) return witness();
+  return DistanceResult::apart(best->distance, to_world(best->on_rect), to_world(best->on_ellipse));
 }
 
 }  // namespace collide2d

@@ -1,0 +1,204 @@
+#include "hard_cases.h"
+
+#include "mp_reference.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+namespace collide2d::testing {
+namespace {
+
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+
+using Rng = std::mt19937_64;
+
+double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+double log_uniform(Rng& rng, double lo, double hi) { return std::exp(uniform(rng, std::log(lo), std::log(hi))); }
+Vec2 unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+Shape random_shape(Rng& rng, Kind kind, double size, const Family& f, const Vec2& center) {
+  const double aspect = log_uniform(rng, f.aspect_min, f.aspect_max);
+  const double angle = uniform(rng, 0.0, 2 * std::numbers::pi);
+  const bool long_x = uniform(rng, 0.0, 1.0) < 0.5;
+  const double u = long_x ? size : size / aspect;
+  const double v = long_x ? size / aspect : size;
+  switch (kind) {
+    case Kind::circle: return Circle{center, size};
+    case Kind::ellipse: return Ellipse{center, u, v, angle};
+    case Kind::rect: break;
+  }
+  return Rect{center, Vec2(u, v), angle};
+}
+
+double half_size(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
+  return std::get<Rect>(s).half_extents.maxCoeff();
+}
+
+Vec2 center_of(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
+
+void translate(Shape& s, const Vec2& by) { std::visit([&by](auto& x) { x.center += by; }, s); }
+
+struct Contact {
+  Vec2 point;
+  Vec2 normal;
+};
+
+// A boundary point of `a` and its outward unit normal: a rectangle face point half of the time,
+// otherwise the support point of a random direction (a corner, for a rectangle).
+Contact contact_on(Rng& rng, const Shape& a) {
+  if (const auto* r = std::get_if<Rect>(&a); r && uniform(rng, 0.0, 1.0) < 0.5) {
+    const int i = uniform(rng, 0.0, 1.0) < 0.5 ? 0 : 1;
+    const double side = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+    Vec2 local, normal = Vec2::Zero();
+    local[i] = side * r->half_extents[i];
+    local[1 - i] = uniform(rng, -0.9, 0.9) * r->half_extents[1 - i];
+    normal[i] = side;
+    const Vec2 c = unit(r->angle);
+    const auto rotate = [&c](const Vec2& v) { return Vec2(c.x() * v.x() - c.y() * v.y(), c.y() * v.x() + c.x() * v.y()); };
+    return {r->center + rotate(local), rotate(normal)};
+  }
+  const Vec2 n = unit(uniform(rng, 0.0, 2 * std::numbers::pi));
+  return {support(a, n), n};
+}
+
+// B placed against A with gap `gap` along the contact normal; a rectangle B faces A flat a third
+// of the time.
+void place_against(Rng& rng, Shape& b, const Contact& c, double gap) {
+  if (auto* r = std::get_if<Rect>(&b); r && uniform(rng, 0.0, 1.0) < 1.0 / 3) {
+    r->angle = std::atan2(c.normal.y(), c.normal.x());
+  }
+  translate(b, Vec2(c.point + gap * c.normal - support(b, Vec2(-c.normal))));
+}
+
+Shape shrunk_inside(Rng& rng, const Shape& a, Kind kind, const Family& f) {
+  double inner = 0.0;
+  if (const auto* c = std::get_if<Circle>(&a)) inner = c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&a)) inner = std::min(e->a, e->b);
+  if (const auto* r = std::get_if<Rect>(&a)) inner = r->half_extents.minCoeff();
+  const Vec2 center = center_of(a) + uniform(rng, 0.0, 0.4 * inner) * unit(uniform(rng, 0.0, 6.3));
+  return random_shape(rng, kind, 0.25 * inner, Family{.aspect_min = 1.0, .aspect_max = 2.0}, center);
+}
+
+// The same region where the kinds allow it: the ellipse or circle inscribed in a rectangle.
+Shape identical_to(const Shape& a, Kind kind) {
+  if (std::holds_alternative<Circle>(a) && kind == Kind::circle) return a;
+  if (const auto* r = std::get_if<Rect>(&a)) {
+    if (kind == Kind::rect) return a;
+    if (kind == Kind::ellipse) return Ellipse{r->center, r->half_extents.x(), r->half_extents.y(), r->angle};
+    return Circle{r->center, r->half_extents.minCoeff()};
+  }
+  if (const auto* e = std::get_if<Ellipse>(&a); e && kind == Kind::ellipse) return a;
+  const double s = half_size(a);
+  const Vec2 c = center_of(a);
+  if (kind == Kind::rect) return Rect{c, Vec2(s, s), 0.0};
+  return Circle{c, s};
+}
+
+std::string describe(const Shape& s) {
+  std::ostringstream o;
+  o.precision(17);
+  std::visit(
+      [&o](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        o << (std::is_same_v<T, Circle> ? "circle " : std::is_same_v<T, Ellipse> ? "ellipse " : "rect ");
+        o << x.center.x() << ' ' << x.center.y() << ' ';
+        if constexpr (std::is_same_v<T, Circle>) o << x.radius;
+        if constexpr (std::is_same_v<T, Ellipse>) o << x.a << ' ' << x.b << ' ' << x.angle;
+        if constexpr (std::is_same_v<T, Rect>) o << x.half_extents.x() << ' ' << x.half_extents.y() << ' ' << x.angle;
+      },
+      s);
+  return o.str();
+}
+
+double ulps_of(const Vec2& p) { return 4 * kU * 2 * std::max(std::abs(p.x()), std::abs(p.y())); }
+
+struct Case {
+  Shape a;
+  Shape b;
+  double delta;      // nominal gap (touching placement), or NaN
+};
+
+Case make_case(Rng& rng, const Family& f, int k) {
+  const Vec2 origin = f.offset * Vec2(1.0, -0.7) + f.size * Vec2(uniform(rng, -1, 1), uniform(rng, -1, 1));
+  Shape a = random_shape(rng, f.a, f.size, f, origin);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (f.placement == Placement::inside) return {a, shrunk_inside(rng, a, f.b, f), nan};
+  if (f.placement == Placement::identical) return {a, identical_to(a, f.b), nan};
+  const double ratio = log_uniform(rng, 1.0 / f.size_ratio, f.size_ratio);
+  Shape b = random_shape(rng, f.b, f.size * ratio, f, origin);
+  const double delta = f.deltas[static_cast<std::size_t>(k) % f.deltas.size()] * std::max(f.size, f.size * ratio);
+  place_against(rng, b, contact_on(rng, a), delta);
+  return {a, b, delta};
+}
+
+void check_points(const Case& c, const DistanceResult& d, double dist_ref, double tol, const std::string& what) {
+  const double tol_a = tol + ulps_of(d.point_a);
+  const double tol_b = tol + ulps_of(d.point_b);
+  const double on_a = static_cast<double>(reference::distance_to(c.a, reference::to_mp(d.point_a)));
+  const double on_b = static_cast<double>(reference::distance_to(c.b, reference::to_mp(d.point_b)));
+  EXPECT_LE(on_a, tol_a) << what << " point_a is off A";
+  EXPECT_LE(on_b, tol_b) << what << " point_b is off B";
+  const double reach = static_cast<double>(reference::distance_to(c.b, reference::to_mp(d.point_a)));
+  EXPECT_LE(std::abs(reach - dist_ref), tol_a + tol_b) << what << " point_a does not realise the distance";
+  EXPECT_LE(std::abs((d.point_b - d.point_a).norm() - d.distance), tol_a + tol_b) << what << " |b - a| != distance";
+}
+
+}  // namespace
+
+FamilyStats run_family(const Family& f) {
+  Rng rng(f.seed);
+  FamilyStats stats;
+  const OverlapOptions methods[] = {{RectEllipseMethod::minkowski}, {RectEllipseMethod::closest_features},
+                                    {RectEllipseMethod::all_features}};
+  for (int k = 0; k < f.cases; ++k) {
+    const Case c = make_case(rng, f, k);
+    const std::string what = f.name + " case " + std::to_string(k) + ": " + describe(c.a) + " ; " + describe(c.b);
+    const double size = std::max(half_size(c.a), half_size(c.b));
+    const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
+    const double rho = 16 * kU * (std::abs(f.offset) + 4 * size);
+    const bool ref_overlap = reference::overlap(c.a, c.b);
+    const double ref_distance = static_cast<double>(reference::distance(c.a, c.b));
+    const double target = 1e-10 * size;
+    const bool clear = ref_overlap ? (c.delta < -target - rho || std::isnan(c.delta)) : ref_distance > target;
+    ++stats.cases;
+    if (const auto* r = std::get_if<Rect>(&c.a); r && f.b == Kind::ellipse) {
+      stats.fallbacks += overlap_rect_ellipse_filter(*r, std::get<Ellipse>(c.b)) == FilterVerdict::uncertain;
+    }
+    for (const OverlapOptions& m : methods) {
+      for (const bool swap : {false, true}) {
+        const bool got = swap ? overlaps(c.b, c.a, m) : overlaps(c.a, c.b, m);
+        if (clear) {
+          EXPECT_EQ(got, ref_overlap) << what << " method " << static_cast<int>(m.rect_ellipse) << " swap " << swap;
+          ++stats.verdicts_checked;
+        } else {
+          stats.verdict_mismatches_below_target += got != ref_overlap;
+          stats.default_mismatches_below_target += got != ref_overlap && m.rect_ellipse == RectEllipseMethod::minkowski;
+        }
+      }
+    }
+    const double tol = 1e-12 * scale;
+    const DistanceResult d = distance(c.a, c.b);
+    const double err = std::abs(d.distance - ref_distance);
+    stats.worst_distance_error = std::max(stats.worst_distance_error, err / scale);
+    EXPECT_LE(err, tol) << what << " distance " << d.distance << " reference " << ref_distance;
+    check_points(c, d, ref_distance, tol, what);
+    const DistanceResult back = distance(c.b, c.a);
+    EXPECT_EQ(back.distance, d.distance) << what << " distance is not symmetric";
+    EXPECT_EQ(back.point_a, d.point_b) << what << " swapped points";
+  }
+  std::printf("[family] %-38s cases %4d  verdicts checked %5d  mismatches below target %3d (default %3d)  fallbacks %3d  worst distance error %.2e\n",
+              f.name.c_str(), stats.cases, stats.verdicts_checked, stats.verdict_mismatches_below_target,
+              stats.default_mismatches_below_target, stats.fallbacks, stats.worst_distance_error);
+  return stats;
+}
+
+}  // namespace collide2d::testing

@@ -1,0 +1,56 @@
+// Hard-case families for the narrow-phase tests, checked against the 50-digit reference.
+//
+// Construction: A is a random shape; p is a point of A's boundary with outward unit normal n (on a
+// rectangle edge with its face normal, or any n with p = support_A(n), which for a rectangle is a
+// corner and n any direction of its normal cone). B is translated so that support_B(-n) sits at
+// p + delta n: the gap is then delta (distance delta when delta > 0, overlap iff delta <= 0) up to
+// the rounding of B's centre, which the check bounds by rho = 16 u (|offset| + 4 size).
+//
+// Targets asserted (size = the larger shape's largest half-size, scale = max(size, centre distance)):
+// - verdict: equal to the reference wherever the true gap exceeds 1e-10 size in magnitude (the
+//   reference distance for separated pairs, delta + rho for overlapping ones);
+// - distance: |d - d_ref| <= 1e-12 scale;
+// - closest points: each within tol of its own shape, and the point on A within d + tol of B,
+//   tol = 1e-12 scale + 4 ulp of the coordinates (the witness: within tol of both).
+#pragma once
+
+#include "narrowphase/query.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace collide2d::testing {
+
+enum class Kind { rect, circle, ellipse };
+enum class Placement { touching, inside, identical };
+
+struct Family {
+  std::string name;
+  Kind a = Kind::rect;
+  Kind b = Kind::ellipse;
+  int cases = 120;
+  double size = 1.0;
+  double offset = 0.0;
+  double aspect_min = 1.0;   // aspect ratios of rectangles and ellipses, log-uniform
+  double aspect_max = 4.0;
+  double size_ratio = 3.0;   // B's size over A's, log-uniform in [1/ratio, ratio]
+  std::vector<double> deltas{1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-10, -1e-10, 1e-12, -1e-12};
+  Placement placement = Placement::touching;
+  std::uint64_t seed = 1;
+};
+
+struct FamilyStats {
+  int cases = 0;
+  int verdicts_checked = 0;
+  int verdict_mismatches_below_target = 0;  // disagreements where |gap| <= 1e-10 size (allowed)
+  int default_mismatches_below_target = 0;  // of which the default method (minkowski + fallback)
+  int fallbacks = 0;                        // rect–ellipse minkowski filter answered `uncertain`
+  double worst_distance_error = 0.0;        // |d - d_ref| / scale
+};
+
+// Runs every case through overlaps() with each rect–ellipse method and distance(), in both orders,
+// records gtest failures for missed targets, prints one summary line and returns the statistics.
+FamilyStats run_family(const Family& family);
+
+}  // namespace collide2d::testing
