@@ -7,6 +7,7 @@
 #include "narrowphase/overlap_rect_circle.h"
 #include "narrowphase/overlap_rect_rect.h"
 
+#include <array>
 #include <type_traits>
 
 namespace collide2d {
@@ -18,6 +19,14 @@ constexpr int rank() {
   if constexpr (std::is_same_v<T, Rect>) return 0;
   if constexpr (std::is_same_v<T, Circle>) return 1;
   return 2;
+}
+
+// A total order on shapes of one kind. Same-kind pairs are put in this order before the kernel runs,
+// so that swapping A and B swaps the result exactly, bit for bit, whatever frame the kernel uses.
+std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
+std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }
+std::array<double, 5> key(const Rect& r) {
+  return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
 }
 
 [[noreturn]] void unsupported(const char* pair) {
@@ -42,34 +51,39 @@ DistanceResult distance_kernel(const Circle& a, const Circle& b) { return distan
 DistanceResult distance_kernel(const Circle& a, const Ellipse& b) { return distance_circle_ellipse(a, b); }
 DistanceResult distance_kernel(const Ellipse&, const Ellipse&) { unsupported("ellipse-ellipse distance"); }
 
-}  // namespace
-
-bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
-  validate(a);
-  validate(b);
+// Calls kernel(x, y, swapped) with the pair in kernel order: by rank across kinds, by key within one.
+template <class Kernel>
+auto in_kernel_order(const Shape& a, const Shape& b, Kernel kernel) {
   return std::visit(
-      [&options](const auto& x, const auto& y) {
-        if constexpr (rank<std::decay_t<decltype(x)>>() <= rank<std::decay_t<decltype(y)>>()) {
-          return overlap_kernel(x, y, options);
+      [&kernel](const auto& x, const auto& y) {
+        using X = std::decay_t<decltype(x)>;
+        using Y = std::decay_t<decltype(y)>;
+        if constexpr (rank<X>() < rank<Y>()) {
+          return kernel(x, y, false);
+        } else if constexpr (rank<X>() > rank<Y>()) {
+          return kernel(y, x, true);
         } else {
-          return overlap_kernel(y, x, options);
+          return key(y) < key(x) ? kernel(y, x, true) : kernel(x, y, false);
         }
       },
       a, b);
 }
 
+}  // namespace
+
+bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
+  validate(a);
+  validate(b);
+  return in_kernel_order(a, b, [&options](const auto& x, const auto& y, bool) { return overlap_kernel(x, y, options); });
+}
+
 DistanceResult distance(const Shape& a, const Shape& b) {
   validate(a);
   validate(b);
-  return std::visit(
-      [](const auto& x, const auto& y) {
-        if constexpr (rank<std::decay_t<decltype(x)>>() <= rank<std::decay_t<decltype(y)>>()) {
-          return distance_kernel(x, y);
-        } else {
-          return distance_kernel(y, x).swapped();
-        }
-      },
-      a, b);
+  return in_kernel_order(a, b, [](const auto& x, const auto& y, bool swapped) {
+    const DistanceResult r = distance_kernel(x, y);
+    return swapped ? r.swapped() : r;
+  });
 }
 
 }  // namespace collide2d

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -152,7 +154,60 @@ void check_points(const Case& c, const DistanceResult& d, double dist_ref, doubl
   EXPECT_LE(std::abs((d.point_b - d.point_a).norm() - d.distance), tol_a + tol_b) << what << " |b - a| != distance";
 }
 
+const char* kind_word(Kind k) { return k == Kind::rect ? "rect" : k == Kind::circle ? "circle" : "ellipse"; }
+
 }  // namespace
+
+std::vector<Family> standard_families(Kind a, Kind b) {
+  const std::string pair = std::string(kind_word(a)) + "-" + kind_word(b) + " ";
+  const auto family = [&](const std::string& what) { return Family{.name = pair + what, .a = a, .b = b}; };
+  std::vector<Family> out;
+  Family tangent = family("near-tangent");
+  tangent.cases = 300;
+  out.push_back(tangent);
+  if (a != Kind::circle || b != Kind::circle) {
+    for (const double aspect : {1e2, 1e3, 1e4, 1e5, 1e6}) {
+      char what[32];
+      std::snprintf(what, sizeof what, "aspect %.0e", aspect);
+      Family f = family(what);
+      f.aspect_min = f.aspect_max = aspect;
+      f.seed = static_cast<std::uint64_t>(aspect);
+      out.push_back(f);
+    }
+  }
+  if (a == Kind::ellipse || b == Kind::ellipse) {
+    Family f = family("near-circle 1+1e-12");
+    f.aspect_min = f.aspect_max = 1 + 1e-12;
+    out.push_back(f);
+  }
+  for (const auto& [what, offset, size] : {std::tuple{"offset 1e6", 1e6, 1.0}, std::tuple{"offset 1e9", 1e9, 1.0},
+                                           std::tuple{"size 1e-6", 0.0, 1e-6}, std::tuple{"size 1e6", 0.0, 1e6}}) {
+    Family f = family(what);
+    f.offset = offset;
+    f.size = size;
+    f.seed = 7;
+    out.push_back(f);
+  }
+  Family inside = family("B inside A");
+  inside.placement = Placement::inside;
+  inside.aspect_max = 100;
+  out.push_back(inside);
+  Family outside{.name = pair + "A inside B", .a = b, .b = a, .aspect_max = 100, .placement = Placement::inside};
+  out.push_back(outside);
+  Family same = family("identical or inscribed");
+  same.placement = Placement::identical;
+  same.aspect_max = 1e6;
+  out.push_back(same);
+  return out;
+}
+
+void PrintTo(const Family& f, std::ostream* os) { *os << f.name; }
+
+std::string test_name(const Family& f) {
+  std::string out;
+  for (const char ch : f.name) out += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return out;
+}
 
 FamilyStats run_family(const Family& f) {
   Rng rng(f.seed);

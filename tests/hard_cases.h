@@ -17,6 +17,7 @@
 #include "narrowphase/query.h"
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,17 @@ struct FamilyStats {
   int fallbacks = 0;                        // rect–ellipse minkowski filter answered `uncertain`
   double worst_distance_error = 0.0;        // |d - d_ref| / scale
 };
+
+// gtest prints a family by its name.
+void PrintTo(const Family& f, std::ostream* os);
+
+// The standard hard-case families for a pair: near-tangent contacts (delta = +-1e-3 ... +-1e-12 of
+// the size), aspect ratios 1e2 ... 1e6 and near-circles (where a rectangle or ellipse is involved),
+// offsets 1e6 and 1e9, sizes 1e-6 and 1e6, each shape inside the other, identical or inscribed.
+std::vector<Family> standard_families(Kind a, Kind b);
+
+// A gtest-safe name for a family.
+std::string test_name(const Family& f);
 
 // Runs every case through overlaps() with each rect–ellipse method and distance(), in both orders,
 // records gtest failures for missed targets, prints one summary line and returns the statistics.

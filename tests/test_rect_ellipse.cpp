@@ -18,15 +18,17 @@ namespace {
 
 Family rect_ellipse(std::string name) { return Family{.name = std::move(name), .a = Kind::rect, .b = Kind::ellipse}; }
 
-TEST(RectEllipseFamilies, NearTangent) {
-  Family f = rect_ellipse("rect-ellipse near-tangent");
-  f.cases = 400;
-  run_family(f);
-}
+class RectEllipseFamilies : public ::testing::TestWithParam<Family> {};
+
+TEST_P(RectEllipseFamilies, MeetTargets) { run_family(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Standard, RectEllipseFamilies,
+                         ::testing::ValuesIn(standard_families(Kind::rect, Kind::ellipse)),
+                         [](const auto& info) { return test_name(info.param); });
 
 // Gaps at the rounding level: no verdict is owed here, but the filter must defer and the
 // long-double fallback should still match the exact verdict of the rounded input.
-TEST(RectEllipseFamilies, RoundingLevelContacts) {
+TEST(RectEllipseRounding, FallbackDecidesRoundingLevelContacts) {
   for (const double aspect : {1.0, 1e3, 1e6}) {
     char name[64];
     std::snprintf(name, sizeof name, "rect-ellipse gap<=1e-14 aspect %.0e", aspect);
@@ -39,58 +41,6 @@ TEST(RectEllipseFamilies, RoundingLevelContacts) {
     const FamilyStats s = run_family(f);
     EXPECT_GT(s.fallbacks, 0) << "the filter never deferred at rounding-level gaps";
   }
-}
-
-TEST(RectEllipseFamilies, AspectRatios) {
-  for (const double aspect : {1e2, 1e3, 1e4, 1e5, 1e6}) {
-    char name[64];
-    std::snprintf(name, sizeof name, "rect-ellipse aspect %.0e", aspect);
-    Family f = rect_ellipse(name);
-    f.aspect_min = f.aspect_max = aspect;
-    f.seed = static_cast<std::uint64_t>(aspect);
-    run_family(f);
-  }
-}
-
-TEST(RectEllipseFamilies, NearCircles) {
-  Family f = rect_ellipse("rect-ellipse near-circle 1+1e-12");
-  f.aspect_min = f.aspect_max = 1 + 1e-12;
-  run_family(f);
-}
-
-TEST(RectEllipseFamilies, FarFromOrigin) {
-  for (const double offset : {1e6, 1e9}) {
-    Family f = rect_ellipse(offset > 1e7 ? "rect-ellipse offset 1e9" : "rect-ellipse offset 1e6");
-    f.offset = offset;
-    f.seed = 7;
-    run_family(f);
-  }
-}
-
-TEST(RectEllipseFamilies, TinyAndHuge) {
-  for (const double size : {1e-6, 1e6}) {
-    Family f = rect_ellipse(size < 1 ? "rect-ellipse size 1e-6" : "rect-ellipse size 1e6");
-    f.size = size;
-    f.seed = 11;
-    run_family(f);
-  }
-}
-
-TEST(RectEllipseFamilies, OneInsideTheOther) {
-  Family f = rect_ellipse("rect-ellipse ellipse inside rect");
-  f.placement = Placement::inside;
-  run_family(f);
-  Family g{.name = "rect-ellipse rect inside ellipse", .a = Kind::ellipse, .b = Kind::rect};
-  g.placement = Placement::inside;
-  g.aspect_max = 100;
-  run_family(g);
-}
-
-TEST(RectEllipseFamilies, Identical) {
-  Family f = rect_ellipse("rect-ellipse inscribed");
-  f.placement = Placement::identical;
-  f.aspect_max = 1e6;
-  run_family(f);
 }
 
 // Seed 004 picks the corner by the quadrant of the ellipse centre and calls this pair overlapping;
