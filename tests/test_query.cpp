@@ -1,0 +1,181 @@
+// The user-facing dispatch (invariants, errors) and the `collide2d query` command.
+#include "mp_reference.h"
+
+#include "narrowphase/query.h"
+#include "tools/query_command.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+namespace collide2d {
+namespace {
+
+std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.05, 1.5), pos(-2, 2), angle(-7, 7);
+  const auto shape = [&](int kind) -> Shape {
+    const Vec2 c(pos(rng), pos(rng));
+    if (kind == 0) return Circle{c, u(rng)};
+    if (kind == 1) return Ellipse{c, u(rng), u(rng) / 20, angle(rng)};
+    return Rect{c, Vec2(u(rng), u(rng)), angle(rng)};
+  };
+  std::vector<std::pair<Shape, Shape>> out;
+  for (int k = 0; k < n; ++k) {
+    const int ka = k % 3, kb = (k / 3) % 3;
+    if (ka == 1 && kb == 1) continue;  // ellipse–ellipse: next issue
+    out.emplace_back(shape(ka), shape(kb));
+  }
+  return out;
+}
+
+// Moves a shape by the rigid motion p -> R(phi) p + t.
+Shape moved(const Shape& s, double phi, const Vec2& t) {
+  const Eigen::Rotation2Dd r(phi);
+  return std::visit(
+      [&](auto x) -> Shape {
+        x.center = r * x.center + t;
+        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += phi;
+        return x;
+      },
+      s);
+}
+
+TEST(Dispatch, InvariantUnderRigidMotionOfBoth) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi), shift(-50, 50);
+  for (const auto& [a, b] : random_pairs(3000, 4)) {
+    const double phi = angle(rng);
+    const Vec2 t(shift(rng), shift(rng));
+    const DistanceResult d0 = distance(a, b);
+    const DistanceResult d1 = distance(moved(a, phi, t), moved(b, phi, t));
+    const double scale = 60.0;  // bounds the coordinates after the motion
+    ASSERT_NEAR(d0.distance, d1.distance, 1e-12 * scale);
+    if (d0.distance > 1e-9) {
+      ASSERT_EQ(overlaps(a, b), overlaps(moved(a, phi, t), moved(b, phi, t)));
+      const Eigen::Rotation2Dd r(phi);
+      ASSERT_LT((r * d0.point_a + t - d1.point_a).norm(), 1e-12 * scale);
+      ASSERT_LT((r * d0.point_b + t - d1.point_b).norm(), 1e-12 * scale);
+    }
+  }
+}
+
+TEST(Dispatch, SwappingSwapsTheResultExactly) {
+  for (const auto& [a, b] : random_pairs(3000, 5)) {
+    ASSERT_EQ(overlaps(a, b), overlaps(b, a));
+    const DistanceResult ab = distance(a, b), ba = distance(b, a);
+    ASSERT_EQ(ab.distance, ba.distance);
+    ASSERT_EQ(ab.point_a, ba.point_b);
+    ASSERT_EQ(ab.point_b, ba.point_a);
+    ASSERT_EQ(ab.overlapping, ab.distance == 0.0);
+  }
+}
+
+TEST(Dispatch, RejectsInvalidShapesAndUnsupportedPairs) {
+  const Shape good = Circle{Vec2(0, 0), 1};
+  const Shape bad = Rect{Vec2(0, 0), Vec2(1, std::nan("")), 0};
+  EXPECT_THROW(overlaps(good, bad), InvalidShape);
+  EXPECT_THROW(distance(bad, good), InvalidShape);
+  const Shape e = Ellipse{Vec2(0, 0), 2, 1, 0};
+  EXPECT_THROW(overlaps(e, e), UnsupportedPair);
+  EXPECT_THROW(distance(e, e), UnsupportedPair);
+}
+
+struct CommandRun {
+  int status;
+  std::vector<std::string> out;
+  std::string err;
+};
+
+CommandRun run(const std::string& input, const char* method = "minkowski") {
+  std::istringstream in(input);
+  std::ostringstream out, err;
+  const int status = tool::run_query(in, out, err, OverlapOptions{tool::parse_method(method)});
+  std::vector<std::string> lines;
+  std::istringstream o(out.str());
+  for (std::string line; std::getline(o, line);) lines.push_back(line);
+  return {status, lines, err.str()};
+}
+
+// Every number printed parses back to the very double the library computed.
+TEST(QueryCommand, RoundTripsTheLibraryResults) {
+  std::ostringstream input;
+  input.precision(17);
+  const auto pairs = random_pairs(300, 6);
+  const auto word = [](const Shape& s) {
+    std::ostringstream o;
+    o.precision(17);
+    if (const auto* c = std::get_if<Circle>(&s)) o << "circle " << c->center.x() << ' ' << c->center.y() << ' ' << c->radius;
+    if (const auto* e = std::get_if<Ellipse>(&s))
+      o << "ellipse " << e->center.x() << ' ' << e->center.y() << ' ' << e->a << ' ' << e->b << ' ' << e->angle;
+    if (const auto* r = std::get_if<Rect>(&s))
+      o << "rect " << r->center.x() << ' ' << r->center.y() << ' ' << r->half_extents.x() << ' ' << r->half_extents.y()
+        << ' ' << r->angle;
+    return o.str();
+  };
+  input << "# a comment\n\n";
+  for (const auto& [a, b] : pairs) input << word(a) << " ; " << word(b) << '\n';
+  const CommandRun r = run(input.str());
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.out.size(), pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    std::istringstream line(r.out[k]);
+    int hit = -1;
+    std::string fields[5];
+    line >> hit >> fields[0] >> fields[1] >> fields[2] >> fields[3] >> fields[4];
+    const DistanceResult d = distance(pairs[k].first, pairs[k].second);
+    EXPECT_EQ(hit, overlaps(pairs[k].first, pairs[k].second) ? 1 : 0);
+    const double expected[5] = {d.distance, d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y()};
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(std::strtod(fields[i].c_str(), nullptr), expected[i]) << r.out[k];
+  }
+}
+
+TEST(QueryCommand, EachBadLineGetsAnErrorInPlace) {
+  const std::string input =
+      "circle 0 0 1 ; circle 3 0 1\n"
+      "blob 0 0 1 ; circle 0 0 1\n"
+      "circle 0 0 ; circle 0 0 1\n"
+      "rect 0 0 1 1 0 ; ellipse 0 0 1 1 zero\n"
+      "circle 0 0 1 circle 1 1 1\n"
+      "circle 0 0 1 ; circle 1 1 1 ; circle 2 2 2\n"
+      "circle 0 0 nan ; circle 1 1 1\n"
+      "rect 0 0 -1 1 0 ; circle 1 1 1\n"
+      "circle 0 0 1 ; \n"
+      "ellipse 0 0 2 1 0 ; ellipse 1 0 2 1 0\n"
+      "circle 0 0 1e999 ; circle 1 1 1\n"
+      "# fine again\n"
+      "rect 0 0 1 1 0 ; circle 3 0 1\n";
+  const CommandRun r = run(input);
+  EXPECT_EQ(r.status, 2);
+  const std::vector<std::string> expected_errors = {
+      "unknown shape 'blob'", "circle takes 3 numbers (cx cy r), got 2", "'zero' is not a number",
+      "expected '<shape> ; <shape>', found no ';'", "expected one ';', found more", "circle radius must be finite",
+      "rect hx must be positive", "shape B is missing", "not supported yet", "'1e999' is out of range"};
+  ASSERT_EQ(r.out.size(), expected_errors.size() + 2);
+  EXPECT_EQ(r.out.front(), "0 1 1 0 2 0");
+  EXPECT_EQ(r.out.back(), "0 1 1 0 2 0");
+  for (std::size_t k = 0; k < expected_errors.size(); ++k) {
+    EXPECT_EQ(r.out[k + 1].rfind("error: ", 0), 0u) << r.out[k + 1];
+    EXPECT_NE(r.out[k + 1].find(expected_errors[k]), std::string::npos) << r.out[k + 1];
+    EXPECT_NE(r.err.find("line " + std::to_string(k + 2) + ": "), std::string::npos) << r.err;
+  }
+}
+
+TEST(QueryCommand, MethodsNameTheRectEllipseTest) {
+  // The seed's corner rule calls this pair overlapping; every method here must not.
+  const std::string q = "rect 0 0 0.1 0.1 0 ; ellipse 1.1 6.1 10 0.01 0.78539816339744828\n";
+  for (const char* m : {"minkowski", "closest-features", "all-features"}) {
+    const CommandRun r = run(q, m);
+    ASSERT_EQ(r.out.size(), 1u);
+    EXPECT_EQ(r.out[0].substr(0, 2), "0 ") << m;
+  }
+  EXPECT_THROW(tool::parse_method("gjk"), tool::ParseError);
+}
+
+}  // namespace
+}  // namespace collide2d
