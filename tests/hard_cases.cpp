@@ -90,19 +90,26 @@ Shape shrunk_inside(Rng& rng, const Shape& a, Kind kind, const Family& f) {
   return random_shape(rng, kind, 0.25 * inner, Family{.aspect_min = 1.0, .aspect_max = 2.0}, center);
 }
 
-// The same region where the kinds allow it: the ellipse or circle inscribed in a rectangle.
+Kind kind_of(const Shape& s) {
+  if (std::holds_alternative<Rect>(s)) return Kind::rect;
+  return std::holds_alternative<Circle>(s) ? Kind::circle : Kind::ellipse;
+}
+
+// The same region where the kinds allow it; otherwise the twin inscribed in A (for a circle or an
+// ellipse B) or circumscribed about it (for a rectangle B), sharing A's centre and axes.
 Shape identical_to(const Shape& a, Kind kind) {
-  if (std::holds_alternative<Circle>(a) && kind == Kind::circle) return a;
+  if (kind_of(a) == kind) return a;
   if (const auto* r = std::get_if<Rect>(&a)) {
-    if (kind == Kind::rect) return a;
     if (kind == Kind::ellipse) return Ellipse{r->center, r->half_extents.x(), r->half_extents.y(), r->angle};
     return Circle{r->center, r->half_extents.minCoeff()};
   }
-  if (const auto* e = std::get_if<Ellipse>(&a); e && kind == Kind::ellipse) return a;
-  const double s = half_size(a);
-  const Vec2 c = center_of(a);
-  if (kind == Kind::rect) return Rect{c, Vec2(s, s), 0.0};
-  return Circle{c, s};
+  if (const auto* c = std::get_if<Circle>(&a)) {
+    if (kind == Kind::ellipse) return Ellipse{c->center, c->radius, c->radius, 0.0};
+    return Rect{c->center, Vec2(c->radius, c->radius), 0.0};
+  }
+  const auto& e = std::get<Ellipse>(a);
+  if (kind == Kind::circle) return Circle{e.center, std::min(e.a, e.b)};
+  return Rect{e.center, Vec2(e.a, e.b), e.angle};
 }
 
 std::string describe(const Shape& s) {
