@@ -26,14 +26,6 @@ void require_size(const char* shape, const char* field, double value) {
   if (!(value > 0.0)) reject(shape, field, value, "must be positive");
 }
 
-// Half-widths of the AABB of a box or ellipse whose local axes carry lengths (u, v) after rotation.
-Vec2 rotated_half_widths(const Rot& r, double u, double v, bool elliptic) {
-  if (elliptic) {
-    return {std::hypot(u * r.c, v * r.s), std::hypot(u * r.s, v * r.c)};
-  }
-  return {u * std::abs(r.c) + v * std::abs(r.s), u * std::abs(r.s) + v * std::abs(r.c)};
-}
-
 Aabb around(const Vec2& center, const Vec2& half) { return {center - half, center + half}; }
 
 }  // namespace
@@ -71,13 +63,18 @@ const char* shape_name(const Shape& s) {
 
 Aabb aabb(const Circle& c) { return around(c.center, Vec2::Constant(c.radius)); }
 
+// The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
 Aabb aabb(const Ellipse& e) {
-  return around(e.center, rotated_half_widths(Rot::of(e.angle), e.a, e.b, true));
+  const Rot r = Rot::of(e.angle);
+  return around(e.center, Vec2(std::hypot(e.a * r.c, e.b * r.s), std::hypot(e.a * r.s, e.b * r.c)));
 }
 
 Aabb aabb(const Rect& r) {
-  return around(r.center,
-                rotated_half_widths(Rot::of(r.angle), r.half_extents.x(), r.half_extents.y(), false));
+  const Rot rot = Rot::of(r.angle);
+  const double c = std::abs(rot.c);
+  const double s = std::abs(rot.s);
+  const Vec2& h = r.half_extents;
+  return around(r.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
 }
 
 Aabb aabb(const Shape& s) {
