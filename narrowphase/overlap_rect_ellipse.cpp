@@ -56,28 +56,26 @@ FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
 
 // The segment p -> q (rectangle frame) meets the solid ellipse. In ellipse-normalised coordinates
 // w = (u0/a, u1/b) the ellipse is the unit disc and the edge is w(t) = p + t d, t in [0, 1].
-template <class Real>
-bool edge_meets_ellipse(const RectEllipseFrame<Real>& f, const V2<Real>& p, const V2<Real>& q) {
-  const V2<Real> up = f.to_ellipse_axes(p);
-  const V2<Real> uq = f.to_ellipse_axes(q);
-  const V2<Real> w(up[0] / f.a, up[1] / f.b);
-  const V2<Real> d(uq[0] / f.a - w[0], uq[1] / f.b - w[1]);
-  const Real dd = d.squaredNorm();
-  const Real cross = w[0] * d[1] - w[1] * d[0];
-  const Real disc = dd - cross * cross;  // = dd * (q1^2 - q0 q2) / dd^2 without the cancellation
+bool edge_meets_ellipse(const RectEllipseFrame<double>& f, const Vec2& p, const Vec2& q) {
+  const Vec2 up = f.to_ellipse_axes(p);
+  const Vec2 uq = f.to_ellipse_axes(q);
+  const Vec2 w(up[0] / f.a, up[1] / f.b);
+  const Vec2 d(uq[0] / f.a - w[0], uq[1] / f.b - w[1]);
+  const double dd = d.squaredNorm();
+  const double cross = w[0] * d[1] - w[1] * d[0];
+  const double disc = dd - cross * cross;  // = dd * (q1^2 - q0 q2) / dd^2 without the cancellation
   if (disc < 0) return false;
-  const Real root = std::sqrt(disc);
-  const Real wd = w.dot(d);
-  const Real t0 = (-wd - root) / dd;
-  const Real t1 = (-wd + root) / dd;
-  return t0 <= Real(1) && t1 >= Real(0);
+  const double root = std::sqrt(disc);
+  const double wd = w.dot(d);
+  const double t0 = (-wd - root) / dd;
+  const double t1 = (-wd + root) / dd;
+  return t0 <= 1.0 && t1 >= 0.0;
 }
 
-template <class Real>
-bool all_features_overlap(const RectEllipseFrame<Real>& f) {
-  const V2<Real> corners[4] = {{-f.e[0], -f.e[1]}, {f.e[0], -f.e[1]}, {f.e[0], f.e[1]}, {-f.e[0], f.e[1]}};
-  for (const V2<Real>& p : corners) {
-    if (f.quadratic(p) <= Real(1)) return true;
+bool all_features_overlap(const RectEllipseFrame<double>& f) {
+  const Vec2 corners[4] = {{-f.e[0], -f.e[1]}, {f.e[0], -f.e[1]}, {f.e[0], f.e[1]}, {-f.e[0], f.e[1]}};
+  for (const Vec2& p : corners) {
+    if (f.quadratic(p) <= 1.0) return true;
   }
   for (int k = 0; k < 4; ++k) {
     if (edge_meets_ellipse(f, corners[k], corners[(k + 1) % 4])) return true;

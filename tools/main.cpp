@@ -18,7 +18,8 @@ int query(int argc, char** argv) {
   collide2d::OverlapOptions options;
   for (int i = 2; i < argc; ++i) {
     const std::string_view arg = argv[i];
-    if (arg == "--method" && i + 1 < argc) {
+    if (arg == "--method") {
+      if (i + 1 == argc) throw collide2d::tool::ParseError("--method needs a name");
       options.rect_ellipse = collide2d::tool::parse_method(argv[++i]);
     } else {
       throw collide2d::tool::ParseError("unknown argument '" + std::string(arg) + "'");
