@@ -7,15 +7,15 @@ namespace collide2d {
 namespace {
 
 // The root of g(s) for z0, z1 > 0 and r0 = (e0/e1)^2 >= 1; g0 = g at s = 0 tells which side of
-// zero the root lies, which fixes the upper end of the bracket.
+// zero the root lies, which fixes the upper end of the bracket. Newton steps inside the bracket,
+// with a bisection step whenever Newton would leave it: g is convex and decreasing, so Newton
+// converges quadratically near the root, and the bracket keeps Eberly's guarantee of termination.
 double secular_root(double r0, double z0, double z1, double g0) {
   const double n0 = r0 * z0;
   double lo = z1 - 1.0;
   double hi = g0 < 0.0 ? 0.0 : std::hypot(n0, z1) - 1.0;
-  double s = lo;
+  double s = 0.5 * (lo + hi);
   for (;;) {
-    s = 0.5 * (lo + hi);
-    if (s == lo || s == hi) return s;
     const double r_0 = n0 / (s + r0);
     const double r_1 = z1 / (s + 1.0);
     const double g = r_0 * r_0 + r_1 * r_1 - 1.0;
@@ -26,6 +26,11 @@ double secular_root(double r0, double z0, double z1, double g0) {
     } else {
       return s;
     }
+    const double slope = -2.0 * (r_0 * r_0 / (s + r0) + r_1 * r_1 / (s + 1.0));
+    double next = s - g / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == s || next == lo || next == hi) return s;
+    s = next;
   }
 }
 

@@ -12,7 +12,7 @@
 //   s0 x0 >= e0 + s0 s1 t1 and s1 x1 >= e1 + s0 s1 t0 (t_i = m01 / l_i, the tangential offsets of
 //   the support points), so usually one corner, at most two, are solved.
 // Frames: computed in the rectangle frame after subtracting centres; points returned in world.
-// Accuracy: distance error at most 3.8e-16 of max(size, centre separation) over the hard-case
+// Accuracy: distance error at most 3.1e-16 of max(size, centre separation) over the hard-case
 // families (tests/test_rect_ellipse.cpp, 50-digit reference).
 #pragma once
 
