@@ -1,5 +1,5 @@
 // Narrow-phase kernels on fixed, seeded workloads (pre-generated, cycled so that no input stays in a
-// register). Pairs are drawn so that about a third overlap, and the rest lie near one another.
+// register).
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
 #include "narrowphase/overlap_circle_ellipse.h"

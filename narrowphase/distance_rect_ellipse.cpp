@@ -1,7 +1,6 @@
 #include "narrowphase/distance_rect_ellipse.h"
 
 #include "narrowphase/distance_point_ellipse.h"
-#include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/rect_ellipse_frame.h"
 
 #include <algorithm>
@@ -77,13 +76,12 @@ DistanceResult distance_rect_ellipse(const Rect& r, const Ellipse& e) {
   const auto witness = [&]() {
     return DistanceResult::touching(to_world(detail::closest_in_ellipse_metric(f).point));
   };
-  if (overlap_rect_ellipse(r, e)) return witness();
+  if (detail::minkowski_overlap(f, r, e)) return witness();
 
   const Supports sp = supports(f);
   // Classification slack: about a hundred ulps of the pair's scale, well above the rounding of the
   // compared quantities, so that a centre on a region boundary is served by at least one region.
-  const double scale = std::abs(f.x[0]) + std::abs(f.x[1]) + f.e[0] + f.e[1] + f.a + f.b;
-  const double tol = 64.0 * std::numeric_limits<double>::epsilon() * scale;
+  const double tol = 64.0 * std::numeric_limits<double>::epsilon() * f.scale();
   std::optional<LocalPair> best = edge_region(f, sp, 0, tol);
   if (!best) best = edge_region(f, sp, 1, tol);
   if (!best) best = nearest_corner(f, sp, tol);

@@ -36,8 +36,7 @@ FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double 
 
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
   const double l[2] = {std::sqrt(f.l0_squared()), std::sqrt(f.l1_squared())};
-  const double scale = std::abs(f.x[0]) + std::abs(f.x[1]) + f.e[0] + f.e[1] + f.a + f.b;
-  const double err = 16.0 * kUnitRoundoff * scale;
+  const double err = 16.0 * kUnitRoundoff * f.scale();
   bool unsure = false;
   for (int i = 0; i < 2; ++i) {
     const double margin = f.e[i] + l[i] - std::abs(f.x[i]);
@@ -85,6 +84,12 @@ bool all_features_overlap(const RectEllipseFrame<double>& f) {
 
 }  // namespace
 
+bool detail::minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r, const Ellipse& e) {
+  const FilterVerdict v = minkowski_filter(f);
+  if (v != FilterVerdict::uncertain) return v == FilterVerdict::overlap;
+  return detail::closest_features_overlap(detail::rect_ellipse_frame<long double>(r, e));
+}
+
 FilterVerdict overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e) {
   return minkowski_filter(detail::rect_ellipse_frame<double>(r, e));
 }
@@ -98,9 +103,7 @@ bool overlap_rect_ellipse(const Rect& r, const Ellipse& e, RectEllipseMethod met
     case RectEllipseMethod::minkowski:
       break;
   }
-  const FilterVerdict v = overlap_rect_ellipse_filter(r, e);
-  if (v != FilterVerdict::uncertain) return v == FilterVerdict::overlap;
-  return detail::closest_features_overlap(detail::rect_ellipse_frame<long double>(r, e));
+  return detail::minkowski_overlap(detail::rect_ellipse_frame<double>(r, e), r, e);
 }
 
 }  // namespace collide2d

@@ -44,6 +44,11 @@ struct RectEllipseFrame {
     const Real u1 = u[1] / b;
     return u0 * u0 + u1 * u1;
   }
+  // A length bounding every coordinate the tests compute: the unit of their rounding-error bounds.
+  Real scale() const {
+    using std::abs;
+    return abs(x[0]) + abs(x[1]) + e[0] + e[1] + a + b;
+  }
   // Entries of M^-1 = V diag(a^2, b^2) V^T: squared support half-widths along the rectangle axes
   // (l0^2, l1^2) and the cross term m01.
   Real l0_squared() const { return a * a * c * c + b * b * s * s; }
@@ -113,5 +118,9 @@ template <class Real>
 bool closest_features_overlap(const RectEllipseFrame<Real>& f) {
   return closest_in_ellipse_metric(f).q <= Real(1);
 }
+
+// The default rect–ellipse overlap test (filter, then long-double fallback) on a frame the caller has
+// already built from r and e; the fallback rebuilds it in long double from the raw shapes.
+bool minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r, const Ellipse& e);
 
 }  // namespace collide2d::detail
