@@ -4,10 +4,13 @@
 #include "narrowphase/distance_rect_rect.h"
 #include "narrowphase/overlap_circle_circle.h"
 #include "narrowphase/overlap_circle_ellipse.h"
+#include "narrowphase/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap_rect_circle.h"
 #include "narrowphase/overlap_rect_rect.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <type_traits>
 
 namespace collide2d {
@@ -29,10 +32,6 @@ std::array<double, 5> key(const Rect& r) {
   return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
 }
 
-[[noreturn]] void unsupported(const char* pair) {
-  throw UnsupportedPair(std::string(pair) + " is not supported yet");
-}
-
 bool overlap_kernel(const Rect& a, const Rect& b, const OverlapOptions&) { return overlap_rect_rect(a, b); }
 bool overlap_kernel(const Rect& a, const Circle& b, const OverlapOptions&) { return overlap_rect_circle(a, b); }
 bool overlap_kernel(const Rect& a, const Ellipse& b, const OverlapOptions& o) {
@@ -42,14 +41,55 @@ bool overlap_kernel(const Circle& a, const Circle& b, const OverlapOptions&) { r
 bool overlap_kernel(const Circle& a, const Ellipse& b, const OverlapOptions&) {
   return overlap_circle_ellipse(a, b);
 }
-bool overlap_kernel(const Ellipse&, const Ellipse&, const OverlapOptions&) { unsupported("ellipse-ellipse overlap"); }
+bool overlap_kernel(const Ellipse& a, const Ellipse& b, const OverlapOptions&) { return overlap_ellipse_ellipse(a, b); }
 
-DistanceResult distance_kernel(const Rect& a, const Rect& b) { return distance_rect_rect(a, b); }
-DistanceResult distance_kernel(const Rect& a, const Circle& b) { return distance_rect_circle(a, b); }
-DistanceResult distance_kernel(const Rect& a, const Ellipse& b) { return distance_rect_ellipse(a, b); }
-DistanceResult distance_kernel(const Circle& a, const Circle& b) { return distance_circle_circle(a, b); }
-DistanceResult distance_kernel(const Circle& a, const Ellipse& b) { return distance_circle_ellipse(a, b); }
-DistanceResult distance_kernel(const Ellipse&, const Ellipse&) { unsupported("ellipse-ellipse distance"); }
+DistanceResult distance_kernel(const Rect& a, const Rect& b, const DistanceOptions&) { return distance_rect_rect(a, b); }
+DistanceResult distance_kernel(const Rect& a, const Circle& b, const DistanceOptions&) {
+  return distance_rect_circle(a, b);
+}
+DistanceResult distance_kernel(const Rect& a, const Ellipse& b, const DistanceOptions&) {
+  return distance_rect_ellipse(a, b);
+}
+DistanceResult distance_kernel(const Circle& a, const Circle& b, const DistanceOptions&) {
+  return distance_circle_circle(a, b);
+}
+DistanceResult distance_kernel(const Circle& a, const Ellipse& b, const DistanceOptions&) {
+  return distance_circle_ellipse(a, b);
+}
+DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b, const DistanceOptions& o) {
+  return distance_ellipse_ellipse(a, b, o.ellipse).result;
+}
+
+Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
+
+// Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
+// centre (any side when the centres coincide).
+DistanceResult boundary_kernel(const Circle& a, const Circle& b, const DistanceOptions&) {
+  const Vec2 delta = b.center - a.center;
+  const double d = delta.norm();
+  if (d >= a.radius + b.radius) return distance_circle_circle(a, b);
+  const Vec2 u = d > 0 ? Vec2(delta / d) : Vec2::UnitX();
+  if (d <= std::abs(a.radius - b.radius)) {
+    const Vec2 away = a.radius >= b.radius ? u : Vec2(-u);
+    const Vec2 pa = a.center + a.radius * away;
+    const Vec2 pb = b.center + b.radius * away;
+    const double gap = std::abs(a.radius - b.radius) - d;
+    return gap > 0 ? DistanceResult::apart(gap, pa, pb) : DistanceResult::touching(pa);
+  }
+  const double along = (d * d + a.radius * a.radius - b.radius * b.radius) / (2 * d);
+  const double across = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
+  return DistanceResult::touching(a.center + along * u + across * Vec2(-u.y(), u.x()));
+}
+DistanceResult boundary_kernel(const Circle& a, const Ellipse& b, const DistanceOptions& o) {
+  return boundary_distance_ellipse_ellipse(as_ellipse(a), b, o.ellipse).result;
+}
+DistanceResult boundary_kernel(const Ellipse& a, const Ellipse& b, const DistanceOptions& o) {
+  return boundary_distance_ellipse_ellipse(a, b, o.ellipse).result;
+}
+template <class X>
+DistanceResult boundary_kernel(const Rect&, const X&, const DistanceOptions&) {
+  throw UnsupportedPair("the boundary distance covers circles and ellipses, not rectangles");
+}
 
 // Calls kernel(x, y, swapped) with the pair in kernel order: by rank across kinds, by key within one.
 template <class Kernel>
@@ -69,6 +109,17 @@ auto in_kernel_order(const Shape& a, const Shape& b, Kernel kernel) {
       a, b);
 }
 
+// Validates, runs kernel(x, y) in kernel order and swaps the result back.
+template <class Kernel>
+DistanceResult ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
+  validate(a);
+  validate(b);
+  return in_kernel_order(a, b, [&kernel](const auto& x, const auto& y, bool swapped) {
+    const DistanceResult r = kernel(x, y);
+    return swapped ? r.swapped() : r;
+  });
+}
+
 }  // namespace
 
 bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
@@ -77,13 +128,12 @@ bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
   return in_kernel_order(a, b, [&options](const auto& x, const auto& y, bool) { return overlap_kernel(x, y, options); });
 }
 
-DistanceResult distance(const Shape& a, const Shape& b) {
-  validate(a);
-  validate(b);
-  return in_kernel_order(a, b, [](const auto& x, const auto& y, bool swapped) {
-    const DistanceResult r = distance_kernel(x, y);
-    return swapped ? r.swapped() : r;
-  });
+DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
+  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return distance_kernel(x, y, options); });
+}
+
+DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
+  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return boundary_kernel(x, y, options); });
 }
 
 }  // namespace collide2d

@@ -1,7 +1,10 @@
 // The user-facing narrow phase: one entry point per query over every pair of shapes, either order.
 //
-//   bool overlaps(a, b, options)   solid shapes share a point (touching counts); nothing else computed
-//   DistanceResult distance(a, b)  distance 0 and a witness when overlapping, else closest points
+//   bool overlaps(a, b, options)            solid shapes share a point (touching counts); nothing else
+//   DistanceResult distance(a, b, options)  distance 0 and a witness when overlapping, else closest points
+//   DistanceResult boundary_distance(a, b, options)
+//                                           circles and ellipses: the gap between the boundary curves
+//                                           (0 and a common point when they meet), e.g. of nested shapes
 //
 // Both validate their shapes first and throw InvalidShape (naming the field) on NaN, infinity or a
 // non-positive size. Pairs are dispatched at compile time (std::visit) to the typed kernels below,
@@ -13,9 +16,14 @@
 //   rect–ellipse      options.rect_ellipse (overlap_rect_...)  Minkowski regions + point–ellipse
 //   circle–circle     centre distance                          centre distance
 //   circle–ellipse    point–ellipse distance                   point–ellipse distance
-//   ellipse–ellipse   not yet: throws UnsupportedPair          not yet: throws UnsupportedPair
+//   ellipse–ellipse   GJK on exact supports (overlap_ellipse_  options.ellipse (distance_ellipse_ellipse)
+//                     ellipse), long double when undecided
+//
+// Boundary distance: circle–circle in closed form; circle–ellipse as ellipse–ellipse with a = b;
+// rectangles throw UnsupportedPair.
 #pragma once
 
+#include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/distance_result.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 
@@ -27,13 +35,18 @@ struct OverlapOptions {
   RectEllipseMethod rect_ellipse = RectEllipseMethod::minkowski;
 };
 
-// Thrown for a pair of shapes that has no kernel yet.
+struct DistanceOptions {
+  EllipseDistanceMethod ellipse = EllipseDistanceMethod::robust;
+};
+
+// Thrown for a query that is not defined for the pair (the boundary distance of a rectangle).
 class UnsupportedPair : public std::logic_error {
  public:
   using std::logic_error::logic_error;
 };
 
 bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options = {});
-DistanceResult distance(const Shape& a, const Shape& b);
+DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
+DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 
 }  // namespace collide2d

@@ -11,12 +11,16 @@
 //   reference distance for separated pairs, delta + rho for overlapping ones);
 // - distance: |d - d_ref| <= 1e-12 scale;
 // - closest points: each within tol of its own shape, and the point on A within d + tol of B,
-//   tol = 1e-12 scale + 4 ulp of the coordinates (the witness: within tol of both).
+//   tol = 1e-12 scale + 4 ulp of the coordinates (the witness: within tol of both);
+// - for pairs of circles and ellipses, the boundary distance too: within tol of the reference, its
+//   points within tol of their curves.
+// For ellipse pairs the two seed methods (gradient, polynomial) are measured, not asserted.
 #pragma once
 
 #include "narrowphase/query.h"
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,7 +28,10 @@
 namespace collide2d::testing {
 
 enum class Kind { rect, circle, ellipse };
-enum class Placement { touching, inside, identical };
+// touching: B against A with gap delta; inside: B well inside A; identical: B the same region or
+// its inscribed/circumscribed twin; inner_tangent: B inside A near its boundary, gap delta (circles
+// and ellipses); concentric: B shares A's centre, with its own axes and angle (circles and ellipses).
+enum class Placement { touching, inside, identical, inner_tangent, concentric };
 
 struct Family {
   std::string name;
@@ -48,6 +55,13 @@ struct FamilyStats {
   int default_mismatches_below_target = 0;  // of which the default method (minkowski + fallback)
   int fallbacks = 0;                        // rect–ellipse minkowski filter answered `uncertain`
   double worst_distance_error = 0.0;        // |d - d_ref| / scale
+  double worst_boundary_error = 0.0;        // the same for the boundary distance (circles, ellipses)
+  std::vector<int> robust_iterations;       // ellipse pairs: support evaluations of the distance
+  // Ellipse pairs, per seed method (0 gradient, 1 polynomial), over the solid distance of separated
+  // pairs and the boundary distance of every pair; errors relative to the scale:
+  std::vector<double> method_errors[2];
+  int method_unconverged[2] = {0, 0};  // the method's own stopping rule was not met
+  int method_wrong[2] = {0, 0};        // error above 1e-6
 };
 
 // gtest prints a family by its name.

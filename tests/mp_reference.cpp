@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
 #include <stdexcept>
 #include <utility>
 
@@ -34,26 +37,15 @@ Point to_world(const Frame& f, const Point& p) {
 
 Real norm(const Real& x, const Real& y) { return sqrt(x * x + y * y); }
 
+double sqrt_of(double x) { return std::sqrt(x); }
+Real sqrt_of(const Real& x) { return sqrt(x); }
+
+template <class R>
+R signed_curve_distance(R a, R b, R x, R y);
+
 Real point_ellipse(const Ellipse& e, const Point& world) {
   const Point p = to_local(frame_of(e.center, e.angle), world);
-  const Real a(e.a), b(e.b);
-  const Real y0 = abs(p.x), y1 = abs(p.y);
-  const Real q = (y0 / a) * (y0 / a) + (y1 / b) * (y1 / b);
-  if (q <= 1) return Real(0);
-  // F(t) = (a y0 / (t + a^2))^2 + (b y1 / (t + b^2))^2 - 1 is convex and decreasing for t > -b^2,
-  // positive at t = 0 for an outside point: Newton from t = 0 climbs monotonically to the root.
-  const Real a2 = a * a, b2 = b * b;
-  Real t = 0;
-  for (int k = 0; k < 400; ++k) {
-    const Real r0 = a * y0 / (t + a2), r1 = b * y1 / (t + b2);
-    const Real f = r0 * r0 + r1 * r1 - 1;
-    const Real df = -2 * (r0 * r0 / (t + a2) + r1 * r1 / (t + b2));
-    const Real next = t - f / df;
-    if (!(next > t)) break;
-    t = next;
-  }
-  const Real x0 = a2 * y0 / (t + a2), x1 = b2 * y1 / (t + b2);
-  return norm(x0 - y0, x1 - y1);
+  return std::max(Real(0), signed_curve_distance(Real(e.a), Real(e.b), p.x, p.y));
 }
 
 std::array<Point, 4> rect_corners(const Rect& r) {
@@ -185,7 +177,175 @@ Real circle_distance(const Circle& c, const Shape& other) {
   return std::max(Real(0), distance_to(other, to_mp(c.center)) - Real(c.radius));
 }
 
+// Signed distance from (x, y) (in the ellipse frame) to the curve of the ellipse (a, b): negative
+// inside. With a >= b the nearest point is (a^2 y0 / (t + a^2), b^2 y1 / (t + b^2)) for the root t
+// of F(t) = (a y0 / (t + a^2))^2 + (b y1 / (t + b^2))^2 - 1, convex and decreasing for t > -b^2;
+// Newton from a point where F >= 0 (t = 0 outside, t = -b^2 + b y1 inside) climbs to it
+// monotonically. Inside on the major axis the nearest point leaves the axis within the evolute.
+template <class R>
+R signed_curve_distance(R a, R b, R x, R y) {
+  using std::abs;
+  using boost::multiprecision::abs;
+  if (b > a) std::swap(a, b), std::swap(x, y);
+  const R y0 = abs(x), y1 = abs(y);
+  const R q = (y0 / a) * (y0 / a) + (y1 / b) * (y1 / b);
+  if (q == 1) return R(0);
+  const R a2 = a * a, b2 = b * b;
+  R x0, x1;
+  if (q < 1 && y1 == 0) {
+    if (y0 * a < a2 - b2) {
+      x0 = a2 * y0 / (a2 - b2);
+      const R w = 1 - (x0 / a) * (x0 / a);
+      x1 = b * sqrt_of(w < 0 ? R(0) : w);
+    } else {
+      x0 = a, x1 = 0;
+    }
+  } else {
+    R t = q > 1 ? R(0) : -b2 + b * y1;
+    for (int k = 0; k < 2000; ++k) {
+      const R r0 = a * y0 / (t + a2), r1 = b * y1 / (t + b2);
+      const R f = r0 * r0 + r1 * r1 - 1;
+      const R df = -2 * (r0 * r0 / (t + a2) + r1 * r1 / (t + b2));
+      const R next = t - f / df;
+      if (!(next > t)) break;
+      t = next;
+    }
+    x0 = a2 * y0 / (t + a2), x1 = b2 * y1 / (t + b2);
+  }
+  const R d = sqrt_of((x0 - y0) * (x0 - y0) + (x1 - y1) * (x1 - y1));
+  return q > 1 ? d : -d;
+}
+
+// A's curve in B's frame: f(t) is the signed distance of A's point at parameter t to B's curve.
+template <class R>
+struct CurveOnCurve {
+  R px, py, c, s, a0, b0, a1, b1;
+
+  static CurveOnCurve of(const Ellipse& a, const Ellipse& b) {
+    using std::cos;
+    using std::sin;
+    using boost::multiprecision::cos;
+    using boost::multiprecision::sin;
+    const R ca = cos(R(a.angle)), sa = sin(R(a.angle)), cb = cos(R(b.angle)), sb = sin(R(b.angle));
+    const R dx = R(a.center.x()) - R(b.center.x()), dy = R(a.center.y()) - R(b.center.y());
+    return {cb * dx + sb * dy, -sb * dx + cb * dy, cb * ca + sb * sa, cb * sa - sb * ca,
+            R(a.a), R(a.b), R(b.a), R(b.b)};
+  }
+  R operator()(const R& t) const {
+    using std::cos;
+    using std::sin;
+    using boost::multiprecision::cos;
+    using boost::multiprecision::sin;
+    const R u = a0 * cos(t), v = b0 * sin(t);
+    return signed_curve_distance(a1, b1, px + c * u - s * v, py + s * u + c * v);
+  }
+};
+
+// Least value of g near the sample t (spacing h): golden section in double, then in 50 digits over a
+// narrow bracket around the double minimiser.
+template <class G2, class G50>
+Real refine_minimum(G2 g2, G50 g50, double t, double h) {
+  const auto golden = [](auto g, auto lo, auto hi, int steps) {
+    using T = decltype(lo);
+    const T r = (sqrt_of(T(5)) - 1) / 2;
+    T x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo);
+    T f1 = g(x1), f2 = g(x2);
+    for (int k = 0; k < steps; ++k) {
+      if (f1 <= f2) {
+        hi = x2, x2 = x1, f2 = f1, x1 = hi - r * (hi - lo), f1 = g(x1);
+      } else {
+        lo = x1, x1 = x2, f1 = f2, x2 = lo + r * (hi - lo), f2 = g(x2);
+      }
+    }
+    return f1 <= f2 ? std::pair{x1, f1} : std::pair{x2, f2};
+  };
+  const double t2 = golden(g2, t - h, t + h, 80).first;
+  const Real w(1e-6);
+  return golden(g50, Real(t2) - w, Real(t2) + w, 70).second;
+}
+
+// Indices of the `count` smallest local minima of the cyclic sequence v.
+std::vector<int> lowest_local_minima(const std::vector<double>& v, int count) {
+  std::vector<int> out;
+  const int n = static_cast<int>(v.size());
+  for (int i = 0; i < n; ++i) {
+    if (v[i] <= v[(i + n - 1) % n] && v[i] <= v[(i + 1) % n]) out.push_back(i);
+  }
+  std::sort(out.begin(), out.end(), [&v](int i, int j) { return v[i] < v[j]; });
+  if (static_cast<int>(out.size()) > count) out.resize(static_cast<std::size_t>(count));
+  return out;
+}
+
+// The extremum of f (sign +1: least, -1: largest) from its samples.
+Real extreme_of(const CurveOnCurve<double>& f2, const CurveOnCurve<Real>& f50, const std::vector<double>& samples,
+                double sign) {
+  std::vector<double> v;
+  for (const double x : samples) v.push_back(sign * x);
+  const double h = 2 * std::numbers::pi / static_cast<double>(samples.size());
+  Real best = 0;
+  bool first = true;
+  for (const int i : lowest_local_minima(v, 4)) {
+    const double t = h * i;
+    const Real m = refine_minimum([&](double x) { return sign * f2(x); },
+                                  [&](const Real& x) { return Real(sign * f50(x)); }, t, h);
+    if (first || m < best) best = m, first = false;
+  }
+  return sign * best;
+}
+
+bool centre_in(const Ellipse& e, const Vec2& p) {
+  const Point l = to_local(frame_of(e.center, e.angle), to_mp(p));
+  return (l.x / Real(e.a)) * (l.x / Real(e.a)) + (l.y / Real(e.b)) * (l.y / Real(e.b)) <= 1;
+}
+
 }  // namespace
+
+Real curve_distance(const Ellipse& e, const Point& p) {
+  const Point l = to_local(frame_of(e.center, e.angle), p);
+  return abs(signed_curve_distance(Real(e.a), Real(e.b), l.x, l.y));
+}
+
+namespace {
+
+// What A's curve says about the pair: overlap found (a point of A's curve in B, or B's centre in A),
+// and otherwise the least distance from A's curve to B's; plus the least distance between the
+// curves as seen from A's curve (0 when they cross).
+EllipsePairReference one_side(const Ellipse& a, const Ellipse& b) {
+  const auto f2 = CurveOnCurve<double>::of(a, b);
+  const auto f50 = CurveOnCurve<Real>::of(a, b);
+  constexpr int kSamples = 720;
+  std::vector<double> samples;
+  bool any_out = false, any_in = false;
+  for (int k = 0; k < kSamples; ++k) {
+    samples.push_back(f2(2 * std::numbers::pi * k / kSamples));
+    any_out = any_out || samples.back() > 0;
+    any_in = any_in || samples.back() < 0;
+  }
+  EllipsePairReference r{true, Real(0), Real(0)};
+  if (any_out && any_in) return r;  // the curves cross
+  if (any_out) {
+    const Real m = extreme_of(f2, f50, samples, 1.0);
+    if (m <= 0) return r;
+    r.boundary = m;
+    r.overlap = centre_in(a, b.center);
+    r.distance = r.overlap ? Real(0) : m;
+    return r;
+  }
+  const Real m = extreme_of(f2, f50, samples, -1.0);
+  r.boundary = m < 0 ? Real(-m) : Real(0);
+  return r;
+}
+
+}  // namespace
+
+// Both curves are scanned: a shallow dip of one curve into the other can fall between the samples
+// of one side (needle tips) and still show from the other.
+EllipsePairReference ellipse_pair(const Ellipse& a, const Ellipse& b) {
+  const EllipsePairReference ab = one_side(a, b);
+  const EllipsePairReference ba = one_side(b, a);
+  const bool overlap = ab.overlap || ba.overlap;
+  return {overlap, overlap ? Real(0) : std::min(ab.distance, ba.distance), std::min(ab.boundary, ba.boundary)};
+}
 
 Point to_mp(const Vec2& p) { return {Real(p.x()), Real(p.y())}; }
 
@@ -203,7 +363,7 @@ Real distance(const Shape& a, const Shape& b) {
   if (ra && rb) return rect_rect_distance(*ra, *rb);
   if (ra) return rect_ellipse_distance(*ra, std::get<Ellipse>(b));
   if (rb) return rect_ellipse_distance(*rb, std::get<Ellipse>(a));
-  throw std::logic_error("reference: ellipse-ellipse is not covered");
+  return ellipse_pair(std::get<Ellipse>(a), std::get<Ellipse>(b)).distance;
 }
 
 bool overlap(const Shape& a, const Shape& b) {
@@ -214,6 +374,7 @@ bool overlap(const Shape& a, const Shape& b) {
   if (ra && eb) return rect_ellipse_overlap(*ra, *eb);
   if (rb && ea) return rect_ellipse_overlap(*rb, *ea);
   if (ra && rb) return rect_rect_overlap(*ra, *rb);
+  if (ea && eb) return ellipse_pair(*ea, *eb).overlap;
   return distance(a, b) == 0;
 }
 

@@ -1,0 +1,176 @@
+#include "narrowphase/distance_ellipse_ellipse.h"
+
+#include "narrowphase/ellipse_contact.h"
+#include "narrowphase/ellipse_pair.h"
+#include "narrowphase/ellipse_seed_solvers.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using detail::EllipsePair;
+using V2 = detail::V2<double>;
+
+// The solid distance of a pair the overlap decision found separated along contact.direction.
+SolverReport separated(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact) {
+  const auto pair = EllipsePair<double>::of(a, b);
+  int iterations = contact.iterations;
+  const V2 n = detail::best_direction(pair, V2(contact.direction), iterations);
+  const auto e = pair.separation(n);
+  return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
+}
+
+// g(n) = n.delta + h_B(n) - h_A(n) with its first two derivatives in the angle of n.
+struct Containment {
+  double g;
+  double slope;
+  double curvature;
+  V2 offset_a;
+  V2 offset_b;
+};
+
+Containment containment(const EllipsePair<double>& p, double angle) {
+  const V2 n(std::cos(angle), std::sin(angle));
+  const auto sa = p.A.at(n);
+  const auto sb = p.B.at(n);
+  const double g = n.dot(p.delta) + sb.h - sa.h;
+  return {g, detail::perp(n).dot(p.delta + sb.offset - sa.offset), -g + sb.rho - sa.rho, sa.offset, sb.offset};
+}
+
+// Angles of the outward normals of e at evenly spaced parameter values.
+void normal_angles(const Ellipse& e, int count, std::vector<double>& out) {
+  for (int k = 0; k < count; ++k) {
+    const double t = 2 * std::numbers::pi * k / count;
+    out.push_back(e.angle + std::atan2(e.a * std::sin(t), e.b * std::cos(t)));
+  }
+}
+
+struct Extremes {
+  Containment min;
+  Containment max;
+};
+
+// The global extrema of g: sampled, then each bracketed sign change of g' polished.
+Extremes containment_extremes(const EllipsePair<double>& p, const Ellipse& a, const Ellipse& b, int& iterations) {
+  constexpr int kSamples = 32;
+  std::vector<double> angles;
+  for (int k = 0; k < kSamples; ++k) angles.push_back(2 * std::numbers::pi * k / kSamples);
+  normal_angles(a, kSamples, angles);
+  normal_angles(b, kSamples, angles);
+  for (double& t : angles) t = std::remainder(t, 2 * std::numbers::pi);
+  std::sort(angles.begin(), angles.end());
+  std::vector<Containment> at;
+  for (const double t : angles) at.push_back(containment(p, t));
+  iterations += static_cast<int>(at.size());
+  Extremes out{at[0], at[0]};
+  const auto consider = [&out](const Containment& c) {
+    if (c.g < out.min.g) out.min = c;
+    if (c.g > out.max.g) out.max = c;
+  };
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    consider(at[i]);
+    const std::size_t j = (i + 1) % at.size();
+    const double lo = angles[i];
+    const double width = j == 0 ? angles[0] + 2 * std::numbers::pi - lo : angles[j] - lo;
+    const double sign = at[i].slope < 0 && at[j].slope > 0 ? -1.0 : at[i].slope > 0 && at[j].slope < 0 ? 1.0 : 0.0;
+    if (sign == 0 || width <= 0) continue;
+    const auto f = [&](double t) {
+      const Containment c = containment(p, lo + t);
+      return std::pair<double, double>(sign * c.slope, sign * c.curvature);
+    };
+    consider(containment(p, lo + detail::newton_in_bracket(f, 0.0, width, iterations)));
+  }
+  return out;
+}
+
+// Level function of an ellipse: |(x_u / a, x_v / b)| - 1 for the world point x (0 on the curve).
+struct Level {
+  const Ellipse& e;
+  detail::Rotation<double> rot;
+  double operator()(const Vec2& x) const {
+    const Vec2 l = rot.apply_inverse(Vec2(x - e.center));
+    return std::hypot(l.x() / e.a, l.y() / e.b) - 1.0;
+  }
+};
+
+// The last point of [from, to] where f is <= 0, for f(from) <= 0 < f(to): bisection to the last bit.
+template <class F>
+double bisect(F f, double from, double to) {
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (from + to);
+    if (mid == from || mid == to) break;
+    (f(mid) <= 0 ? from : to) = mid;
+  }
+  return from;
+}
+
+// A point where the two curves cross, for overlapping solids neither of which contains the other.
+// Inputs: w in both solids, out_a on A's curve outside B, out_b on B's curve outside A. The segment
+// w -> out_b lies in B and leaves A: where it does is a point of A's curve inside B. Between that
+// point and out_a, B's level along A's curve changes sign; bisection on the parameter finds a
+// crossing, exactly on A's curve and on B's to rounding.
+Vec2 crossing_point(const Ellipse& a, const Ellipse& b, const Vec2& w, const Vec2& out_a, const Vec2& out_b) {
+  const Level level_a{a, detail::Rotation<double>::of(a.angle)};
+  const Level level_b{b, detail::Rotation<double>::of(b.angle)};
+  const double s = bisect([&](double t) { return level_a(w + t * (out_b - w)); }, 0.0, 1.0);
+  const auto param = [&](const Vec2& x) {
+    const Vec2 l = level_a.rot.apply_inverse(Vec2(x - a.center));
+    return std::atan2(l.y() / a.b, l.x() / a.a);
+  };
+  const auto on_a = [&](double t) -> Vec2 {
+    return a.center + level_a.rot.apply(Vec2(a.a * std::cos(t), a.b * std::sin(t)));
+  };
+  const double t_in = param(w + s * (out_b - w));
+  double t_out = param(out_a);
+  if (t_out < t_in) t_out += 2 * std::numbers::pi;
+  return on_a(bisect([&](double t) { return level_b(on_a(t)); }, t_in, t_out));
+}
+
+SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
+  const detail::EllipseContact contact = detail::ellipse_contact(a, b);
+  if (!contact.overlap) return separated(a, b, contact);
+  const auto pair = EllipsePair<double>::of(a, b);
+  int iterations = contact.iterations;
+  const Extremes ex = containment_extremes(pair, a, b, iterations);
+  const double margin = pair.margin();
+  const bool a_in_b = ex.min.g >= -margin;
+  if (!a_in_b && ex.max.g > margin) {
+    const Vec2 x = crossing_point(a, b, contact.witness, a.center + ex.min.offset_a, b.center + ex.max.offset_b);
+    return {DistanceResult::touching(x), iterations, true};
+  }
+  const Containment& c = a_in_b ? ex.min : ex.max;
+  const Vec2 pa = a.center + c.offset_a;
+  const Vec2 pb = b.center + c.offset_b;
+  const double gap = (pair.delta + c.offset_b - c.offset_a).norm();
+  const DistanceResult r = gap > 0 ? DistanceResult::apart(gap, pa, pb) : DistanceResult::touching(pa);
+  return {r, iterations, true};
+}
+
+}  // namespace
+
+SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
+  const detail::EllipseContact contact = detail::ellipse_contact(a, b);
+  if (contact.overlap) return {DistanceResult::touching(contact.witness), contact.iterations, true};
+  switch (method) {
+    case EllipseDistanceMethod::gradient: return detail::gradient_descent_curves(a, b);
+    case EllipseDistanceMethod::polynomial: return detail::polynomial_curves(a, b);
+    case EllipseDistanceMethod::robust: break;
+  }
+  return separated(a, b, contact);
+}
+
+SolverReport boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
+  switch (method) {
+    case EllipseDistanceMethod::gradient: return detail::gradient_descent_curves(a, b);
+    case EllipseDistanceMethod::polynomial: return detail::polynomial_curves(a, b);
+    case EllipseDistanceMethod::robust: break;
+  }
+  return robust_boundary(a, b);
+}
+
+}  // namespace collide2d

@@ -1,0 +1,312 @@
+// Private: two solid ellipses seen through their exact support functions, generic over the scalar so
+// that the overlap test can repeat itself in long double when double cannot decide.
+//
+// For an ellipse centred at the origin and a unit direction n, the support function is
+// h(n) = |(a n_u, b n_v)| (n_u, n_v the components of n on the ellipse axes), the support point is
+// (a^2 n_u, b^2 n_v) / h on the axes, and the radius of curvature there is (a b)^2 / h^3. These are
+// evaluated from the axis components, never from the matrix R diag(a^2, b^2) R^T, whose entries
+// cancel for needles.
+//
+// With delta = c_B - c_A, the separation of the pair along n (A towards B) is
+//   s(n) = n.delta - h_A(n) - h_B(n),
+// positive exactly when the lines normal to n through the two support points separate the shapes.
+// The distance of disjoint convex shapes is the largest s over all n (duality), and the shapes
+// overlap when no n gives s > 0.
+#pragma once
+
+#include "narrowphase/overlap_rect_ellipse.h"  // FilterVerdict
+#include "shapes/rotation.h"
+#include "shapes/shapes.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+namespace collide2d::detail {
+
+template <class Real>
+using V2 = Eigen::Matrix<Real, 2, 1>;
+
+template <class Real>
+V2<Real> perp(const V2<Real>& v) {
+  return {-v[1], v[0]};
+}
+
+template <class Real>
+Real cross(const V2<Real>& p, const V2<Real>& q) {
+  return p[0] * q[1] - p[1] * q[0];
+}
+
+template <class Real>
+struct Support {
+  V2<Real> offset;  // support point minus centre
+  Real h = 0;       // support function value
+  Real rho = 0;     // radius of curvature of the boundary at the support point
+};
+
+template <class Real>
+struct EllipseSupport {
+  Rotation<Real> rot;
+  Real a = 1;
+  Real b = 1;
+
+  static EllipseSupport of(const Ellipse& e) {
+    return {Rotation<Real>::of(e.angle), static_cast<Real>(e.a), static_cast<Real>(e.b)};
+  }
+
+  // n must be a unit vector.
+  Support<Real> at(const V2<Real>& n) const {
+    using std::hypot;
+    const V2<Real> l = rot.apply_inverse(n);
+    const Real u = a * l[0];
+    const Real v = b * l[1];
+    const Real h = hypot(u, v);
+    const Real k = a * b / h;  // at most max(a, b): (ab)^2 / h^3 without overflow
+    return {rot.apply(V2<Real>(a * u / h, b * v / h)), h, k * k / h};
+  }
+};
+
+template <class Real>
+struct Separation {
+  Real s = 0;       // s(n)
+  Real slope = 0;   // ds/dphi for n turning counter-clockwise
+  Real bend = 0;    // -d2s/dphi2 = s + rho_A + rho_B, positive wherever s > 0 (s is concave there)
+  V2<Real> gap;     // support point of B in -n minus support point of A in n
+  V2<Real> offset_a;
+  V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
+};
+
+template <class Real>
+struct EllipsePair {
+  EllipseSupport<Real> A;
+  EllipseSupport<Real> B;
+  V2<Real> delta;  // c_B - c_A
+  Real scale = 0;  // |delta| + the two largest semi-axes: rounding errors are a few u * scale
+
+  static EllipsePair of(const Ellipse& a, const Ellipse& b) {
+    const V2<Real> d(static_cast<Real>(b.center.x()) - static_cast<Real>(a.center.x()),
+                     static_cast<Real>(b.center.y()) - static_cast<Real>(a.center.y()));
+    const Real size = static_cast<Real>(std::max(a.a, a.b) + std::max(b.a, b.b));
+    return {EllipseSupport<Real>::of(a), EllipseSupport<Real>::of(b), d, d.norm() + size};
+  }
+
+  // The tolerance below which a sign computed here is not trusted.
+  Real margin() const { return 64 * std::numeric_limits<Real>::epsilon() * scale; }
+
+  Separation<Real> separation(const V2<Real>& n) const {
+    const Support<Real> sa = A.at(n);
+    const Support<Real> sb = B.at(n);
+    const V2<Real> gap = delta - sa.offset - sb.offset;
+    const Real s = n.dot(gap);
+    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset};
+  }
+};
+
+// Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}): Newton steps from
+// the latest point, bisection whenever a step would leave the bracket. Stops when the bracket or the
+// step reaches the last bits of the parameter. `iterations` counts evaluations.
+template <class Real, class F>
+Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
+  Real t = lo;
+  auto cur = f(t);
+  for (int k = 0; k < 200; ++k) {
+    Real next = t - cur.first / cur.second;
+    if (!(cur.second < 0 && next > lo && next < hi)) next = (lo + hi) / 2;
+    if (next == lo || next == hi) break;
+    const auto ev = f(next);
+    ++iterations;
+    const Real step = next - t;
+    t = next;
+    cur = ev;
+    if (ev.first > 0) {
+      lo = next;
+    } else if (ev.first < 0) {
+      hi = next;
+    } else {
+      break;
+    }
+    if (std::abs(step) <= 4 * std::numeric_limits<Real>::epsilon() * std::max(Real(1), std::abs(t))) break;
+  }
+  return t;
+}
+
+// Unit vector at angle t from n0 (counter-clockwise).
+template <class Real>
+V2<Real> turned(const V2<Real>& n0, Real t) {
+  using std::cos;
+  using std::sin;
+  return cos(t) * n0 + sin(t) * perp(n0);
+}
+
+// The direction maximising s near n0. On the arc of separating directions, and wherever
+// s > -(rho_A + rho_B), s is concave in the angle (s'' = -(s + rho_A + rho_B)); the arc is shorter
+// than pi. Turning from n0 towards increasing s, the maximiser is the first sign change of s', and
+// every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s' with that
+// bracket. From a separating n0 this is the global maximum, the distance.
+template <class Real>
+V2<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, int& iterations) {
+  const Separation<Real> first = p.separation(n0);
+  if (first.slope == 0) return n0;
+  const Real floor = first.s - p.margin();
+  const Real turn = first.slope > 0 ? Real(1) : Real(-1);
+  const auto f = [&](Real t) {
+    const Separation<Real> e = p.separation(turned(n0, turn * t));
+    if (e.s < floor) return std::pair<Real, Real>(-1, 0);  // beyond the maximum: bisect
+    return std::pair<Real, Real>(turn * e.slope, -e.bend);
+  };
+  const Real t = newton_in_bracket(f, Real(0), Real(3.14159265358979323846L), iterations);
+  return turned(n0, turn * t);
+}
+
+template <class Real>
+struct GjkVertex {
+  V2<Real> w;  // point of the difference body D = B - A (relative to c_A: b - a)
+  V2<Real> a;  // the point of A it came from, relative to c_A
+};
+
+template <class Real>
+struct GjkOutcome {
+  FilterVerdict verdict = FilterVerdict::uncertain;
+  V2<Real> direction = V2<Real>::UnitX();  // separating when separated, else the most separating seen
+  V2<Real> witness = V2<Real>::Zero();     // relative to c_A, within residual / 2 of both shapes
+  Real residual = std::numeric_limits<Real>::infinity();
+  int iterations = 0;
+};
+
+// The simplex of the GJK iteration: up to three vertices and the barycentric weights of the point
+// of their hull nearest the origin.
+template <class Real>
+struct GjkSimplex {
+  GjkVertex<Real> v[3];
+  Real weight[3] = {1, 0, 0};
+  int count = 0;
+
+  // The unit direction from the origin to the hull's nearest point, and the distance to it. On a
+  // segment the direction is the segment's normal, exact to rounding even when the origin is
+  // within rounding of the segment's line (the nearest point itself would cancel, and for thin
+  // bodies the support point moves by (radius of curvature) x (direction error)).
+  std::pair<V2<Real>, Real> towards_nearest() const {
+    if (count == 1) {
+      const Real length = v[0].w.norm();
+      return {v[0].w / length, length};
+    }
+    V2<Real> n = perp<Real>(v[1].w - v[0].w).normalized();
+    if (n.dot(v[0].w) < 0) n = -n;
+    return {n, n.dot(v[0].w)};
+  }
+  // The weighted points of A and B (weights normalised: rounding in thin triangles can leave their
+  // sum off 1) give a point of A and a point of B; their midpoint is within half their distance,
+  // the residual, of both shapes.
+  std::pair<V2<Real>, Real> witness() const {
+    Real total = 0;
+    for (int i = 0; i < count; ++i) total += weight[i];
+    V2<Real> a = V2<Real>::Zero();
+    V2<Real> w = V2<Real>::Zero();
+    for (int i = 0; i < count; ++i) {
+      a += (weight[i] / total) * v[i].a;
+      w += (weight[i] / total) * v[i].w;
+    }
+    return {a + w / 2, w.norm()};
+  }
+
+  // Nearest point of segment (i, j) to the origin as a simplex of one or two vertices.
+  GjkSimplex segment(int i, int j) const {
+    const V2<Real> d = v[j].w - v[i].w;
+    const Real dd = d.squaredNorm();
+    const Real t = dd > 0 ? -v[i].w.dot(d) / dd : Real(0);
+    if (t <= 0) return {{v[i]}, {1, 0, 0}, 1};
+    if (t >= 1) return {{v[j]}, {1, 0, 0}, 1};
+    return {{v[i], v[j]}, {1 - t, t, 0}, 2};
+  }
+
+  // Reduces to the face nearest the origin; true when the origin lies in the triangle, and then
+  // `depth` is its distance to the nearest edge.
+  bool reduce(Real& depth) {
+    if (count == 2) *this = segment(0, 1);
+    if (count != 3) return false;
+    const Real area = cross<Real>(v[1].w - v[0].w, v[2].w - v[0].w);
+    if (area != 0) {
+      const Real l0 = cross(v[1].w, v[2].w) / area;
+      const Real l1 = cross(v[2].w, v[0].w) / area;
+      const Real l2 = cross(v[0].w, v[1].w) / area;
+      if (l0 >= 0 && l1 >= 0 && l2 >= 0) {
+        weight[0] = l0, weight[1] = l1, weight[2] = l2;
+        depth = std::abs(area) * std::min({l0 / (v[2].w - v[1].w).norm(), l1 / (v[0].w - v[2].w).norm(),
+                                          l2 / (v[1].w - v[0].w).norm()});
+        return true;
+      }
+    }
+    GjkSimplex best = segment(0, 1);
+    for (const auto& [i, j] : {std::pair{1, 2}, std::pair{2, 0}}) {
+      const GjkSimplex s = segment(i, j);
+      if (s.towards_nearest().second < best.towards_nearest().second) best = s;
+    }
+    *this = best;
+    return false;
+  }
+};
+
+// GJK on the difference body D = B - A with the exact support functions: stops as soon as a
+// direction separates by more than the rounding margin, or a triangle of D holds the origin deeper
+// than it. Otherwise (D's nearest point within the margin of the origin, or no progress: for thin
+// bodies a direction error of u turns into a support error of u times the radius of curvature)
+// the answer is `uncertain` with the most separating direction seen.
+template <class Real>
+GjkOutcome<Real> gjk(const EllipsePair<Real>& p, int max_iterations = 48) {
+  const Real margin = p.margin();
+  GjkSimplex<Real> simplex;
+  Real length = p.delta.norm();  // distance from the origin to the current point of D
+  if (length == 0) return {FilterVerdict::overlap, V2<Real>::UnitX(), V2<Real>::Zero(), 0, 0};
+  V2<Real> n = p.delta / length;
+  V2<Real> best = n;
+  Real best_s = -std::numeric_limits<Real>::infinity();
+  const auto outcome = [&](FilterVerdict verdict, const V2<Real>& direction, int it) {
+    GjkOutcome<Real> out{verdict, direction, V2<Real>::Zero(), std::numeric_limits<Real>::infinity(), it};
+    if (simplex.count > 0) std::tie(out.witness, out.residual) = simplex.witness();
+    return out;
+  };
+  for (int it = 1; it <= max_iterations; ++it) {
+    const Separation<Real> e = p.separation(n);
+    if (e.s > margin) return outcome(FilterVerdict::separated, n, it);
+    if (e.s > best_s) best_s = e.s, best = n;
+    // D is within `length` of the origin and no closer than s: both inside the margin is touching.
+    if (length - e.s <= margin) return outcome(FilterVerdict::uncertain, best, it);
+    simplex.v[simplex.count++] = {e.gap, e.offset_a};
+    Real depth = 0;
+    if (simplex.reduce(depth)) {
+      return outcome(depth > margin ? FilterVerdict::overlap : FilterVerdict::uncertain, best, it);
+    }
+    const Real previous = simplex.count > 1 ? length : std::numeric_limits<Real>::infinity();
+    std::tie(n, length) = simplex.towards_nearest();
+    if (length <= margin || !(length < previous)) return outcome(FilterVerdict::uncertain, best, it);
+  }
+  return outcome(FilterVerdict::uncertain, best, max_iterations);
+}
+
+// GJK, and when it cannot decide, Newton on s from its most separating direction: near contact
+// that settles separated pairs (s > margin at the maximum). For pairs that touch or overlap, the
+// support points at the maximum are a second candidate witness pair (|s| apart); the witness is the
+// midpoint of whichever pair is closer, so it lies within half that distance of both shapes.
+template <class Real>
+GjkOutcome<Real> decide(const EllipsePair<Real>& p) {
+  GjkOutcome<Real> g = gjk(p);
+  if (g.verdict == FilterVerdict::separated || g.residual <= p.margin()) return g;
+  const V2<Real> n = best_direction(p, g.direction, g.iterations);
+  const Separation<Real> e = p.separation(n);
+  if (g.verdict == FilterVerdict::uncertain && e.s > p.margin()) {
+    g.verdict = FilterVerdict::separated;
+    g.direction = n;
+    return g;
+  }
+  if (e.gap.norm() < g.residual) {
+    g.witness = (e.offset_a + p.delta - e.offset_b) / 2;
+    g.residual = e.gap.norm();
+  }
+  return g;
+}
+
+}  // namespace collide2d::detail

@@ -1,0 +1,72 @@
+#include "narrowphase/overlap_ellipse_ellipse.h"
+
+#include "narrowphase/ellipse_contact.h"
+#include "narrowphase/ellipse_pair.h"
+
+#include <limits>
+
+namespace collide2d {
+namespace detail {
+namespace {
+
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+
+// Whether the point p (relative to the centre of e) is inside e by more than the rounding of the
+// quadratic: its axis components carry 3 u |p| of error each, scaled by 1/a and 1/b.
+bool clearly_inside(const Ellipse& e, const Vec2& p) {
+  const Vec2 l = Rotation<double>::of(e.angle).apply_inverse(p);
+  const double u = l.x() / e.a;
+  const double v = l.y() / e.b;
+  return u * u + v * v < 1.0 - 16 * kU * (1.0 + p.norm() * (1.0 / e.a + 1.0 / e.b));
+}
+
+template <class Real>
+Vec2 to_double(const V2<Real>& v) {
+  return {static_cast<double>(v[0]), static_cast<double>(v[1])};
+}
+
+template <class Real>
+EllipseContact from_gjk(const GjkOutcome<Real>& g, const Ellipse& a, int iterations) {
+  return {g.verdict != FilterVerdict::separated, to_double(g.direction), a.center + to_double(g.witness),
+          iterations};
+}
+
+}  // namespace
+
+EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, FilterVerdict* double_verdict) {
+  const Vec2 delta = b.center - a.center;
+  const double reach = std::max(a.a, a.b) + std::max(b.a, b.b);
+  const double length = delta.norm();
+  FilterVerdict verdict = FilterVerdict::uncertain;
+  EllipseContact out;
+  if (length - reach > 8 * kU * (length + reach)) {
+    verdict = FilterVerdict::separated;
+    out = {false, delta / length, Vec2::Zero(), 0};
+  } else if (clearly_inside(a, delta)) {
+    verdict = FilterVerdict::overlap;
+    out = {true, Vec2::UnitX(), b.center, 0};
+  } else if (clearly_inside(b, Vec2(-delta))) {
+    verdict = FilterVerdict::overlap;
+    out = {true, Vec2::UnitX(), a.center, 0};
+  } else {
+    const auto g = decide(EllipsePair<double>::of(a, b));
+    verdict = g.verdict;
+    out = from_gjk(g, a, g.iterations);
+  }
+  if (double_verdict) *double_verdict = verdict;
+  if (verdict != FilterVerdict::uncertain || double_verdict) return out;
+  const auto g = decide(EllipsePair<long double>::of(a, b));
+  return from_gjk(g, a, out.iterations + g.iterations);
+}
+
+}  // namespace detail
+
+bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) { return detail::ellipse_contact(a, b).overlap; }
+
+FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
+  FilterVerdict verdict = FilterVerdict::uncertain;
+  detail::ellipse_contact(a, b, &verdict);
+  return verdict;
+}
+
+}  // namespace collide2d
