@@ -1,8 +1,10 @@
 // Narrow-phase kernels on fixed, seeded workloads (pre-generated, cycled so that no input stays in a
 // register).
+#include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
 #include "narrowphase/overlap_circle_ellipse.h"
+#include "narrowphase/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/overlap_rect_rect.h"
 #include "narrowphase/query.h"
@@ -72,6 +74,19 @@ bool all_features(const Rect& r, const Ellipse& e) { return overlap_rect_ellipse
 // The user-facing dispatch: validation and std::visit on top of the kernel.
 bool dispatch(const Rect& r, const Ellipse& e) { return overlaps(Shape(r), Shape(e)); }
 
+// Ellipse pairs: one function per solver so that the method is fixed at compile time.
+template <EllipseDistanceMethod M>
+DistanceResult ellipse_distance(const Ellipse& a, const Ellipse& b) {
+  return distance_ellipse_ellipse(a, b, M).result;
+}
+template <EllipseDistanceMethod M>
+DistanceResult ellipse_boundary(const Ellipse& a, const Ellipse& b) {
+  return boundary_distance_ellipse_ellipse(a, b, M).result;
+}
+constexpr auto kRobust = EllipseDistanceMethod::robust;
+constexpr auto kGradient = EllipseDistanceMethod::gradient;
+constexpr auto kPolynomial = EllipseDistanceMethod::polynomial;
+
 BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski);
 BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features);
 BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features);
@@ -81,6 +96,13 @@ BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect);
 BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse);
 BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse);
 BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch);
+BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>);
 
 }  // namespace
 }  // namespace collide2d

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdio>
 #include <istream>
+#include <utility>
 #include <ostream>
 #include <vector>
 
@@ -86,24 +87,36 @@ std::optional<QueryLine> parse_query_line(std::string_view line) {
   return QueryLine{parse_shape(body.substr(0, sep), "A"), parse_shape(body.substr(sep + 1), "B")};
 }
 
-RectEllipseMethod parse_method(std::string_view name) {
-  if (name == "minkowski") return RectEllipseMethod::minkowski;
-  if (name == "closest-features") return RectEllipseMethod::closest_features;
-  if (name == "all-features") return RectEllipseMethod::all_features;
+void apply_method(std::string_view name, QueryOptions& options) {
+  constexpr std::pair<std::string_view, RectEllipseMethod> overlap_methods[] = {
+      {"minkowski", RectEllipseMethod::minkowski},
+      {"closest-features", RectEllipseMethod::closest_features},
+      {"all-features", RectEllipseMethod::all_features}};
+  constexpr std::pair<std::string_view, EllipseDistanceMethod> distance_methods[] = {
+      {"robust", EllipseDistanceMethod::robust},
+      {"gradient", EllipseDistanceMethod::gradient},
+      {"polynomial", EllipseDistanceMethod::polynomial}};
+  for (const auto& [word, method] : overlap_methods) {
+    if (name == word) return void(options.overlap.rect_ellipse = method);
+  }
+  for (const auto& [word, method] : distance_methods) {
+    if (name == word) return void(options.distance.ellipse = method);
+  }
   throw ParseError("unknown method '" + std::string(name) +
-                   "' (expected minkowski, closest-features or all-features)");
+                   "' (expected minkowski, closest-features, all-features, robust, gradient or polynomial)");
 }
 
-std::string answer(const QueryLine& q, const OverlapOptions& options) {
-  const bool hit = overlaps(q.a, q.b, options);
-  const DistanceResult d = distance(q.a, q.b);
+std::string answer(const QueryLine& q, const QueryOptions& options) {
+  const bool hit = overlaps(q.a, q.b, options.overlap);
+  const DistanceResult d = options.boundary ? boundary_distance(q.a, q.b, options.distance)
+                                            : distance(q.a, q.b, options.distance);
   char buf[160];
   const int n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance,
                               d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
   return std::string(buf, static_cast<std::size_t>(n));
 }
 
-int run_query(std::istream& in, std::ostream& out, std::ostream& err, const OverlapOptions& options) {
+int run_query(std::istream& in, std::ostream& out, std::ostream& err, const QueryOptions& options) {
   int status = 0;
   std::string line;
   for (long number = 1; std::getline(in, line); ++number) {

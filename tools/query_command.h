@@ -5,7 +5,8 @@
 // Blank lines and lines starting with '#' are skipped (they produce no output).
 // Output: one line per query, `overlap distance ax ay bx by` (overlap 1/0 for the solids; distance 0
 // when they overlap; a and b the closest points, a common point when overlapping), numbers in %.17g
-// so they round-trip. A malformed or invalid line prints `error: <reason>` in its place and
+// so they round-trip. With `boundary`, distance and points are those of the boundary curves
+// (circles and ellipses only; a rectangle gives an error line). A malformed or invalid line prints `error: <reason>` in its place and
 // `line N: <reason>` on the error stream; processing goes on.
 #pragma once
 
@@ -33,14 +34,22 @@ struct QueryLine {
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.
 std::optional<QueryLine> parse_query_line(std::string_view line);
 
-// The rect–ellipse overlap method named on the command line; throws ParseError for other names.
-RectEllipseMethod parse_method(std::string_view name);
+struct QueryOptions {
+  OverlapOptions overlap;
+  DistanceOptions distance;
+  bool boundary = false;
+};
+
+// Applies a method named on the command line: a rect–ellipse overlap test (minkowski,
+// closest-features, all-features) or an ellipse distance solver (robust, gradient, polynomial).
+// Throws ParseError for other names.
+void apply_method(std::string_view name, QueryOptions& options);
 
 // The output line for one query (without newline). Throws UnsupportedPair.
-std::string answer(const QueryLine& q, const OverlapOptions& options);
+std::string answer(const QueryLine& q, const QueryOptions& options);
 
 // Streams queries from `in` to `out`, reporting bad lines on `err`. Returns the exit status: 0 when
 // every line was answered, 2 when any line was in error.
-int run_query(std::istream& in, std::ostream& out, std::ostream& err, const OverlapOptions& options);
+int run_query(std::istream& in, std::ostream& out, std::ostream& err, const QueryOptions& options);
 
 }  // namespace collide2d::tool
