@@ -175,6 +175,7 @@ struct GjkOutcome {
   V2<Real> witness = V2<Real>::Zero();     // relative to c_A, within residual / 2 of both shapes
   Real residual = std::numeric_limits<Real>::infinity();
   int iterations = 0;
+  Real separation = 0;  // uncertain: s at the most separating direction found (a sign within rounding)
 };
 
 // The simplex of the GJK iteration: up to three vertices and the barycentric weights of the point
@@ -294,9 +295,11 @@ GjkOutcome<Real> gjk(const EllipsePair<Real>& p, int max_iterations = 48) {
 template <class Real>
 GjkOutcome<Real> decide(const EllipsePair<Real>& p) {
   GjkOutcome<Real> g = gjk(p);
-  if (g.verdict == FilterVerdict::separated || g.residual <= p.margin()) return g;
+  if (g.verdict == FilterVerdict::separated) return g;
+  if (g.verdict == FilterVerdict::overlap && g.residual <= p.margin()) return g;
   const V2<Real> n = best_direction(p, g.direction, g.iterations);
   const Separation<Real> e = p.separation(n);
+  g.separation = e.s;
   if (g.verdict == FilterVerdict::uncertain && e.s > p.margin()) {
     g.verdict = FilterVerdict::separated;
     g.direction = n;

@@ -56,7 +56,10 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, FilterVerdict
   if (double_verdict) *double_verdict = verdict;
   if (verdict != FilterVerdict::uncertain || double_verdict) return out;
   const auto g = decide(EllipsePair<long double>::of(a, b));
-  return from_gjk(g, a, out.iterations + g.iterations);
+  EllipseContact last = from_gjk(g, a, out.iterations + g.iterations);
+  // Within long double rounding of touching: the sign of s at the maximum is the best evidence.
+  if (g.verdict == FilterVerdict::uncertain) last.overlap = !(g.separation > 0);
+  return last;
 }
 
 }  // namespace detail

@@ -16,8 +16,9 @@
 //
 // Filter and fallback. The double pass answers `uncertain` only when the pair is within
 // 64 u (|c_B - c_A| + a_max + b_max) of touching; the same iteration then runs in long double
-// (64-bit significand on x86-64), and a pair still within its bound is reported as touching, which
-// counts as overlap.
+// (64-bit significand on x86-64); a pair still within its bound (about 1e-17 of the scale) is
+// decided by the sign of s at the best direction found in long double, and s = 0 counts as
+// touching, so as overlap.
 #pragma once
 
 #include "narrowphase/overlap_rect_ellipse.h"  // FilterVerdict

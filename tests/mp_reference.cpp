@@ -316,8 +316,12 @@ EllipsePairReference one_side(const Ellipse& a, const Ellipse& b) {
   constexpr int kSamples = 720;
   std::vector<double> samples;
   bool any_out = false, any_in = false;
+  const double size = std::max({a.a, a.b, b.a, b.b});
   for (int k = 0; k < kSamples; ++k) {
-    samples.push_back(f2(2 * std::numbers::pi * k / kSamples));
+    const double t = 2 * std::numbers::pi * k / kSamples;
+    samples.push_back(f2(t));
+    // Near zero the sign of the double sample is rounding: take it from 50 digits.
+    if (std::abs(samples.back()) < 1e-9 * size) samples.back() = static_cast<double>(f50(Real(t)));
     any_out = any_out || samples.back() > 0;
     any_in = any_in || samples.back() < 0;
   }
