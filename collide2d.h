@@ -2,5 +2,8 @@
 // Include this one header; link collide2d::collide2d.
 #pragma once
 
+#include "broadphase/broad_phase.h"
+#include "engine/world.h"
 #include "narrowphase/query.h"
+#include "narrowphase/ray_cast.h"
 #include "shapes/shapes.h"

@@ -1,0 +1,118 @@
+// The World: bodies that move every frame, the broad phase that finds candidate pairs, and the
+// narrow phase that confirms them.
+//
+//   World world({.fat_margin = 0.1, .proximity_margin = 0.5});
+//   BodyId id = world.add(Ellipse{Vec2(1, 2), 1.5, 0.4, 0.3}, /*user_id=*/7);
+//   world.set_pose(id, Vec2(1.1, 2.0), 0.35);          // or move_by(id, shift, turn)
+//   world.update();                                   // once per frame
+//   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
+//   for (const Proximity& p : world.proximity()) ...   // apart but within the margin, with points
+//
+// What is computed is what was asked: each candidate pair from the broad phase gets the overlap
+// test only; a distance is computed only when a proximity margin is set, and only for candidate
+// pairs that do not overlap. With a proximity margin m, the broad-phase boxes are the shapes'
+// boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
+//
+// Queries (each validates its input and returns body ids in increasing order): the bodies that
+// overlap a shape or a box, the bodies within a distance of a point or of a shape, and the first
+// body a ray hits (exact on circles and ellipses: the ray meets the curve, not a polygon). Queries
+// test every body's box and then the exact shape: O(n) per query.
+//
+// Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
+// std::invalid_argument, an unknown body std::out_of_range; the World is left exactly as it was.
+#pragma once
+
+#include "broadphase/broad_phase.h"
+#include "narrowphase/query.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace collide2d {
+
+using BodyId = ProxyId;
+using BodyPair = ProxyPair;  // a < b
+
+struct WorldOptions {
+  double fat_margin = 0.0;        // broad-phase boxes grow by this, so small motions cost nothing
+  double proximity_margin = 0.0;  // > 0: report non-overlapping pairs closer than this
+};
+
+struct Proximity {
+  BodyId a = 0;
+  BodyId b = 0;
+  DistanceResult result;  // the distance and closest points, point_a on body a
+};
+
+struct RayHit {
+  BodyId body = 0;
+  double distance = 0.0;       // from the ray's origin to the hit point
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::Zero();  // outward unit normal of the body at the point (zero when the ray starts inside)
+};
+
+// What the last update did.
+struct FrameStats {
+  std::size_t candidates = 0;   // pairs from the broad phase
+  std::size_t overlapping = 0;  // confirmed by the narrow phase
+  std::size_t proximity = 0;
+  double broad_seconds = 0.0;
+  double narrow_seconds = 0.0;
+};
+
+class World {
+ public:
+  explicit World(const WorldOptions& options = {});
+
+  BodyId add(const Shape& shape, std::uint64_t user_id = 0);
+  void set_pose(BodyId id, const Vec2& center, double angle);
+  void move_by(BodyId id, const Vec2& shift, double turn = 0.0);
+  void remove(BodyId id);
+  void set_proximity_margin(double margin);
+  void update();
+
+  bool contains(BodyId id) const { return broad_.contains(id); }
+  std::size_t size() const { return broad_.size(); }
+  const Shape& shape(BodyId id) const;
+  std::uint64_t user_id(BodyId id) const;
+  std::vector<BodyId> bodies() const;
+
+  // Results of the last update.
+  const std::vector<BodyPair>& overlapping() const { return overlapping_; }
+  const std::vector<BodyPair>& began() const { return began_; }
+  const std::vector<BodyPair>& ended() const { return ended_; }
+  const std::vector<Proximity>& proximity() const { return proximity_; }
+  const FrameStats& last_frame() const { return stats_; }
+
+  // Queries on the current poses (no update needed).
+  std::vector<BodyId> overlapping(const Shape& shape) const;
+  std::vector<BodyId> overlapping(const Aabb& box) const;
+  std::vector<BodyId> within(const Vec2& point, double distance) const;
+  std::vector<BodyId> within(const Shape& shape, double distance) const;
+  // The first body hit by the ray from `origin` along `direction` (any non-zero length) within
+  // `max_distance` of the origin; a body containing the origin is hit at distance 0.
+  std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const;
+
+ private:
+  struct Body {
+    Shape shape;
+    std::uint64_t user_id = 0;
+  };
+  std::vector<Body> bodies_;  // indexed by BodyId; live exactly when the broad phase has the id
+  SweepAndPrune broad_;
+  double proximity_margin_;
+  std::vector<BodyPair> overlapping_;
+  std::vector<BodyPair> began_;
+  std::vector<BodyPair> ended_;
+  std::vector<Proximity> proximity_;
+  FrameStats stats_;
+
+  Body& body(BodyId id);
+  const Body& body(BodyId id) const;
+  Aabb broad_box(const Shape& shape) const;
+  template <class Test>
+  std::vector<BodyId> select(const Aabb& box, Test test) const;
+};
+
+}  // namespace collide2d

@@ -1,0 +1,192 @@
+// The World against an all-pairs narrow phase over many frames, its queries against brute force,
+// and its refusal of bad input.
+#include "engine/world.h"
+#include "mp_reference.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace collide2d {
+namespace {
+
+using Rng = std::mt19937_64;
+
+double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+
+Shape random_shape(Rng& rng, double spread) {
+  const Vec2 c(uniform(rng, 0, spread), uniform(rng, 0, spread));
+  const double size = uniform(rng, 0.1, 1.0);
+  switch (static_cast<int>(uniform(rng, 0, 3))) {
+    case 0: return Circle{c, size};
+    case 1: return Ellipse{c, size, size * uniform(rng, 0.05, 1.0), uniform(rng, 0, 6.3)};
+    default: return Rect{c, Vec2(size, size * uniform(rng, 0.1, 1.0)), uniform(rng, 0, 6.3)};
+  }
+}
+
+Vec2 center_of(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
+
+// Every pair tested directly: overlaps, and the distance of the others against the margin.
+void expect_matches_all_pairs(const World& world, double margin, const std::string& what) {
+  const std::vector<BodyId> ids = world.bodies();
+  std::vector<BodyPair> overlapping;
+  std::vector<BodyPair> near;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      const Shape& a = world.shape(ids[i]);
+      const Shape& b = world.shape(ids[j]);
+      if (overlaps(a, b)) {
+        overlapping.push_back({ids[i], ids[j]});
+      } else if (margin > 0 && distance(a, b).distance <= margin) {
+        near.push_back({ids[i], ids[j]});
+      }
+    }
+  }
+  ASSERT_EQ(world.overlapping(), overlapping) << what;
+  std::vector<BodyPair> reported;
+  for (const Proximity& p : world.proximity()) {
+    reported.push_back({p.a, p.b});
+    ASSERT_EQ(p.result.distance, distance(world.shape(p.a), world.shape(p.b)).distance);
+  }
+  ASSERT_EQ(reported, near) << what;
+}
+
+TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
+  for (const double margin : {0.0, 0.3}) {
+    Rng rng(7);
+    World world({.fat_margin = 0.05, .proximity_margin = margin});
+    std::vector<Vec2> velocity(400);
+    for (int k = 0; k < 250; ++k) world.add(random_shape(rng, 15.0), static_cast<std::uint64_t>(k));
+    std::vector<BodyPair> previous;
+    for (int frame = 0; frame < 40; ++frame) {
+      for (const BodyId id : world.bodies()) {
+        if (id >= velocity.size()) velocity.resize(id + 1);
+        if (frame == 0) velocity[id] = Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+        world.move_by(id, velocity[id], 0.02);
+      }
+      if (frame % 10 == 5) {  // churn
+        const auto ids = world.bodies();
+        for (std::size_t k = 0; k < ids.size(); k += 17) world.remove(ids[k]);
+        for (int k = 0; k < 10; ++k) world.add(random_shape(rng, 15.0));
+      }
+      world.update();
+      expect_matches_all_pairs(world, margin, "frame " + std::to_string(frame));
+      if (HasFatalFailure()) return;
+      std::vector<BodyPair> began, ended;
+      std::set_difference(world.overlapping().begin(), world.overlapping().end(), previous.begin(), previous.end(),
+                          std::back_inserter(began));
+      std::set_difference(previous.begin(), previous.end(), world.overlapping().begin(), world.overlapping().end(),
+                          std::back_inserter(ended));
+      ASSERT_EQ(world.began(), began);
+      ASSERT_EQ(world.ended(), ended);
+      previous = world.overlapping();
+    }
+    EXPECT_GT(world.overlapping().size(), 0u);
+    if (margin > 0) EXPECT_GT(world.proximity().size(), 0u);
+  }
+}
+
+World random_world(Rng& rng, int n) {
+  World world;
+  for (int k = 0; k < n; ++k) world.add(random_shape(rng, 10.0));
+  return world;
+}
+
+TEST(World, QueriesMatchBruteForce) {
+  Rng rng(8);
+  const World world = random_world(rng, 300);
+  for (int k = 0; k < 100; ++k) {
+    const Shape probe = random_shape(rng, 10.0);
+    const Vec2 point(uniform(rng, 0, 10), uniform(rng, 0, 10));
+    const double d = uniform(rng, 0.0, 1.0);
+    const Aabb box{point, point + Vec2(uniform(rng, 0, 2), uniform(rng, 0, 2))};
+    std::vector<BodyId> hit, near_point, near_shape, in_box;
+    for (const BodyId id : world.bodies()) {
+      const Shape& s = world.shape(id);
+      if (overlaps(probe, s)) hit.push_back(id);
+      if (distance(Shape(Circle{point, 1e-300}), s).distance <= d) near_point.push_back(id);
+      if (distance(probe, s).distance <= d) near_shape.push_back(id);
+      const Aabb b = aabb(s);
+      if ((b.min.array() <= box.max.array()).all() && (box.min.array() <= b.max.array()).all()) in_box.push_back(id);
+    }
+    ASSERT_EQ(world.overlapping(probe), hit) << k;
+    ASSERT_EQ(world.within(point, d), near_point) << k;
+    ASSERT_EQ(world.within(probe, d), near_shape) << k;
+    ASSERT_EQ(world.overlapping(box), in_box) << k;
+  }
+}
+
+// The first hit lies on the body's boundary (50-digit distance to the solid 0, to a point just
+// before it positive), and no body contains a point of the ray before it.
+TEST(World, RayCastFindsTheFirstExactHit) {
+  Rng rng(9);
+  const World world = random_world(rng, 150);
+  int hits = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 origin(uniform(rng, -2, 12), uniform(rng, -2, 12));
+    const double angle = uniform(rng, 0, 6.3);
+    const Vec2 dir(std::cos(angle), std::sin(angle));
+    const auto hit = world.ray_cast(origin, 3.0 * dir, 20.0);
+    double first = 20.0;
+    for (const BodyId id : world.bodies()) {
+      for (int i = 0; i <= 4000; ++i) {
+        const double t = 20.0 * i / 4000;
+        if (contains(world.shape(id), origin + t * dir)) {
+          first = std::min(first, t);
+          break;
+        }
+      }
+    }
+    if (!hit) {
+      EXPECT_EQ(first, 20.0) << k;
+      continue;
+    }
+    ++hits;
+    EXPECT_LE(hit->distance, first + 1e-12) << k;
+    EXPECT_GE(hit->distance, first - 20.0 / 4000) << k;
+    const double off = static_cast<double>(reference::distance_to(world.shape(hit->body), reference::to_mp(hit->point)));
+    EXPECT_LE(off, 1e-12) << k;
+    if (hit->distance > 0) {
+      const Vec2 before = hit->point - 1e-9 * dir;
+      EXPECT_GT(static_cast<double>(reference::distance_to(world.shape(hit->body), reference::to_mp(before))), 0) << k;
+      EXPECT_NEAR(hit->normal.norm(), 1.0, 1e-12);
+      EXPECT_LT(hit->normal.dot(dir), 0.0) << k;
+    }
+  }
+  EXPECT_GT(hits, 50);
+}
+
+TEST(World, BadInputIsRefusedAndChangesNothing) {
+  World world({.proximity_margin = 0.5});
+  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, 1);
+  const BodyId b = world.add(Ellipse{Vec2(1.5, 0), 1, 0.5, 0}, 2);
+  world.update();
+  const auto pairs = world.overlapping();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(world.add(Ellipse{Vec2(0, 0), -1, 1, 0}), InvalidShape);
+  EXPECT_THROW(world.set_pose(a, Vec2(nan, 0), 0), std::invalid_argument);
+  EXPECT_THROW(world.set_pose(b, Vec2(0, 0), INFINITY), std::invalid_argument);
+  EXPECT_THROW(world.set_pose(42, Vec2(0, 0), 0), std::out_of_range);
+  EXPECT_THROW(world.move_by(42, Vec2(0, 0)), std::out_of_range);
+  EXPECT_THROW(world.remove(42), std::out_of_range);
+  EXPECT_THROW(world.set_proximity_margin(-1), std::invalid_argument);
+  EXPECT_THROW(world.within(Vec2(0, 0), nan), std::invalid_argument);
+  EXPECT_THROW(world.ray_cast(Vec2(0, 0), Vec2(0, 0), 1), std::invalid_argument);
+  EXPECT_THROW(world.overlapping(Aabb{Vec2(1, 1), Vec2(0, 0)}), std::invalid_argument);
+  try {
+    world.set_pose(a, Vec2(nan, 0), 0);
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pose x must be finite"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(world.size(), 2u);
+  EXPECT_EQ(center_of(world.shape(a)), Vec2(0, 0));
+  EXPECT_EQ(world.user_id(b), 2u);
+  world.update();
+  EXPECT_EQ(world.overlapping(), pairs);
+  EXPECT_TRUE(world.began().empty());
+}
+
+}  // namespace
+}  // namespace collide2d
