@@ -1,9 +1,14 @@
-// collide2d: the command line. `collide2d query [--method NAME]... [--boundary] < queries`
-// (see query_command.h).
+// collide2d: the command line.
+//   collide2d query [--method NAME]... [--boundary] < queries     (see query_command.h)
+//   collide2d run [scene.json] [--svg FILE] [--frames N]          (see run_command.h, scene.h)
 #include "tools/query_command.h"
+#include "tools/run_command.h"
 
+#include <charconv>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string_view>
 
 namespace {
@@ -19,7 +24,13 @@ constexpr const char* kUsage =
     "      the ellipse-ellipse distance solver (default robust; gradient and polynomial are\n"
     "      the seed baselines)\n"
     "  --boundary  distance and closest points between the boundary curves instead of the\n"
-    "      solids (circles and ellipses; nested shapes give their gap)\n";
+    "      solids (circles and ellipses; nested shapes give their gap)\n"
+    "\n"
+    "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
+    "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
+    "  rectangles) through the sweep-and-prune broad phase and the narrow phase, frame by\n"
+    "  frame, then prints what they found and how long they took. --svg draws the last\n"
+    "  frame; --frames overrides the scene's frame count.\n";
 
 int query(int argc, char** argv) {
   collide2d::tool::QueryOptions options;
@@ -38,6 +49,55 @@ int query(int argc, char** argv) {
   return collide2d::tool::run_query(std::cin, std::cout, std::cerr, options);
 }
 
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw collide2d::tool::SceneError("cannot read '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int frame_count(std::string_view word) {
+  int n = 0;
+  const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), n);
+  if (ec != std::errc() || ptr != word.data() + word.size() || n < 1) {
+    throw collide2d::tool::ParseError("--frames needs a positive integer, got '" + std::string(word) + "'");
+  }
+  return n;
+}
+
+int run(int argc, char** argv) {
+  std::string scene_path, svg_path;
+  int frames = 0;
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--svg" || arg == "--frames") {
+      if (i + 1 == argc) throw collide2d::tool::ParseError(std::string(arg) + " needs a value");
+      if (arg == "--svg") svg_path = argv[++i];
+      else frames = frame_count(argv[++i]);
+    } else if (!arg.starts_with("--") && scene_path.empty()) {
+      scene_path = arg;
+    } else {
+      throw collide2d::tool::ParseError("unknown argument '" + std::string(arg) + "'");
+    }
+  }
+  collide2d::tool::Scene scene =
+      scene_path.empty() ? collide2d::tool::default_scene() : collide2d::tool::parse_scene(read_file(scene_path));
+  if (frames > 0) scene.frames = frames;
+  std::cout << "scene " << (scene_path.empty() ? "built-in" : scene_path) << ": " << scene.bodies.size() << " bodies, "
+            << scene.frames << " frames\n";
+  collide2d::tool::SceneRun runner(std::move(scene));
+  const collide2d::tool::RunSummary summary = runner.run(&std::cerr);
+  collide2d::tool::print_summary(summary, std::cout);
+  if (!svg_path.empty()) {
+    std::ofstream out(svg_path);
+    collide2d::tool::write_svg(runner, out);
+    if (!out) throw collide2d::tool::SceneError("cannot write '" + svg_path + "'");
+    std::cout << "picture of the last frame: " << svg_path << '\n';
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -45,12 +105,14 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return 0;
   }
-  if (argc < 2 || std::strcmp(argv[1], "query") != 0) {
+  const bool is_query = argc >= 2 && std::strcmp(argv[1], "query") == 0;
+  const bool is_run = argc >= 2 && std::strcmp(argv[1], "run") == 0;
+  if (!is_query && !is_run) {
     std::cerr << kUsage;
     return 2;
   }
   try {
-    return query(argc, argv);
+    return is_query ? query(argc, argv) : run(argc, argv);
   } catch (const std::exception& e) {
     std::cerr << "collide2d: " << e.what() << '\n' << kUsage;
     return 2;

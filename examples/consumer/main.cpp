@@ -1,13 +1,28 @@
-// The README's usage example, built against an installed collide2d by the test suite.
+// The README's usage examples, built against an installed collide2d by the test suite.
 #include <collide2d/collide2d.h>
 #include <cstdio>
 
 int main() {
   using namespace collide2d;
+  // One pair at a time: the narrow phase.
   const Shape wall = Rect{Vec2(0, 0), Vec2(2, 0.5), 0.3};          // centre, half extents, angle
   const Shape rock = Ellipse{Vec2(1, 2), 1.5, 0.4, 1.0};           // centre, a, b, angle of the a-axis
   if (overlaps(wall, rock)) std::puts("hit");                      // yes/no only
   const DistanceResult d = distance(wall, rock);                   // 0 and a witness when overlapping
   std::printf("%g from (%g, %g) to (%g, %g)\n", d.distance,
               d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
+
+  // Many bodies moving every frame: the World (sweep and prune, then the narrow phase).
+  World world({.fat_margin = 0.1, .proximity_margin = 0.5});
+  const BodyId ship = world.add(Ellipse{Vec2(0, 0), 1.0, 0.3, 0.0}, /*user_id=*/1);
+  world.add(Circle{Vec2(3, 0), 1.0}, 2);
+  for (int frame = 0; frame < 3; ++frame) {
+    world.move_by(ship, Vec2(0.5, 0.0), 0.1);
+    world.update();
+    for (const BodyPair& p : world.began()) {
+      std::printf("frame %d: bodies %llu and %llu touch\n", frame, static_cast<unsigned long long>(world.user_id(p.a)),
+                  static_cast<unsigned long long>(world.user_id(p.b)));
+    }
+    for (const Proximity& p : world.proximity()) std::printf("frame %d: %g apart\n", frame, p.result.distance);
+  }
 }

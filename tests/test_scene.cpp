@@ -1,0 +1,99 @@
+// Scene files for `collide2d run`: round trip, every kind of broken file named by its field, and a
+// run whose last frame agrees with an all-pairs check.
+#include "tools/run_command.h"
+#include "tools/scene.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace collide2d::tool {
+namespace {
+
+TEST(Scene, WrittenSceneReadsBackTheSame) {
+  const Scene scene = default_scene(60, 10, 3);
+  const Scene back = parse_scene(write_scene(scene));
+  EXPECT_TRUE(back == scene);
+  EXPECT_EQ(back.bodies.size(), 60u);
+}
+
+TEST(Scene, ExampleFileParses) {
+  std::ifstream in(std::string(COLLIDE2D_SOURCE_DIR) + "/examples/scene.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const Scene scene = parse_scene(text.str());
+  EXPECT_EQ(scene.bodies.size(), 8u);
+  EXPECT_EQ(scene.bodies[6].id, 42u);
+  EXPECT_EQ(scene.bodies[5].id, 5u);
+}
+
+std::string with_body(const std::string& body) {
+  return R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [)" + body + "]}";
+}
+
+TEST(Scene, BrokenFilesNameTheField) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"{", "scene is not valid JSON"},
+      {"[1, 2]", "scene: expected a JSON object"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "bodies": []})", "frames: missing"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 0, "bodies": []})", "frames: expected an integer"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 2.5, "bodies": []})", "frames: expected an integer"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "dt": "fast", "bodies": []})", "dt: expected a number"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "dt": -1, "bodies": []})", "dt: must be positive"},
+      {R"({"arena": {"min": [0, 0], "max": [-1, 10]}, "frames": 3, "bodies": []})", "arena: max must exceed min"},
+      {R"({"arena": {"min": [0, 0]}, "frames": 3, "bodies": []})", "arena.max: missing"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [], "gravity": 9.8})", "scene: unknown field 'gravity'"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "proximity_margin": -2, "bodies": []})", "proximity_margin: must not be negative"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": -1})"), "bodies[0].radius: must be positive (got -1)"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1}, {"shape": "ellipse", "center": [1, 1], "a": 0, "b": 1})"),
+       "bodies[1].a: must be positive"},
+      {with_body(R"({"shape": "rect", "center": [1, 1], "half_extents": [1, -3]})"), "bodies[0].half_extents[1]: must be positive"},
+      {with_body(R"({"shape": "blob", "center": [1, 1]})"), "bodies[0].shape: unknown shape 'blob'"},
+      {with_body(R"({"center": [1, 1], "radius": 1})"), "bodies[0].shape: missing"},
+      {with_body(R"({"shape": "circle", "center": [1, 1, 1], "radius": 1})"), "bodies[0].center: expected an array of 2 numbers"},
+      {with_body(R"({"shape": "circle", "center": [1, "x"], "radius": 1})"), "bodies[0].center[1]: expected a number"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radus": 1})"), "bodies[0]: unknown field 'radus'"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1]})"), "bodies[0].velocity: expected an array"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": -4})"), "bodies[0].id: expected a non-negative integer"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1e999})"), "number overflow parsing '1e999'"},
+  };
+  for (const auto& [text, expected] : cases) {
+    try {
+      parse_scene(text);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what() << "\n  for " << text;
+    }
+  }
+}
+
+// After the run, the World's overlapping pairs are exactly the pairs of final shapes that overlap.
+TEST(SceneRun, LastFrameAgreesWithAllPairs) {
+  SceneRun run(default_scene(300, 30, 5));
+  const RunSummary s = run.run(nullptr);
+  EXPECT_EQ(s.frames, 30);
+  EXPECT_EQ(s.bodies, 300u);
+  const World& w = run.world();
+  std::vector<BodyPair> expected;
+  const auto ids = w.bodies();
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      if (overlaps(w.shape(ids[i]), w.shape(ids[j]))) expected.push_back({ids[i], ids[j]});
+    }
+  }
+  EXPECT_EQ(w.overlapping(), expected);
+  EXPECT_GT(s.overlapping_per_frame, 0.0);
+  std::ostringstream svg;
+  write_svg(run, svg);
+  const std::string text = svg.str();
+  std::size_t shapes = 0;
+  for (const char* tag : {"<circle ", "<ellipse ", "<rect class"}) {
+    for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) ++shapes;
+  }
+  EXPECT_EQ(shapes, 300u);
+  EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace collide2d::tool

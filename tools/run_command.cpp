@@ -1,0 +1,140 @@
+#include "tools/run_command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <set>
+#include <utility>
+
+namespace collide2d::tool {
+namespace {
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
+  return v[k];
+}
+
+void draw_progress(std::ostream& out, int done, int total) {
+  constexpr int kWidth = 40;
+  const int filled = total > 0 ? done * kWidth / total : kWidth;
+  out << "\r  [" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(kWidth - filled), '.')
+      << "] " << (total > 0 ? 100 * done / total : 100) << "% (" << done << '/' << total << " frames)" << std::flush;
+}
+
+std::pair<Vec2, double> pose_of(const Shape& s) {
+  return std::visit(
+      [](const auto& x) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
+          return std::pair{x.center, 0.0};
+        } else {
+          return std::pair{x.center, x.angle};
+        }
+      },
+      s);
+}
+
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+void svg_shape(std::ostream& out, const Shape& s, const char* css) {
+  std::visit(
+      [&](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        const double cx = x.center.x(), cy = x.center.y();
+        if constexpr (std::is_same_v<T, Circle>) {
+          out << "<circle class=\"" << css << "\" cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << x.radius << "\"/>\n";
+        } else if constexpr (std::is_same_v<T, Ellipse>) {
+          out << "<ellipse class=\"" << css << "\" cx=\"" << cx << "\" cy=\"" << cy << "\" rx=\"" << x.a << "\" ry=\"" << x.b
+              << "\" transform=\"rotate(" << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
+        } else {
+          out << "<rect class=\"" << css << "\" x=\"" << cx - x.half_extents.x() << "\" y=\"" << cy - x.half_extents.y()
+              << "\" width=\"" << 2 * x.half_extents.x() << "\" height=\"" << 2 * x.half_extents.y() << "\" transform=\"rotate("
+              << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
+        }
+      },
+      s);
+}
+
+}  // namespace
+
+SceneRun::SceneRun(Scene scene)
+    : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
+  for (const SceneBody& b : scene_.bodies) ids_.push_back(world_.add(b.shape, b.id));
+}
+
+RunSummary SceneRun::run(std::ostream* progress) {
+  RunSummary s;
+  s.frames = scene_.frames;
+  s.bodies = scene_.bodies.size();
+  std::vector<double> broad, narrow;
+  const int every = std::max(1, scene_.frames / 50);
+  for (int frame = 0; frame < scene_.frames; ++frame) {
+    step(scene_);
+    for (std::size_t k = 0; k < ids_.size(); ++k) {
+      const auto [center, angle] = pose_of(scene_.bodies[k].shape);
+      world_.set_pose(ids_[k], center, angle);
+    }
+    world_.update();
+    const FrameStats& f = world_.last_frame();
+    broad.push_back(1e3 * f.broad_seconds);
+    narrow.push_back(1e3 * f.narrow_seconds);
+    s.candidates_per_frame += static_cast<double>(f.candidates);
+    s.overlapping_per_frame += static_cast<double>(f.overlapping);
+    s.proximity_per_frame += static_cast<double>(f.proximity);
+    s.began += world_.began().size();
+    s.ended += world_.ended().size();
+    if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames)) draw_progress(*progress, frame + 1, scene_.frames);
+  }
+  if (progress) *progress << '\n';
+  const double n = std::max(1, scene_.frames);
+  s.candidates_per_frame /= n;
+  s.overlapping_per_frame /= n;
+  s.proximity_per_frame /= n;
+  s.broad_median_ms = percentile(broad, 0.5);
+  s.broad_p95_ms = percentile(broad, 0.95);
+  s.narrow_median_ms = percentile(narrow, 0.5);
+  s.narrow_p95_ms = percentile(narrow, 0.95);
+  return s;
+}
+
+void print_summary(const RunSummary& s, std::ostream& out) {
+  out << "frames                      " << s.frames << '\n'
+      << "bodies                      " << s.bodies << '\n'
+      << "candidate pairs per frame   " << s.candidates_per_frame << " (broad phase)\n"
+      << "overlapping pairs per frame " << s.overlapping_per_frame << " (narrow phase), " << s.began << " began, "
+      << s.ended << " ended over the run\n"
+      << "proximity pairs per frame   " << s.proximity_per_frame << '\n'
+      << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms << " ms\n"
+      << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms << " ms\n";
+}
+
+void write_svg(const SceneRun& run, std::ostream& out) {
+  const Aabb& arena = run.scene().arena;
+  const Vec2 size = arena.max - arena.min;
+  const World& world = run.world();
+  std::set<BodyId> hit;
+  for (const BodyPair& p : world.overlapping()) hit.insert({p.a, p.b});
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << arena.min.x() << ' ' << -arena.max.y() << ' '
+      << size.x() << ' ' << size.y() + 0.06 * size.y() << "\" width=\"1000\" height=\""
+      << static_cast<int>(1000 * 1.06 * size.y() / size.x()) << "\">\n"
+      << "<style>.body{fill:#9db4cc;stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}"
+         ".hit{fill:#e74c3c;stroke:#7b241c;vector-effect:non-scaling-stroke;stroke-width:0.5}"
+         ".near{stroke:#1e8449;vector-effect:non-scaling-stroke;stroke-width:1}"
+         "text{font-family:sans-serif}</style>\n"
+      << "<rect x=\"" << arena.min.x() << "\" y=\"" << -arena.max.y() << "\" width=\"" << size.x() << "\" height=\""
+      << size.y() << "\" fill=\"#fbfcfc\" stroke=\"#566573\" vector-effect=\"non-scaling-stroke\"/>\n"
+      << "<g transform=\"scale(1,-1)\">\n";
+  for (const BodyId id : world.bodies()) svg_shape(out, world.shape(id), hit.count(id) ? "hit" : "body");
+  for (const Proximity& p : world.proximity()) {
+    out << "<line class=\"near\" x1=\"" << p.result.point_a.x() << "\" y1=\"" << p.result.point_a.y() << "\" x2=\""
+        << p.result.point_b.x() << "\" y2=\"" << p.result.point_b.y() << "\"/>\n";
+  }
+  out << "</g>\n<text x=\"" << arena.min.x() + 0.01 * size.x() << "\" y=\"" << -arena.min.y() + 0.045 * size.y()
+      << "\" font-size=\"" << 0.03 * size.y() << "\">" << world.size() << " bodies: " << world.overlapping().size()
+      << " overlapping pairs (red), " << world.proximity().size() << " pairs within " << run.scene().proximity_margin
+      << " (green segments)</text>\n</svg>\n";
+}
+
+}  // namespace collide2d::tool

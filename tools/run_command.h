@@ -1,0 +1,50 @@
+// The `collide2d run` command as a library: runs a scene through a World frame by frame, then
+// summarises what the broad and narrow phases did and how long they took, and draws the last frame.
+#pragma once
+
+#include "engine/world.h"
+#include "tools/scene.h"
+
+#include <iosfwd>
+#include <vector>
+
+namespace collide2d::tool {
+
+struct RunSummary {
+  int frames = 0;
+  std::size_t bodies = 0;
+  double candidates_per_frame = 0.0;   // broad-phase pairs, mean over frames
+  double overlapping_per_frame = 0.0;  // confirmed overlaps, mean
+  double proximity_per_frame = 0.0;    // pairs apart but within the margin, mean
+  std::size_t began = 0;               // overlap events over the run
+  std::size_t ended = 0;
+  double broad_median_ms = 0.0;
+  double broad_p95_ms = 0.0;
+  double narrow_median_ms = 0.0;
+  double narrow_p95_ms = 0.0;
+};
+
+class SceneRun {
+ public:
+  explicit SceneRun(Scene scene);
+
+  // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
+  // when it is not null.
+  RunSummary run(std::ostream* progress);
+
+  const World& world() const { return world_; }
+  const Scene& scene() const { return scene_; }
+
+ private:
+  Scene scene_;
+  World world_;
+  std::vector<BodyId> ids_;  // World id of each scene body
+};
+
+void print_summary(const RunSummary& s, std::ostream& out);
+
+// An SVG picture of the current frame: every body, overlapping ones highlighted, and a segment
+// between the closest points of each proximity pair.
+void write_svg(const SceneRun& run, std::ostream& out);
+
+}  // namespace collide2d::tool

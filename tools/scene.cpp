@@ -1,0 +1,241 @@
+#include "tools/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace collide2d::tool {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& field, const std::string& what) { throw SceneError(field + ": " + what); }
+
+std::string child(const std::string& field, const char* key) { return field.empty() ? key : field + "." + key; }
+
+const json& member(const json& object, const char* key, const std::string& field) {
+  const auto it = object.find(key);
+  if (it == object.end()) fail(child(field, key), "missing");
+  return *it;
+}
+
+double number(const json& value, const std::string& field) {
+  if (!value.is_number()) fail(field, "expected a number, got " + value.dump());
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) fail(field, "must be finite");
+  return x;
+}
+
+double optional_number(const json& object, const char* key, const std::string& field, double fallback) {
+  const auto it = object.find(key);
+  return it == object.end() ? fallback : number(*it, child(field, key));
+}
+
+Vec2 vec2(const json& value, const std::string& field) {
+  if (!value.is_array() || value.size() != 2) fail(field, "expected an array of 2 numbers, got " + value.dump());
+  return {number(value[0], field + "[0]"), number(value[1], field + "[1]")};
+}
+
+void require_positive(double x, const std::string& field) {
+  if (!(x > 0)) {
+    std::ostringstream msg;
+    msg << "must be positive (got " << x << ')';
+    fail(field, msg.str());
+  }
+}
+
+void reject_unknown_keys(const json& object, std::initializer_list<const char*> known, const std::string& field) {
+  for (const auto& [key, value] : object.items()) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || key == k;
+    if (!ok) fail(field, "unknown field '" + key + "'");
+  }
+}
+
+Shape parse_shape(const json& b, const std::string& field) {
+  const json& word = member(b, "shape", field);
+  if (!word.is_string()) fail(field + ".shape", "expected a string, got " + word.dump());
+  const std::string kind = word.get<std::string>();
+  const Vec2 center = vec2(member(b, "center", field), field + ".center");
+  const double angle = optional_number(b, "angle", field, 0.0);
+  if (kind == "circle") {
+    const double r = number(member(b, "radius", field), field + ".radius");
+    require_positive(r, field + ".radius");
+    return Circle{center, r};
+  }
+  if (kind == "ellipse") {
+    const double a = number(member(b, "a", field), field + ".a");
+    const double bb = number(member(b, "b", field), field + ".b");
+    require_positive(a, field + ".a");
+    require_positive(bb, field + ".b");
+    return Ellipse{center, a, bb, angle};
+  }
+  if (kind == "rect") {
+    const Vec2 half = vec2(member(b, "half_extents", field), field + ".half_extents");
+    require_positive(half.x(), field + ".half_extents[0]");
+    require_positive(half.y(), field + ".half_extents[1]");
+    return Rect{center, half, angle};
+  }
+  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse or rect)");
+}
+
+SceneBody parse_body(const json& b, std::size_t index) {
+  const std::string field = "bodies[" + std::to_string(index) + "]";
+  if (!b.is_object()) fail(field, "expected an object");
+  reject_unknown_keys(b, {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id"},
+                      field);
+  SceneBody body;
+  body.shape = parse_shape(b, field);
+  if (const auto it = b.find("velocity"); it != b.end()) body.velocity = vec2(*it, field + ".velocity");
+  body.angular_velocity = optional_number(b, "angular_velocity", field, 0.0);
+  body.id = index;
+  if (const auto it = b.find("id"); it != b.end()) {
+    if (!it->is_number_unsigned()) fail(field + ".id", "expected a non-negative integer, got " + it->dump());
+    body.id = it->get<std::uint64_t>();
+  }
+  return body;
+}
+
+json shape_json(const Shape& s) {
+  return std::visit(
+      [](const auto& x) -> json {
+        using T = std::decay_t<decltype(x)>;
+        json j{{"center", {x.center.x(), x.center.y()}}};
+        if constexpr (std::is_same_v<T, Circle>) {
+          j["shape"] = "circle";
+          j["radius"] = x.radius;
+        } else if constexpr (std::is_same_v<T, Ellipse>) {
+          j["shape"] = "ellipse";
+          j["a"] = x.a;
+          j["b"] = x.b;
+          j["angle"] = x.angle;
+        } else {
+          j["shape"] = "rect";
+          j["half_extents"] = {x.half_extents.x(), x.half_extents.y()};
+          j["angle"] = x.angle;
+        }
+        return j;
+      },
+      s);
+}
+
+bool same_shape(const Shape& a, const Shape& b) {
+  if (a.index() != b.index()) return false;
+  return std::visit(
+      [&b](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        const T& y = std::get<T>(b);
+        if constexpr (std::is_same_v<T, Circle>) return x.center == y.center && x.radius == y.radius;
+        if constexpr (std::is_same_v<T, Ellipse>) return x.center == y.center && x.a == y.a && x.b == y.b && x.angle == y.angle;
+        if constexpr (std::is_same_v<T, Rect>) return x.center == y.center && x.half_extents == y.half_extents && x.angle == y.angle;
+      },
+      a);
+}
+
+}  // namespace
+
+bool SceneBody::operator==(const SceneBody& o) const {
+  return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id;
+}
+
+bool Scene::operator==(const Scene& o) const {
+  return arena.min == o.arena.min && arena.max == o.arena.max && frames == o.frames && dt == o.dt &&
+         fat_margin == o.fat_margin && proximity_margin == o.proximity_margin && bodies == o.bodies;
+}
+
+Scene parse_scene(std::string_view text) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {  // syntax errors, and numbers beyond double range
+    throw SceneError(std::string("scene is not valid JSON: ") + e.what());
+  }
+  if (!root.is_object()) fail("scene", "expected a JSON object");
+  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "bodies"}, "scene");
+  Scene scene;
+  const json& arena = member(root, "arena", "");
+  if (!arena.is_object()) fail("arena", "expected an object with min and max");
+  scene.arena = {vec2(member(arena, "min", "arena"), "arena.min"), vec2(member(arena, "max", "arena"), "arena.max")};
+  if (!(scene.arena.min.array() < scene.arena.max.array()).all()) fail("arena", "max must exceed min on both axes");
+  const json& frames = member(root, "frames", "");
+  if (!frames.is_number_integer() || frames.get<long long>() < 1 || frames.get<long long>() > 100000000) {
+    fail("frames", "expected an integer from 1 to 100000000, got " + frames.dump());
+  }
+  scene.frames = static_cast<int>(frames.get<long long>());
+  scene.dt = optional_number(root, "dt", "", scene.dt);
+  require_positive(scene.dt, "dt");
+  scene.fat_margin = optional_number(root, "fat_margin", "", scene.fat_margin);
+  scene.proximity_margin = optional_number(root, "proximity_margin", "", scene.proximity_margin);
+  if (scene.fat_margin < 0) fail("fat_margin", "must not be negative");
+  if (scene.proximity_margin < 0) fail("proximity_margin", "must not be negative");
+  const json& bodies = member(root, "bodies", "");
+  if (!bodies.is_array()) fail("bodies", "expected an array");
+  for (std::size_t k = 0; k < bodies.size(); ++k) scene.bodies.push_back(parse_body(bodies[k], k));
+  return scene;
+}
+
+std::string write_scene(const Scene& scene) {
+  json bodies = json::array();
+  for (const SceneBody& b : scene.bodies) {
+    json j = shape_json(b.shape);
+    j["velocity"] = {b.velocity.x(), b.velocity.y()};
+    j["angular_velocity"] = b.angular_velocity;
+    j["id"] = b.id;
+    bodies.push_back(std::move(j));
+  }
+  const json root{{"arena", {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
+                  {"frames", scene.frames},
+                  {"dt", scene.dt},
+                  {"fat_margin", scene.fat_margin},
+                  {"proximity_margin", scene.proximity_margin},
+                  {"bodies", bodies}};
+  return root.dump(1);
+}
+
+Scene default_scene(int count, int frames, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  // Mean body area about 2.2 (sizes 0.3 to 2): an arena of 28 count units^2 is about 8% covered.
+  const double side = std::sqrt(28.0 * count);
+  Scene scene;
+  scene.arena = {Vec2(0, 0), Vec2(side, side)};
+  scene.frames = frames;
+  scene.proximity_margin = 0.5;
+  for (int k = 0; k < count; ++k) {
+    const Vec2 c(uniform(2, side - 2), uniform(2, side - 2));
+    const double size = uniform(0.3, 2.0);
+    const double angle = uniform(0, 2 * std::numbers::pi);
+    const auto shape = [&]() -> Shape {
+      if (k % 3 == 0) return Circle{c, size};
+      if (k % 3 == 1) return Ellipse{c, size, size / uniform(1, 8), angle};
+      return Rect{c, Vec2(size, size * uniform(0.2, 1)), angle};
+    }();
+    const double heading = uniform(0, 2 * std::numbers::pi);
+    const double speed = uniform(0, 6);
+    scene.bodies.push_back({shape, speed * Vec2(std::cos(heading), std::sin(heading)), uniform(-1, 1),
+                            static_cast<std::uint64_t>(k)});
+  }
+  return scene;
+}
+
+void step(Scene& scene) {
+  for (SceneBody& b : scene.bodies) {
+    std::visit(
+        [&](auto& s) {
+          s.center += scene.dt * b.velocity;
+          if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle += scene.dt * b.angular_velocity;
+        },
+        b.shape);
+    const Aabb box = aabb(b.shape);
+    for (int k = 0; k < 2; ++k) {
+      if (box.min[k] < scene.arena.min[k] && b.velocity[k] < 0) b.velocity[k] = -b.velocity[k];
+      if (box.max[k] > scene.arena.max[k] && b.velocity[k] > 0) b.velocity[k] = -b.velocity[k];
+    }
+  }
+}
+
+}  // namespace collide2d::tool
