@@ -140,69 +140,85 @@ void SweepAndPrune::choose_axis() {
   if (n < 2) return;
   double var[2];
   for (int k = 0; k < 2; ++k) var[k] = sum2[k] / n - (sum[k] / n) * (sum[k] / n);
-  if (var[1 - axis_] > 1.5 * var[axis_]) axis_ = 1 - axis_;
+  if (var[1 - sweep_axis_] > 1.5 * var[sweep_axis_]) sweep_axis_ = 1 - sweep_axis_;
 }
 
-double SweepAndPrune::key_of(std::uint32_t t) const {
+double SweepAndPrune::key_of(std::uint32_t t, int axis) const {
   const Aabb& b = proxies_[id_of(t)].fat;
-  return (is_max(t) ? b.max[axis_] : b.min[axis_]) + 0.0;  // -0.0 -> +0.0 for the radix keys
+  return (is_max(t) ? b.max[axis] : b.min[axis]) + 0.0;  // -0.0 -> +0.0 for the radix keys
 }
 
-// New coordinates for every endpoint on the current axis; endpoints of removed boxes go.
-void SweepAndPrune::refresh_keys() {
+// New coordinates for every endpoint on the axis; endpoints of removed boxes go.
+void SweepAndPrune::refresh_keys(int axis) {
+  Endpoints& e = axes_[axis];
   std::size_t out = 0;
-  for (std::size_t i = 0; i < keys_.size(); ++i) {
-    if (!proxies_[id_of(tags_[i])].alive) continue;
-    keys_[out] = key_of(tags_[i]);
-    tags_[out] = tags_[i];
+  for (std::size_t i = 0; i < e.keys.size(); ++i) {
+    if (!proxies_[id_of(e.tags[i])].alive) continue;
+    e.keys[out] = key_of(e.tags[i], axis);
+    e.tags[out] = e.tags[i];
     ++out;
   }
-  keys_.resize(out);
-  tags_.resize(out);
+  e.keys.resize(out);
+  e.tags.resize(out);
 }
 
-bool SweepAndPrune::insertion_sort(std::size_t budget) {
-  for (std::size_t i = 1; i < keys_.size(); ++i) {
-    const double k = keys_[i];
-    const std::uint32_t t = tags_[i];
+// Insertion sort whose swaps update the pair set: an element moving left past another's max with
+// its min may begin a pair; with its max past another's min it ends one. Gives up (false) past
+// `budget` swaps, leaving a permutation.
+bool SweepAndPrune::insertion_sort(int axis, std::size_t budget) {
+  Endpoints& e = axes_[axis];
+  for (std::size_t i = 1; i < e.keys.size(); ++i) {
+    const double k = e.keys[i];
+    const std::uint32_t t = e.tags[i];
     std::size_t j = i;
-    while (j > 0 && before(k, t, keys_[j - 1], tags_[j - 1])) {
-      keys_[j] = keys_[j - 1];
-      tags_[j] = tags_[j - 1];
+    while (j > 0 && before(k, t, e.keys[j - 1], e.tags[j - 1])) {
+      const std::uint32_t passed = e.tags[j - 1];
+      if (is_max(t) != is_max(passed)) {
+        const ProxyId p = id_of(t), q = id_of(passed);
+        const std::uint64_t key = p < q ? std::uint64_t{p} << 32 | q : std::uint64_t{q} << 32 | p;
+        if (is_max(t)) {
+          overlapping_.erase(key);
+        } else if (overlap_on(proxies_[p].fat, proxies_[q].fat, 0) && overlap_on(proxies_[p].fat, proxies_[q].fat, 1)) {
+          overlapping_.insert(key);
+        }
+      }
+      e.keys[j] = e.keys[j - 1];
+      e.tags[j] = passed;
       --j;
       if (++stats_.swaps > budget) {
-        keys_[j] = k;
-        tags_[j] = t;
+        e.keys[j] = k;
+        e.tags[j] = t;
         return false;
       }
     }
-    keys_[j] = k;
-    tags_[j] = t;
+    e.keys[j] = k;
+    e.tags[j] = t;
   }
   return true;
 }
 
 // LSD radix sort on (key, is_max): one pass on the max bit, then eight on the key's bytes; every
 // pass is stable, so equal keys keep mins first.
-void SweepAndPrune::radix_sort() {
-  const std::size_t n = keys_.size();
+void SweepAndPrune::radix_sort(int axis) {
+  Endpoints& e = axes_[axis];
+  const std::size_t n = e.keys.size();
   std::vector<std::uint64_t> bits(n), bits_tmp(n);
   std::vector<std::uint32_t> tags_tmp(n);
   std::vector<double> keys_tmp(n);
-  for (std::size_t i = 0; i < n; ++i) bits[i] = ordered_bits(keys_[i]);
+  for (std::size_t i = 0; i < n; ++i) bits[i] = ordered_bits(e.keys[i]);
   const auto pass = [&](auto digit, std::size_t buckets) {
     std::vector<std::size_t> start(buckets + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) ++start[digit(bits[i], tags_[i]) + 1];
+    for (std::size_t i = 0; i < n; ++i) ++start[digit(bits[i], e.tags[i]) + 1];
     for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t to = start[digit(bits[i], tags_[i])]++;
+      const std::size_t to = start[digit(bits[i], e.tags[i])]++;
       bits_tmp[to] = bits[i];
-      tags_tmp[to] = tags_[i];
-      keys_tmp[to] = keys_[i];
+      tags_tmp[to] = e.tags[i];
+      keys_tmp[to] = e.keys[i];
     }
     bits.swap(bits_tmp);
-    tags_.swap(tags_tmp);
-    keys_.swap(keys_tmp);
+    e.tags.swap(tags_tmp);
+    e.keys.swap(keys_tmp);
   };
   pass([](std::uint64_t, std::uint32_t t) { return static_cast<std::size_t>(t & 1u); }, 2);
   for (int shift = 0; shift < 64; shift += 8) {
@@ -211,7 +227,7 @@ void SweepAndPrune::radix_sort() {
 }
 
 // The endpoints of boxes inserted since the last update, sorted among themselves, merged in.
-void SweepAndPrune::merge_inserted() {
+void SweepAndPrune::merge_inserted(int axis) {
   std::vector<std::uint32_t> fresh;
   for (const ProxyId id : inserted_) {
     if (!proxies_[id].alive) continue;
@@ -219,28 +235,27 @@ void SweepAndPrune::merge_inserted() {
     fresh.push_back(tag(id, true));
   }
   if (fresh.empty()) return;
-  const auto key = [this](std::uint32_t t) { return key_of(t); };
+  const auto key = [this, axis](std::uint32_t t) { return key_of(t, axis); };
   std::sort(fresh.begin(), fresh.end(), [&](std::uint32_t a, std::uint32_t b) { return before(key(a), a, key(b), b); });
-  std::vector<double> keys;
-  std::vector<std::uint32_t> tags;
-  keys.reserve(keys_.size() + fresh.size());
-  tags.reserve(keys_.size() + fresh.size());
+  Endpoints& e = axes_[axis];
+  Endpoints merged;
+  merged.keys.reserve(e.keys.size() + fresh.size());
+  merged.tags.reserve(e.keys.size() + fresh.size());
   std::size_t i = 0, j = 0;
-  while (i < keys_.size() || j < fresh.size()) {
-    const bool take_old = j == fresh.size() || (i < keys_.size() && !before(key(fresh[j]), fresh[j], keys_[i], tags_[i]));
-    keys.push_back(take_old ? keys_[i] : key(fresh[j]));
-    tags.push_back(take_old ? tags_[i++] : fresh[j++]);
+  while (i < e.keys.size() || j < fresh.size()) {
+    const bool take_old = j == fresh.size() || (i < e.keys.size() && !before(key(fresh[j]), fresh[j], e.keys[i], e.tags[i]));
+    merged.keys.push_back(take_old ? e.keys[i] : key(fresh[j]));
+    merged.tags.push_back(take_old ? e.tags[i++] : fresh[j++]);
   }
-  keys_.swap(keys);
-  tags_.swap(tags);
+  e = std::move(merged);
 }
 
 std::vector<ProxyPair> SweepAndPrune::sweep() {
-  const int other = 1 - axis_;
+  const int other = 1 - sweep_axis_;
   std::vector<ProxyId> active;
   active_slot_.resize(proxies_.size());
   std::vector<ProxyPair> found;
-  for (const std::uint32_t t : tags_) {
+  for (const std::uint32_t t : axes_[sweep_axis_].tags) {
     const ProxyId id = id_of(t);
     if (is_max(t)) {
       const std::uint32_t slot = active_slot_[id];
@@ -263,18 +278,37 @@ std::vector<ProxyPair> SweepAndPrune::sweep() {
 
 void SweepAndPrune::update() {
   stats_ = {};
-  const int before_axis = axis_;
   choose_axis();
-  refresh_keys();
-  // A budget of swaps near the cost of the radix sort: beyond it the scene has not moved coherently.
-  const std::size_t budget = 8 * keys_.size() + 64;
-  if (axis_ != before_axis || !insertion_sort(budget)) {
-    stats_.full_sort = true;
-    radix_sort();
+  for (int k = 0; k < 2; ++k) refresh_keys(k);
+  if (!removed_.empty()) {
+    std::erase_if(overlapping_, [this](std::uint64_t key) {
+      return !proxies_[static_cast<ProxyId>(key >> 32)].alive || !proxies_[static_cast<ProxyId>(key & 0xffffffffu)].alive;
+    });
   }
-  merge_inserted();
-  stats_.axis = axis_;
-  finish_update(sweep());
+  // A budget of swaps near the cost of the radix sort: beyond it the scene has not moved coherently.
+  for (int k = 0; k < 2; ++k) {
+    const std::size_t budget = stats_.swaps + 8 * axes_[k].keys.size() + 64;
+    if (stats_.full_sort || !insertion_sort(k, budget)) {
+      stats_.full_sort = true;
+      radix_sort(k);
+    }
+  }
+  for (int k = 0; k < 2; ++k) merge_inserted(k);
+  stats_.axis = sweep_axis_;
+  std::vector<ProxyPair> now;
+  if (stats_.full_sort || !inserted_.empty()) {
+    stats_.swept = true;
+    now = sweep();
+    overlapping_.clear();
+    for (const ProxyPair& p : now) overlapping_.insert(std::uint64_t{p.a} << 32 | p.b);
+  } else {
+    now.reserve(overlapping_.size());
+    for (const std::uint64_t key : overlapping_) {
+      now.push_back({static_cast<ProxyId>(key >> 32), static_cast<ProxyId>(key & 0xffffffffu)});
+    }
+    std::sort(now.begin(), now.end());
+  }
+  finish_update(std::move(now));
 }
 
 // ---- brute force ----

@@ -13,13 +13,16 @@
 // rejected with std::invalid_argument, an unknown id with std::out_of_range; either leaves the broad
 // phase as it was.
 //
-// SweepAndPrune keeps the box endpoints along one axis sorted from frame to frame (structure of
+// SweepAndPrune keeps the box endpoints along both axes sorted from frame to frame (structure of
 // arrays: keys and tags apart) and repairs the order by insertion sort, near linear when motion is
-// coherent. When the repair would exceed a budget of swaps (most boxes moved far, or the axis changed)
-// it sorts once instead, by an LSD radix sort of the endpoint keys, so a scene that jumps costs
-// O(n) per frame rather than O(n^2). New boxes are sorted among themselves and merged in. One sweep
-// over the sorted endpoints then lists the pairs overlapping on that axis and checks the other axis.
-// The sweep axis is the one along which the box centres spread more (their variance), re-chosen when
+// coherent. The swaps themselves maintain the pair set (Baraff; Cohen et al., I-COLLIDE): when a
+// box's min passes another's max, the two may have begun to overlap (both axes are checked); when a
+// max passes a min, they have ended. A frame of coherent motion thus costs O(n + swaps), whatever
+// the density along either axis. When the repair would exceed a budget of swaps (most boxes moved
+// far), each axis is sorted once instead by an LSD radix sort, and the pair set is rebuilt by one
+// sweep, so a scene that jumps costs O(n + pairs on the sweep axis) rather than O(n^2); frames
+// with inserted boxes are swept too (their endpoints are sorted among themselves and merged in).
+// The sweep runs along the axis where the box centres spread more (their variance), re-chosen when
 // the other axis spreads 1.5 times more, so that a scene laid out along a line sweeps along it.
 //
 // BruteForceBroadPhase has the same interface and tests every pair: the reference for tests.
@@ -31,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <unordered_set>
 #include <vector>
 
 namespace collide2d {
@@ -94,26 +98,31 @@ class SweepAndPrune : public BroadPhaseBase {
 
   // What the last update did, for benchmarks and tests.
   struct UpdateStats {
-    int axis = 0;             // 0: x, 1: y
-    std::size_t swaps = 0;    // insertion-sort swaps
-    bool full_sort = false;   // the radix sort replaced the insertion sort
-    std::size_t axis_overlaps = 0;  // pairs overlapping on the sweep axis (checked on the other)
+    std::size_t swaps = 0;          // insertion-sort swaps, both axes
+    bool full_sort = false;         // the radix sort replaced the insertion sort
+    bool swept = false;             // the pair set was rebuilt by a sweep (inserts, full sorts)
+    int axis = 0;                   // the sweep axis, 0: x, 1: y
+    std::size_t axis_overlaps = 0;  // in a sweep: pairs overlapping on the sweep axis
   };
   const UpdateStats& last_update() const { return stats_; }
 
  private:
-  int axis_ = 0;
-  std::vector<double> keys_;         // endpoint coordinates along axis_, sorted
-  std::vector<std::uint32_t> tags_;  // id << 1 | is_max, parallel to keys_
-  std::vector<std::uint32_t> active_slot_;  // sweep scratch: position of a proxy in the active list
+  struct Endpoints {
+    std::vector<double> keys;         // coordinates along the axis, sorted
+    std::vector<std::uint32_t> tags;  // id << 1 | is_max, parallel to keys
+  };
+  Endpoints axes_[2];
+  int sweep_axis_ = 0;
+  std::unordered_set<std::uint64_t> overlapping_;  // a << 32 | b, kept by the insertion sorts
+  std::vector<std::uint32_t> active_slot_;        // sweep scratch: a proxy's place in the active list
   UpdateStats stats_;
 
-  double key_of(std::uint32_t tag) const;
+  double key_of(std::uint32_t tag, int axis) const;
   void choose_axis();
-  void refresh_keys();
-  bool insertion_sort(std::size_t budget);
-  void radix_sort();
-  void merge_inserted();
+  void refresh_keys(int axis);
+  bool insertion_sort(int axis, std::size_t budget);
+  void radix_sort(int axis);
+  void merge_inserted(int axis);
   std::vector<ProxyPair> sweep();
 };
 

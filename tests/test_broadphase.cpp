@@ -160,16 +160,26 @@ TEST(SweepAndPrune, HeavyChurnMatchesBruteForce) {
   std::vector<Vec2> centre;
   const auto fresh = [&] { return box_at(Vec2(uniform(rng, 0, 10), uniform(rng, 0, 10)), Vec2(0.2, 0.2)); };
   for (int k = 0; k < 300; ++k) t.insert(fresh());
+  int incremental = 0;
   for (int frame = 0; frame < 60; ++frame) {
     for (int k = 0; k < 30 && !t.ids.empty(); ++k) t.remove(static_cast<std::size_t>(uniform(rng, 0, 1) * t.ids.size()));
-    std::vector<Aabb> batch;
-    for (int k = 0; k < 25; ++k) batch.push_back(fresh());
-    t.insert_batch(batch);
-    for (int k = 0; k < 5; ++k) t.insert(fresh());
-    for (std::size_t k = 0; k < t.ids.size(); k += 3) t.move(k, fresh());
+    if (frame % 2 == 0) {  // odd frames only remove and move: the incremental path with removals
+      std::vector<Aabb> batch;
+      for (int k = 0; k < 25; ++k) batch.push_back(fresh());
+      t.insert_batch(batch);
+      for (int k = 0; k < 5; ++k) t.insert(fresh());
+      for (std::size_t k = 0; k < t.ids.size(); k += 3) t.move(k, fresh());
+    } else {
+      for (std::size_t k = 0; k < t.ids.size(); ++k) {
+        const Aabb& b = t.sap.fat_box(t.ids[k]);
+        t.move(k, {b.min + Vec2(0.03, -0.02), b.max + Vec2(0.03, -0.02)});
+      }
+    }
     t.update_and_compare("churn");
     if (HasFatalFailure()) return;
+    incremental += !t.sap.last_update().swept;
   }
+  EXPECT_GT(incremental, 20);
 }
 
 TEST(SweepAndPrune, BadInputIsRejectedAndChangesNothing) {
