@@ -1,0 +1,83 @@
+#include "bench/box2d_baseline.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace collide2d::baseline {
+namespace {
+
+b2Vec2 to_float(const Vec2& p) { return {static_cast<float>(p.x()), static_cast<float>(p.y())}; }
+
+Vec2 rotate(double angle, const Vec2& v) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+Polygon ellipse_polygon(const Ellipse& e, int sides, Fit fit, const Vec2& origin) {
+  if (sides < 3) throw std::invalid_argument("a polygon needs at least 3 sides");
+  // Circumscribed: the regular N-gon around the unit circle has its vertices at radius 1/cos(pi/N),
+  // half a step off the tangent points; the ellipse's affine map keeps it around the ellipse.
+  const double step = 2 * std::numbers::pi / sides;
+  const double scale = fit == Fit::circumscribed ? 1.0 / std::cos(step / 2) : 1.0;
+  const double shift = fit == Fit::circumscribed ? step / 2 : 0.0;
+  Polygon p;
+  for (int k = 0; k < sides; ++k) {
+    const double t = k * step + shift;
+    const Vec2 local(scale * e.a * std::cos(t), scale * e.b * std::sin(t));
+    p.vertices.push_back(to_float(e.center - origin + rotate(e.angle, local)));
+  }
+  return p;
+}
+
+}  // namespace
+
+Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
+  if (const auto* e = std::get_if<Ellipse>(&shape)) return ellipse_polygon(*e, sides, fit, origin);
+  if (const auto* c = std::get_if<Circle>(&shape)) return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
+  const auto& r = std::get<Rect>(shape);
+  Polygon p;
+  for (const Vec2& corner : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {
+    p.vertices.push_back(to_float(r.center - origin + rotate(r.angle, Vec2(corner.cwiseProduct(r.half_extents)))));
+  }
+  return p;
+}
+
+double box2d_distance(const Polygon& a, const Polygon& b) {
+  b2DistanceInput input;
+  input.proxyA.Set(a.vertices.data(), static_cast<int32>(a.vertices.size()), a.radius);
+  input.proxyB.Set(b.vertices.data(), static_cast<int32>(b.vertices.size()), b.radius);
+  input.transformA.SetIdentity();
+  input.transformB.SetIdentity();
+  input.useRadii = true;
+  b2SimplexCache cache;
+  cache.count = 0;
+  b2DistanceOutput output;
+  b2Distance(&output, &cache, &input);
+  return output.distance;
+}
+
+ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b) {
+  ShapePair pair;
+  const Polygon* polygons[2] = {&a, &b};
+  for (int i = 0; i < 2; ++i) {
+    const Polygon& p = *polygons[i];
+    pair.round[i] = p.vertices.size() == 1;
+    if (pair.round[i]) {
+      pair.circle[i].m_p = p.vertices[0];
+      pair.circle[i].m_radius = p.radius;
+    } else {
+      pair.polygon[i].Set(p.vertices.data(), static_cast<int32>(p.vertices.size()));
+      pair.polygon[i].m_radius = 0.0f;
+    }
+  }
+  return pair;
+}
+
+bool box2d_overlap(const ShapePair& pair) {
+  b2Transform identity;
+  identity.SetIdentity();
+  return b2TestOverlap(pair.shape(0), 0, pair.shape(1), 0, identity, identity);
+}
+
+}  // namespace collide2d::baseline

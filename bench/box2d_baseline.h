@@ -1,0 +1,50 @@
+// The Box2D 2.4.1 baseline: our shapes as Box2D shapes, ellipses as polygons.
+//
+// An ellipse becomes an N-gon: inscribed (vertices on the curve at N evenly spaced parameters) or
+// circumscribed (the affine image of the regular N-gon around the unit circle, so it contains the
+// ellipse). For convex shapes the true distance lies between the distance of the circumscribed
+// approximations and that of the inscribed ones. Coordinates are taken relative to a common origin
+// (the first shape's centre) before they are rounded to Box2D's float.
+//
+// Box2D gives every b2PolygonShape a skin of b2_polygonRadius (about 1 cm) and b2TestOverlap uses
+// shape radii; the polygons built here have radius 0, so overlap means the polygons themselves meet.
+#pragma once
+
+#include "shapes/shapes.h"
+
+#include <box2d/b2_broad_phase.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <vector>
+
+namespace collide2d::baseline {
+
+enum class Fit { inscribed, circumscribed };
+
+// A shape as Box2D sees it: a vertex cloud and a radius (a circle is one vertex and its radius).
+struct Polygon {
+  std::vector<b2Vec2> vertices;
+  float radius = 0.0f;
+};
+
+// `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact.
+Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
+
+// b2Distance between the two polygons (their radii included), in double.
+double box2d_distance(const Polygon& a, const Polygon& b);
+
+// The same pair as b2PolygonShapes with radius 0 (at most b2_maxPolygonVertices = 8 vertices each;
+// circles as b2CircleShape), and b2TestOverlap on them.
+struct ShapePair {
+  b2PolygonShape polygon[2];
+  b2CircleShape circle[2];
+  bool round[2] = {false, false};
+  const b2Shape* shape(int i) const { return round[i] ? static_cast<const b2Shape*>(&circle[i]) : &polygon[i]; }
+};
+ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b);
+bool box2d_overlap(const ShapePair& pair);
+
+}  // namespace collide2d::baseline

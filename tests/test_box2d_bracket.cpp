@@ -1,0 +1,119 @@
+// Box2D as an independent check: for convex shapes the true distance lies between the distance of
+// the circumscribed polygon approximations and that of the inscribed ones, and the bracket closes
+// on collide2d's value as the polygons get finer.
+#include "bench/box2d_baseline.h"
+#include "narrowphase/query.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace collide2d {
+namespace {
+
+using baseline::Fit;
+
+std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto ellipse = [&] { return Ellipse{Vec2(4 * u(rng), 4 * u(rng)), 0.2 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)}; };
+  std::vector<std::pair<Shape, Shape>> out;
+  for (int k = 0; k < n; ++k) {
+    const Shape b = ellipse();
+    switch (k % 3) {
+      case 0: out.emplace_back(ellipse(), b); break;
+      case 1: out.emplace_back(Rect{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.1 + u(rng), 0.1 + u(rng)), 7 * u(rng)}, b); break;
+      default: out.emplace_back(Circle{Vec2(4 * u(rng), 4 * u(rng)), 0.1 + u(rng)}, b); break;
+    }
+  }
+  return out;
+}
+
+Vec2 centre(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
+
+double box2d(const Shape& a, const Shape& b, int sides, Fit fit) {
+  const Vec2 origin = centre(a);
+  return baseline::box2d_distance(baseline::to_box2d(a, sides, fit, origin), baseline::to_box2d(b, sides, fit, origin));
+}
+
+// Box2D works in float: its distances carry errors of a few float ulps of the coordinates (here
+// below 8, relative to the shared origin).
+constexpr double kFloatTolerance = 2e-5;
+
+TEST(Box2dBracket, OurDistanceLiesBetweenCircumscribedAndInscribed) {
+  const auto pairs = random_pairs(3000, 11);
+  int separated = 0;
+  for (const int sides : {8, 32, 128}) {
+    int k = 0;
+    for (const auto& [a, b] : pairs) {
+      const double d = distance(a, b).distance;
+      const double outer = box2d(a, b, sides, Fit::circumscribed);
+      const double inner = box2d(a, b, sides, Fit::inscribed);
+      ASSERT_LE(outer, d + kFloatTolerance) << "pair " << k << " sides " << sides;
+      ASSERT_GE(inner, d - kFloatTolerance) << "pair " << k << " sides " << sides;
+      separated += d > 0 && sides == 8;
+      ++k;
+    }
+  }
+  EXPECT_GT(separated, 1000);
+}
+
+// The bracket width falls about as 1/N^2 (the sagitta of a side), and both ends approach our value.
+TEST(Box2dBracket, BracketClosesOnOurDistance) {
+  const auto pairs = random_pairs(600, 12);
+  std::vector<double> widths[2];
+  const int sides[2] = {8, 256};
+  for (const auto& [a, b] : pairs) {
+    const double d = distance(a, b).distance;
+    if (d < 0.05) continue;  // keep pairs apart at every N, so the bracket is a pair of distances
+    for (int i = 0; i < 2; ++i) {
+      const double outer = box2d(a, b, sides[i], Fit::circumscribed);
+      const double inner = box2d(a, b, sides[i], Fit::inscribed);
+      widths[i].push_back(inner - outer);
+      if (i == 1) {
+        EXPECT_NEAR(outer, d, 1e-3 * std::max(1.0, d));
+        EXPECT_NEAR(inner, d, 1e-3 * std::max(1.0, d));
+      }
+    }
+  }
+  ASSERT_GT(widths[0].size(), 200u);
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double w8 = median(widths[0]), w256 = median(widths[1]);
+  std::printf("[box2d bracket] %zu pairs: median width %.3e at N = 8, %.3e at N = 256 (ratio %.0f)\n",
+              widths[0].size(), w8, w256, w8 / w256);
+  EXPECT_GT(w8 / w256, 100.0);
+}
+
+// With radius-0 polygons, b2TestOverlap on the 8-gons agrees with the exact test wherever the
+// bracket decides: circumscribed polygons apart means the shapes are apart, inscribed polygons
+// overlapping means the shapes overlap.
+TEST(Box2dBracket, OverlapOfPolygonsBracketsTheExactVerdict) {
+  const auto pairs = random_pairs(3000, 13);
+  int decided = 0;
+  for (const auto& [a, b] : pairs) {
+    const Vec2 origin = centre(a);
+    const auto outer = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::circumscribed, origin),
+                                                 baseline::to_box2d(b, 8, Fit::circumscribed, origin));
+    const auto inner = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::inscribed, origin),
+                                                 baseline::to_box2d(b, 8, Fit::inscribed, origin));
+    const bool exact = overlaps(a, b);
+    if (!baseline::box2d_overlap(outer)) {  // apart, unless Box2D's float rounding decided it
+      EXPECT_FALSE(exact && box2d(a, b, 8, Fit::circumscribed) > kFloatTolerance);
+      ++decided;
+    }
+    if (baseline::box2d_overlap(inner)) {  // overlapping, unless the shapes are within rounding
+      EXPECT_TRUE(exact || distance(a, b).distance < kFloatTolerance);
+      ++decided;
+    }
+  }
+  EXPECT_GT(decided, 2000);
+}
+
+}  // namespace
+}  // namespace collide2d
