@@ -9,6 +9,8 @@
 #include "narrowphase/overlap_rect_rect.h"
 #include "narrowphase/query.h"
 
+#include "bench/workload.h"
+
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -17,42 +19,9 @@
 namespace collide2d {
 namespace {
 
-constexpr std::size_t kPairs = 4096;  // a power of two: the cycle index is a mask
-
-template <class A, class B>
-struct Workload {
-  std::vector<A> a;
-  std::vector<B> b;
-};
-
-// Random centres in a 4 x 4 square, sizes log-uniform in [0.05, 1], ellipse aspect up to `aspect`.
-struct Generator {
-  std::mt19937_64 rng{2024};
-  double aspect = 10.0;
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-  double size() { return 0.05 * std::pow(20.0, uniform(0, 1)); }
-  Vec2 center() { return {uniform(-2, 2), uniform(-2, 2)}; }
-  void make(Rect& r) { r = Rect{center(), Vec2(size(), size()), uniform(0, 6.3)}; }
-  void make(Ellipse& e) {
-    const double a = size();
-    e = Ellipse{center(), a, a / std::pow(aspect, uniform(0, 1)), uniform(0, 6.3)};
-  }
-  void make(Circle& c) { c = Circle{center(), size()}; }
-};
-
-template <class A, class B>
-const Workload<A, B>& workload() {
-  static const Workload<A, B> w = [] {
-    Generator g;
-    Workload<A, B> out{std::vector<A>(kPairs), std::vector<B>(kPairs)};
-    for (std::size_t k = 0; k < kPairs; ++k) {
-      g.make(out.a[k]);
-      g.make(out.b[k]);
-    }
-    return out;
-  }();
-  return w;
-}
+using bench::kPairs;
+using bench::Workload;
+using bench::workload;
 
 // Times one typed kernel; kernels live in the library, so the call is out of line either way.
 template <class A, class B, class Result>

@@ -125,8 +125,17 @@ void BroadPhaseBase::finish_update(std::vector<ProxyPair>&& now) {
 
 // ---- sweep and prune ----
 
-void SweepAndPrune::choose_axis() {
-  double sum[2] = {0, 0}, sum2[2] = {0, 0};
+void SweepAndPrune::Strip::resize(std::size_t n) {
+  keys.resize(n);
+  tags.resize(n);
+  lo.resize(n);
+  hi.resize(n);
+  first.resize(n);
+}
+
+// Chooses the sweep axis and the strip width from the boxes; true when the strips must be rebuilt.
+bool SweepAndPrune::lay_out() {
+  double sum[2] = {0, 0}, sum2[2] = {0, 0}, extent[2] = {0, 0};
   std::size_t n = 0;
   for (const Proxy& p : proxies_) {
     if (!p.alive) continue;
@@ -134,181 +143,211 @@ void SweepAndPrune::choose_axis() {
       const double c = 0.5 * (p.fat.min[k] + p.fat.max[k]);
       sum[k] += c;
       sum2[k] += c * c;
+      extent[k] += p.fat.max[k] - p.fat.min[k];
     }
     ++n;
   }
-  if (n < 2) return;
+  if (n == 0) return strip_width_ == 0.0;
   double var[2];
-  for (int k = 0; k < 2; ++k) var[k] = sum2[k] / n - (sum[k] / n) * (sum[k] / n);
-  if (var[1 - sweep_axis_] > 1.5 * var[sweep_axis_]) sweep_axis_ = 1 - sweep_axis_;
-}
-
-double SweepAndPrune::key_of(std::uint32_t t, int axis) const {
-  const Aabb& b = proxies_[id_of(t)].fat;
-  return (is_max(t) ? b.max[axis] : b.min[axis]) + 0.0;  // -0.0 -> +0.0 for the radix keys
-}
-
-// New coordinates for every endpoint on the axis; endpoints of removed boxes go.
-void SweepAndPrune::refresh_keys(int axis) {
-  Endpoints& e = axes_[axis];
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < e.keys.size(); ++i) {
-    if (!proxies_[id_of(e.tags[i])].alive) continue;
-    e.keys[out] = key_of(e.tags[i], axis);
-    e.tags[out] = e.tags[i];
-    ++out;
+  for (int k = 0; k < 2; ++k) var[k] = std::max(0.0, sum2[k] / n - (sum[k] / n) * (sum[k] / n));
+  int axis = sweep_axis_;
+  if (var[1 - axis] > 1.5 * var[axis]) axis = 1 - axis;
+  const int across = 1 - axis;
+  // Four mean boxes wide; for points, about one box per strip of the spread; for one point, 1.
+  double width = 4.0 * extent[across] / n;
+  if (!(width > 0.0)) width = 4.0 * std::sqrt(var[across] / n);
+  if (!(width > 0.0) || !std::isfinite(width)) width = 1.0;
+  const bool rebuild = strip_width_ == 0.0 || axis != sweep_axis_ || width > 2 * strip_width_ || width < 0.5 * strip_width_;
+  if (rebuild) {
+    sweep_axis_ = axis;
+    strip_width_ = width;
   }
-  e.keys.resize(out);
-  e.tags.resize(out);
+  return rebuild;
 }
 
-// Insertion sort whose swaps update the pair set: an element moving left past another's max with
-// its min may begin a pair; with its max past another's min it ends one. Gives up (false) past
-// `budget` swaps, leaving a permutation.
-bool SweepAndPrune::insertion_sort(int axis, std::size_t budget) {
-  Endpoints& e = axes_[axis];
-  for (std::size_t i = 1; i < e.keys.size(); ++i) {
-    const double k = e.keys[i];
-    const std::uint32_t t = e.tags[i];
-    std::size_t j = i;
-    while (j > 0 && before(k, t, e.keys[j - 1], e.tags[j - 1])) {
-      const std::uint32_t passed = e.tags[j - 1];
-      if (is_max(t) != is_max(passed)) {
-        const ProxyId p = id_of(t), q = id_of(passed);
-        const std::uint64_t key = p < q ? std::uint64_t{p} << 32 | q : std::uint64_t{q} << 32 | p;
-        if (is_max(t)) {
-          overlapping_.erase(key);
-        } else if (overlap_on(proxies_[p].fat, proxies_[q].fat, 0) && overlap_on(proxies_[p].fat, proxies_[q].fat, 1)) {
-          overlapping_.insert(key);
-        }
-      }
-      e.keys[j] = e.keys[j - 1];
-      e.tags[j] = passed;
-      --j;
-      if (++stats_.swaps > budget) {
-        e.keys[j] = k;
-        e.tags[j] = t;
-        return false;
-      }
+SweepAndPrune::StripRange SweepAndPrune::strips_of(const Aabb& box) const {
+  const int across = 1 - sweep_axis_;
+  const auto index = [this](double x) {
+    const double q = std::floor(x / strip_width_);
+    constexpr double kLimit = 4.0e18;  // beyond int64: such boxes share the outermost strips
+    return static_cast<std::int64_t>(std::clamp(q, -kLimit, kLimit));
+  };
+  return {index(box.min[across]), index(box.max[across])};
+}
+
+// Moves each box into the strips its fat box now reaches; entries of strips it left are dropped
+// when those strips are refreshed.
+void SweepAndPrune::assign_strips() {
+  range_.resize(proxies_.size());
+  for (ProxyId id = 0; id < proxies_.size(); ++id) {
+    const StripRange old = range_[id];
+    const StripRange now = proxies_[id].alive ? strips_of(proxies_[id].fat) : StripRange{};
+    if (now.first == old.first && now.last == old.last) continue;
+    for (std::int64_t k = now.first; k <= now.last; ++k) {
+      if (k >= old.first && k <= old.last) continue;
+      std::vector<std::uint32_t>& in = strips_[k].incoming;
+      in.push_back(tag(id, false));
+      in.push_back(tag(id, true));
     }
-    e.keys[j] = k;
-    e.tags[j] = t;
+    range_[id] = now;
+  }
+}
+
+void SweepAndPrune::load(Strip& s, std::size_t i, std::uint32_t t) const {
+  const Aabb& b = proxies_[id_of(t)].fat;
+  s.keys[i] = (is_max(t) ? b.max[sweep_axis_] : b.min[sweep_axis_]) + 0.0;  // -0.0 -> +0.0 for the radix keys
+  s.tags[i] = t;
+  s.lo[i] = b.min[1 - sweep_axis_];
+  s.hi[i] = b.max[1 - sweep_axis_];
+  s.first[i] = range_[id_of(t)].first;
+}
+
+// Current coordinates for the strip's entries; entries of removed boxes, or of boxes that left the
+// strip, go.
+void SweepAndPrune::refresh(std::int64_t index, Strip& s) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < s.tags.size(); ++i) {
+    const ProxyId id = id_of(s.tags[i]);
+    if (proxies_[id].alive && range_[id].first <= index && index <= range_[id].last) load(s, out++, s.tags[i]);
+  }
+  s.resize(out);
+}
+
+bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget) {
+  for (std::size_t i = 1; i < s.keys.size(); ++i) {
+    const double k = s.keys[i], lo = s.lo[i], hi = s.hi[i];
+    const std::int64_t first = s.first[i];
+    const std::uint32_t t = s.tags[i];
+    std::size_t j = i;
+    while (j > 0 && before(k, t, s.keys[j - 1], s.tags[j - 1])) {
+      s.keys[j] = s.keys[j - 1];
+      s.tags[j] = s.tags[j - 1];
+      s.lo[j] = s.lo[j - 1];
+      s.hi[j] = s.hi[j - 1];
+      s.first[j] = s.first[j - 1];
+      --j;
+      if (++stats_.swaps > budget) break;
+    }
+    s.keys[j] = k;
+    s.tags[j] = t;
+    s.lo[j] = lo;
+    s.hi[j] = hi;
+    s.first[j] = first;
+    if (stats_.swaps > budget) return false;
   }
   return true;
 }
 
 // LSD radix sort on (key, is_max): one pass on the max bit, then eight on the key's bytes; every
 // pass is stable, so equal keys keep mins first.
-void SweepAndPrune::radix_sort(int axis) {
-  Endpoints& e = axes_[axis];
-  const std::size_t n = e.keys.size();
+void SweepAndPrune::radix_sort(Strip& s) {
+  const std::size_t n = s.keys.size();
   std::vector<std::uint64_t> bits(n), bits_tmp(n);
   std::vector<std::uint32_t> tags_tmp(n);
-  std::vector<double> keys_tmp(n);
-  for (std::size_t i = 0; i < n; ++i) bits[i] = ordered_bits(e.keys[i]);
+  for (std::size_t i = 0; i < n; ++i) bits[i] = ordered_bits(s.keys[i]);
   const auto pass = [&](auto digit, std::size_t buckets) {
     std::vector<std::size_t> start(buckets + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) ++start[digit(bits[i], e.tags[i]) + 1];
+    for (std::size_t i = 0; i < n; ++i) ++start[digit(bits[i], s.tags[i]) + 1];
     for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t to = start[digit(bits[i], e.tags[i])]++;
+      const std::size_t to = start[digit(bits[i], s.tags[i])]++;
       bits_tmp[to] = bits[i];
-      tags_tmp[to] = e.tags[i];
-      keys_tmp[to] = e.keys[i];
+      tags_tmp[to] = s.tags[i];
     }
     bits.swap(bits_tmp);
-    e.tags.swap(tags_tmp);
-    e.keys.swap(keys_tmp);
+    s.tags.swap(tags_tmp);
   };
   pass([](std::uint64_t, std::uint32_t t) { return static_cast<std::size_t>(t & 1u); }, 2);
   for (int shift = 0; shift < 64; shift += 8) {
     pass([shift](std::uint64_t b, std::uint32_t) { return static_cast<std::size_t>((b >> shift) & 0xffu); }, 256);
   }
+  for (std::size_t i = 0; i < n; ++i) load(s, i, s.tags[i]);
 }
 
-// The endpoints of boxes inserted since the last update, sorted among themselves, merged in.
-void SweepAndPrune::merge_inserted(int axis) {
-  std::vector<std::uint32_t> fresh;
-  for (const ProxyId id : inserted_) {
-    if (!proxies_[id].alive) continue;
-    fresh.push_back(tag(id, false));
-    fresh.push_back(tag(id, true));
-  }
-  if (fresh.empty()) return;
-  const auto key = [this, axis](std::uint32_t t) { return key_of(t, axis); };
-  std::sort(fresh.begin(), fresh.end(), [&](std::uint32_t a, std::uint32_t b) { return before(key(a), a, key(b), b); });
-  Endpoints& e = axes_[axis];
-  Endpoints merged;
-  merged.keys.reserve(e.keys.size() + fresh.size());
-  merged.tags.reserve(e.keys.size() + fresh.size());
+// The endpoints of boxes that entered the strip, sorted among themselves, merged in.
+void SweepAndPrune::merge_incoming(Strip& s) {
+  if (s.incoming.empty()) return;
+  Strip fresh;
+  fresh.resize(s.incoming.size());
+  for (std::size_t i = 0; i < s.incoming.size(); ++i) load(fresh, i, s.incoming[i]);
+  s.incoming.clear();
+  std::vector<std::uint32_t> order(fresh.keys.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&fresh](std::uint32_t a, std::uint32_t b) {
+    return before(fresh.keys[a], fresh.tags[a], fresh.keys[b], fresh.tags[b]);
+  });
+  std::vector<std::uint32_t> tags;
+  tags.reserve(s.tags.size() + order.size());
   std::size_t i = 0, j = 0;
-  while (i < e.keys.size() || j < fresh.size()) {
-    const bool take_old = j == fresh.size() || (i < e.keys.size() && !before(key(fresh[j]), fresh[j], e.keys[i], e.tags[i]));
-    merged.keys.push_back(take_old ? e.keys[i] : key(fresh[j]));
-    merged.tags.push_back(take_old ? e.tags[i++] : fresh[j++]);
+  while (i < s.tags.size() || j < order.size()) {
+    const bool take_old = j == order.size() ||
+                          (i < s.tags.size() && !before(fresh.keys[order[j]], fresh.tags[order[j]], s.keys[i], s.tags[i]));
+    tags.push_back(take_old ? s.tags[i++] : fresh.tags[order[j++]]);
   }
-  e = std::move(merged);
+  s.resize(tags.size());
+  for (std::size_t k = 0; k < tags.size(); ++k) load(s, k, tags[k]);
 }
 
-std::vector<ProxyPair> SweepAndPrune::sweep() {
-  const int other = 1 - sweep_axis_;
-  std::vector<ProxyId> active;
-  active_slot_.resize(proxies_.size());
-  std::vector<ProxyPair> found;
-  for (const std::uint32_t t : axes_[sweep_axis_].tags) {
-    const ProxyId id = id_of(t);
-    if (is_max(t)) {
+// The pairs of the strip: overlapping along the sweep axis (both in the active list) and across it,
+// reported only in the first strip both boxes reach.
+void SweepAndPrune::sweep(std::int64_t index, const Strip& s, std::vector<ProxyPair>& found) {
+  struct Active {
+    ProxyId id;
+    double lo;
+    double hi;
+    std::int64_t first;
+  };
+  std::vector<Active> active;
+  for (std::size_t i = 0; i < s.tags.size(); ++i) {
+    const ProxyId id = id_of(s.tags[i]);
+    if (is_max(s.tags[i])) {
       const std::uint32_t slot = active_slot_[id];
       active[slot] = active.back();
-      active_slot_[active[slot]] = slot;
+      active_slot_[active[slot].id] = slot;
       active.pop_back();
       continue;
     }
-    const Aabb& box = proxies_[id].fat;
     stats_.axis_overlaps += active.size();
-    for (const ProxyId q : active) {
-      if (overlap_on(box, proxies_[q].fat, other)) found.push_back(id < q ? ProxyPair{id, q} : ProxyPair{q, id});
+    for (const Active& q : active) {
+      if (s.lo[i] <= q.hi && q.lo <= s.hi[i] && index == std::max(s.first[i], q.first)) {
+        found.push_back(id < q.id ? ProxyPair{id, q.id} : ProxyPair{q.id, id});
+      }
     }
     active_slot_[id] = static_cast<std::uint32_t>(active.size());
-    active.push_back(id);
+    active.push_back({id, s.lo[i], s.hi[i], s.first[i]});
   }
-  std::sort(found.begin(), found.end());
-  return found;
 }
 
 void SweepAndPrune::update() {
   stats_ = {};
-  choose_axis();
-  for (int k = 0; k < 2; ++k) refresh_keys(k);
-  if (!removed_.empty()) {
-    std::erase_if(overlapping_, [this](std::uint64_t key) {
-      return !proxies_[static_cast<ProxyId>(key >> 32)].alive || !proxies_[static_cast<ProxyId>(key & 0xffffffffu)].alive;
-    });
+  if (lay_out()) {
+    strips_.clear();
+    range_.assign(proxies_.size(), StripRange{});
+    stats_.full_sort = true;
   }
-  // A budget of swaps near the cost of the radix sort: beyond it the scene has not moved coherently.
-  for (int k = 0; k < 2; ++k) {
-    const std::size_t budget = stats_.swaps + 8 * axes_[k].keys.size() + 64;
-    if (stats_.full_sort || !insertion_sort(k, budget)) {
+  assign_strips();
+  active_slot_.resize(proxies_.size());
+  std::vector<ProxyPair> found;
+  for (auto it = strips_.begin(); it != strips_.end();) {
+    Strip& strip = it->second;
+    refresh(it->first, strip);
+    // A budget of swaps near the cost of the radix sort: beyond it the boxes did not move coherently.
+    if (!insertion_sort(strip, stats_.swaps + 8 * strip.keys.size() + 64)) {
       stats_.full_sort = true;
-      radix_sort(k);
+      radix_sort(strip);
     }
+    merge_incoming(strip);
+    if (strip.tags.empty()) {
+      it = strips_.erase(it);
+      continue;
+    }
+    sweep(it->first, strip, found);
+    ++it;
   }
-  for (int k = 0; k < 2; ++k) merge_inserted(k);
   stats_.axis = sweep_axis_;
-  std::vector<ProxyPair> now;
-  if (stats_.full_sort || !inserted_.empty()) {
-    stats_.swept = true;
-    now = sweep();
-    overlapping_.clear();
-    for (const ProxyPair& p : now) overlapping_.insert(std::uint64_t{p.a} << 32 | p.b);
-  } else {
-    now.reserve(overlapping_.size());
-    for (const std::uint64_t key : overlapping_) {
-      now.push_back({static_cast<ProxyId>(key >> 32), static_cast<ProxyId>(key & 0xffffffffu)});
-    }
-    std::sort(now.begin(), now.end());
-  }
-  finish_update(std::move(now));
+  stats_.strips = strips_.size();
+  std::sort(found.begin(), found.end());
+  finish_update(std::move(found));
 }
 
 // ---- brute force ----

@@ -13,17 +13,20 @@
 // rejected with std::invalid_argument, an unknown id with std::out_of_range; either leaves the broad
 // phase as it was.
 //
-// SweepAndPrune keeps the box endpoints along both axes sorted from frame to frame (structure of
-// arrays: keys and tags apart) and repairs the order by insertion sort, near linear when motion is
-// coherent. The swaps themselves maintain the pair set (Baraff; Cohen et al., I-COLLIDE): when a
-// box's min passes another's max, the two may have begun to overlap (both axes are checked); when a
-// max passes a min, they have ended. A frame of coherent motion thus costs O(n + swaps), whatever
-// the density along either axis. When the repair would exceed a budget of swaps (most boxes moved
-// far), each axis is sorted once instead by an LSD radix sort, and the pair set is rebuilt by one
-// sweep, so a scene that jumps costs O(n + pairs on the sweep axis) rather than O(n^2); frames
-// with inserted boxes are swept too (their endpoints are sorted among themselves and merged in).
-// The sweep runs along the axis where the box centres spread more (their variance), re-chosen when
-// the other axis spreads 1.5 times more, so that a scene laid out along a line sweeps along it.
+// SweepAndPrune cuts the plane into strips across the sweep axis (as wide as four mean boxes) and
+// keeps, for each strip, the endpoints of the boxes that reach into it sorted along the sweep axis
+// from frame to frame (structure of arrays: keys, tags, and each box's interval across the strip).
+// Insertion sort repairs each strip, near linear when motion is coherent; past a budget of swaps
+// (most boxes jumped) the strip is radix-sorted instead (LSD on the key bytes), so a scene that
+// jumps costs O(n) sorting rather than O(n^2). Boxes entering a strip are sorted among themselves
+// and merged in. A sweep over each strip then lists its pairs; a pair met in several strips is
+// reported only in the first strip both boxes reach. Cutting into strips is what keeps the cost
+// near linear: in one list per axis, as in classic sweep and prune, the endpoints get denser as a
+// 2D scene grows (about sqrt(n) boxes stack over each point of the axis), and so do the swaps and
+// the pairs to check. Pairs that began and ended are the difference from the previous frame.
+// The sweep axis is the one along which the box centres spread more (their variance), re-chosen
+// when the other axis spreads 1.5 times more, so that a scene laid out along a line sweeps along
+// it; the strips are rebuilt when the axis or the mean box size changes by 2x.
 //
 // BruteForceBroadPhase has the same interface and tests every pair: the reference for tests.
 #pragma once
@@ -34,7 +37,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 namespace collide2d {
@@ -98,32 +101,46 @@ class SweepAndPrune : public BroadPhaseBase {
 
   // What the last update did, for benchmarks and tests.
   struct UpdateStats {
-    std::size_t swaps = 0;          // insertion-sort swaps, both axes
-    bool full_sort = false;         // the radix sort replaced the insertion sort
-    bool swept = false;             // the pair set was rebuilt by a sweep (inserts, full sorts)
+    std::size_t swaps = 0;          // insertion-sort swaps over all strips
+    bool full_sort = false;         // some strip was radix-sorted (or all were rebuilt)
     int axis = 0;                   // the sweep axis, 0: x, 1: y
-    std::size_t axis_overlaps = 0;  // in a sweep: pairs overlapping on the sweep axis
+    std::size_t strips = 0;         // strips holding boxes
+    std::size_t axis_overlaps = 0;  // pairs overlapping on the sweep axis within a strip (checked across)
   };
   const UpdateStats& last_update() const { return stats_; }
 
  private:
-  struct Endpoints {
-    std::vector<double> keys;         // coordinates along the axis, sorted
-    std::vector<std::uint32_t> tags;  // id << 1 | is_max, parallel to keys
+  // One strip, structure of arrays sorted by key along the sweep axis.
+  struct Strip {
+    std::vector<double> keys;
+    std::vector<std::uint32_t> tags;  // id << 1 | is_max
+    std::vector<double> lo;           // the box's interval across the sweep axis
+    std::vector<double> hi;
+    std::vector<std::int64_t> first;  // the first strip the box reaches (where its pairs are reported)
+    std::vector<std::uint32_t> incoming;  // tags of boxes that entered since the last update
+    void resize(std::size_t n);
   };
-  Endpoints axes_[2];
+  struct StripRange {
+    std::int64_t first = 0;
+    std::int64_t last = -1;  // empty
+  };
+
   int sweep_axis_ = 0;
-  std::unordered_set<std::uint64_t> overlapping_;  // a << 32 | b, kept by the insertion sorts
-  std::vector<std::uint32_t> active_slot_;        // sweep scratch: a proxy's place in the active list
+  double strip_width_ = 0.0;  // 0: not laid out yet
+  std::unordered_map<std::int64_t, Strip> strips_;
+  std::vector<StripRange> range_;  // per proxy
+  std::vector<std::uint32_t> active_slot_;  // sweep scratch: a proxy's place in the active list
   UpdateStats stats_;
 
-  double key_of(std::uint32_t tag, int axis) const;
-  void choose_axis();
-  void refresh_keys(int axis);
-  bool insertion_sort(int axis, std::size_t budget);
-  void radix_sort(int axis);
-  void merge_inserted(int axis);
-  std::vector<ProxyPair> sweep();
+  bool lay_out();
+  StripRange strips_of(const Aabb& box) const;
+  void assign_strips();
+  void load(Strip& s, std::size_t i, std::uint32_t tag) const;
+  void refresh(std::int64_t index, Strip& s);
+  bool insertion_sort(Strip& s, std::size_t budget);
+  void radix_sort(Strip& s);
+  void merge_incoming(Strip& s);
+  void sweep(std::int64_t index, const Strip& s, std::vector<ProxyPair>& found);
 };
 
 class BruteForceBroadPhase : public BroadPhaseBase {
