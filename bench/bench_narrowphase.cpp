@@ -9,6 +9,7 @@
 #include "narrowphase/overlap_rect_rect.h"
 #include "narrowphase/query.h"
 
+#include "bench/box2d_baseline.h"
 #include "bench/workload.h"
 
 #include <benchmark/benchmark.h>
@@ -72,6 +73,52 @@ BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance
 BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>);
 BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>);
 BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>);
+
+// Box2D on the same pairs, converted beforehand (the conversion is not timed): b2TestOverlap on
+// radius-0 b2PolygonShapes (the rectangle, and the ellipse as its inscribed 8-gon), and b2Distance
+// on inscribed N-gons.
+Vec2 centre_of(const Rect& r) { return r.center; }
+Vec2 centre_of(const Ellipse& e) { return e.center; }
+
+template <class A, class B>
+std::vector<baseline::Polygon> polygons(int sides, bool first) {
+  const Workload<A, B>& w = workload<A, B>();
+  std::vector<baseline::Polygon> out;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    const Vec2 origin = centre_of(w.a[k]);
+    out.push_back(first ? baseline::to_box2d(w.a[k], sides, baseline::Fit::inscribed, origin)
+                        : baseline::to_box2d(w.b[k], sides, baseline::Fit::inscribed, origin));
+  }
+  return out;
+}
+
+void box2d_overlap_rect_ellipse_8gon(benchmark::State& state) {
+  const auto a = polygons<Rect, Ellipse>(8, true);
+  const auto b = polygons<Rect, Ellipse>(8, false);
+  std::vector<baseline::ShapePair> pairs;
+  for (std::size_t k = 0; k < kPairs; ++k) pairs.push_back(baseline::to_box2d_shapes(a[k], b[k]));
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(baseline::box2d_overlap(pairs[k]));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void box2d_distance_ellipse_ellipse(benchmark::State& state) {
+  const int sides = static_cast<int>(state.range(0));
+  const auto a = polygons<Ellipse, Ellipse>(sides, true);
+  const auto b = polygons<Ellipse, Ellipse>(sides, false);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(baseline::box2d_distance(a[k], b[k]));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK(box2d_overlap_rect_ellipse_8gon);
+BENCHMARK(box2d_distance_ellipse_ellipse)->RangeMultiplier(2)->Range(8, 256);
 
 }  // namespace
 }  // namespace collide2d

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace collide2d {
@@ -17,11 +18,10 @@ using detail::EllipsePair;
 using V2 = detail::V2<double>;
 
 // The solid distance of a pair the overlap decision found separated along contact.direction.
-SolverReport separated(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact) {
-  const auto pair = EllipsePair<double>::of(a, b);
+SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<double>& pair,
+                       const detail::EllipseContact& contact) {
   int iterations = contact.iterations;
-  const V2 n = detail::best_direction(pair, V2(contact.direction), iterations);
-  const auto e = pair.separation(n);
+  const auto e = detail::best_direction(pair, V2(contact.direction), iterations).at;
   return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
 }
 
@@ -132,9 +132,10 @@ Vec2 crossing_point(const Ellipse& a, const Ellipse& b, const Vec2& w, const Vec
 }
 
 SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
-  const detail::EllipseContact contact = detail::ellipse_contact(a, b);
-  if (!contact.overlap) return separated(a, b, contact);
-  const auto pair = EllipsePair<double>::of(a, b);
+  std::optional<EllipsePair<double>> lazy;
+  const detail::EllipseContact contact = detail::ellipse_contact(a, b, lazy);
+  const EllipsePair<double>& pair = lazy ? *lazy : lazy.emplace(EllipsePair<double>::of(a, b));
+  if (!contact.overlap) return separated(a, b, pair, contact);
   int iterations = contact.iterations;
   const Extremes ex = containment_extremes(pair, a, b, iterations);
   const double margin = pair.margin();
@@ -154,14 +155,16 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
 }  // namespace
 
 SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
-  const detail::EllipseContact contact = detail::ellipse_contact(a, b);
+  std::optional<EllipsePair<double>> pair;
+  const detail::EllipseContact contact = detail::ellipse_contact(a, b, pair);
   if (contact.overlap) return {DistanceResult::touching(contact.witness), contact.iterations, true};
   switch (method) {
     case EllipseDistanceMethod::gradient: return detail::gradient_descent_curves(a, b);
     case EllipseDistanceMethod::polynomial: return detail::polynomial_curves(a, b);
     case EllipseDistanceMethod::robust: break;
   }
-  return separated(a, b, contact);
+  if (!pair) pair.emplace(EllipsePair<double>::of(a, b));
+  return separated(a, b, *pair, contact);
 }
 
 SolverReport boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {

@@ -2,7 +2,9 @@
 // overlap test and the distance queries.
 #pragma once
 
-#include "narrowphase/overlap_rect_ellipse.h"  // FilterVerdict
+#include "narrowphase/ellipse_pair.h"
+
+#include <optional>
 #include "shapes/shapes.h"
 
 namespace collide2d::detail {
@@ -15,7 +17,10 @@ struct EllipseContact {
 };
 
 // With `double_verdict`, stops after the double pass and stores its verdict there (`uncertain` when
-// it could not decide; the returned contact is then only a guess).
-EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, FilterVerdict* double_verdict = nullptr);
+// it could not decide; the returned contact is then only a guess). `pair` is EllipsePair::of(a, b),
+// built here unless the bounding circles already decide (it costs two sines and cosines), and kept
+// for callers that go on to a distance.
+EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
+                               FilterVerdict* double_verdict = nullptr);
 
 }  // namespace collide2d::detail

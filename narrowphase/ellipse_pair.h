@@ -65,8 +65,9 @@ struct EllipseSupport {
     const Real u = a * l[0];
     const Real v = b * l[1];
     const Real h = sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
-    const Real k = a * b / h;  // at most max(a, b): (ab)^2 / h^3 without overflow
-    return {rot.apply(V2<Real>(a * u / h, b * v / h)), h, k * k / h};
+    const Real inv = 1 / h;
+    const Real k = a * b * inv;  // at most max(a, b): (ab)^2 / h^3 without overflow
+    return {rot.apply(V2<Real>(a * u * inv, b * v * inv)), h, k * k * inv};
   }
 };
 
@@ -106,13 +107,12 @@ struct EllipsePair {
   }
 };
 
-// Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}): Newton steps from
-// the latest point, bisection whenever a step would leave the bracket. Stops when the bracket or the
-// step reaches the last bits of the parameter. `iterations` counts evaluations.
+// Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):
+// Newton steps from the latest point, bisection whenever a step would leave the bracket. Stops when
+// the bracket or the step reaches the last bits of the parameter. `iterations` counts evaluations.
 template <class Real, class F>
-Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
+Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations) {
   Real t = lo;
-  auto cur = f(t);
   for (int k = 0; k < 200; ++k) {
     Real next = t - cur.first / cur.second;
     if (!(cur.second < 0 && next > lo && next < hi)) next = (lo + hi) / 2;
@@ -134,32 +134,50 @@ Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
   return t;
 }
 
-// Unit vector at angle t from n0 (counter-clockwise).
+template <class Real, class F>
+Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
+  return newton_in_bracket(f, lo, hi, f(lo), iterations);
+}
+
+// The unit vector turned from n0 by the angle 2 atan(tau) (counter-clockwise for turn = 1, clockwise
+// for -1): rational in tau, so the Newton iteration below pays no cos/sin per step.
 template <class Real>
-V2<Real> turned(const V2<Real>& n0, Real t) {
-  using std::cos;
-  using std::sin;
-  return cos(t) * n0 + sin(t) * perp(n0);
+V2<Real> turned(const V2<Real>& n0, Real turn, Real tau) {
+  const Real d = 1 + tau * tau;
+  return ((1 - tau * tau) / d) * n0 + (turn * 2 * tau / d) * perp(n0);
 }
 
 // The direction maximising s near n0. On the arc of separating directions, and wherever
-// s > -(rho_A + rho_B), s is concave in the angle (s'' = -(s + rho_A + rho_B)); the arc is shorter
-// than pi. Turning from n0 towards increasing s, the maximiser is the first sign change of s', and
-// every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s' with that
-// bracket. From a separating n0 this is the global maximum, the distance.
+// s > -(rho_A + rho_B), s is concave in the angle t (s'' = -(s + rho_A + rho_B)); the arc is
+// shorter than pi. Turning from n0 towards increasing s, the maximiser is the first sign change of
+// s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s'
+// with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
+// the global maximum, the distance.
 template <class Real>
-V2<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, int& iterations) {
+struct Direction {
+  V2<Real> n;
+  Separation<Real> at;  // the separation along n
+};
+
+template <class Real>
+Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, int& iterations) {
   const Separation<Real> first = p.separation(n0);
-  if (first.slope == 0) return n0;
+  if (first.slope == 0) return {n0, first};
   const Real floor = first.s - p.margin();
   const Real turn = first.slope > 0 ? Real(1) : Real(-1);
-  const auto f = [&](Real t) {
-    const Separation<Real> e = p.separation(turned(n0, turn * t));
-    if (e.s < floor) return std::pair<Real, Real>(-1, 0);  // beyond the maximum: bisect
-    return std::pair<Real, Real>(turn * e.slope, -e.bend);
+  Direction<Real> last{n0, first};
+  Real last_tau = 0;
+  const auto f = [&](Real tau) {
+    last = {turned(n0, turn, tau), p.separation(turned(n0, turn, tau))};
+    last_tau = tau;
+    if (last.at.s < floor) return std::pair<Real, Real>(-1, 0);  // beyond the maximum: bisect
+    return std::pair<Real, Real>(turn * last.at.slope, -last.at.bend * 2 / (1 + tau * tau));  // dt/dtau = 2 / (1 + tau^2)
   };
-  const Real t = newton_in_bracket(f, Real(0), Real(3.14159265358979323846L), iterations);
-  return turned(n0, turn * t);
+  const std::pair<Real, Real> at_start(turn * first.slope, -first.bend * 2);
+  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations);
+  if (tau == last_tau) return last;
+  const V2<Real> n = turned(n0, turn, tau);
+  return {n, p.separation(n)};
 }
 
 template <class Real>
@@ -297,8 +315,9 @@ GjkOutcome<Real> decide(const EllipsePair<Real>& p) {
   GjkOutcome<Real> g = gjk(p);
   if (g.verdict == FilterVerdict::separated) return g;
   if (g.verdict == FilterVerdict::overlap && g.residual <= p.margin()) return g;
-  const V2<Real> n = best_direction(p, g.direction, g.iterations);
-  const Separation<Real> e = p.separation(n);
+  const Direction<Real> best = best_direction(p, g.direction, g.iterations);
+  const V2<Real>& n = best.n;
+  const Separation<Real>& e = best.at;
   g.separation = e.s;
   if (g.verdict == FilterVerdict::uncertain && e.s > p.margin()) {
     g.verdict = FilterVerdict::separated;

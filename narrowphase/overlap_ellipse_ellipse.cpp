@@ -1,7 +1,6 @@
 #include "narrowphase/overlap_ellipse_ellipse.h"
 
 #include "narrowphase/ellipse_contact.h"
-#include "narrowphase/ellipse_pair.h"
 
 #include <limits>
 
@@ -13,8 +12,8 @@ constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 // Whether the point p (relative to the centre of e) is inside e by more than the rounding of the
 // quadratic: its axis components carry 3 u |p| of error each, scaled by 1/a and 1/b.
-bool clearly_inside(const Ellipse& e, const Vec2& p) {
-  const Vec2 l = Rotation<double>::of(e.angle).apply_inverse(p);
+bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
+  const Vec2 l = e.rot.apply_inverse(p);
   const double u = l.x() / e.a;
   const double v = l.y() / e.b;
   return u * u + v * v < 1.0 - 16 * kU * (1.0 + p.norm() * (1.0 / e.a + 1.0 / e.b));
@@ -33,23 +32,26 @@ EllipseContact from_gjk(const GjkOutcome<Real>& g, const Ellipse& a, int iterati
 
 }  // namespace
 
-EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, FilterVerdict* double_verdict) {
+EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
+                               FilterVerdict* double_verdict) {
   const Vec2 delta = b.center - a.center;
   const double reach = std::max(a.a, a.b) + std::max(b.a, b.b);
   const double length = delta.norm();
   FilterVerdict verdict = FilterVerdict::uncertain;
   EllipseContact out;
-  if (length - reach > 8 * kU * (length + reach)) {
+  const bool far_apart = length - reach > 8 * kU * (length + reach);
+  if (!far_apart && !pair) pair = EllipsePair<double>::of(a, b);
+  if (far_apart) {
     verdict = FilterVerdict::separated;
     out = {false, delta / length, Vec2::Zero(), 0};
-  } else if (clearly_inside(a, delta)) {
+  } else if (clearly_inside(pair->A, delta)) {
     verdict = FilterVerdict::overlap;
     out = {true, Vec2::UnitX(), b.center, 0};
-  } else if (clearly_inside(b, Vec2(-delta))) {
+  } else if (clearly_inside(pair->B, Vec2(-delta))) {
     verdict = FilterVerdict::overlap;
     out = {true, Vec2::UnitX(), a.center, 0};
   } else {
-    const auto g = decide(EllipsePair<double>::of(a, b));
+    const auto g = decide(*pair);
     verdict = g.verdict;
     out = from_gjk(g, a, g.iterations);
   }
@@ -64,11 +66,15 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, FilterVerdict
 
 }  // namespace detail
 
-bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) { return detail::ellipse_contact(a, b).overlap; }
+bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
+  std::optional<detail::EllipsePair<double>> pair;
+  return detail::ellipse_contact(a, b, pair).overlap;
+}
 
 FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
+  std::optional<detail::EllipsePair<double>> pair;
   FilterVerdict verdict = FilterVerdict::uncertain;
-  detail::ellipse_contact(a, b, &verdict);
+  detail::ellipse_contact(a, b, pair, &verdict);
   return verdict;
 }
 

@@ -1,0 +1,33 @@
+// `collide2d report`: every method measured on the same pairs, errors against the 50-digit
+// reference, and a plot with a point per measurement.
+#include "tools/report_command.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace collide2d::tool {
+namespace {
+
+TEST(Report, MeasuresEveryMethodAgainstTheReference) {
+  const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 3};
+  const std::vector<MethodResult> results = measure_methods(options);
+  ASSERT_EQ(results.size(), 3u + 2u * 6u);
+  EXPECT_EQ(results[0].method, "robust");
+  EXPECT_LE(results[0].max_error, 1e-15);
+  for (const MethodResult& r : results) EXPECT_GT(r.nanoseconds, 0.0) << r.method;
+  // Box2D's polygons converge as N grows: the N = 256 error is far below the N = 8 one.
+  EXPECT_LT(results[8].median_error, 1e-2 * results[3].median_error);
+  EXPECT_EQ(results[3].sides, 8);
+  EXPECT_EQ(results[8].sides, 256);
+  std::ostringstream table, svg;
+  print_report(results, options, table);
+  write_report_svg(results, svg);
+  EXPECT_NE(table.str().find("| box2d circumscribed | 256 |"), std::string::npos);
+  std::size_t points = 0;
+  for (std::size_t at = svg.str().find("r=\"4\""); at != std::string::npos; at = svg.str().find("r=\"4\"", at + 1)) ++points;
+  EXPECT_EQ(points, results.size() + 5);  // one per measurement, one per legend entry
+}
+
+}  // namespace
+}  // namespace collide2d::tool

@@ -1,0 +1,168 @@
+#include "tools/report_command.h"
+
+#include "bench/box2d_baseline.h"
+#include "mp_reference.h"
+#include "narrowphase/distance_ellipse_ellipse.h"
+#include "narrowphase/overlap_ellipse_ellipse.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <random>
+
+namespace collide2d::tool {
+namespace {
+
+struct Workload {
+  std::vector<Ellipse> a;
+  std::vector<Ellipse> b;
+  std::vector<double> reference;
+  std::vector<double> scale;
+};
+
+Workload make_workload(const ReportOptions& options) {
+  std::mt19937_64 rng(options.seed);
+  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto ellipse = [&] {
+    const double a = 0.05 * std::pow(20.0, uniform(0, 1));
+    return Ellipse{Vec2(uniform(-2, 2), uniform(-2, 2)), a, a / std::pow(10.0, uniform(0, 1)), uniform(0, 6.3)};
+  };
+  Workload w;
+  while (static_cast<int>(w.a.size()) < options.pairs) {
+    const Ellipse a = ellipse(), b = ellipse();
+    if (overlap_ellipse_ellipse(a, b)) continue;
+    w.a.push_back(a);
+    w.b.push_back(b);
+    w.reference.push_back(static_cast<double>(reference::ellipse_pair(a, b).distance));
+    w.scale.push_back(std::max({a.a, a.b, b.a, b.b, (b.center - a.center).norm()}));
+  }
+  return w;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// Runs query(k) over the workload `repetitions` times; the median pass gives the time per query.
+template <class Query>
+MethodResult measure(const Workload& w, int repetitions, std::string method, int sides, Query query) {
+  const std::size_t n = w.a.size();
+  std::vector<double> got(n), times;
+  for (int r = 0; r < repetitions; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < n; ++k) got[k] = query(k);
+    times.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / n);
+  }
+  std::vector<double> errors;
+  for (std::size_t k = 0; k < n; ++k) errors.push_back(std::abs(got[k] - w.reference[k]) / w.scale[k]);
+  return {std::move(method), sides, median(times), median(errors), *std::max_element(errors.begin(), errors.end())};
+}
+
+}  // namespace
+
+std::vector<MethodResult> measure_methods(const ReportOptions& options) {
+  const Workload w = make_workload(options);
+  std::vector<MethodResult> out;
+  for (const auto& [name, method] : {std::pair{"robust", EllipseDistanceMethod::robust},
+                                     std::pair{"gradient", EllipseDistanceMethod::gradient},
+                                     std::pair{"polynomial", EllipseDistanceMethod::polynomial}}) {
+    out.push_back(measure(w, options.repetitions, name, 0, [&w, method](std::size_t k) {
+      return distance_ellipse_ellipse(w.a[k], w.b[k], method).result.distance;
+    }));
+  }
+  for (const auto& [name, fit] : {std::pair{"box2d inscribed", baseline::Fit::inscribed},
+                                  std::pair{"box2d circumscribed", baseline::Fit::circumscribed}}) {
+    for (int sides = 8; sides <= 256; sides *= 2) {
+      std::vector<baseline::Polygon> pa, pb;
+      for (std::size_t k = 0; k < w.a.size(); ++k) {
+        pa.push_back(baseline::to_box2d(w.a[k], sides, fit, w.a[k].center));
+        pb.push_back(baseline::to_box2d(w.b[k], sides, fit, w.a[k].center));
+      }
+      out.push_back(measure(w, options.repetitions, name, sides,
+                            [&pa, &pb](std::size_t k) { return baseline::box2d_distance(pa[k], pb[k]); }));
+    }
+  }
+  return out;
+}
+
+void print_report(const std::vector<MethodResult>& results, const ReportOptions& options, std::ostream& out) {
+  char line[160];
+  std::snprintf(line, sizeof line, "ellipse-ellipse distance, %d separated pairs, time = median of %d passes\n",
+                options.pairs, options.repetitions);
+  out << line;
+  out << "| method | N | time per query | median error | max error |\n| --- | --- | --- | --- | --- |\n";
+  for (const MethodResult& r : results) {
+    std::snprintf(line, sizeof line, "| %s | %s | %.0f ns | %.1e | %.1e |\n", r.method.c_str(),
+                  r.sides ? std::to_string(r.sides).c_str() : "-", r.nanoseconds, r.median_error, r.max_error);
+    out << line;
+  }
+  out << "errors are |d - d_ref| / max(size, centre distance); d_ref from 50-digit arithmetic\n";
+}
+
+void write_report_svg(const std::vector<MethodResult>& results, std::ostream& out) {
+  constexpr double kWidth = 820, kHeight = 560, kLeft = 90, kRight = 230, kTop = 40, kBottom = 60;
+  constexpr double kFloor = 1e-17;
+  double t_lo = 1e300, t_hi = 0, e_hi = kFloor;
+  for (const MethodResult& r : results) {
+    t_lo = std::min(t_lo, r.nanoseconds);
+    t_hi = std::max(t_hi, r.nanoseconds);
+    e_hi = std::max(e_hi, r.max_error);
+  }
+  const double x0 = std::floor(std::log10(t_lo)), x1 = std::ceil(std::log10(t_hi));
+  const double y0 = std::log10(kFloor), y1 = std::max(0.0, std::ceil(std::log10(e_hi)));
+  const auto px = [&](double t) { return kLeft + (std::log10(t) - x0) / (x1 - x0) * (kWidth - kLeft - kRight); };
+  const auto py = [&](double e) {
+    return kHeight - kBottom - (std::log10(std::max(e, kFloor)) - y0) / (y1 - y0) * (kHeight - kTop - kBottom);
+  };
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"" << kLeft << "\" y=\"24\" font-size=\"15\">collide2d ellipse-ellipse distance: time per query "
+         "against error</text>\n";
+  for (double k = x0; k <= x1; ++k) {
+    const double x = px(std::pow(10.0, k));
+    out << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\"" << kHeight - kBottom
+        << "\" stroke=\"#ddd\"/>\n<text x=\"" << x << "\" y=\"" << kHeight - kBottom + 18
+        << "\" text-anchor=\"middle\">1e" << k << "</text>\n";
+  }
+  for (double k = y0; k <= y1; k += 2) {
+    const double y = py(std::pow(10.0, k));
+    out << "<line x1=\"" << kLeft << "\" y1=\"" << y << "\" x2=\"" << kWidth - kRight << "\" y2=\"" << y
+        << "\" stroke=\"#ddd\"/>\n<text x=\"" << kLeft - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e" << k
+        << "</text>\n";
+  }
+  out << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << kWidth - kLeft - kRight << "\" height=\""
+      << kHeight - kTop - kBottom << "\" fill=\"none\" stroke=\"#333\"/>\n"
+      << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"" << kHeight - 18
+      << "\" text-anchor=\"middle\">time per query (ns, log)</text>\n"
+      << "<text transform=\"rotate(-90)\" x=\"" << -(kTop + kHeight - kBottom) / 2 << "\" y=\"24\" text-anchor=\"middle\">"
+      << "median error / scale (log; max as a bar)</text>\n";
+  const char* colours[] = {"#c0392b", "#8e44ad", "#d68910", "#2471a3", "#17a589"};
+  std::vector<std::string> names;
+  for (const MethodResult& r : results) {
+    if (std::find(names.begin(), names.end(), r.method) == names.end()) names.push_back(r.method);
+  }
+  for (std::size_t m = 0; m < names.size(); ++m) {
+    const char* colour = colours[m % 5];
+    std::string curve;
+    for (const MethodResult& r : results) {
+      if (r.method != names[m]) continue;
+      const double x = px(r.nanoseconds), y = py(r.median_error), top = py(r.max_error);
+      curve += std::to_string(x) + "," + std::to_string(y) + " ";
+      out << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x << "\" y2=\"" << top << "\" stroke=\"" << colour
+          << "\" stroke-opacity=\"0.5\"/>\n<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"" << colour << "\"/>\n";
+      if (r.sides) out << "<text x=\"" << x + 5 << "\" y=\"" << y - 5 << "\" font-size=\"10\">" << r.sides << "</text>\n";
+    }
+    out << "<polyline points=\"" << curve << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
+    const double ly = kTop + 20 + 22.0 * m;
+    out << "<circle cx=\"" << kWidth - kRight + 20 << "\" cy=\"" << ly - 4 << "\" r=\"4\" fill=\"" << colour << "\"/>\n"
+        << "<text x=\"" << kWidth - kRight + 30 << "\" y=\"" << ly << "\">" << names[m]
+        << (names[m].starts_with("box2d") ? " N-gons" : "") << "</text>\n";
+  }
+  out << "<text x=\"" << kWidth - kRight + 12 << "\" y=\"" << kTop + 30 + 22.0 * names.size()
+      << "\" font-size=\"10\">errors below 1e-17 sit on the floor</text>\n</svg>\n";
+}
+
+}  // namespace collide2d::tool

@@ -1,0 +1,39 @@
+// The `collide2d report` command as a library: speed against error for every ellipse–ellipse
+// distance method on one workload, as a table and as a log–log SVG plot.
+//
+// Workload: `pairs` separated ellipse pairs (seeded; centres in a 4 x 4 square, semi-axes 0.05 to
+// 1, aspect up to 10). Reference: the 50-digit distance of tests/mp_reference.h. Methods: robust,
+// gradient and polynomial, and Box2D's b2Distance on the inscribed and on the circumscribed N-gons
+// for N = 8 ... 256. Time: the median over `repetitions` passes of the mean time per query in the
+// pass. Error: |d - d_ref| / max(size, centre distance), median and maximum over the pairs.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace collide2d::tool {
+
+struct MethodResult {
+  std::string method;  // e.g. "robust", "box2d inscribed"
+  int sides = 0;       // N for the Box2D polygons, 0 otherwise
+  double nanoseconds = 0.0;
+  double median_error = 0.0;
+  double max_error = 0.0;
+};
+
+struct ReportOptions {
+  int pairs = 200;
+  int repetitions = 5;
+  unsigned seed = 1;
+};
+
+std::vector<MethodResult> measure_methods(const ReportOptions& options);
+
+void print_report(const std::vector<MethodResult>& results, const ReportOptions& options, std::ostream& out);
+
+// Time per query against error, log-log, one point per method and one curve per Box2D fit over N.
+// Errors below 1e-17 are drawn at 1e-17 (the floor of the axis).
+void write_report_svg(const std::vector<MethodResult>& results, std::ostream& out);
+
+}  // namespace collide2d::tool
