@@ -13,12 +13,12 @@ using detail::V2;
 
 constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 
-// One corner P = (s0 e0, s1 e1) of the Minkowski test; see the header for the geometry.
-FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double s1, double err) {
+// One corner P = (s0 e0, s1 e1) of the Minkowski test; see the header for the geometry. inv_a2 and
+// inv_b2 are 1/a^2 and 1/b^2.
+FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double s1, double err, double inv_a2,
+                           double inv_b2) {
   const V2<double> u = f.to_ellipse_axes(V2<double>(s0 * f.e[0], s1 * f.e[1]));
   // u is P - K in ellipse axes; Eberly's Delta = K - P flips the sign of the cone coordinates.
-  const double inv_a2 = 1.0 / (f.a * f.a);
-  const double inv_b2 = 1.0 / (f.b * f.b);
   const double q0 = -u[0] * inv_a2;
   const double q1 = -u[1] * inv_b2;
   const double z0 = s0 * (f.c * q0 - f.s * q1);  // s0 * (M Delta)_0
@@ -35,17 +35,24 @@ FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double 
 }
 
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
-  const double l[2] = {std::sqrt(f.l0_squared()), std::sqrt(f.l1_squared())};
+  const double l_squared[2] = {f.l0_squared(), f.l1_squared()};
   const double err = 16.0 * kUnitRoundoff * f.scale();
   bool unsure = false;
   for (int i = 0; i < 2; ++i) {
-    const double margin = f.e[i] + l[i] - std::abs(f.x[i]);
+    // The grown box R': margin = e_i + l_i - |x_i|. Compared squared first (no square root) when the
+    // centre is well beyond the rectangle; the root only near the decision.
+    const double reach = std::abs(f.x[i]) - f.e[i];
+    const double clear = reach - 2.0 * err;  // l_i < clear, with room for the rounding of l_i^2
+    if (clear > 0.0 && l_squared[i] < clear * clear) return FilterVerdict::separated;
+    const double margin = -reach + std::sqrt(l_squared[i]);
     if (margin < -err) return FilterVerdict::separated;
     unsure = unsure || margin <= err;
   }
+  const double inv_a2 = 1.0 / (f.a * f.a);
+  const double inv_b2 = 1.0 / (f.b * f.b);
   for (const double s0 : {-1.0, 1.0}) {
     for (const double s1 : {-1.0, 1.0}) {
-      const FilterVerdict v = corner_piece(f, s0, s1, err);
+      const FilterVerdict v = corner_piece(f, s0, s1, err, inv_a2, inv_b2);
       if (v == FilterVerdict::separated) return v;
       unsure = unsure || v == FilterVerdict::uncertain;
     }
@@ -92,6 +99,10 @@ bool detail::minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r,
 
 FilterVerdict overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e) {
   return minkowski_filter(detail::rect_ellipse_frame<double>(r, e));
+}
+
+bool overlap_rect_ellipse(const Rect& r, const Orientation& ro, const Ellipse& e, const Orientation& eo) {
+  return detail::minkowski_overlap(detail::rect_ellipse_frame<double>(r, {ro.c, ro.s}, e, {eo.c, eo.s}), r, e);
 }
 
 bool overlap_rect_ellipse(const Rect& r, const Ellipse& e, RectEllipseMethod method) {

@@ -50,4 +50,9 @@ bool overlap_rect_ellipse(const Rect& r, const Ellipse& e,
 
 FilterVerdict overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e);
 
+// The default (Minkowski) test given each shape's Orientation::of(angle), for callers that keep
+// orientations between queries: the same answer without evaluating a sine or cosine.
+bool overlap_rect_ellipse(const Rect& r, const Orientation& r_orientation, const Ellipse& e,
+                          const Orientation& e_orientation);
+
 }  // namespace collide2d

@@ -56,10 +56,11 @@ struct RectEllipseFrame {
   Real m01() const { return (a * a - b * b) * c * s; }
 };
 
+// rr and re: the rotations of r.angle and el.angle.
 template <class Real>
-RectEllipseFrame<Real> rect_ellipse_frame(const Rect& r, const Ellipse& el) {
-  const Rotation<Real> rr = Rotation<Real>::of(r.angle);
-  const Rotation<Real> rel = Rotation<Real>::of(el.angle).relative_to(rr);
+RectEllipseFrame<Real> rect_ellipse_frame(const Rect& r, const Rotation<Real>& rr, const Ellipse& el,
+                                          const Rotation<Real>& re) {
+  const Rotation<Real> rel = re.relative_to(rr);
   // Subtract the centres before rotating: far from the origin the difference is exact or nearly so.
   const V2<Real> d(Real(el.center.x()) - Real(r.center.x()), Real(el.center.y()) - Real(r.center.y()));
   RectEllipseFrame<Real> f;
@@ -70,6 +71,11 @@ RectEllipseFrame<Real> rect_ellipse_frame(const Rect& r, const Ellipse& el) {
   f.a = Real(el.a);
   f.b = Real(el.b);
   return f;
+}
+
+template <class Real>
+RectEllipseFrame<Real> rect_ellipse_frame(const Rect& r, const Ellipse& el) {
+  return rect_ellipse_frame(r, Rotation<Real>::of(r.angle), el, Rotation<Real>::of(el.angle));
 }
 
 // The rectangle point closest to the ellipse centre in the ellipse's metric, and the quadratic

@@ -30,6 +30,11 @@ Aabb around(const Vec2& center, const Vec2& half) { return {center - half, cente
 
 }  // namespace
 
+Orientation Orientation::of(double angle) {
+  const Rot r = Rot::of(angle);
+  return {r.c, r.s};
+}
+
 void validate(const Circle& c) {
   require_finite("circle", "cx", c.center.x());
   require_finite("circle", "cy", c.center.y());
