@@ -2,6 +2,7 @@
 
 #include "narrowphase/rect_ellipse_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -35,8 +36,11 @@ FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double 
 }
 
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
-  const double l_squared[2] = {f.l0_squared(), f.l1_squared()};
   const double err = 16.0 * kUnitRoundoff * f.scale();
+  // The ellipse's bounding circle first: most pairs of a scene are that far apart.
+  const double radius = std::max(f.a, f.b) + err;
+  if (std::abs(f.x[0]) - f.e[0] > radius || std::abs(f.x[1]) - f.e[1] > radius) return FilterVerdict::separated;
+  const double l_squared[2] = {f.l0_squared(), f.l1_squared()};
   bool unsure = false;
   for (int i = 0; i < 2; ++i) {
     // The grown box R': margin = e_i + l_i - |x_i|. Compared squared first (no square root) when the
