@@ -100,7 +100,11 @@ class Box2dBroadPhase {
 std::size_t pair_count(const BroadPhaseBase& b) { return b.pairs().size(); }
 std::size_t pair_count(const Box2dBroadPhase& b) { return b.pair_count(); }
 
-std::size_t heap_in_use() { return mallinfo2().uordblks; }
+// Heap in use, counting the large blocks malloc maps directly (hblkhd) as well as the arena.
+std::size_t heap_in_use() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;
+}
 
 template <class BroadPhase>
 void moving_boxes(benchmark::State& state) {
