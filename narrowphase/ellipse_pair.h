@@ -108,14 +108,18 @@ struct EllipsePair {
 };
 
 // Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):
-// Newton steps from the latest point, bisection whenever a step would leave the bracket. Stops when
-// the bracket or the step reaches the last bits of the parameter. `iterations` counts evaluations.
-template <class Real, class F>
-Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations) {
+// Newton steps from the latest point, and a step to mid(lo, hi) whenever Newton would leave the
+// bracket. Stops when the bracket or the step reaches the last bits of the parameter, or before a
+// Newton step shorter than `enough`. `iterations` counts evaluations.
+template <class Real, class F, class Mid>
+Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid,
+                       Real enough = 0) {
   Real t = lo;
   for (int k = 0; k < 200; ++k) {
     Real next = t - cur.first / cur.second;
-    if (!(cur.second < 0 && next > lo && next < hi)) next = (lo + hi) / 2;
+    const bool newton = cur.second < 0 && next > lo && next < hi;
+    if (newton && std::abs(next - t) <= enough) break;  // t is within `enough` of the root
+    if (!newton) next = mid(lo, hi);
     if (next == lo || next == hi) break;
     const auto ev = f(next);
     ++iterations;
@@ -136,7 +140,7 @@ Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& it
 
 template <class Real, class F>
 Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
-  return newton_in_bracket(f, lo, hi, f(lo), iterations);
+  return newton_in_bracket(f, lo, hi, f(lo), iterations, [](Real x, Real y) { return (x + y) / 2; });
 }
 
 // The unit vector turned from n0 by the angle 2 atan(tau) (counter-clockwise for turn = 1, clockwise
@@ -174,7 +178,23 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
     return std::pair<Real, Real>(turn * last.at.slope, -last.at.bend * 2 / (1 + tau * tau));  // dt/dtau = 2 / (1 + tau^2)
   };
   const std::pair<Real, Real> at_start(turn * first.slope, -first.bend * 2);
-  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations);
+  // Bisect the angle, not tau: halving tau from 1e9 would take thirty steps to reach the arc.
+  const auto mid = [](Real lo, Real hi) {
+    using std::atan;
+    using std::tan;
+    return tan((atan(lo) + atan(hi)) / 2);
+  };
+  // Stopping an angle error dt short of the maximum costs about bend dt^2 / 2 in s, and
+  // (bend dt)^2 / (2 s) in |gap| = sqrt(s^2 + s'^2), the distance returned: both stay below u s
+  // for dt below sqrt(2u) min(s / bend, sqrt(s / bend)); dtau >= dt / 2.
+  Real enough = 0;
+  if (first.s > 0) {
+    using std::min;
+    using std::sqrt;
+    const Real ratio = first.s / first.bend;
+    enough = sqrt(std::numeric_limits<Real>::epsilon()) * min(ratio, sqrt(ratio)) / 4;
+  }
+  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid, enough);
   if (tau == last_tau) return last;
   const V2<Real> n = turned(n0, turn, tau);
   return {n, p.separation(n)};
