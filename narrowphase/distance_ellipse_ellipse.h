@@ -22,7 +22,7 @@
 //   measures the result against a 50-digit reference on nested, nearly internally tangent,
 //   concentric and identical pairs.
 //   Accuracy (measured there, as a fraction of max(size, centre distance), target 1e-12): worst
-//   2.8e-16 for the distance and 4.3e-16 for the boundary distance over all families (near-tangent
+//   3.4e-16 for the distance and for the boundary distance over all families (near-tangent
 //   gaps +-1e-3 ... +-1e-12, aspect ratios to 1e6, offsets to 1e9, sizes 1e-6 and 1e6, nested,
 //   inner-tangent, concentric, identical).
 // - gradient: seed 000 (gradient descent on the two curve parameters), reproduced as published,
