@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The test command: installs what is missing, configures, builds, and runs the whole suite with ctest.
+# The test command: installs what is missing, configures, builds, and runs the whole suite with ctest;
+# then builds it again with AddressSanitizer and UndefinedBehaviorSanitizer and runs it there too.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -7,3 +8,10 @@ build=${BUILD_DIR:-$root/build}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+
+# The sanitizer build (no benchmarks; the packaging test builds an uninstrumented consumer against
+# the instrumented library, which cannot link, so it runs in the normal build only).
+sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
+cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_SANITIZE=ON -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
+cmake --build "$sanitize" -j "$(nproc)"
+ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -E package_consumer
