@@ -96,6 +96,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   require_finite(center.y(), "pose y");
   require_finite(angle, "pose angle");
   const Shape moved = posed(b.shape, center, angle);
+  validate(moved);  // the range of the centre
   broad_.move(id, broad_box(moved));
   b.shape = moved;
 }
@@ -170,8 +171,7 @@ std::vector<BodyId> World::overlapping(const Aabb& box) const {
 }
 
 std::vector<BodyId> World::within(const Vec2& point, double d) const {
-  require_finite(point.x(), "point x");
-  require_finite(point.y(), "point y");
+  validate(Circle{point, 1.0});  // the point's range
   require_margin(d, "distance");
   if (d > 0.0) return overlapping(Shape(Circle{point, d}));
   return select({point, point}, [&point](const Shape& s) { return collide2d::contains(s, point); });
@@ -184,8 +184,7 @@ std::vector<BodyId> World::within(const Shape& shape, double d) const {
 }
 
 std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const {
-  require_finite(origin.x(), "ray origin x");
-  require_finite(origin.y(), "ray origin y");
+  validate(Circle{origin, 1.0});  // the origin's range
   require_finite(direction.x(), "ray direction x");
   require_finite(direction.y(), "ray direction y");
   if (std::isnan(max_distance) || max_distance < 0.0) throw std::invalid_argument("ray length must not be negative");

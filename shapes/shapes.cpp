@@ -21,9 +21,15 @@ void require_finite(const char* shape, const char* field, double value) {
   if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
 }
 
+void require_coordinate(const char* shape, const char* field, double value) {
+  require_finite(shape, field, value);
+  if (std::abs(value) > kMaxMagnitude) reject(shape, field, value, "is beyond the supported range of +-1e50");
+}
+
 void require_size(const char* shape, const char* field, double value) {
   require_finite(shape, field, value);
   if (!(value > 0.0)) reject(shape, field, value, "must be positive");
+  if (value < kMinSize || value > kMaxMagnitude) reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
 }
 
 Aabb around(const Vec2& center, const Vec2& half) { return {center - half, center + half}; }
@@ -36,22 +42,22 @@ Orientation Orientation::of(double angle) {
 }
 
 void validate(const Circle& c) {
-  require_finite("circle", "cx", c.center.x());
-  require_finite("circle", "cy", c.center.y());
+  require_coordinate("circle", "cx", c.center.x());
+  require_coordinate("circle", "cy", c.center.y());
   require_size("circle", "radius", c.radius);
 }
 
 void validate(const Ellipse& e) {
-  require_finite("ellipse", "cx", e.center.x());
-  require_finite("ellipse", "cy", e.center.y());
+  require_coordinate("ellipse", "cx", e.center.x());
+  require_coordinate("ellipse", "cy", e.center.y());
   require_size("ellipse", "a", e.a);
   require_size("ellipse", "b", e.b);
   require_finite("ellipse", "angle", e.angle);
 }
 
 void validate(const Rect& r) {
-  require_finite("rect", "cx", r.center.x());
-  require_finite("rect", "cy", r.center.y());
+  require_coordinate("rect", "cx", r.center.x());
+  require_coordinate("rect", "cy", r.center.y());
   require_size("rect", "hx", r.half_extents.x());
   require_size("rect", "hy", r.half_extents.y());
   require_finite("rect", "angle", r.angle);

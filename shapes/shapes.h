@@ -3,8 +3,10 @@
 // Shapes are plain value structs (no virtuals, no pointers). All angles are in radians, measured
 // counter-clockwise from +x. A shape describes the closed solid region: boundary points belong to it.
 //
-// Validity: every field finite, every size strictly positive. Kernels in narrowphase/ assume valid
-// shapes; the dispatch in narrowphase/query.h and the command line call validate() first.
+// Validity: every field finite, every size strictly positive, and magnitudes a double can square and
+// cube: sizes from 1e-50 to 1e50 and centre coordinates within +-1e50 (so no ratio of lengths in a
+// query exceeds about 1e100, and no square or cube of one overflows). Kernels in narrowphase/ assume
+// valid shapes; the dispatch in narrowphase/query.h, the World and the command line validate first.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,6 +18,9 @@
 namespace collide2d {
 
 using Vec2 = Eigen::Vector2d;
+
+inline constexpr double kMaxMagnitude = 1e50;  // largest size or |centre coordinate| accepted
+inline constexpr double kMinSize = 1e-50;      // smallest size accepted
 
 struct Circle {
   Vec2 center = Vec2::Zero();

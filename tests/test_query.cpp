@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -82,6 +83,53 @@ TEST(Dispatch, RejectsInvalidShapesAndUnsupportedPairs) {
   const Shape r = Rect{Vec2(0, 0), Vec2(2, 1), 0};
   EXPECT_THROW(boundary_distance(r, good), UnsupportedPair);
   EXPECT_THROW(boundary_distance(good, bad), InvalidShape);
+}
+
+// Magnitudes beyond what a double can square and cube are refused, naming the field.
+TEST(Dispatch, RejectsAbsurdMagnitudes) {
+  const Shape good = Circle{Vec2(0, 0), 1};
+  const Shape cases[] = {Circle{Vec2(2e50, 0), 1}, Circle{Vec2(0, 0), 1e51}, Circle{Vec2(0, 0), 1e-51},
+                         Ellipse{Vec2(0, -1e60), 1, 1, 0}, Ellipse{Vec2(0, 0), 1, 1e-300, 0},
+                         Rect{Vec2(0, 0), Vec2(1e200, 1), 0}};
+  const char* fields[] = {"circle cx", "circle radius", "circle radius", "ellipse cy", "ellipse b", "rect hx"};
+  for (std::size_t k = 0; k < std::size(cases); ++k) {
+    try {
+      distance(good, cases[k]);
+      ADD_FAILURE() << "accepted case " << k;
+    } catch (const InvalidShape& e) {
+      EXPECT_NE(std::string(e.what()).find(fields[k]), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("range"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// At the edges of the accepted range every query still answers with finite numbers, symmetric in A
+// and B, with distance 0 exactly for overlapping solids.
+TEST(Dispatch, ExtremeAcceptedMagnitudesGiveFiniteAnswers) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto magnitude = [&] { return std::pow(10.0, -50 + 100 * u(rng)); };
+  const auto coordinate = [&] { return (u(rng) < 0.5 ? -1 : 1) * (u(rng) < 0.2 ? 0.0 : magnitude()); };
+  const auto shape = [&](int kind) -> Shape {
+    const Vec2 c(coordinate(), coordinate());
+    if (kind == 0) return Circle{c, magnitude()};
+    if (kind == 1) return Ellipse{c, magnitude(), magnitude(), 7 * u(rng)};
+    return Rect{c, Vec2(magnitude(), magnitude()), 7 * u(rng)};
+  };
+  for (int k = 0; k < 20000; ++k) {
+    const Shape a = shape(k % 3), b = shape((k / 3) % 3);
+    const bool hit = overlaps(a, b);
+    ASSERT_EQ(hit, overlaps(b, a)) << k;
+    const DistanceResult d = distance(a, b);
+    ASSERT_TRUE(std::isfinite(d.distance) && d.distance >= 0) << k << " " << d.distance;
+    ASSERT_TRUE(d.point_a.allFinite() && d.point_b.allFinite()) << k;
+    ASSERT_EQ(d.distance, distance(b, a).distance) << k;
+    ASSERT_EQ(d.overlapping, hit) << k;
+    if (!std::holds_alternative<Rect>(a) && !std::holds_alternative<Rect>(b)) {
+      const DistanceResult g = boundary_distance(a, b);
+      ASSERT_TRUE(std::isfinite(g.distance) && g.distance >= 0 && g.point_a.allFinite()) << k;
+    }
+  }
 }
 
 struct CommandRun {
