@@ -106,7 +106,7 @@ TEST(World, QueriesMatchBruteForce) {
     for (const BodyId id : world.bodies()) {
       const Shape& s = world.shape(id);
       if (overlaps(probe, s)) hit.push_back(id);
-      if (distance(Shape(Circle{point, 1e-300}), s).distance <= d) near_point.push_back(id);
+      if (static_cast<double>(reference::distance_to(s, reference::to_mp(point))) <= d) near_point.push_back(id);
       if (distance(probe, s).distance <= d) near_shape.push_back(id);
       const Aabb b = aabb(s);
       if ((b.min.array() <= box.max.array()).all() && (box.min.array() <= b.max.array()).all()) in_box.push_back(id);
