@@ -17,12 +17,29 @@ namespace {
 using detail::EllipsePair;
 using V2 = detail::V2<double>;
 
-// The solid distance of a pair the overlap decision found separated along contact.direction.
+// The solid distance of a pair the overlap decision found separated along contact.direction. At the
+// best direction n the two support points are the closest points, their gap parallel to n to
+// rounding. Where the maximum of s is a kink finer than a double angle (an ellipse thinner than
+// about 1e-8 of its length, see at_maximum), the gap keeps a component across n, but the support
+// lines are exact and s, the distance between them, is accurate: the closest point comes from the
+// rounder shape (the thin one's support point is the one that jumps), and its partner is that point
+// moved by s along n.
 SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<double>& pair,
                        const detail::EllipseContact& contact) {
   int iterations = contact.iterations;
-  const auto e = detail::best_direction(pair, V2(contact.direction), iterations).at;
-  return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
+  const auto best = detail::best_direction(pair, V2(contact.direction), iterations);
+  const auto& e = best.at;
+  if (!(e.s > 0) || detail::at_maximum(e)) {  // (s <= 0: apart in long double only, by rounding)
+    return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
+  }
+  const V2 step = e.s * best.n;
+  const auto aspect = [](const Ellipse& x) { return std::max(x.a, x.b) / std::min(x.a, x.b); };
+  if (aspect(a) <= aspect(b)) {
+    const Vec2 pa = a.center + e.offset_a;
+    return {DistanceResult::apart(e.s, pa, Vec2(pa + step)), iterations, true};
+  }
+  const Vec2 pb = b.center - e.offset_b;
+  return {DistanceResult::apart(e.s, Vec2(pb - step), pb), iterations, true};
 }
 
 // g(n) = n.delta + h_B(n) - h_A(n) with its first two derivatives in the angle of n.

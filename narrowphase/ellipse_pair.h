@@ -109,17 +109,14 @@ struct EllipsePair {
 
 // Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):
 // Newton steps from the latest point, and a step to mid(lo, hi) whenever Newton would leave the
-// bracket. Stops when the bracket or the step reaches the last bits of the parameter, or before a
-// Newton step shorter than `enough`. `iterations` counts evaluations.
+// bracket. Stops at a point where f is exactly 0, or when the bracket or the step reaches the last
+// bits of the parameter. `iterations` counts evaluations.
 template <class Real, class F, class Mid>
-Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid,
-                       Real enough = 0) {
+Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid) {
   Real t = lo;
   for (int k = 0; k < 200; ++k) {
     Real next = t - cur.first / cur.second;
-    const bool newton = cur.second < 0 && next > lo && next < hi;
-    if (newton && std::abs(next - t) <= enough) break;  // t is within `enough` of the root
-    if (!newton) next = mid(lo, hi);
+    if (!(cur.second < 0 && next > lo && next < hi)) next = mid(lo, hi);
     if (next == lo || next == hi) break;
     const auto ev = f(next);
     ++iterations;
@@ -157,6 +154,16 @@ V2<Real> turned(const V2<Real>& n0, Real turn, Real tau) {
 // s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s'
 // with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
 // the global maximum, the distance.
+// Whether the angle left to the maximum costs less than u s: stopping dt = s' / bend short of it
+// costs s'^2 / (2 bend) in s, and s'^2 / (2 s) in |gap| = sqrt(s^2 + s'^2). Where the maximum is a
+// kink finer than a double angle resolves (ellipses thinner than about 1e-8 of their length,
+// bend ~ a^2 / b), s' stays too large at the best representable angle and this stays false.
+template <class Real>
+bool at_maximum(const Separation<Real>& e) {
+  using std::min;
+  return e.s > 0 && e.slope * e.slope <= 2 * std::numeric_limits<Real>::epsilon() * e.s * min(e.s, e.bend);
+}
+
 template <class Real>
 struct Direction {
   V2<Real> n;
@@ -171,12 +178,15 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
   const Real turn = first.slope > 0 ? Real(1) : Real(-1);
   Direction<Real> last{n0, first};
   Real last_tau = 0;
+  const auto converged = [](const Separation<Real>& e) { return at_maximum(e); };
   const auto f = [&](Real tau) {
     last = {turned(n0, turn, tau), p.separation(turned(n0, turn, tau))};
     last_tau = tau;
     if (last.at.s < floor) return std::pair<Real, Real>(-1, 0);  // beyond the maximum: bisect
-    return std::pair<Real, Real>(turn * last.at.slope, -last.at.bend * 2 / (1 + tau * tau));  // dt/dtau = 2 / (1 + tau^2)
+    const Real dslope = -last.at.bend * 2 / (1 + tau * tau);     // dt/dtau = 2 / (1 + tau^2)
+    return std::pair<Real, Real>(converged(last.at) ? Real(0) : turn * last.at.slope, dslope);
   };
+  if (converged(first)) return last;
   const std::pair<Real, Real> at_start(turn * first.slope, -first.bend * 2);
   // Bisect the angle, not tau: halving tau from 1e9 would take thirty steps to reach the arc.
   const auto mid = [](Real lo, Real hi) {
@@ -184,17 +194,7 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
     using std::tan;
     return tan((atan(lo) + atan(hi)) / 2);
   };
-  // Stopping an angle error dt short of the maximum costs about bend dt^2 / 2 in s, and
-  // (bend dt)^2 / (2 s) in |gap| = sqrt(s^2 + s'^2), the distance returned: both stay below u s
-  // for dt below sqrt(2u) min(s / bend, sqrt(s / bend)); dtau >= dt / 2.
-  Real enough = 0;
-  if (first.s > 0) {
-    using std::min;
-    using std::sqrt;
-    const Real ratio = first.s / first.bend;
-    enough = sqrt(std::numeric_limits<Real>::epsilon()) * min(ratio, sqrt(ratio)) / 4;
-  }
-  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid, enough);
+  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid);
   if (tau == last_tau) return last;
   const V2<Real> n = turned(n0, turn, tau);
   return {n, p.separation(n)};

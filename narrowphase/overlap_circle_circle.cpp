@@ -1,12 +1,18 @@
 #include "narrowphase/overlap_circle_circle.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace collide2d {
 
+// Squares decide when they are clear by far more than their rounding; near contact the verdict is
+// the one distance_circle_circle reaches (gap = n - ra - rb > 0), so the two always agree.
 bool overlap_circle_circle(const Circle& a, const Circle& b) {
   const double reach = a.radius + b.radius;
-  return (b.center - a.center).squaredNorm() <= reach * reach;
+  const double q = (b.center - a.center).squaredNorm();
+  if (q > reach * reach * (1 + 1e-12)) return false;
+  if (q < reach * reach * (1 - 1e-12)) return true;
+  return !(std::sqrt(q) - a.radius - b.radius > 0.0);
 }
 
 DistanceResult distance_circle_circle(const Circle& a, const Circle& b) {

@@ -4,6 +4,8 @@
 #include "narrowphase/distance_point_ellipse.h"
 #include "shapes/rotation.h"
 
+#include <limits>
+
 namespace collide2d {
 namespace {
 
@@ -14,13 +16,17 @@ Vec2 center_in_ellipse(const detail::Rotation<double>& rot, const Circle& c, con
 
 }  // namespace
 
+// The centre inside the ellipse, or the point–ellipse distance within r: the same decision as
+// distance_circle_ellipse, so the two always agree. The box around the ellipse rejects first, but only
+// when it clears r by more than the rounding of the distance (16 u of the lengths involved).
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) {
   const Vec2 p = center_in_ellipse(detail::Rotation<double>::of(e.angle), c, e);
   const double u = p.x() / e.a;
   const double v = p.y() / e.b;
   if (u * u + v * v <= 1.0) return true;
-  const double r2 = c.radius * c.radius;
-  if ((p - detail::clamp_to_box(p, Vec2(e.a, e.b))).squaredNorm() > r2) return false;
+  const double margin = 16 * std::numeric_limits<double>::epsilon() * (p.norm() + e.a + e.b + c.radius);
+  const double clear = c.radius + margin;
+  if ((p - detail::clamp_to_box(p, Vec2(e.a, e.b))).squaredNorm() > clear * clear) return false;
   return distance_point_ellipse(e.a, e.b, p).distance <= c.radius;
 }
 

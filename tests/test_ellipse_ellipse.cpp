@@ -176,3 +176,36 @@ TEST(EllipseDistance, RectanglesHaveNoBoundaryDistance) {
 
 }  // namespace
 }  // namespace collide2d::testing
+
+namespace collide2d::testing {
+namespace {
+
+// Needles thinner than a double angle can resolve (aspect 1e9 ... 1e35): their flat side is a kink
+// of the support function, and the distance comes from the support lines (found by the fuzzer).
+TEST(EllipseDistance, UltraThinNeedles) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0;
+  for (int k = 0; k < 300; ++k) {
+    const double aspect = std::pow(10.0, 9 + 26 * u(rng));
+    const Ellipse a{Vec2(8 * u(rng) - 4, 8 * u(rng) - 4), 1 + 4 * u(rng), 0, 7 * u(rng)};
+    const Ellipse needle{a.center, a.a, a.a / aspect, a.angle};
+    const Ellipse b{Vec2(8 * u(rng) - 4, 8 * u(rng) - 4), 0.5 + 3 * u(rng), 0.5 + 3 * u(rng), 7 * u(rng)};
+    for (const auto& [p, q] : {std::pair{needle, b}, std::pair{b, needle}}) {
+      const auto ref = reference::ellipse_pair(p, q);
+      const DistanceResult d = distance(p, q);
+      const double scale = std::max({p.a, q.a, q.b, (q.center - p.center).norm()});
+      ASSERT_EQ(d.overlapping, ref.overlap) << k;
+      ASSERT_NEAR(d.distance, static_cast<double>(ref.distance), 1e-12 * scale) << k;
+      if (d.overlapping) continue;
+      ++checked;
+      EXPECT_LE(static_cast<double>(reference::distance_to(p, reference::to_mp(d.point_a))), 1e-12 * scale) << k;
+      EXPECT_LE(static_cast<double>(reference::distance_to(q, reference::to_mp(d.point_b))), 1e-12 * scale) << k;
+      EXPECT_NEAR((d.point_b - d.point_a).norm(), d.distance, 1e-12 * scale) << k;
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+}  // namespace
+}  // namespace collide2d::testing

@@ -66,9 +66,10 @@ MethodResult measure(const Workload& w, int repetitions, std::string method, int
 std::vector<MethodResult> measure_methods(const ReportOptions& options) {
   const Workload w = make_workload(options);
   std::vector<MethodResult> out;
-  for (const auto& [name, method] : {std::pair{"robust", EllipseDistanceMethod::robust},
-                                     std::pair{"gradient", EllipseDistanceMethod::gradient},
-                                     std::pair{"polynomial", EllipseDistanceMethod::polynomial}}) {
+  for (const auto& [name, m] : {std::pair{"robust", EllipseDistanceMethod::robust},
+                                std::pair{"gradient", EllipseDistanceMethod::gradient},
+                                std::pair{"polynomial", EllipseDistanceMethod::polynomial}}) {
+    const EllipseDistanceMethod method = m;  // a structured binding cannot be captured before C++20 in clang 14
     out.push_back(measure(w, options.repetitions, name, 0, [&w, method](std::size_t k) {
       return distance_ellipse_ellipse(w.a[k], w.b[k], method).result.distance;
     }));

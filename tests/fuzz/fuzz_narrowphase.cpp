@@ -1,0 +1,94 @@
+// Narrow-phase fuzzer: two shapes from raw bytes. Invalid shapes must be refused with InvalidShape;
+// for valid ones the answers must be finite, the overlap verdict must match the distance (0 exactly
+// when overlapping), swapping A and B must swap the result exactly, and moving both shapes by one
+// rigid motion must keep the distance (to 1e-9 of the scale).
+#include "fuzz_input.h"
+#include "narrowphase/query.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+
+namespace {
+
+using namespace collide2d;
+
+[[noreturn]] void fail(const char* what) {
+  std::fprintf(stderr, "property failed: %s\n", what);
+  std::abort();
+}
+
+void check(bool ok, const char* what) {
+  if (!ok) fail(what);
+}
+
+Shape moved(const Shape& s, double c, double sn, const Vec2& t) {
+  return std::visit(
+      [&](auto x) -> Shape {
+        x.center = Vec2(c * x.center.x() - sn * x.center.y(), sn * x.center.x() + c * x.center.y()) + t;
+        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += std::atan2(sn, c);
+        return x;
+      },
+      s);
+}
+
+// The shape's angle (0 for circles).
+double angle_of(const Shape& s) {
+  return std::visit(
+      [](const auto& x) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
+          return 0.0;
+        } else {
+          return x.angle;
+        }
+      },
+      s);
+}
+
+double extent(const Shape& s) {
+  const Aabb b = aabb(s);
+  return std::max({std::abs(b.min.x()), std::abs(b.min.y()), std::abs(b.max.x()), std::abs(b.max.y())});
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Input in(data, size);
+  const Shape a = in.shape();
+  const Shape b = in.shape();
+  if (!fuzz::valid(a) || !fuzz::valid(b)) {
+    try {
+      distance(a, b);
+      fail("an invalid shape was accepted");
+    } catch (const InvalidShape&) {
+    }
+    return 0;
+  }
+  const bool hit = overlaps(a, b);
+  const DistanceResult d = distance(a, b);
+  check(std::isfinite(d.distance) && d.distance >= 0, "distance finite and non-negative");
+  check(d.point_a.allFinite() && d.point_b.allFinite(), "closest points finite");
+  check(d.overlapping == hit && (d.distance == 0) == hit, "distance 0 exactly when overlapping");
+  check(hit == overlaps(b, a), "overlap symmetric");
+  const DistanceResult back = distance(b, a);
+  check(back.distance == d.distance && back.point_a == d.point_b, "distance symmetric");
+  if (!std::holds_alternative<Rect>(a) && !std::holds_alternative<Rect>(b)) {
+    const DistanceResult g = boundary_distance(a, b);
+    check(std::isfinite(g.distance) && g.distance >= 0 && g.point_a.allFinite(), "boundary distance finite");
+    check(boundary_distance(b, a).distance == g.distance, "boundary distance symmetric");
+  }
+  // Invariance under a rigid motion, where the motion keeps the shapes in range and adding the turn
+  // to the shapes' angles is exact to 1e-13 (beyond |angle| 1e3 the sum loses the turn's digits).
+  const double angle = in.number();
+  const Vec2 shift(in.number(), in.number());
+  const bool tame = std::abs(angle) < 1e3 && std::abs(angle_of(a)) < 1e3 && std::abs(angle_of(b)) < 1e3;
+  if (tame && shift.allFinite() && shift.norm() < 1e6 && extent(a) < 1e6 && extent(b) < 1e6) {
+    const double c = std::cos(angle), sn = std::sin(angle);
+    const Shape ma = moved(a, c, sn, shift), mb = moved(b, c, sn, shift);
+    if (fuzz::valid(ma) && fuzz::valid(mb)) {
+      const double scale = std::max({extent(a), extent(b), shift.norm(), 1e-300});
+      check(std::abs(distance(ma, mb).distance - d.distance) <= 1e-9 * scale, "distance invariant under rigid motion");
+    }
+  }
+  return 0;
+}

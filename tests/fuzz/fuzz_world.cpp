@@ -1,0 +1,104 @@
+// World fuzzer: a random sequence of add, set_pose, remove, update and queries from the bytes. Bad
+// input must throw and leave the World as it was; after every update the overlapping pairs, the
+// began/ended lists and the proximity pairs must equal an all-pairs check.
+#include "engine/world.h"
+#include "fuzz_input.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <stdexcept>
+
+namespace {
+
+using namespace collide2d;
+
+void check(bool ok, const char* what) {
+  if (!ok) {
+    std::fprintf(stderr, "property failed: %s\n", what);
+    std::abort();
+  }
+}
+
+void compare_with_all_pairs(const World& w, double margin, const std::vector<BodyPair>& before) {
+  const std::vector<BodyId> ids = w.bodies();
+  std::vector<BodyPair> hit, near;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      const Shape& a = w.shape(ids[i]);
+      const Shape& b = w.shape(ids[j]);
+      if (overlaps(a, b)) {
+        hit.push_back({ids[i], ids[j]});
+      } else if (margin > 0 && distance(a, b).distance <= margin) {
+        near.push_back({ids[i], ids[j]});
+      }
+    }
+  }
+  check(w.overlapping() == hit, "overlapping pairs equal all pairs");
+  std::vector<BodyPair> reported, began, ended;
+  for (const Proximity& p : w.proximity()) reported.push_back({p.a, p.b});
+  check(reported == near, "proximity pairs equal all pairs");
+  std::set_difference(hit.begin(), hit.end(), before.begin(), before.end(), std::back_inserter(began));
+  std::set_difference(before.begin(), before.end(), hit.begin(), hit.end(), std::back_inserter(ended));
+  check(w.began() == began && w.ended() == ended, "began and ended");
+}
+
+// The World's observable state, to check that a refused call changed nothing.
+std::vector<std::pair<BodyId, std::size_t>> snapshot(const World& w) {
+  std::vector<std::pair<BodyId, std::size_t>> out;
+  for (const BodyId id : w.bodies()) out.emplace_back(id, std::hash<double>{}(aabb(w.shape(id)).min.x()));
+  return out;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Input in(data, size);
+  const double margin = (in.byte() % 4) * 0.25;
+  World world({.fat_margin = (in.byte() % 3) * 0.1, .proximity_margin = margin});
+  std::vector<BodyPair> before;
+  for (int op = 0; op < 64 && !in.empty(); ++op) {
+    const auto state = snapshot(world);
+    const std::vector<BodyId> ids = world.bodies();
+    const BodyId some = ids.empty() ? 7 : ids[in.byte() % ids.size()];
+    try {
+      switch (in.byte() % 6) {
+        case 0:
+          if (world.size() < 24) world.add(in.shape());
+          break;
+        case 1:
+          world.set_pose(in.byte() % 8 == 0 ? 1000 : some, Vec2(in.number(), in.number()), in.number());
+          break;
+        case 2:
+          world.remove(in.byte() % 8 == 0 ? 1000 : some);
+          break;
+        case 3:
+          world.update();
+          compare_with_all_pairs(world, margin, before);
+          before = world.overlapping();
+          break;
+        case 4: {
+          const Shape probe = in.shape();
+          std::vector<BodyId> expected;
+          const auto got = world.overlapping(probe);
+          for (const BodyId id : world.bodies()) {
+            if (overlaps(probe, world.shape(id))) expected.push_back(id);
+          }
+          check(got == expected, "overlapping(shape) equals brute force");
+          break;
+        }
+        default: {
+          const auto hit = world.ray_cast(Vec2(in.number(), in.number()), Vec2(in.number(), in.number()), 100.0);
+          if (hit) check(std::isfinite(hit->distance) && hit->distance >= 0 && hit->point.allFinite(), "ray hit finite");
+          break;
+        }
+      }
+    } catch (const std::invalid_argument&) {  // InvalidShape and bad poses or margins
+      check(snapshot(world) == state, "a refused call changed nothing");
+    } catch (const std::out_of_range&) {  // unknown body
+      check(snapshot(world) == state, "a refused call changed nothing");
+    }
+  }
+  return 0;
+}
