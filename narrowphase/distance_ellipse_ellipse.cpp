@@ -17,6 +17,20 @@ namespace {
 using detail::EllipsePair;
 using V2 = detail::V2<double>;
 
+// A pair found apart only in long double (double puts s at 0 or below): the distance and points of
+// the long-double maximum, so that a separated pair never reports distance 0.
+SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact,
+                                   int iterations) {
+  const auto pair = EllipsePair<long double>::of(a, b);
+  const detail::V2<long double> n0(contact.direction.x(), contact.direction.y());
+  const auto e = detail::best_direction(pair, n0, iterations).at;
+  const auto point = [](const Vec2& c, const detail::V2<long double>& offset) {
+    return Vec2(c.x() + static_cast<double>(offset[0]), c.y() + static_cast<double>(offset[1]));
+  };
+  const double d = static_cast<double>(std::max(e.s, e.gap.norm()));
+  return {DistanceResult::apart(d, point(a.center, e.offset_a), point(b.center, -e.offset_b)), iterations, true};
+}
+
 // The solid distance of a pair the overlap decision found separated along contact.direction. At the
 // best direction n the two support points are the closest points, their gap parallel to n to
 // rounding. Where the maximum of s is a kink finer than a double angle (an ellipse thinner than
@@ -29,7 +43,8 @@ SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<dou
   int iterations = contact.iterations;
   const auto best = detail::best_direction(pair, V2(contact.direction), iterations);
   const auto& e = best.at;
-  if (!(e.s > 0) || detail::at_maximum(e)) {  // (s <= 0: apart in long double only, by rounding)
+  if (!(e.s > 0)) return separated_by_rounding(a, b, contact, iterations);
+  if (detail::at_maximum(e, pair.margin())) {
     return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
   }
   const V2 step = e.s * best.n;

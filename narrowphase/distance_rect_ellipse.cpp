@@ -85,9 +85,12 @@ DistanceResult distance_rect_ellipse(const Rect& r, const Ellipse& e) {
   std::optional<LocalPair> best = edge_region(f, sp, 0, tol);
   if (!best) best = edge_region(f, sp, 1, tol);
   if (!best) best = nearest_corner(f, sp, tol);
-  // A zero or missing distance means K lies in S up to rounding: the filter's verdict fell on the
-  // wrong side of a margin below its error bound, and the pair touches.
-  if (!(best->distance > 0.0) || !std::isfinite(best->distance)) return witness();
+  // A missing region means K lies on S up to rounding while the overlap test, which decides, found
+  // the pair apart: apart by less than rounding, at the witness point.
+  if (!best || !std::isfinite(best->distance)) {
+    const Vec2 w = witness().point_a;
+    return DistanceResult::apart(0.0, w, w);
+  }
   return DistanceResult::apart(best->distance, to_world(best->on_rect), to_world(best->on_ellipse));
 }
 

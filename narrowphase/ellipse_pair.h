@@ -109,14 +109,21 @@ struct EllipsePair {
 
 // Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):
 // Newton steps from the latest point, and a step to mid(lo, hi) whenever Newton would leave the
-// bracket. Stops at a point where f is exactly 0, or when the bracket or the step reaches the last
-// bits of the parameter. `iterations` counts evaluations.
+// bracket. Stops at a point where f is exactly 0, when the bracket reaches the last bits of the
+// parameter, or (unless only_at_zero) when a step does. `iterations` counts evaluations.
 template <class Real, class F, class Mid>
-Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid) {
+Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid,
+                       bool only_at_zero = false) {
+  const auto tiny = [](Real step, Real at) {
+    return std::abs(step) <= 4 * std::numeric_limits<Real>::epsilon() * std::max(Real(1), std::abs(at));
+  };
   Real t = lo;
   for (int k = 0; k < 200; ++k) {
     Real next = t - cur.first / cur.second;
-    if (!(cur.second < 0 && next > lo && next < hi)) next = mid(lo, hi);
+    const bool newton = cur.second < 0 && next > lo && next < hi;
+    // With only_at_zero, a step too small to move t (a derivative huge only locally, as at a kink)
+    // gives way to the bracket instead of ending the search.
+    if (!newton || (only_at_zero && tiny(next - t, t))) next = mid(lo, hi);
     if (next == lo || next == hi) break;
     const auto ev = f(next);
     ++iterations;
@@ -130,7 +137,7 @@ Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& it
     } else {
       break;
     }
-    if (std::abs(step) <= 4 * std::numeric_limits<Real>::epsilon() * std::max(Real(1), std::abs(t))) break;
+    if (!only_at_zero && tiny(step, t)) break;
   }
   return t;
 }
@@ -154,14 +161,15 @@ V2<Real> turned(const V2<Real>& n0, Real turn, Real tau) {
 // s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s'
 // with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
 // the global maximum, the distance.
-// Whether the angle left to the maximum costs less than u s: stopping dt = s' / bend short of it
-// costs s'^2 / (2 bend) in s, and s'^2 / (2 s) in |gap| = sqrt(s^2 + s'^2). Where the maximum is a
-// kink finer than a double angle resolves (ellipses thinner than about 1e-8 of their length,
-// bend ~ a^2 / b), s' stays too large at the best representable angle and this stays false.
+// Whether n is at the maximum of s to rounding: the gap between the support points has no component
+// across n beyond the rounding of the gap itself (`tolerance`, the pair's margin). The closest
+// points are then exact to rounding too. Where the maximum is a kink finer than a double angle
+// resolves (ellipses thinner than about 1e-8 of their length, bend ~ a^2 / b), the slope stays
+// larger at the best representable angle, and this stays false.
 template <class Real>
-bool at_maximum(const Separation<Real>& e) {
-  using std::min;
-  return e.s > 0 && e.slope * e.slope <= 2 * std::numeric_limits<Real>::epsilon() * e.s * min(e.s, e.bend);
+bool at_maximum(const Separation<Real>& e, Real tolerance) {
+  using std::abs;
+  return e.s > 0 && abs(e.slope) <= tolerance;
 }
 
 template <class Real>
@@ -178,7 +186,7 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
   const Real turn = first.slope > 0 ? Real(1) : Real(-1);
   Direction<Real> last{n0, first};
   Real last_tau = 0;
-  const auto converged = [](const Separation<Real>& e) { return at_maximum(e); };
+  const auto converged = [&p](const Separation<Real>& e) { return at_maximum(e, p.margin()); };
   const auto f = [&](Real tau) {
     last = {turned(n0, turn, tau), p.separation(turned(n0, turn, tau))};
     last_tau = tau;
@@ -194,10 +202,11 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
     using std::tan;
     return tan((atan(lo) + atan(hi)) / 2);
   };
-  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid);
-  if (tau == last_tau) return last;
-  const V2<Real> n = turned(n0, turn, tau);
-  return {n, p.separation(n)};
+  const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid, true);
+  Direction<Real> end = last;
+  if (tau != last_tau) end = {turned(n0, turn, tau), p.separation(turned(n0, turn, tau))};
+  // At a kink finer than the angle resolves the iteration can end clearly below its start.
+  return end.at.s >= first.s - p.margin() ? end : Direction<Real>{n0, first};
 }
 
 template <class Real>

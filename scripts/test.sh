@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing, configures, builds, and runs the whole suite with ctest;
-# then builds it again with AddressSanitizer and UndefinedBehaviorSanitizer and runs it there too.
+# then builds it again with AddressSanitizer and UndefinedBehaviorSanitizer and runs it there too;
+# then runs each libFuzzer target for 20 seconds on its corpus (scripts/fuzz.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -15,3 +16,6 @@ sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
 cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_SANITIZE=ON -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
 cmake --build "$sanitize" -j "$(nproc)"
 ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -E package_consumer
+
+# A short fuzz run: a minute in all.
+FUZZ_SECONDS=${FUZZ_SECONDS:-20} bash "$root/scripts/fuzz.sh"

@@ -3,6 +3,7 @@
 #include "shapes/rotation.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace collide2d {
@@ -32,7 +33,12 @@ void require_size(const char* shape, const char* field, double value) {
   if (value < kMinSize || value > kMaxMagnitude) reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
 }
 
-Aabb around(const Vec2& center, const Vec2& half) { return {center - half, center + half}; }
+// The box grown by a few ulps of its coordinates: the kernels' rounding must not put a point of the
+// shape outside its box (a pair touching to rounding would otherwise never reach the narrow phase).
+Aabb around(const Vec2& center, const Vec2& half) {
+  const Vec2 slack = 8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + half);
+  return {center - half - slack, center + half + slack};
+}
 
 }  // namespace
 

@@ -72,7 +72,8 @@ void validate(const Shape& s);
 // The word used for the shape on the command line and in messages: "circle", "ellipse", "rect".
 const char* shape_name(const Shape& s);
 
-// The tightest axis-aligned box around the shape.
+// The tightest axis-aligned box around the shape, grown by a few ulps of its coordinates so that
+// rounding never puts a point of the shape outside it.
 Aabb aabb(const Circle& c);
 Aabb aabb(const Ellipse& e);
 Aabb aabb(const Rect& r);

@@ -35,13 +35,22 @@ class Input {
     return x < 0 ? -x : x;
   }
 
+  // Each read in its own statement: the order of evaluation of function arguments differs between
+  // compilers, and a crash found with clang must decode the same with g++.
   Shape shape() {
-    const Vec2 c(number(), number());
-    switch (byte() % 3) {
-      case 0: return Circle{c, size()};
-      case 1: return Ellipse{c, size(), size(), number()};
-      default: return Rect{c, Vec2(size(), size()), number()};
-    }
+    const double x = number();
+    const double y = number();
+    const int kind = byte() % 3;
+    const double u = size();
+    const double v = kind == 0 ? 0.0 : size();
+    const double angle = kind == 0 ? 0.0 : number();
+    if (kind == 0) return Circle{Vec2(x, y), u};
+    if (kind == 1) return Ellipse{Vec2(x, y), u, v, angle};
+    return Rect{Vec2(x, y), Vec2(u, v), angle};
+  }
+  Vec2 point() {
+    const double x = number();
+    return {x, number()};
   }
 
  private:

@@ -80,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Invariance under a rigid motion, where the motion keeps the shapes in range and adding the turn
   // to the shapes' angles is exact to 1e-13 (beyond |angle| 1e3 the sum loses the turn's digits).
   const double angle = in.number();
-  const Vec2 shift(in.number(), in.number());
+  const Vec2 shift = in.point();
   const bool tame = std::abs(angle) < 1e3 && std::abs(angle_of(a)) < 1e3 && std::abs(angle_of(b)) < 1e3;
   if (tame && shift.allFinite() && shift.norm() < 1e6 && extent(a) < 1e6 && extent(b) < 1e6) {
     const double c = std::cos(angle), sn = std::sin(angle);

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (AddressSanitizer and UndefinedBehaviorSanitizer on) and
+# runs each on its corpus in tests/fuzz/corpus for FUZZ_SECONDS seconds (default 20). New inputs stay
+# in a scratch copy of the corpus; a failing input is written to build-fuzz/ and fails the script.
+# A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/deps.sh"
+build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
+seconds=${FUZZ_SECONDS:-20}
+CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_FUZZ=ON \
+  -DCOLLIDE2D_BUILD_TESTS=OFF -DCOLLIDE2D_BUILD_BENCHMARKS=OFF > /dev/null
+cmake --build "$build" -j "$(nproc)" --target fuzz_narrowphase fuzz_query_line fuzz_world
+rm -f "$build"/crash-* "$build"/timeout-* "$build"/leak-* "$build"/oom-*
+for name in narrowphase query_line world; do
+  scratch="$build/corpus-$name"
+  rm -rf "$scratch" && mkdir -p "$scratch" && cp "$root/tests/fuzz/corpus/$name"/* "$scratch"/
+  echo "fuzz_$name: ${seconds} s"
+  (cd "$build" && "./tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 "$scratch" 2>&1 |
+    grep -E '^stat::number_of_executed_units|^SUMMARY|property failed') || true
+  failures=$(find "$build" -maxdepth 1 \( -name 'crash-*' -o -name 'timeout-*' -o -name 'leak-*' -o -name 'oom-*' \))
+  if [ -n "$failures" ]; then
+    echo "fuzz_$name found a failing input: $failures" >&2
+    exit 1
+  fi
+done
