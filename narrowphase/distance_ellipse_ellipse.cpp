@@ -17,18 +17,21 @@ namespace {
 using detail::EllipsePair;
 using V2 = detail::V2<double>;
 
-// A pair found apart only in long double (double puts s at 0 or below): the distance and points of
-// the long-double maximum, so that a separated pair never reports distance 0.
+// A pair found apart only in long double (double puts s at 0 or below): s at the long-double maximum,
+// the certified distance between the support lines (kept positive by DistanceResult::apart), with
+// A's support point and that point moved by s along n.
 SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact,
                                    int iterations) {
   const auto pair = EllipsePair<long double>::of(a, b);
   const detail::V2<long double> n0(contact.direction.x(), contact.direction.y());
-  const auto e = detail::best_direction(pair, n0, iterations).at;
-  const auto point = [](const Vec2& c, const detail::V2<long double>& offset) {
-    return Vec2(c.x() + static_cast<double>(offset[0]), c.y() + static_cast<double>(offset[1]));
+  const auto best = detail::best_direction(pair, n0, iterations);
+  const long double s = std::max(best.at.s, 0.0L);
+  const detail::V2<long double> pa = best.at.offset_a;
+  const detail::V2<long double> pb = pa + s * best.n;
+  const auto world = [](const Vec2& c, const detail::V2<long double>& p) {
+    return Vec2(c.x() + static_cast<double>(p[0]), c.y() + static_cast<double>(p[1]));
   };
-  const double d = static_cast<double>(std::max(e.s, e.gap.norm()));
-  return {DistanceResult::apart(d, point(a.center, e.offset_a), point(b.center, -e.offset_b)), iterations, true};
+  return {DistanceResult::apart(static_cast<double>(s), world(a.center, pa), world(a.center, pb)), iterations, true};
 }
 
 // The solid distance of a pair the overlap decision found separated along contact.direction. At the
@@ -44,8 +47,10 @@ SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<dou
   const auto best = detail::best_direction(pair, V2(contact.direction), iterations);
   const auto& e = best.at;
   if (!(e.s > 0)) return separated_by_rounding(a, b, contact, iterations);
-  if (detail::at_maximum(e, pair.margin())) {
-    return {DistanceResult::apart(e.gap.norm(), a.center + e.offset_a, b.center - e.offset_b), iterations, true};
+  // The distance is s, the certified distance between the support lines; |gap| = sqrt(s^2 + s'^2)
+  // would add the rounding of the gap's component across n, which dominates when s is tiny.
+  if (detail::at_maximum(e, pair.margin()) && e.gap.norm() - e.s <= pair.margin()) {
+    return {DistanceResult::apart(e.s, a.center + e.offset_a, b.center - e.offset_b), iterations, true};
   }
   const V2 step = e.s * best.n;
   const auto aspect = [](const Ellipse& x) { return std::max(x.a, x.b) / std::min(x.a, x.b); };
