@@ -30,10 +30,6 @@ bool inside(const Aabb& inner, const Aabb& outer) {
   return (outer.min.array() <= inner.min.array()).all() && (inner.max.array() <= outer.max.array()).all();
 }
 
-bool overlap_on(const Aabb& p, const Aabb& q, int axis) {
-  return p.min[axis] <= q.max[axis] && q.min[axis] <= p.max[axis];
-}
-
 // Endpoint tags: proxy id << 1, low bit set for a box's max end. At equal keys a min sorts first, so
 // touching boxes overlap.
 constexpr std::uint32_t tag(ProxyId id, bool is_max) { return id << 1 | static_cast<std::uint32_t>(is_max); }
@@ -359,7 +355,7 @@ void BruteForceBroadPhase::update() {
     for (ProxyId j = i + 1; j < proxies_.size(); ++j) {
       const Aabb& p = proxies_[i].fat;
       const Aabb& q = proxies_[j].fat;
-      if (proxies_[j].alive && overlap_on(p, q, 0) && overlap_on(p, q, 1)) found.push_back({i, j});
+      if (proxies_[j].alive && intersects(p, q)) found.push_back({i, j});
     }
   }
   finish_update(std::move(found));

@@ -37,17 +37,7 @@ Shape posed(Shape shape, const Vec2& center, double angle) {
   return shape;
 }
 
-double angle_of(const Shape& shape) {
-  if (const auto* e = std::get_if<Ellipse>(&shape)) return e->angle;
-  if (const auto* r = std::get_if<Rect>(&shape)) return r->angle;
-  return 0.0;
-}
-
 Aabb grown(const Aabb& box, double by) { return {box.min.array() - by, box.max.array() + by}; }
-
-bool boxes_overlap(const Aabb& p, const Aabb& q) {
-  return (p.min.array() <= q.max.array()).all() && (q.min.array() <= p.max.array()).all();
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -103,8 +93,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
 
 void World::move_by(BodyId id, const Vec2& shift, double turn) {
   const Shape& s = body(id).shape;
-  const Vec2 center = std::visit([](const auto& x) { return x.center; }, s);
-  set_pose(id, center + shift, angle_of(s) + turn);
+  set_pose(id, center_of(s) + shift, angle_of(s) + turn);
 }
 
 void World::remove(BodyId id) {
@@ -151,7 +140,7 @@ template <class Test>
 std::vector<BodyId> World::select(const Aabb& box, Test test) const {
   std::vector<BodyId> out;
   for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (contains(id) && boxes_overlap(aabb(bodies_[id].shape), box) && test(bodies_[id].shape)) out.push_back(id);
+    if (contains(id) && intersects(aabb(bodies_[id].shape), box) && test(bodies_[id].shape)) out.push_back(id);
   }
   return out;
 }

@@ -73,6 +73,20 @@ void validate(const Shape& s) {
   std::visit([](const auto& shape) { validate(shape); }, s);
 }
 
+Vec2 center_of(const Shape& s) {
+  return std::visit([](const auto& x) { return x.center; }, s);
+}
+
+double angle_of(const Shape& s) {
+  if (const auto* e = std::get_if<Ellipse>(&s)) return e->angle;
+  if (const auto* r = std::get_if<Rect>(&s)) return r->angle;
+  return 0.0;
+}
+
+bool intersects(const Aabb& p, const Aabb& q) {
+  return (p.min.array() <= q.max.array()).all() && (q.min.array() <= p.max.array()).all();
+}
+
 const char* shape_name(const Shape& s) {
   constexpr const char* names[] = {"circle", "ellipse", "rect"};
   return names[s.index()];

@@ -72,6 +72,13 @@ void validate(const Shape& s);
 // The word used for the shape on the command line and in messages: "circle", "ellipse", "rect".
 const char* shape_name(const Shape& s);
 
+// The centre of any shape, and its angle (0 for a circle).
+Vec2 center_of(const Shape& s);
+double angle_of(const Shape& s);
+
+// Whether two closed boxes share a point.
+bool intersects(const Aabb& p, const Aabb& q);
+
 // The tightest axis-aligned box around the shape, grown by a few ulps of its coordinates so that
 // rounding never puts a point of the shape outside it.
 Aabb aabb(const Circle& c);

@@ -47,8 +47,6 @@ double half_size(const Shape& s) {
   return std::get<Rect>(s).half_extents.maxCoeff();
 }
 
-Vec2 center_of(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
-
 void translate(Shape& s, const Vec2& by) { std::visit([&by](auto& x) { x.center += by; }, s); }
 
 struct Contact {
@@ -115,7 +113,7 @@ Shape inner_tangent(Rng& rng, const Shape& a, Kind kind, double delta) {
 // B sharing A's centre, with axes between 0.3 and 1.2 of A's largest and its own angle: nested or
 // crossing, with (at least) two equal extrema by central symmetry.
 Shape concentric_to(Rng& rng, const Shape& a, Kind kind) {
-  const Vec2 c = std::visit([](const auto& x) { return x.center; }, a);
+  const Vec2 c = center_of(a);
   double size = 0.0;
   if (const auto* ci = std::get_if<Circle>(&a)) size = ci->radius;
   if (const auto* e = std::get_if<Ellipse>(&a)) size = std::max(e->a, e->b);

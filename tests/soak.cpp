@@ -30,11 +30,6 @@ std::size_t heap_in_use() {
   return m.uordblks + m.hblkhd;
 }
 
-bool boxes_meet(const Shape& a, const Shape& b) {
-  const Aabb p = aabb(a), q = aabb(b);
-  return (p.min.array() <= q.max.array()).all() && (q.min.array() <= p.max.array()).all();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -71,7 +66,7 @@ int main(int argc, char** argv) {
       add();
     }
     for (Mover& m : movers) {
-      const Vec2 c = std::visit([](const auto& s) { return s.center; }, world.shape(m.id));
+      const Vec2 c = center_of(world.shape(m.id));
       for (int a = 0; a < 2; ++a) {
         if ((c[a] < 0 && m.velocity[a] < 0) || (c[a] > side && m.velocity[a] > 0)) m.velocity[a] = -m.velocity[a];
       }
@@ -87,7 +82,7 @@ int main(int argc, char** argv) {
       const BodyId probe = ids[static_cast<std::size_t>(u(rng) * static_cast<double>(ids.size()))];
       std::vector<BodyId> expected, got;
       for (const BodyId other : ids) {
-        if (other != probe && boxes_meet(world.shape(probe), world.shape(other)) &&
+        if (other != probe && intersects(aabb(world.shape(probe)), aabb(world.shape(other))) &&
             overlaps(world.shape(probe), world.shape(other))) {
           expected.push_back(other);
         }

@@ -32,10 +32,8 @@ std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   return out;
 }
 
-Vec2 centre(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
-
 double box2d(const Shape& a, const Shape& b, int sides, Fit fit) {
-  const Vec2 origin = centre(a);
+  const Vec2 origin = center_of(a);
   return baseline::box2d_distance(baseline::to_box2d(a, sides, fit, origin), baseline::to_box2d(b, sides, fit, origin));
 }
 
@@ -97,7 +95,7 @@ TEST(Box2dBracket, OverlapOfPolygonsBracketsTheExactVerdict) {
   const auto pairs = random_pairs(3000, 13);
   int decided = 0;
   for (const auto& [a, b] : pairs) {
-    const Vec2 origin = centre(a);
+    const Vec2 origin = center_of(a);
     const auto outer = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::circumscribed, origin),
                                                  baseline::to_box2d(b, 8, Fit::circumscribed, origin));
     const auto inner = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::inscribed, origin),

@@ -26,8 +26,6 @@ Shape random_shape(Rng& rng, double spread) {
   }
 }
 
-Vec2 center_of(const Shape& s) { return std::visit([](const auto& x) { return x.center; }, s); }
-
 // Every pair tested directly: overlaps, and the distance of the others against the margin.
 void expect_matches_all_pairs(const World& world, double margin, const std::string& what) {
   const std::vector<BodyId> ids = world.bodies();
@@ -108,8 +106,7 @@ TEST(World, QueriesMatchBruteForce) {
       if (overlaps(probe, s)) hit.push_back(id);
       if (static_cast<double>(reference::distance_to(s, reference::to_mp(point))) <= d) near_point.push_back(id);
       if (distance(probe, s).distance <= d) near_shape.push_back(id);
-      const Aabb b = aabb(s);
-      if ((b.min.array() <= box.max.array()).all() && (box.min.array() <= b.max.array()).all()) in_box.push_back(id);
+      if (intersects(aabb(s), box)) in_box.push_back(id);
     }
     ASSERT_EQ(world.overlapping(probe), hit) << k;
     ASSERT_EQ(world.within(point, d), near_point) << k;

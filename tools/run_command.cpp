@@ -24,18 +24,6 @@ void draw_progress(std::ostream& out, int done, int total) {
       << "] " << (total > 0 ? 100 * done / total : 100) << "% (" << done << '/' << total << " frames)" << std::flush;
 }
 
-std::pair<Vec2, double> pose_of(const Shape& s) {
-  return std::visit(
-      [](const auto& x) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
-          return std::pair{x.center, 0.0};
-        } else {
-          return std::pair{x.center, x.angle};
-        }
-      },
-      s);
-}
-
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 
 void svg_shape(std::ostream& out, const Shape& s, const char* css) {
@@ -73,8 +61,8 @@ RunSummary SceneRun::run(std::ostream* progress) {
   for (int frame = 0; frame < scene_.frames; ++frame) {
     step(scene_);
     for (std::size_t k = 0; k < ids_.size(); ++k) {
-      const auto [center, angle] = pose_of(scene_.bodies[k].shape);
-      world_.set_pose(ids_[k], center, angle);
+      const Shape& shape = scene_.bodies[k].shape;
+      world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
     }
     world_.update();
     const FrameStats& f = world_.last_frame();

@@ -32,19 +32,6 @@ Shape moved(const Shape& s, double c, double sn, const Vec2& t) {
       s);
 }
 
-// The shape's angle (0 for circles).
-double angle_of(const Shape& s) {
-  return std::visit(
-      [](const auto& x) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
-          return 0.0;
-        } else {
-          return x.angle;
-        }
-      },
-      s);
-}
-
 double extent(const Shape& s) {
   const Aabb b = aabb(s);
   return std::max({std::abs(b.min.x()), std::abs(b.min.y()), std::abs(b.max.x()), std::abs(b.max.y())});

@@ -21,11 +21,6 @@ void check(bool ok, const char* what) {
   }
 }
 
-bool boxes_meet(const Shape& a, const Shape& b) {
-  const Aabb p = aabb(a), q = aabb(b);
-  return (p.min.array() <= q.max.array()).all() && (q.min.array() <= p.max.array()).all();
-}
-
 // The World reports a pair when the bodies' boxes meet and the narrow phase says so; where the
 // kernels are right, which at gaps above rounding they are, that is every overlapping pair.
 void compare_with_all_pairs(const World& w, double margin, const std::vector<BodyPair>& before) {
@@ -35,7 +30,7 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
       const Shape& a = w.shape(ids[i]);
       const Shape& b = w.shape(ids[j]);
-      if (boxes_meet(a, b) && overlaps(a, b)) {
+      if (intersects(aabb(a), aabb(b)) && overlaps(a, b)) {
         hit.push_back({ids[i], ids[j]});
       } else if (margin > 0 && distance(a, b).distance <= margin) {
         near.push_back({ids[i], ids[j]});
@@ -94,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           std::vector<BodyId> expected;
           const auto got = world.overlapping(probe);
           for (const BodyId id : world.bodies()) {
-            if (boxes_meet(probe, world.shape(id)) && overlaps(probe, world.shape(id))) expected.push_back(id);
+            if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
           }
           check(got == expected, "overlapping(shape) equals brute force");
           break;
