@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -35,21 +36,26 @@ SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const det
 }
 
 // The solid distance of a pair the overlap decision found separated along contact.direction. At the
-// best direction n the two support points are the closest points, their gap parallel to n to
-// rounding. Where the maximum of s is a kink finer than a double angle (an ellipse thinner than
-// about 1e-8 of its length, see at_maximum), the gap keeps a component across n, but the support
-// lines are exact and s, the distance between them, is accurate: the closest point comes from the
-// rounder shape (the thin one's support point is the one that jumps), and its partner is that point
-// moved by s along n.
+// best direction n the two support points are the closest points, their gap parallel to n to the
+// rounding of its own terms. That bound is local on purpose: the pair's margin grows with the
+// longest axis, and for a needle of length 1e20 it would accept a support point 16 units along the
+// flat side from the closest point. Where the gap keeps a component across n (the maximum of s is
+// a kink finer than the angle resolves, as for ellipses thinner than about 1e-8 of their length,
+// see at_maximum), the support lines are still exact and s, the distance between them, accurate.
+// The closest point then comes from the rounder shape (the thin one's support point is the one that
+// jumps: at the best representable n a needle's support point can sit at its tip, where the radius
+// of curvature is tiny but the point is wrong), and its partner is that point moved by s along n.
 SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<double>& pair,
                        const detail::EllipseContact& contact) {
   int iterations = contact.iterations;
   const auto best = detail::best_direction(pair, V2(contact.direction), iterations);
   const auto& e = best.at;
   if (!(e.s > 0)) return separated_by_rounding(a, b, contact, iterations);
+  const double rounding = 64 * std::numeric_limits<double>::epsilon() *
+                          (pair.delta.norm() + e.offset_a.norm() + e.offset_b.norm());
   // The distance is s, the certified distance between the support lines; |gap| = sqrt(s^2 + s'^2)
   // would add the rounding of the gap's component across n, which dominates when s is tiny.
-  if (detail::at_maximum(e, pair.margin()) && e.gap.norm() - e.s <= pair.margin()) {
+  if (detail::at_maximum(e, rounding)) {
     return {DistanceResult::apart(e.s, a.center + e.offset_a, b.center - e.offset_b), iterations, true};
   }
   const V2 step = e.s * best.n;

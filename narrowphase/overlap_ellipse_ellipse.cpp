@@ -21,15 +21,19 @@ bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
 
 // The bounding boxes apart along an axis by more than their rounding: then that axis separates the
 // ellipses exactly, a direction the iteration need not find. It matters for needles of aspect
-// beyond about 1e16, whose separating directions are kinks finer than a double angle.
+// beyond about 1e16, whose separating directions are kinks finer than a double angle. The rounding
+// is that of the three terms of the gap, not of the pair's scale: a needle of length 1e20 lying
+// along x has a half-height known to a few ulps of its b, and a gap of 0.5 above it is certain
+// (the fuzzer found such a pair called overlapping, at a scale where 0.5 is below 8 u).
 bool boxes_apart(const EllipsePair<double>& p, Vec2& axis) {
   for (int k = 0; k < 2; ++k) {
     const auto half = [k](const EllipseSupport<double>& e) {
       const double c = k == 0 ? e.rot.c : e.rot.s, s = k == 0 ? e.rot.s : e.rot.c;
       return std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s);
     };
-    const double gap = std::abs(p.delta[k]) - half(p.A) - half(p.B);
-    if (gap > 8 * kU * p.scale) {
+    const double half_a = half(p.A), half_b = half(p.B);
+    const double gap = std::abs(p.delta[k]) - half_a - half_b;
+    if (gap > 8 * kU * (std::abs(p.delta[k]) + half_a + half_b)) {
       axis = Vec2::Zero();
       axis[k] = p.delta[k] > 0 ? 1.0 : -1.0;
       return true;
