@@ -24,13 +24,14 @@ using V2 = detail::V2<double>;
 SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact,
                                    int iterations) {
   const auto pair = EllipsePair<long double>::of(a, b);
-  const detail::V2<long double> n0(contact.direction.x(), contact.direction.y());
+  const detail::V2<long double> n0 = pair.from_world({contact.direction.x(), contact.direction.y()});
   const auto best = detail::best_direction(pair, n0, iterations);
   const long double s = std::max(best.at.s, 0.0L);
   const detail::V2<long double> pa = best.at.offset_a;
   const detail::V2<long double> pb = pa + s * best.n;
-  const auto world = [](const Vec2& c, const detail::V2<long double>& p) {
-    return Vec2(c.x() + static_cast<double>(p[0]), c.y() + static_cast<double>(p[1]));
+  const auto world = [&pair](const Vec2& c, const detail::V2<long double>& p) {
+    const detail::V2<long double> w = pair.to_world(p);
+    return Vec2(c.x() + static_cast<double>(w[0]), c.y() + static_cast<double>(w[1]));
   };
   return {DistanceResult::apart(static_cast<double>(s), world(a.center, pa), world(a.center, pb)), iterations, true};
 }
@@ -48,23 +49,19 @@ SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const det
 SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<double>& pair,
                        const detail::EllipseContact& contact) {
   int iterations = contact.iterations;
-  const auto best = detail::best_direction(pair, V2(contact.direction), iterations);
+  const auto best = detail::best_direction(pair, pair.from_world(contact.direction), iterations);
   const auto& e = best.at;
   if (!(e.s > 0)) return separated_by_rounding(a, b, contact, iterations);
   const double rounding = 64 * std::numeric_limits<double>::epsilon() *
                           (pair.delta.norm() + e.offset_a.norm() + e.offset_b.norm());
   // The distance is s, the certified distance between the support lines; |gap| = sqrt(s^2 + s'^2)
   // would add the rounding of the gap's component across n, which dominates when s is tiny.
-  if (detail::at_maximum(e, rounding)) {
-    return {DistanceResult::apart(e.s, a.center + e.offset_a, b.center - e.offset_b), iterations, true};
-  }
-  const V2 step = e.s * best.n;
+  const Vec2 pa = a.center + pair.to_world(e.offset_a);
+  const Vec2 pb = b.center - pair.to_world(e.offset_b);
+  if (detail::at_maximum(e, rounding)) return {DistanceResult::apart(e.s, pa, pb), iterations, true};
+  const V2 step = e.s * pair.to_world(best.n);
   const auto aspect = [](const Ellipse& x) { return std::max(x.a, x.b) / std::min(x.a, x.b); };
-  if (aspect(a) <= aspect(b)) {
-    const Vec2 pa = a.center + e.offset_a;
-    return {DistanceResult::apart(e.s, pa, Vec2(pa + step)), iterations, true};
-  }
-  const Vec2 pb = b.center - e.offset_b;
+  if (aspect(a) <= aspect(b)) return {DistanceResult::apart(e.s, pa, Vec2(pa + step)), iterations, true};
   return {DistanceResult::apart(e.s, Vec2(pb - step), pb), iterations, true};
 }
 
@@ -85,11 +82,12 @@ Containment containment(const EllipsePair<double>& p, double angle) {
   return {g, detail::perp(n).dot(p.delta + sb.offset - sa.offset), -g + sb.rho - sa.rho, sa.offset, sb.offset};
 }
 
-// Angles of the outward normals of e at evenly spaced parameter values.
-void normal_angles(const Ellipse& e, int count, std::vector<double>& out) {
+// Angles, in the pair's frame, of the outward normals of e at evenly spaced parameter values.
+void normal_angles(const detail::EllipseSupport<double>& e, int count, std::vector<double>& out) {
+  const double angle = std::atan2(e.rot.s, e.rot.c);
   for (int k = 0; k < count; ++k) {
     const double t = 2 * std::numbers::pi * k / count;
-    out.push_back(e.angle + std::atan2(e.a * std::sin(t), e.b * std::cos(t)));
+    out.push_back(angle + std::atan2(e.a * std::sin(t), e.b * std::cos(t)));
   }
 }
 
@@ -99,12 +97,12 @@ struct Extremes {
 };
 
 // The global extrema of g: sampled, then each bracketed sign change of g' polished.
-Extremes containment_extremes(const EllipsePair<double>& p, const Ellipse& a, const Ellipse& b, int& iterations) {
+Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
   constexpr int kSamples = 32;
   std::vector<double> angles;
   for (int k = 0; k < kSamples; ++k) angles.push_back(2 * std::numbers::pi * k / kSamples);
-  normal_angles(a, kSamples, angles);
-  normal_angles(b, kSamples, angles);
+  normal_angles(p.A, kSamples, angles);
+  normal_angles(p.B, kSamples, angles);
   for (double& t : angles) t = std::remainder(t, 2 * std::numbers::pi);
   std::sort(angles.begin(), angles.end());
   std::vector<Containment> at;
@@ -180,16 +178,17 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
   const EllipsePair<double>& pair = lazy ? *lazy : lazy.emplace(EllipsePair<double>::of(a, b));
   if (!contact.overlap) return separated(a, b, pair, contact);
   int iterations = contact.iterations;
-  const Extremes ex = containment_extremes(pair, a, b, iterations);
+  const Extremes ex = containment_extremes(pair, iterations);
   const double margin = pair.margin();
   const bool a_in_b = ex.min.g >= -margin;
   if (!a_in_b && ex.max.g > margin) {
-    const Vec2 x = crossing_point(a, b, contact.witness, a.center + ex.min.offset_a, b.center + ex.max.offset_b);
+    const Vec2 x = crossing_point(a, b, contact.witness, a.center + pair.to_world(ex.min.offset_a),
+                                  b.center + pair.to_world(ex.max.offset_b));
     return {DistanceResult::touching(x), iterations, true};
   }
   const Containment& c = a_in_b ? ex.min : ex.max;
-  const Vec2 pa = a.center + c.offset_a;
-  const Vec2 pb = b.center + c.offset_b;
+  const Vec2 pa = a.center + pair.to_world(c.offset_a);
+  const Vec2 pb = b.center + pair.to_world(c.offset_b);
   const double gap = (pair.delta + c.offset_b - c.offset_a).norm();
   const DistanceResult r = gap > 0 ? DistanceResult::apart(gap, pa, pb) : DistanceResult::touching(pa);
   return {r, iterations, true};

@@ -50,13 +50,9 @@ struct Support {
 
 template <class Real>
 struct EllipseSupport {
-  Rotation<Real> rot;
+  Rotation<Real> rot;  // in the pair's frame
   Real a = 1;
   Real b = 1;
-
-  static EllipseSupport of(const Ellipse& e) {
-    return {Rotation<Real>::of(e.angle), static_cast<Real>(e.a), static_cast<Real>(e.b)};
-  }
 
   // n must be a unit vector.
   Support<Real> at(const V2<Real>& n) const {
@@ -81,19 +77,41 @@ struct Separation {
   V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
 };
 
+// Everything here (directions, offsets, delta) is in the pair's frame: the axes of the longer
+// ellipse, whose rotation is then exactly the identity. In world axes a needle's normal carries an
+// absolute error of u, which its support function multiplies by its length: for a needle 1e20 long
+// a gap of 0.5 beside it was lost. In its own axes the normal is exact and directions near it
+// keep their relative precision; the shorter ellipse's rotation, composed from the two cosines and
+// sines, carries the error u instead, times its own length.
 template <class Real>
 struct EllipsePair {
   EllipseSupport<Real> A;
   EllipseSupport<Real> B;
   V2<Real> delta;  // c_B - c_A
   Real scale = 0;  // |delta| + the two largest semi-axes: rounding errors are a few u * scale
+  Rotation<Real> frame;  // the pair's axes in world axes
 
   static EllipsePair of(const Ellipse& a, const Ellipse& b) {
     const V2<Real> d(static_cast<Real>(b.center.x()) - static_cast<Real>(a.center.x()),
                      static_cast<Real>(b.center.y()) - static_cast<Real>(a.center.y()));
     const Real size = static_cast<Real>(std::max(a.a, a.b) + std::max(b.a, b.b));
-    return {EllipseSupport<Real>::of(a), EllipseSupport<Real>::of(b), d, d.norm() + size};
+    const bool a_longer = std::max(a.a, a.b) >= std::max(b.a, b.b);
+    const Rotation<Real> ra = Rotation<Real>::of(a.angle), rb = Rotation<Real>::of(b.angle);
+    const Rotation<Real> frame = a_longer ? ra : rb;
+    // Equal angles give the identity exactly (composing would leave c^2 + s^2, off 1 by an ulp).
+    const auto in_frame = [&](const Rotation<Real>& r) {
+      return a.angle == b.angle ? Rotation<Real>{} : r.relative_to(frame);
+    };
+    const EllipseSupport<Real> A{a_longer ? Rotation<Real>{} : in_frame(ra), static_cast<Real>(a.a),
+                                 static_cast<Real>(a.b)};
+    const EllipseSupport<Real> B{a_longer ? in_frame(rb) : Rotation<Real>{}, static_cast<Real>(b.a),
+                                 static_cast<Real>(b.b)};
+    const V2<Real> local = frame.apply_inverse(d);
+    return {A, B, local, d.norm() + size, frame};
   }
+
+  V2<Real> to_world(const V2<Real>& v) const { return frame.apply(v); }
+  V2<Real> from_world(const V2<Real>& v) const { return frame.apply_inverse(v); }
 
   // The tolerance below which a sign computed here is not trusted.
   Real margin() const { return 64 * std::numeric_limits<Real>::epsilon() * scale; }

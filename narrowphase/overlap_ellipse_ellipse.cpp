@@ -19,21 +19,24 @@ bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
   return u * u + v * v < 1.0 - 16 * kU * (1.0 + p.norm() * (1.0 / e.a + 1.0 / e.b));
 }
 
-// The bounding boxes apart along an axis by more than their rounding: then that axis separates the
-// ellipses exactly, a direction the iteration need not find. It matters for needles of aspect
-// beyond about 1e16, whose separating directions are kinks finer than a double angle. The rounding
-// is that of the three terms of the gap, not of the pair's scale: a needle of length 1e20 lying
-// along x has a half-height known to a few ulps of its b, and a gap of 0.5 above it is certain
-// (the fuzzer found such a pair called overlapping, at a scale where 0.5 is below 8 u).
+// The bounding boxes in the pair's frame apart along an axis by more than their rounding: then that
+// axis separates the ellipses exactly, a direction the iteration need not find. It matters for
+// needles of aspect beyond about 1e16, whose separating directions are kinks finer than a double
+// angle. The rounding is that of the three terms of the gap, not of the pair's scale: a needle of
+// length 1e20 has a half-height known to a few ulps of its b in its own frame, and a gap of 0.5
+// beside it is certain (the fuzzer found such a pair called overlapping, at a scale where 0.5 is
+// below 8 u). The other ellipse's rotation in that frame is off by up to 2 u, so its half-width
+// is known to u times its own size only.
 bool boxes_apart(const EllipsePair<double>& p, Vec2& axis) {
   for (int k = 0; k < 2; ++k) {
     const auto half = [k](const EllipseSupport<double>& e) {
       const double c = k == 0 ? e.rot.c : e.rot.s, s = k == 0 ? e.rot.s : e.rot.c;
       return std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s);
     };
+    const auto turned_size = [](const EllipseSupport<double>& e) { return e.rot.s == 0 ? 0.0 : e.a + e.b; };
     const double half_a = half(p.A), half_b = half(p.B);
     const double gap = std::abs(p.delta[k]) - half_a - half_b;
-    if (gap > 8 * kU * (std::abs(p.delta[k]) + half_a + half_b)) {
+    if (gap > 8 * kU * (std::abs(p.delta[k]) + half_a + half_b + turned_size(p.A) + turned_size(p.B))) {
       axis = Vec2::Zero();
       axis[k] = p.delta[k] > 0 ? 1.0 : -1.0;
       return true;
@@ -47,10 +50,11 @@ Vec2 to_double(const V2<Real>& v) {
   return {static_cast<double>(v[0]), static_cast<double>(v[1])};
 }
 
+// The outcome in world axes.
 template <class Real>
-EllipseContact from_gjk(const GjkOutcome<Real>& g, const Ellipse& a, int iterations) {
-  return {g.verdict != FilterVerdict::separated, to_double(g.direction), a.center + to_double(g.witness),
-          iterations};
+EllipseContact from_gjk(const GjkOutcome<Real>& g, const EllipsePair<Real>& p, const Ellipse& a, int iterations) {
+  return {g.verdict != FilterVerdict::separated, to_double(p.to_world(g.direction)),
+          a.center + to_double(p.to_world(g.witness)), iterations};
 }
 
 }  // namespace
@@ -70,22 +74,23 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
     out = {false, delta / length, Vec2::Zero(), 0};
   } else if (boxes_apart(*pair, axis)) {
     verdict = FilterVerdict::separated;
-    out = {false, axis, Vec2::Zero(), 0};
-  } else if (clearly_inside(pair->A, delta)) {
+    out = {false, pair->to_world(axis), Vec2::Zero(), 0};
+  } else if (clearly_inside(pair->A, pair->delta)) {
     verdict = FilterVerdict::overlap;
     out = {true, Vec2::UnitX(), b.center, 0};
-  } else if (clearly_inside(pair->B, Vec2(-delta))) {
+  } else if (clearly_inside(pair->B, Vec2(-pair->delta))) {
     verdict = FilterVerdict::overlap;
     out = {true, Vec2::UnitX(), a.center, 0};
   } else {
     const auto g = decide(*pair);
     verdict = g.verdict;
-    out = from_gjk(g, a, g.iterations);
+    out = from_gjk(g, *pair, a, g.iterations);
   }
   if (double_verdict) *double_verdict = verdict;
   if (verdict != FilterVerdict::uncertain || double_verdict) return out;
-  const auto g = decide(EllipsePair<long double>::of(a, b));
-  EllipseContact last = from_gjk(g, a, out.iterations + g.iterations);
+  const auto wide = EllipsePair<long double>::of(a, b);
+  const auto g = decide(wide);
+  EllipseContact last = from_gjk(g, wide, a, out.iterations + g.iterations);
   // Within long double rounding of touching: the sign of s at the maximum is the best evidence.
   if (g.verdict == FilterVerdict::uncertain) last.overlap = !(g.separation > 0);
   return last;

@@ -207,39 +207,39 @@ TEST(EllipseDistance, UltraThinNeedles) {
   EXPECT_GT(checked, 200);
 }
 
-// A needle lying along x, 1e17 to 1e45 long, with an ellipse 0.5625 above its middle: the boxes are
-// that far apart along y, and the needle's top is flat there to 1e-32, so the gap and the closest
-// points are known exactly by construction. The pair's rounding scale (the needle's length) dwarfs
-// the gap; the fuzzer found such a pair called overlapping.
-TEST(EllipseDistance, LongNeedleAlongAnAxisKeepsALocalGap) {
+// A needle 1e17 to 1e45 long and 4.5 thick, turned by theta, with an ellipse (turned by a further
+// phi) 0.5625 beside its middle, set out in the needle's axes: there the needle's side is flat to
+// 1e-32, so the gap and the closest points are known by construction, to the rounding of the
+// second centre (4e-15). The pair's rounding scale, the needle's length, dwarfs the gap. The fuzzer
+// found such a pair along x called overlapping; turned, the needle's normal in world axes carried
+// an error of u, which its length multiplied (at 1e20 the gap came out 0 at any angle but 0).
+TEST(EllipseDistance, LongNeedleKeepsALocalGap) {
+  const double a = 7.9375, b = 2.0625;
   for (const double length : {1e17, 1e20, 1e30, 1e38, 1e45}) {
-    for (const double angle : {0.0, 7e-305}) {
-      const Ellipse needle{Vec2(-8, -7.125), length, 4.5, angle};
-      const Ellipse above{Vec2(7.9375, 0), 7.9375, 2.0625, 0};
-      for (const auto& [p, q] : {std::pair{needle, above}, std::pair{above, needle}}) {
-        const bool needle_first = p.a == length;
-        EXPECT_FALSE(overlap_ellipse_ellipse(p, q)) << length;
-        const DistanceResult d = distance(p, q);
-        EXPECT_NEAR(d.distance, 0.5625, 1e-15) << length << " " << angle;
-        const Vec2 on_needle(7.9375, -2.625), on_above(7.9375, -2.0625);
-        EXPECT_LT(((needle_first ? d.point_a : d.point_b) - on_needle).norm(), 1e-14) << length << " " << angle;
-        EXPECT_LT(((needle_first ? d.point_b : d.point_a) - on_above).norm(), 1e-14) << length << " " << angle;
+    for (const double theta : {0.0, 7e-305, 1e-10, 0.3, 1.2, std::numbers::pi, 4.0}) {
+      for (const double phi : {0.0, 0.4}) {
+        const Vec2 centre(-8, -7.125);
+        const auto turned = [&](double x, double y) {
+          const double c = std::cos(theta), s = std::sin(theta);
+          return Vec2(centre + Vec2(c * x - s * y, s * x + c * y));
+        };
+        // The other ellipse's lowest point in the needle's axes lies h below its centre and
+        // (a^2 - b^2) sin(phi) cos(phi) / h to the left of it.
+        const double h = std::hypot(a * std::sin(phi), b * std::cos(phi));
+        const double lowest_x = 15.9375 - (a * a - b * b) * std::sin(phi) * std::cos(phi) / h;
+        const Ellipse needle{centre, length, 4.5, theta};
+        const Ellipse beside{turned(15.9375, 4.5 + 0.5625 + h), a, b, theta + phi};
+        const Vec2 on_needle = turned(lowest_x, 4.5), on_beside = turned(lowest_x, 4.5 + 0.5625);
+        for (const auto& [p, q] : {std::pair{needle, beside}, std::pair{beside, needle}}) {
+          const bool needle_first = p.a == length;
+          EXPECT_FALSE(overlap_ellipse_ellipse(p, q)) << length << " " << theta << " " << phi;
+          const DistanceResult d = distance(p, q);
+          EXPECT_NEAR(d.distance, 0.5625, 1e-14) << length << " " << theta << " " << phi;
+          EXPECT_LT((d.point_a - (needle_first ? on_needle : on_beside)).norm(), 1e-13) << length << " " << theta;
+          EXPECT_LT((d.point_b - (needle_first ? on_beside : on_needle)).norm(), 1e-13) << length << " " << theta;
+        }
       }
     }
-  }
-}
-
-// The same needle turned by the double nearest pi, which is pi - 1.22e-16: the needle's top is then
-// lower by 15.9375 sin(that angle) below the other ellipse (first order; the rest is below 1e-30).
-// Its box no longer decides, and the answer is as good as the documented tolerance, 1e-12 of the
-// pair's scale (the needle's length). Up to a length of 1e18 it is still exact to rounding.
-TEST(EllipseDistance, LongTiltedNeedleWithinTheScaleTolerance) {
-  const double exact = 0.5625 + 15.9375 * std::sin(std::numbers::pi);
-  for (const double length : {1e12, 1e15, 1e18, 1e20, 1e30, 1e45}) {
-    const Ellipse needle{Vec2(-8, -7.125), length, 4.5, std::numbers::pi};
-    const Ellipse above{Vec2(7.9375, 0), 7.9375, 2.0625, 0};
-    const DistanceResult d = distance(needle, above);
-    EXPECT_NEAR(d.distance, exact, (length <= 1e18 ? 1e-15 : 1e-12 * length)) << length;
   }
 }
 
