@@ -11,6 +11,8 @@
 
 namespace collide2d::fuzz {
 
+enum class Kind { circle, ellipse, rect, any };
+
 class Input {
  public:
   Input(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
@@ -35,12 +37,15 @@ class Input {
     return x < 0 ? -x : x;
   }
 
+  // A shape of the given kind, or of the kind the bytes choose. The choice byte is read either way,
+  // so that one input decodes to the same numbers in every fuzzer and the corpora can be shared.
   // Each read in its own statement: the order of evaluation of function arguments differs between
   // compilers, and a crash found with clang must decode the same with g++.
-  Shape shape() {
+  Shape shape(Kind wanted = Kind::any) {
     const double x = number();
     const double y = number();
-    const int kind = byte() % 3;
+    const int chosen = byte() % 3;
+    const int kind = wanted == Kind::any ? chosen : static_cast<int>(wanted);
     const double u = size();
     const double v = kind == 0 ? 0.0 : size();
     const double angle = kind == 0 ? 0.0 : number();

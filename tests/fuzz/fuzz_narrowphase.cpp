@@ -1,7 +1,9 @@
-// Narrow-phase fuzzer: two shapes from raw bytes. Invalid shapes must be refused with InvalidShape;
-// for valid ones the answers must be finite, the overlap verdict must match the distance (0 exactly
-// when overlapping), swapping A and B must swap the result exactly, and moving both shapes by one
-// rigid motion must keep the distance (to 1e-9 of the scale).
+// Narrow-phase fuzzer, built once per kernel family (tests/fuzz/CMakeLists.txt): COLLIDE2D_FUZZ_FIRST
+// and COLLIDE2D_FUZZ_SECOND name the kinds of the two shapes, `any` letting the bytes choose.
+// Invalid shapes must be refused with InvalidShape; for valid ones the answers must be finite, the
+// overlap verdict must match the distance (0 exactly when overlapping), swapping A and B must swap
+// the result exactly, and moving both shapes by one rigid motion must keep the distance (to 1e-9 of
+// the scale).
 #include "fuzz_input.h"
 #include "narrowphase/query.h"
 
@@ -41,8 +43,8 @@ double extent(const Shape& s) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::Input in(data, size);
-  const Shape a = in.shape();
-  const Shape b = in.shape();
+  const Shape a = in.shape(fuzz::Kind::COLLIDE2D_FUZZ_FIRST);
+  const Shape b = in.shape(fuzz::Kind::COLLIDE2D_FUZZ_SECOND);
   if (!fuzz::valid(a) || !fuzz::valid(b)) {
     try {
       distance(a, b);
