@@ -174,12 +174,6 @@ TEST(EllipseDistance, RectanglesHaveNoBoundaryDistance) {
   EXPECT_THROW(boundary_distance(Circle{}, Rect{}), UnsupportedPair);
 }
 
-}  // namespace
-}  // namespace collide2d::testing
-
-namespace collide2d::testing {
-namespace {
-
 // Needles thinner than a double angle can resolve (aspect 1e9 ... 1e35): their flat side is a kink
 // of the support function, and the distance comes from the support lines (found by the fuzzer).
 TEST(EllipseDistance, UltraThinNeedles) {

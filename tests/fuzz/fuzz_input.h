@@ -5,6 +5,7 @@
 
 #include "shapes/shapes.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -63,6 +64,12 @@ class Input {
   std::size_t size_;
   std::size_t pos_ = 0;
 };
+
+// The largest coordinate of the shape's box: the scale its rounding errors are relative to.
+inline double extent(const Shape& s) {
+  const Aabb b = aabb(s);
+  return std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff());
+}
 
 // Whether the shape passes validation (the fuzzers check the properties on valid shapes only).
 inline bool valid(const Shape& s) {

@@ -34,11 +34,6 @@ Shape moved(const Shape& s, double c, double sn, const Vec2& t) {
       s);
 }
 
-double extent(const Shape& s) {
-  const Aabb b = aabb(s);
-  return std::max({std::abs(b.min.x()), std::abs(b.min.y()), std::abs(b.max.x()), std::abs(b.max.y())});
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -71,11 +66,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const double angle = in.number();
   const Vec2 shift = in.point();
   const bool tame = std::abs(angle) < 1e3 && std::abs(angle_of(a)) < 1e3 && std::abs(angle_of(b)) < 1e3;
-  if (tame && shift.allFinite() && shift.norm() < 1e6 && extent(a) < 1e6 && extent(b) < 1e6) {
+  if (tame && shift.allFinite() && shift.norm() < 1e6 && fuzz::extent(a) < 1e6 && fuzz::extent(b) < 1e6) {
     const double c = std::cos(angle), sn = std::sin(angle);
     const Shape ma = moved(a, c, sn, shift), mb = moved(b, c, sn, shift);
     if (fuzz::valid(ma) && fuzz::valid(mb)) {
-      const double scale = std::max({extent(a), extent(b), shift.norm(), 1e-300});
+      const double scale = std::max({fuzz::extent(a), fuzz::extent(b), shift.norm(), 1e-300});
       check(std::abs(distance(ma, mb).distance - d.distance) <= 1e-9 * scale, "distance invariant under rigid motion");
     }
   }

@@ -27,8 +27,6 @@ double box_gap(const Aabb& p, const Aabb& q) {
   return gap.norm();
 }
 
-double extent(const Aabb& b) { return std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()); }
-
 // The World reports a pair when the bodies' boxes meet and the narrow phase says so; where the
 // kernels are right, which at gaps above rounding they are, that is every overlapping pair. A
 // proximity pair is culled by its boxes, which are exact, where the kernel's distance is accurate
@@ -54,7 +52,7 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
       if (gap <= margin) {
         near.push_back({ids[i], ids[j]});
       } else {
-        check(gap - d <= 1e-12 * (extent(aabb(a)) + extent(aabb(b))), "distance no shorter than the box gap");
+        check(gap - d <= 1e-12 * (fuzz::extent(a) + fuzz::extent(b)), "distance no shorter than the box gap");
         unresolved.push_back({ids[i], ids[j]});
       }
     }
