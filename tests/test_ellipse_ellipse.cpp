@@ -206,7 +206,7 @@ TEST(EllipseDistance, UltraThinNeedles) {
 // 1e-32, so the gap and the closest points are known by construction, to the rounding of the
 // second centre (4e-15). The pair's rounding scale, the needle's length, dwarfs the gap. The fuzzer
 // found such a pair along x called overlapping; turned, the needle's normal in world axes carried
-// an error of u, which its length multiplied (at 1e20 the gap came out 0 at any angle but 0).
+// an error of u, which its length multiplied (at 1e20 the gap came out 0 at angles 1e-18 to 1.2).
 TEST(EllipseDistance, LongNeedleKeepsALocalGap) {
   const double a = 7.9375, b = 2.0625;
   for (const double length : {1e17, 1e20, 1e30, 1e38, 1e45}) {
