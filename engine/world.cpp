@@ -160,7 +160,7 @@ std::vector<BodyId> World::overlapping(const Aabb& box) const {
 }
 
 std::vector<BodyId> World::within(const Vec2& point, double d) const {
-  validate(Circle{point, 1.0});  // the point's range
+  validate_point(point, "point");
   require_margin(d, "distance");
   if (d > 0.0) return overlapping(Shape(Circle{point, d}));
   return select({point, point}, [&point](const Shape& s) { return collide2d::contains(s, point); });
@@ -173,7 +173,7 @@ std::vector<BodyId> World::within(const Shape& shape, double d) const {
 }
 
 std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const {
-  validate(Circle{origin, 1.0});  // the origin's range
+  validate_point(origin, "ray origin");
   require_finite(direction.x(), "ray direction x");
   require_finite(direction.y(), "ray direction y");
   if (std::isnan(max_distance) || max_distance < 0.0) throw std::invalid_argument("ray length must not be negative");

@@ -47,6 +47,11 @@ Orientation Orientation::of(double angle) {
   return {r.c, r.s};
 }
 
+void validate_point(const Vec2& p, const char* what) {
+  require_coordinate(what, "x", p.x());
+  require_coordinate(what, "y", p.y());
+}
+
 void validate(const Circle& c) {
   require_coordinate("circle", "cx", c.center.x());
   require_coordinate("circle", "cy", c.center.y());

@@ -68,6 +68,8 @@ void validate(const Circle& c);
 void validate(const Ellipse& e);
 void validate(const Rect& r);
 void validate(const Shape& s);
+// A query point: finite and within the coordinate range; the message calls it `what` ("point x ...").
+void validate_point(const Vec2& p, const char* what);
 
 // The word used for the shape on the command line and in messages: "circle", "ellipse", "rect".
 const char* shape_name(const Shape& s);

@@ -172,11 +172,20 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   EXPECT_THROW(world.within(Vec2(0, 0), nan), std::invalid_argument);
   EXPECT_THROW(world.ray_cast(Vec2(0, 0), Vec2(0, 0), 1), std::invalid_argument);
   EXPECT_THROW(world.overlapping(Aabb{Vec2(1, 1), Vec2(0, 0)}), std::invalid_argument);
-  try {
-    world.set_pose(a, Vec2(nan, 0), 0);
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("pose x must be finite"), std::string::npos) << e.what();
-  }
+  const auto message = [](auto call) -> std::string {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string pose = message([&] { world.set_pose(a, Vec2(nan, 0), 0); });
+  EXPECT_NE(pose.find("pose x must be finite"), std::string::npos) << pose;
+  const std::string point = message([&] { static_cast<void>(world.within(Vec2(nan, 0), 1)); });
+  EXPECT_NE(point.find("point x must be finite"), std::string::npos) << point;
+  const std::string origin = message([&] { static_cast<void>(world.ray_cast(Vec2(0, 1e60), Vec2(1, 0), 1)); });
+  EXPECT_NE(origin.find("ray origin y is beyond the supported range"), std::string::npos) << origin;
   EXPECT_EQ(world.size(), 2u);
   EXPECT_EQ(center_of(world.shape(a)), Vec2(0, 0));
   EXPECT_EQ(world.user_id(b), 2u);
