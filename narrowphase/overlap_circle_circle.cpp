@@ -1,18 +1,15 @@
 #include "narrowphase/overlap_circle_circle.h"
 
+#include "narrowphase/within_reach.h"
+
 #include <algorithm>
-#include <cmath>
 
 namespace collide2d {
 
-// Squares decide when they are clear by far more than their rounding; near contact the verdict is
-// the one distance_circle_circle reaches (gap = n - ra - rb > 0), so the two always agree.
+// Near contact the verdict is distance_circle_circle's: apart when n - ra - rb > 0.
 bool overlap_circle_circle(const Circle& a, const Circle& b) {
-  const double reach = a.radius + b.radius;
-  const double q = (b.center - a.center).squaredNorm();
-  if (q > reach * reach * (1 + 1e-12)) return false;
-  if (q < reach * reach * (1 - 1e-12)) return true;
-  return !(std::sqrt(q) - a.radius - b.radius > 0.0);
+  return detail::within_reach((b.center - a.center).squaredNorm(), a.radius + b.radius,
+                              [&](double n) { return n - a.radius - b.radius > 0.0; });
 }
 
 DistanceResult distance_circle_circle(const Circle& a, const Circle& b) {

@@ -1,9 +1,8 @@
 #include "narrowphase/overlap_rect_circle.h"
 
 #include "narrowphase/box_local.h"
+#include "narrowphase/within_reach.h"
 #include "shapes/rotation.h"
-
-#include <cmath>
 
 namespace collide2d {
 namespace {
@@ -22,15 +21,11 @@ CircleInRect circle_in_rect(const Rect& r, const Circle& c) {
 
 }  // namespace
 
-// As for two circles: squares decide when clear, and near contact the verdict is distance_rect_circle's
-// (|centre - nearest| <= r), so the two always agree.
+// Near contact the verdict is distance_rect_circle's: apart when |centre - nearest| > r.
 bool overlap_rect_circle(const Rect& r, const Circle& c) {
   const CircleInRect f = circle_in_rect(r, c);
-  const double q = (f.center - f.nearest).squaredNorm();
-  const double r2 = c.radius * c.radius;
-  if (q > r2 * (1 + 1e-12)) return false;
-  if (q < r2 * (1 - 1e-12)) return true;
-  return std::sqrt(q) <= c.radius;
+  return detail::within_reach((f.center - f.nearest).squaredNorm(), c.radius,
+                              [&](double n) { return n > c.radius; });
 }
 
 DistanceResult distance_rect_circle(const Rect& r, const Circle& c) {
