@@ -14,6 +14,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -56,6 +58,31 @@ DistanceResult ellipse_boundary(const Ellipse& a, const Ellipse& b) {
 constexpr auto kRobust = EllipseDistanceMethod::robust;
 constexpr auto kGradient = EllipseDistanceMethod::gradient;
 constexpr auto kPolynomial = EllipseDistanceMethod::polynomial;
+
+// Nested pairs: B inside A (within A's inscribed circle), where the boundary distance searches the
+// directions for the least gap instead of running the separated pair's Newton iteration.
+void boundary_ellipse_ellipse_nested(benchmark::State& state) {
+  static const Workload<Ellipse, Ellipse> w = [] {
+    bench::Generator g;
+    Workload<Ellipse, Ellipse> out{std::vector<Ellipse>(kPairs), std::vector<Ellipse>(kPairs)};
+    for (std::size_t k = 0; k < kPairs; ++k) {
+      g.make(out.a[k]);
+      const double room = std::min(out.a[k].a, out.a[k].b);
+      const double turn = g.uniform(0, 6.3);
+      const Vec2 offset = g.uniform(0, 0.4 * room) * Vec2(std::cos(turn), std::sin(turn));
+      out.b[k] = Ellipse{out.a[k].center + offset, g.uniform(0.05, 0.3) * room, g.uniform(0.05, 0.3) * room,
+                         g.uniform(0, 6.3)};
+    }
+    return out;
+  }();
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(boundary_distance_ellipse_ellipse(w.a[k], w.b[k]));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(boundary_ellipse_ellipse_nested);
 
 BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski);
 BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features);
