@@ -216,6 +216,53 @@ R signed_curve_distance(R a, R b, R x, R y) {
   return q > 1 ? d : -d;
 }
 
+// The largest distance from (x, y) (in the ellipse frame) to the curve of the ellipse (a, b). With
+// a >= b and (y0, y1) = (|x|, |y|), the farthest point is (a^2 y0 / (t + a^2), b^2 y1 / (t + b^2))
+// for the root t < -a^2 of the F above, where F is convex and increasing from -1 to +infinity; Newton
+// from t = -a^2 - a y0 (where F >= 0) descends to it monotonically. On the minor axis (y0 = 0) that
+// root exists only when b y1 > a^2 - b^2; otherwise t = -a^2 and the farthest points leave the axis.
+Real farthest_curve_distance(Real a, Real b, Real x, Real y) {
+  if (b > a) std::swap(a, b), std::swap(x, y);
+  const Real y0 = abs(x), y1 = abs(y), a2 = a * a, b2 = b * b;
+  Real x0, x1;
+  if (y0 == 0 && !(b * y1 > a2 - b2)) {
+    x1 = a2 > b2 ? -b2 * y1 / (a2 - b2) : Real(0);
+    const Real w = 1 - (x1 / b) * (x1 / b);
+    x0 = a * sqrt(w < 0 ? Real(0) : w);
+  } else {
+    Real t = y0 > 0 ? -a2 - a * y0 : -b2 - b * y1;
+    for (int k = 0; k < 2000 && y0 > 0; ++k) {
+      const Real r0 = a * y0 / (t + a2), r1 = b * y1 / (t + b2);
+      const Real f = r0 * r0 + r1 * r1 - 1;
+      const Real df = -2 * (r0 * r0 / (t + a2) + r1 * r1 / (t + b2));
+      const Real next = t - f / df;
+      if (!(next < t)) break;
+      t = next;
+    }
+    x0 = a2 * y0 / (t + a2), x1 = b2 * y1 / (t + b2);
+  }
+  return sqrt((x0 - y0) * (x0 - y0) + (x1 - y1) * (x1 - y1));
+}
+
+// The gap between the curves of a circle and an ellipse from the distances of the circle's centre
+// to the ellipse's curve, nearest and farthest (both roots of secular equations, each unique on its
+// branch): no sampling, so no extremum can be missed.
+Real circle_ellipse_boundary(const Circle& c, const Ellipse& e) {
+  const Point p = to_local(frame_of(e.center, e.angle), to_mp(c.center));
+  const Real near = signed_curve_distance(Real(e.a), Real(e.b), p.x, p.y);
+  const Real r(c.radius);
+  if (abs(near) >= r) return abs(near) - r;  // apart, or the circle inside the ellipse
+  const Real far = farthest_curve_distance(Real(e.a), Real(e.b), p.x, p.y);
+  return far <= r ? r - far : Real(0);       // the ellipse inside the circle, or crossing curves
+}
+
+Real circle_circle_boundary(const Circle& a, const Circle& b) {
+  const Point pa = to_mp(a.center), pb = to_mp(b.center);
+  const Real d = norm(pb.x - pa.x, pb.y - pa.y), ra(a.radius), rb(b.radius);
+  if (d >= ra + rb) return d - ra - rb;
+  return d <= abs(ra - rb) ? abs(ra - rb) - d : Real(0);
+}
+
 // A's curve in B's frame: f(t) is the signed distance of A's point at parameter t to B's curve.
 template <class R>
 struct CurveOnCurve {
@@ -349,6 +396,15 @@ EllipsePairReference ellipse_pair(const Ellipse& a, const Ellipse& b) {
   const EllipsePairReference ba = one_side(b, a);
   const bool overlap = ab.overlap || ba.overlap;
   return {overlap, overlap ? Real(0) : std::min(ab.distance, ba.distance), std::min(ab.boundary, ba.boundary)};
+}
+
+Real boundary_distance(const Shape& a, const Shape& b) {
+  const auto* ca = std::get_if<Circle>(&a);
+  const auto* cb = std::get_if<Circle>(&b);
+  if (ca && cb) return circle_circle_boundary(*ca, *cb);
+  if (ca) return circle_ellipse_boundary(*ca, std::get<Ellipse>(b));
+  if (cb) return circle_ellipse_boundary(*cb, std::get<Ellipse>(a));
+  return ellipse_pair(std::get<Ellipse>(a), std::get<Ellipse>(b)).boundary;
 }
 
 Point to_mp(const Vec2& p) { return {Real(p.x()), Real(p.y())}; }

@@ -44,4 +44,9 @@ struct EllipsePairReference {
 };
 EllipsePairReference ellipse_pair(const Ellipse& a, const Ellipse& b);
 
+// The gap between the boundary curves of two circles or ellipses (0 when they cross). Pairs with a
+// circle need no sampling: the circle's centre against the other curve, nearest and farthest, by
+// secular equations; two ellipses use ellipse_pair.
+Real boundary_distance(const Shape& a, const Shape& b);
+
 }  // namespace collide2d::reference

@@ -8,13 +8,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <numbers>
 #include <random>
 
 namespace collide2d::testing {
 namespace {
+
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 std::vector<Family> ellipse_families() {
   std::vector<Family> out = standard_families(Kind::ellipse, Kind::ellipse);
@@ -28,6 +32,8 @@ std::vector<Family> ellipse_families() {
       out.push_back(f);
     }
   }
+  out.push_back(Family{.name = "ellipse-ellipse congruent ring", .a = Kind::ellipse, .b = Kind::ellipse,
+                       .aspect_max = 20, .placement = Placement::congruent, .seed = 29});
   out.push_back(Family{.name = "ellipse-ellipse concentric", .a = Kind::ellipse, .b = Kind::ellipse,
                        .aspect_max = 10, .placement = Placement::concentric, .seed = 13});
   out.push_back(Family{.name = "circle-ellipse concentric", .a = Kind::circle, .b = Kind::ellipse,
@@ -42,16 +48,22 @@ TEST_P(EllipseFamilies, MeetTargets) { run_family(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Standard, EllipseFamilies, ::testing::ValuesIn(ellipse_families()),
                          [](const auto& info) { return test_name(info.param); });
 
-// Gaps at the rounding level: no verdict is owed, but the long-double fallback should decide them
-// and agree with the exact verdict of the rounded input.
+// Gaps at the rounding level: the long-double fallback decides them, and run_family asserts that
+// the verdict agrees with the exact verdict of the rounded input.
 TEST(EllipseRounding, FallbackDecidesRoundingLevelContacts) {
   for (const double aspect : {1.0, 1e3}) {
     char name[64];
     std::snprintf(name, sizeof name, "ellipse-ellipse gap<=1e-14 aspect %.0e", aspect);
+    // The closest points of a pair this close come from support points at a direction that
+    // maximises s to its rounding, 64 eps (|c_B - c_A| + |offset_a| + |offset_b|): their gap may
+    // lean across n by that much, up to 384 u scale, so |b - a| exceeds a distance of ~u by as much
+    // (measured: 238 u at aspect 1e3). Nearer-tangent families stay below 4 u.
     Family f{.name = name, .a = Kind::ellipse, .b = Kind::ellipse, .cases = 140, .aspect_min = aspect,
-             .aspect_max = 4 * aspect, .deltas = {0.0, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16, -1e-16}, .seed = 3};
+             .aspect_max = 4 * aspect, .deltas = {0.0, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16, -1e-16},
+             .point_bound = 384, .seed = 3};
     const FamilyStats s = run_family(f);
     EXPECT_GT(s.fallbacks, 0) << "the filter should defer some rounding-level contacts";
+    EXPECT_EQ(s.rounding_verdicts_checked, 2 * f.cases) << "every verdict here is at the rounding level";
   }
 }
 
@@ -72,7 +84,8 @@ std::vector<Ellipse> seed_samples() {
 
 // The post reports success on all 19 and its distance is the gap between the curves. Gradient
 // descent stops when the gradient of D^2 is below 1e-8, so its distances are good to about 1e-9
-// where the curves cross (D^2 has a minimum of 0 there); elsewhere all methods must meet 1e-12.
+// where the curves cross (D^2 has a minimum of 0 there); elsewhere the seed methods must meet
+// 1e-12 and robust the 8 u of the scale that the families assert.
 TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
   const Ellipse first = seed_ellipse(0, 0, 6, 10, 15);
   int k = 0;
@@ -89,10 +102,12 @@ TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
       std::printf("[seed-000] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n",
                   k, static_cast<int>(method), solid_error, curve_error, curve.iterations, curve.converged);
       EXPECT_EQ(solid.result.overlapping, ref.overlap) << "sample " << k;
-      EXPECT_LE(solid_error, 1e-12 * scale) << "sample " << k << " method " << static_cast<int>(method);
+      const bool robust = method == EllipseDistanceMethod::robust;
+      const double bound = (robust ? 8 * kU : 1e-12) * scale;
+      EXPECT_LE(solid_error, bound) << "sample " << k << " method " << static_cast<int>(method);
       if (method == EllipseDistanceMethod::polynomial) continue;  // measured above: it misses crossings
       EXPECT_TRUE(curve.converged) << "sample " << k;
-      const double tol = method == EllipseDistanceMethod::gradient ? crossing_tolerance : 1e-12 * scale;
+      const double tol = method == EllipseDistanceMethod::gradient ? crossing_tolerance : bound;
       EXPECT_LE(curve_error, tol) << "sample " << k << " method " << static_cast<int>(method);
     }
     ++k;
@@ -131,9 +146,11 @@ TEST(EllipseDistance, ClosestPointsSatisfyOptimality) {
 }
 
 // The same pair moved by a rigid motion has the same distances, and swapping A and B swaps the
-// result exactly.
+// result exactly. Moving rounds the centres to u of the shift (up to 100) and the angles to u of
+// the turn, which moves the distance by up to about 4 u x 150: asserted within 16 u x 150.
 TEST(EllipseDistance, FrameInvariantAndSymmetric) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double worst = 0;
   for (int k = 0; k < 3000; ++k) {
     const Ellipse a = random_ellipse(2.0), b = random_ellipse(2.0);
     const double turn = 3 * u(rng);
@@ -143,29 +160,35 @@ TEST(EllipseDistance, FrameInvariantAndSymmetric) {
                    std::sin(turn) * e.center.x() + std::cos(turn) * e.center.y());
       return Ellipse{c + shift, e.a, e.b, e.angle + turn};
     };
-    const double tol = 1e-12 * 60;
-    ASSERT_NEAR(distance(a, b).distance, distance(moved(a), moved(b)).distance, tol) << k;
-    ASSERT_NEAR(boundary_distance(a, b).distance, boundary_distance(moved(a), moved(b)).distance, tol) << k;
+    const double tol = 16 * kU * 150;
+    const double solid = std::abs(distance(a, b).distance - distance(moved(a), moved(b)).distance);
+    const double curve = std::abs(boundary_distance(a, b).distance - boundary_distance(moved(a), moved(b)).distance);
+    worst = std::max({worst, solid, curve});
+    ASSERT_LE(solid, tol) << k;
+    ASSERT_LE(curve, tol) << k;
     const DistanceResult ab = boundary_distance(a, b), ba = boundary_distance(b, a);
     ASSERT_EQ(ab.distance, ba.distance) << k;
     ASSERT_EQ(ab.point_a, ba.point_b) << k;
     ASSERT_EQ(overlaps(a, b), overlaps(b, a)) << k;
   }
+  std::printf("[measure] rigid motion changed the distances by at most %.1f u x 150\n", worst / (kU * 150));
 }
 
-// A circle is an ellipse with a = b: the circle kernels and the ellipse kernels agree.
+// A circle is an ellipse with a = b: the circle kernels and the ellipse kernels agree, to 8 u of
+// the coordinates' scale (4).
 TEST(EllipseDistance, CirclePathMatchesEllipsePath) {
   std::uniform_real_distribution<double> u(-2.0, 2.0);
+  const double tol = 8 * kU * 4;
   for (int k = 0; k < 20000; ++k) {
     const Circle c{Vec2(u(rng), u(rng)), 0.1 + std::abs(u(rng))};
     const Ellipse e = random_ellipse(2.0);
     const Ellipse ce{c.center, c.radius, c.radius, u(rng)};
     ASSERT_EQ(overlaps(c, e), overlaps(ce, e)) << k;
-    ASSERT_NEAR(distance(c, e).distance, distance(ce, e).distance, 1e-13) << k;
-    ASSERT_NEAR(boundary_distance(c, e).distance, boundary_distance(ce, e).distance, 1e-13) << k;
+    ASSERT_NEAR(distance(c, e).distance, distance(ce, e).distance, tol) << k;
+    ASSERT_NEAR(boundary_distance(c, e).distance, boundary_distance(ce, e).distance, tol) << k;
     const Circle d{e.center, e.a};
     const Ellipse de{d.center, d.radius, d.radius, 0.0};
-    ASSERT_NEAR(boundary_distance(c, d).distance, boundary_distance(ce, de).distance, 1e-13) << k;
+    ASSERT_NEAR(boundary_distance(c, d).distance, boundary_distance(ce, de).distance, tol) << k;
   }
 }
 
@@ -176,10 +199,12 @@ TEST(EllipseDistance, RectanglesHaveNoBoundaryDistance) {
 
 // Needles thinner than a double angle can resolve (aspect 1e9 ... 1e35): their flat side is a kink
 // of the support function, and the distance comes from the support lines (found by the fuzzer).
+// Asserted as the families are: the distance within 8 u of the scale, the points within 64 u.
 TEST(EllipseDistance, UltraThinNeedles) {
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int checked = 0;
+  double worst_distance = 0, worst_point = 0;
   for (int k = 0; k < 300; ++k) {
     const double aspect = std::pow(10.0, 9 + 26 * u(rng));
     const Ellipse a{Vec2(8 * u(rng) - 4, 8 * u(rng) - 4), 1 + 4 * u(rng), 0, 7 * u(rng)};
@@ -190,15 +215,23 @@ TEST(EllipseDistance, UltraThinNeedles) {
       const DistanceResult d = distance(p, q);
       const double scale = std::max({p.a, q.a, q.b, (q.center - p.center).norm()});
       ASSERT_EQ(d.overlapping, ref.overlap) << k;
-      ASSERT_NEAR(d.distance, static_cast<double>(ref.distance), 1e-12 * scale) << k;
+      const double error = std::abs(d.distance - static_cast<double>(ref.distance));
+      worst_distance = std::max(worst_distance, error / scale);
+      ASSERT_LE(error, 8 * kU * scale) << k;
       if (d.overlapping) continue;
       ++checked;
-      EXPECT_LE(static_cast<double>(reference::distance_to(p, reference::to_mp(d.point_a))), 1e-12 * scale) << k;
-      EXPECT_LE(static_cast<double>(reference::distance_to(q, reference::to_mp(d.point_b))), 1e-12 * scale) << k;
-      EXPECT_NEAR((d.point_b - d.point_a).norm(), d.distance, 1e-12 * scale) << k;
+      const double off_a = static_cast<double>(reference::distance_to(p, reference::to_mp(d.point_a)));
+      const double off_b = static_cast<double>(reference::distance_to(q, reference::to_mp(d.point_b)));
+      const double span = std::abs((d.point_b - d.point_a).norm() - d.distance);
+      worst_point = std::max({worst_point, off_a / scale, off_b / scale, span / scale});
+      EXPECT_LE(off_a, 64 * kU * scale) << k;
+      EXPECT_LE(off_b, 64 * kU * scale) << k;
+      EXPECT_LE(span, 64 * kU * scale) << k;
     }
   }
   EXPECT_GT(checked, 200);
+  std::printf("[measure] ultra-thin needles: worst distance error %.1f u, points %.1f u of the scale\n",
+              worst_distance / kU, worst_point / kU);
 }
 
 // A needle 1e17 to 1e45 long and 4.5 thick, turned by theta, with an ellipse (turned by a further

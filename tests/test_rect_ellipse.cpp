@@ -26,8 +26,8 @@ INSTANTIATE_TEST_SUITE_P(Standard, RectEllipseFamilies,
                          ::testing::ValuesIn(standard_families(Kind::rect, Kind::ellipse)),
                          [](const auto& info) { return test_name(info.param); });
 
-// Gaps at the rounding level: no verdict is owed here, but the filter must defer and the
-// long-double fallback should still match the exact verdict of the rounded input.
+// Gaps at the rounding level: the filter must defer, and run_family asserts that the default
+// verdict (the long-double fallback) matches the exact verdict of the rounded input.
 TEST(RectEllipseRounding, FallbackDecidesRoundingLevelContacts) {
   for (const double aspect : {1.0, 1e3, 1e6}) {
     char name[64];
@@ -40,6 +40,7 @@ TEST(RectEllipseRounding, FallbackDecidesRoundingLevelContacts) {
     f.seed = 3;
     const FamilyStats s = run_family(f);
     EXPECT_GT(s.fallbacks, 0) << "the filter never deferred at rounding-level gaps";
+    EXPECT_EQ(s.rounding_verdicts_checked, 2 * f.cases) << "every verdict here is at the rounding level";
   }
 }
 
