@@ -409,6 +409,36 @@ Real boundary_distance(const Shape& a, const Shape& b) {
 
 Point to_mp(const Vec2& p) { return {Real(p.x()), Real(p.y())}; }
 
+namespace {
+
+// x rounded to a double towards -infinity (down) or +infinity.
+double rounded(const Real& x, bool down) {
+  const double d = static_cast<double>(x);
+  if (down ? Real(d) > x : Real(d) < x) return std::nextafter(d, down ? -INFINITY : INFINITY);
+  return d;
+}
+
+// Half widths of the shape's box along x and y.
+std::pair<Real, Real> half_widths(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return {Real(c->radius), Real(c->radius)};
+  const Frame f = frame_of(center_of(s), angle_of(s));
+  if (const auto* e = std::get_if<Ellipse>(&s)) {
+    const Real a(e->a), b(e->b);
+    return {norm(a * f.c, b * f.s), norm(a * f.s, b * f.c)};
+  }
+  const auto& r = std::get<Rect>(s);
+  const Real hx(r.half_extents.x()), hy(r.half_extents.y());
+  return {abs(hx * f.c) + abs(hy * f.s), abs(hx * f.s) + abs(hy * f.c)};
+}
+
+}  // namespace
+
+Aabb bounding_box(const Shape& s) {
+  const Point c = to_mp(center_of(s));
+  const auto [wx, wy] = half_widths(s);
+  return {Vec2(rounded(c.x - wx, true), rounded(c.y - wy, true)), Vec2(rounded(c.x + wx, false), rounded(c.y + wy, false))};
+}
+
 Real distance_to(const Shape& s, const Point& p) {
   if (const auto* c = std::get_if<Circle>(&s)) return point_circle(*c, p);
   if (const auto* e = std::get_if<Ellipse>(&s)) return point_ellipse(*e, p);

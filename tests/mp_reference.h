@@ -30,6 +30,10 @@ Point to_mp(const Vec2& p);
 // Distance from p to the solid shape (0 inside).
 Real distance_to(const Shape& s, const Point& p);
 
+// The exact axis-aligned box of a shape (its support function along the axes, in 50 digits),
+// rounded outward to doubles: it contains every point of the shape, independently of aabb().
+Aabb bounding_box(const Shape& s);
+
 // Whether the two solids overlap, and their distance (0 when they do).
 bool overlap(const Shape& a, const Shape& b);
 Real distance(const Shape& a, const Shape& b);

@@ -1,11 +1,15 @@
 // Soak run: a World of moving bodies with churn (1% of the bodies removed and as many added every
 // frame). At every CHECK_EVERY-th frame, the World's overlapping pairs must equal a brute-force test
-// of every pair of bodies (no missed and no phantom pair), and the heap is compared with its size
-// after the first check (it must not grow beyond the live set's).
+// of every pair of bodies (no missed and no phantom pair), 100 sampled pairs must agree with the
+// 50-digit reference, and the heap is compared with its size after the first check (it must not
+// grow beyond the live set's). The brute force culls with exact boxes computed in 50 digits and
+// rounded outward, not with the aabb() the World uses; the sampled pairs check the overlaps() both
+// use, half of them among the World's overlapping pairs.
 //
 //   collide2d_soak BODIES FRAMES CHECK_EVERY      (exit status 0 when every check passed)
 // The CI runs a short version; the README gives the long one (100,000 bodies, 10,000 frames).
 #include "engine/world.h"
+#include "mp_reference.h"
 
 #include <malloc.h>
 
@@ -31,22 +35,45 @@ std::size_t heap_in_use() {
   return m.uordblks + m.hblkhd;
 }
 
-// Brute force: every pair of bodies, box against box and then shape against shape (an overlap lies
-// inside both boxes, so the box test only saves time). At 100,000 bodies this is 5e9 box tests.
-std::vector<BodyPair> all_overlapping_pairs(const World& world) {
+// Brute force: every pair of bodies, exact box against exact box and then shape against shape (an
+// overlap lies inside both boxes, so the box test only saves time). At 100,000 bodies this is 5e9
+// box tests. Also returns the pairs whose boxes meet, for sampling.
+struct BruteForce {
+  std::vector<BodyPair> overlapping;
+  std::vector<BodyPair> boxes_meet;
+};
+
+BruteForce all_pairs(const World& world) {
   const std::vector<BodyId> ids = world.bodies();
   std::vector<Aabb> boxes;
   boxes.reserve(ids.size());
-  for (const BodyId id : ids) boxes.push_back(aabb(world.shape(id)));
-  std::vector<BodyPair> pairs;
+  for (const BodyId id : ids) boxes.push_back(reference::bounding_box(world.shape(id)));
+  BruteForce out;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (intersects(boxes[i], boxes[j]) && overlaps(world.shape(ids[i]), world.shape(ids[j]))) {
-        pairs.push_back({ids[i], ids[j]});
-      }
+      if (!intersects(boxes[i], boxes[j])) continue;
+      out.boxes_meet.push_back({ids[i], ids[j]});
+      if (overlaps(world.shape(ids[i]), world.shape(ids[j]))) out.overlapping.push_back({ids[i], ids[j]});
     }
   }
-  return pairs;
+  return out;
+}
+
+// Pairs sampled from `overlapping` and `boxes_meet` alternately whose verdict in the World differs
+// from the 50-digit reference's.
+int reference_disagreements(const World& world, const BruteForce& all, std::mt19937_64& rng, int samples) {
+  int wrong = 0;
+  for (int k = 0; k < samples; ++k) {
+    const auto& from = k % 2 == 0 && !all.overlapping.empty() ? all.overlapping : all.boxes_meet;
+    if (from.empty()) continue;
+    const BodyPair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
+    const bool reported = std::binary_search(world.overlapping().begin(), world.overlapping().end(), p);
+    if (reported != reference::overlap(world.shape(p.a), world.shape(p.b))) {
+      std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a, p.b, reported, !reported);
+      ++wrong;
+    }
+  }
+  return wrong;
 }
 
 }  // namespace
@@ -57,7 +84,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const int bodies = std::atoi(argv[1]), frames = std::atoi(argv[2]), every = std::max(1, std::atoi(argv[3]));
-  std::mt19937_64 rng(99);
+  std::mt19937_64 rng(99), sample_rng(7);
+  constexpr int kReferenceSamples = 100;
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double side = std::sqrt(28.0 * bodies);
   const auto fresh_shape = [&]() -> Shape {
@@ -95,7 +123,9 @@ int main(int argc, char** argv) {
     world.update();
     if (frame % every != 0) continue;
     ++checks;
-    if (world.overlapping() != all_overlapping_pairs(world)) ++failures;
+    const BruteForce all = all_pairs(world);
+    if (world.overlapping() != all.overlapping) ++failures;
+    failures += reference_disagreements(world, all, sample_rng, kReferenceSamples);
     const std::size_t heap = heap_in_use();
     if (baseline == 0) baseline = heap;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -107,6 +137,7 @@ int main(int argc, char** argv) {
       ++failures;
     }
   }
-  std::printf("%d checks, %d failures\n", checks, failures);
+  std::printf("%d checks (%d pairs against the 50-digit reference each), %d failures\n", checks, kReferenceSamples,
+              failures);
   return failures == 0 && checks > 0 ? 0 : 1;
 }

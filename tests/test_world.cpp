@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -26,7 +27,8 @@ Shape random_shape(Rng& rng, double spread) {
   }
 }
 
-// Every pair tested directly: overlaps, and the distance of the others against the margin.
+// Every pair tested directly with the narrow phase the World uses: overlaps, and the distance of the
+// others against the margin (expect_sample_matches_reference checks that narrow phase itself).
 void expect_matches_all_pairs(const World& world, double margin, const std::string& what) {
   const std::vector<BodyId> ids = world.bodies();
   std::vector<BodyPair> overlapping;
@@ -51,6 +53,50 @@ void expect_matches_all_pairs(const World& world, double margin, const std::stri
   ASSERT_EQ(reported, near) << what;
 }
 
+bool has(const std::vector<BodyPair>& sorted, const BodyPair& p) {
+  return std::binary_search(sorted.begin(), sorted.end(), p);
+}
+
+// Independently of the World's own aabb() and overlaps(): the pairs whose exact boxes (50 digits,
+// rounded outward), grown by margin / 2, meet must include every overlapping and proximity pair;
+// and a sample of them, half from the World's overlapping pairs, is checked against the 50-digit
+// reference: the verdict, and with a margin, the distance and membership of the proximity list.
+void expect_sample_matches_reference(const World& world, double margin, Rng& rng, const std::string& what) {
+  const std::vector<BodyId> ids = world.bodies();
+  std::vector<Aabb> boxes;
+  for (const BodyId id : ids) {
+    const Aabb b = reference::bounding_box(world.shape(id));
+    boxes.push_back({b.min.array() - margin / 2, b.max.array() + margin / 2});
+  }
+  std::vector<BodyPair> near;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      if (intersects(boxes[i], boxes[j])) near.push_back({ids[i], ids[j]});
+    }
+  }
+  for (const BodyPair& p : world.overlapping()) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
+  std::vector<BodyPair> proximity;
+  for (const Proximity& p : world.proximity()) proximity.push_back({p.a, p.b});
+  for (const BodyPair& p : proximity) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
+  const auto pick = [&rng](const std::vector<BodyPair>& from) {
+    return from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
+  };
+  for (int k = 0; k < 12; ++k) {
+    const BodyPair p = k % 2 == 0 && !world.overlapping().empty() ? pick(world.overlapping()) : pick(near);
+    const Shape& a = world.shape(p.a);
+    const Shape& b = world.shape(p.b);
+    ASSERT_EQ(has(world.overlapping(), p), reference::overlap(a, b)) << what << ": " << p.a << "-" << p.b;
+    if (margin == 0 || has(world.overlapping(), p)) continue;
+    const double d = static_cast<double>(reference::distance(a, b));
+    const auto reported = std::find_if(world.proximity().begin(), world.proximity().end(),
+                                       [&p](const Proximity& q) { return q.a == p.a && q.b == p.b; });
+    // Within rounding of the margin either answer is right.
+    const double scale = 20.0, tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
+    if (std::abs(d - margin) > tolerance) ASSERT_EQ(reported != world.proximity().end(), d <= margin) << what;
+    if (reported != world.proximity().end()) ASSERT_NEAR(reported->result.distance, d, tolerance) << what;
+  }
+}
+
 TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
   for (const double margin : {0.0, 0.3}) {
     Rng rng(7);
@@ -71,6 +117,8 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
       }
       world.update();
       expect_matches_all_pairs(world, margin, "frame " + std::to_string(frame));
+      if (HasFatalFailure()) return;
+      expect_sample_matches_reference(world, margin, rng, "frame " + std::to_string(frame));
       if (HasFatalFailure()) return;
       std::vector<BodyPair> began, ended;
       std::set_difference(world.overlapping().begin(), world.overlapping().end(), previous.begin(), previous.end(),
