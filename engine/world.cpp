@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace collide2d {
 namespace {
@@ -49,23 +50,28 @@ World::World(const WorldOptions& options) : broad_(options.fat_margin), proximit
   require_margin(options.proximity_margin, "proximity margin");
 }
 
-World::Body& World::body(BodyId id) {
-  if (!contains(id)) throw std::out_of_range("unknown body " + std::to_string(id));
-  return bodies_[id];
+bool World::contains(BodyId id) const {
+  return broad_.contains(id.index) && bodies_[id.index].generation == id.generation;
 }
 
 const World::Body& World::body(BodyId id) const {
-  if (!contains(id)) throw std::out_of_range("unknown body " + std::to_string(id));
-  return bodies_[id];
+  if (contains(id)) return bodies_[id.index];
+  const std::string name = "body " + std::to_string(id.index) + " (generation " + std::to_string(id.generation) + ")";
+  const bool stale = id.index < bodies_.size() && id.generation != 0 && id.generation < bodies_[id.index].generation;
+  if (!stale) throw std::out_of_range("unknown " + name);
+  throw std::out_of_range("stale " + name + ": that body was removed; its slot is at generation " +
+                          std::to_string(bodies_[id.index].generation));
 }
+
+World::Body& World::body(BodyId id) { return const_cast<Body&>(std::as_const(*this).body(id)); }
 
 const Shape& World::shape(BodyId id) const { return body(id).shape; }
 std::uint64_t World::user_id(BodyId id) const { return body(id).user_id; }
 
 std::vector<BodyId> World::bodies() const {
   std::vector<BodyId> out;
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (contains(id)) out.push_back(id);
+  for (ProxyId index = 0; index < bodies_.size(); ++index) {
+    if (broad_.contains(index)) out.push_back(id_of(index));
   }
   return out;
 }
@@ -74,10 +80,12 @@ Aabb World::broad_box(const Shape& shape) const { return grown(aabb(shape), 0.5 
 
 BodyId World::add(const Shape& shape, std::uint64_t user_id) {
   validate(shape);
-  const BodyId id = broad_.insert(broad_box(shape));
-  if (id >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(id) + 1);
-  bodies_[id] = {shape, user_id};
-  return id;
+  const ProxyId index = broad_.insert(broad_box(shape));
+  if (index >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(index) + 1);
+  Body& b = bodies_[index];
+  b.shape = shape;  // a reused slot keeps the generation remove() gave it
+  b.user_id = user_id;
+  return id_of(index);
 }
 
 void World::set_pose(BodyId id, const Vec2& center, double angle) {
@@ -87,7 +95,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   require_finite(angle, "pose angle");
   const Shape moved = posed(b.shape, center, angle);
   validate(moved);  // the range of the centre
-  broad_.move(id, broad_box(moved));
+  broad_.move(id.index, broad_box(moved));
   b.shape = moved;
 }
 
@@ -97,14 +105,15 @@ void World::move_by(BodyId id, const Vec2& shift, double turn) {
 }
 
 void World::remove(BodyId id) {
-  body(id);
-  broad_.remove(id);
+  Body& b = body(id);
+  broad_.remove(id.index);
+  b.generation = b.generation == UINT32_MAX ? 1 : b.generation + 1;  // 0 names no body
 }
 
 void World::set_proximity_margin(double margin) {
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
-  for (const BodyId id : bodies()) broad_.move(id, broad_box(bodies_[id].shape));
+  for (const BodyId id : bodies()) broad_.move(id.index, broad_box(bodies_[id.index].shape));
 }
 
 void World::update() {
@@ -119,10 +128,10 @@ void World::update() {
     const Shape& a = bodies_[p.a].shape;
     const Shape& b = bodies_[p.b].shape;
     if (overlaps(a, b)) {
-      now.push_back(p);
+      now.push_back(pair_of(p));
     } else if (proximity_margin_ > 0.0) {
       const DistanceResult d = distance(a, b);
-      if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({p.a, p.b, d});
+      if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(p.a), id_of(p.b), d});
     }
   }
   began_.clear();
@@ -139,8 +148,9 @@ void World::update() {
 template <class Test>
 std::vector<BodyId> World::select(const Aabb& box, Test test) const {
   std::vector<BodyId> out;
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (contains(id) && intersects(aabb(bodies_[id].shape), box) && test(bodies_[id].shape)) out.push_back(id);
+  for (ProxyId index = 0; index < bodies_.size(); ++index) {
+    const Shape& s = bodies_[index].shape;
+    if (broad_.contains(index) && intersects(aabb(s), box) && test(s)) out.push_back(id_of(index));
   }
   return out;
 }
@@ -181,11 +191,11 @@ std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction,
   if (!(length > 0.0)) throw std::invalid_argument("ray direction must not be zero");
   const Vec2 unit = direction / length;
   std::optional<RayHit> best;
-  for (BodyId id = 0; id < bodies_.size(); ++id) {
-    if (!contains(id)) continue;
+  for (ProxyId index = 0; index < bodies_.size(); ++index) {
+    if (!broad_.contains(index)) continue;
     const double reach = best ? best->distance : max_distance;
-    const auto hit = collide2d::ray_cast(bodies_[id].shape, origin, unit, reach);
-    if (hit && (!best || hit->distance < best->distance)) best = RayHit{id, hit->distance, hit->point, hit->normal};
+    const auto hit = collide2d::ray_cast(bodies_[index].shape, origin, unit, reach);
+    if (hit && (!best || hit->distance < best->distance)) best = RayHit{id_of(index), hit->distance, hit->point, hit->normal};
   }
   return best;
 }

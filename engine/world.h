@@ -19,7 +19,8 @@
 // test every body's box and then the exact shape: O(n) per query.
 //
 // Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
-// std::invalid_argument, an unknown body std::out_of_range; the World is left exactly as it was.
+// std::invalid_argument, an unknown body or a stale handle (its body removed) std::out_of_range,
+// with a message that says which; the World is left exactly as it was.
 #pragma once
 
 #include "broadphase/broad_phase.h"
@@ -31,8 +32,21 @@
 
 namespace collide2d {
 
-using BodyId = ProxyId;
-using BodyPair = ProxyPair;  // a < b
+// A body's handle: its slot in the World and the generation of that slot. remove() frees the slot
+// for a later add() and moves its generation on, so a handle kept past remove() is refused with an
+// error instead of reaching whichever body takes the slot next (as Box2D v3's b2BodyId does).
+// Generations start at 1: a default BodyId{} names no body.
+struct BodyId {
+  std::uint32_t index = 0;
+  std::uint32_t generation = 0;
+  friend auto operator<=>(const BodyId&, const BodyId&) = default;
+};
+
+struct BodyPair {
+  BodyId a;  // a.index < b.index
+  BodyId b;
+  friend auto operator<=>(const BodyPair&, const BodyPair&) = default;
+};
 
 struct WorldOptions {
   double fat_margin = 0.0;        // broad-phase boxes grow by this, so small motions cost nothing
@@ -40,13 +54,13 @@ struct WorldOptions {
 };
 
 struct Proximity {
-  BodyId a = 0;
-  BodyId b = 0;
+  BodyId a;
+  BodyId b;
   DistanceResult result;  // the distance and closest points, point_a on body a
 };
 
 struct RayHit {
-  BodyId body = 0;
+  BodyId body;
   double distance = 0.0;       // from the ray's origin to the hit point
   Vec2 point = Vec2::Zero();
   Vec2 normal = Vec2::Zero();  // outward unit normal of the body at the point (zero when the ray starts inside)
@@ -72,7 +86,7 @@ class World {
   void set_proximity_margin(double margin);
   void update();
 
-  bool contains(BodyId id) const { return broad_.contains(id); }
+  bool contains(BodyId id) const;
   std::size_t size() const { return broad_.size(); }
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
@@ -98,8 +112,9 @@ class World {
   struct Body {
     Shape shape;
     std::uint64_t user_id = 0;
+    std::uint32_t generation = 1;
   };
-  std::vector<Body> bodies_;  // indexed by BodyId; live exactly when the broad phase has the id
+  std::vector<Body> bodies_;  // indexed by the broad phase's proxy id; live exactly when it has the id
   SweepAndPrune broad_;
   double proximity_margin_;
   std::vector<BodyPair> overlapping_;
@@ -110,6 +125,8 @@ class World {
 
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
+  BodyId id_of(ProxyId index) const { return {index, bodies_[index].generation}; }
+  BodyPair pair_of(const ProxyPair& p) const { return {id_of(p.a), id_of(p.b)}; }
   Aabb broad_box(const Shape& shape) const;
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, Test test) const;

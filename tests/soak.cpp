@@ -69,7 +69,7 @@ int reference_disagreements(const World& world, const BruteForce& all, std::mt19
     const BodyPair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
     const bool reported = std::binary_search(world.overlapping().begin(), world.overlapping().end(), p);
     if (reported != reference::overlap(world.shape(p.a), world.shape(p.b))) {
-      std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a, p.b, reported, !reported);
+      std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a.index, p.b.index, reported, !reported);
       ++wrong;
     }
   }

@@ -85,7 +85,7 @@ void expect_sample_matches_reference(const World& world, double margin, Rng& rng
     const BodyPair p = k % 2 == 0 && !world.overlapping().empty() ? pick(world.overlapping()) : pick(near);
     const Shape& a = world.shape(p.a);
     const Shape& b = world.shape(p.b);
-    ASSERT_EQ(has(world.overlapping(), p), reference::overlap(a, b)) << what << ": " << p.a << "-" << p.b;
+    ASSERT_EQ(has(world.overlapping(), p), reference::overlap(a, b)) << what << ": " << p.a.index << "-" << p.b.index;
     if (margin == 0 || has(world.overlapping(), p)) continue;
     const double d = static_cast<double>(reference::distance(a, b));
     const auto reported = std::find_if(world.proximity().begin(), world.proximity().end(),
@@ -106,9 +106,9 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
     std::vector<BodyPair> previous;
     for (int frame = 0; frame < 40; ++frame) {
       for (const BodyId id : world.bodies()) {
-        if (id >= velocity.size()) velocity.resize(id + 1);
-        if (frame == 0) velocity[id] = Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
-        world.move_by(id, velocity[id], 0.02);
+        if (id.index >= velocity.size()) velocity.resize(id.index + 1);
+        if (frame == 0) velocity[id.index] = Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+        world.move_by(id, velocity[id.index], 0.02);
       }
       if (frame % 10 == 5) {  // churn
         const auto ids = world.bodies();
@@ -213,9 +213,10 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   EXPECT_THROW(world.add(Ellipse{Vec2(0, 0), -1, 1, 0}), InvalidShape);
   EXPECT_THROW(world.set_pose(a, Vec2(nan, 0), 0), std::invalid_argument);
   EXPECT_THROW(world.set_pose(b, Vec2(0, 0), INFINITY), std::invalid_argument);
-  EXPECT_THROW(world.set_pose(42, Vec2(0, 0), 0), std::out_of_range);
-  EXPECT_THROW(world.move_by(42, Vec2(0, 0)), std::out_of_range);
-  EXPECT_THROW(world.remove(42), std::out_of_range);
+  EXPECT_THROW(world.set_pose(BodyId{42, 1}, Vec2(0, 0), 0), std::out_of_range);
+  EXPECT_THROW(world.move_by(BodyId{42, 1}, Vec2(0, 0)), std::out_of_range);
+  EXPECT_THROW(world.remove(BodyId{42, 1}), std::out_of_range);
+  EXPECT_THROW(world.shape(BodyId{}), std::out_of_range);
   EXPECT_THROW(world.set_proximity_margin(-1), std::invalid_argument);
   EXPECT_THROW(world.within(Vec2(0, 0), nan), std::invalid_argument);
   EXPECT_THROW(world.ray_cast(Vec2(0, 0), Vec2(0, 0), 1), std::invalid_argument);
@@ -240,6 +241,40 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   world.update();
   EXPECT_EQ(world.overlapping(), pairs);
   EXPECT_TRUE(world.began().empty());
+}
+
+// A handle kept past remove() is refused, also once a new body has taken its slot, and the new
+// body is untouched by calls made with it.
+TEST(World, StaleHandlesAreRefusedAfterTheirSlotIsReused) {
+  World world;
+  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, 1);
+  world.add(Circle{Vec2(5, 0), 1}, 2);
+  world.remove(a);
+  world.update();  // the broad phase hands a's slot out again after an update
+  const BodyId c = world.add(Circle{Vec2(10, 0), 1}, 3);
+  ASSERT_EQ(c.index, a.index);
+  EXPECT_NE(c.generation, a.generation);
+  EXPECT_FALSE(world.contains(a));
+  EXPECT_TRUE(world.contains(c));
+  EXPECT_THROW(world.set_pose(a, Vec2(1, 1), 0), std::out_of_range);
+  EXPECT_THROW(world.move_by(a, Vec2(1, 1)), std::out_of_range);
+  EXPECT_THROW(world.remove(a), std::out_of_range);
+  EXPECT_THROW(world.shape(a), std::out_of_range);
+  EXPECT_THROW(world.user_id(a), std::out_of_range);
+  EXPECT_EQ(center_of(world.shape(c)), Vec2(10, 0));
+  EXPECT_EQ(world.user_id(c), 3u);
+  EXPECT_EQ(world.size(), 2u);
+  const auto message = [&world](BodyId id) -> std::string {
+    try {
+      world.remove(id);
+    } catch (const std::out_of_range& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(message(a), "stale body 0 (generation 1): that body was removed; its slot is at generation 2");
+  EXPECT_EQ(message(BodyId{7, 1}), "unknown body 7 (generation 1)");
+  EXPECT_EQ(message(BodyId{}), "unknown body 0 (generation 0)");
 }
 
 }  // namespace

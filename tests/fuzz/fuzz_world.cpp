@@ -1,6 +1,7 @@
 // World fuzzer: a random sequence of add, set_pose, remove, update and queries from the bytes. Bad
-// input must throw and leave the World as it was; after every update the overlapping pairs, the
-// began/ended lists and the proximity pairs must equal an all-pairs check.
+// input (an unknown body or a handle kept past its remove() among it) must throw and leave the World
+// as it was; after every update the overlapping pairs, the began/ended lists and the proximity
+// pairs must equal an all-pairs check.
 #include "engine/world.h"
 #include "fuzz_input.h"
 
@@ -82,25 +83,37 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const double margin = (in.byte() % 4) * 0.25;
   World world({.fat_margin = (in.byte() % 3) * 0.1, .proximity_margin = margin});
   std::vector<BodyPair> before;
+  std::vector<BodyId> removed;  // stale handles: every call with one must be refused
   for (int op = 0; op < 64 && !in.empty(); ++op) {
     const auto state = snapshot(world);
     const std::vector<BodyId> ids = world.bodies();
-    const BodyId some = ids.empty() ? 7 : ids[in.byte() % ids.size()];
+    const BodyId some = ids.empty() ? BodyId{7, 1} : ids[in.byte() % ids.size()];
+    // A live body, an unknown one or a stale handle.
+    const auto target = [&]() {
+      const int pick = in.byte() % 8;
+      if (pick == 0) return BodyId{1000, 1};
+      if (pick == 1 && !removed.empty()) return removed[in.byte() % removed.size()];
+      return some;
+    };
     try {
       switch (in.byte() % 6) {
         case 0:
           if (world.size() < 24) world.add(in.shape());
           break;
-        case 1:
-          {
-            const BodyId target = in.byte() % 8 == 0 ? 1000 : some;
-            const Vec2 centre = in.point();
-            world.set_pose(target, centre, in.number());
-          }
+        case 1: {
+          const BodyId id = target();
+          const Vec2 centre = in.point();
+          world.set_pose(id, centre, in.number());
+          check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
           break;
-        case 2:
-          world.remove(in.byte() % 8 == 0 ? 1000 : some);
+        }
+        case 2: {
+          const BodyId id = target();
+          world.remove(id);
+          check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
+          removed.push_back(id);
           break;
+        }
         case 3:
           world.update();
           compare_with_all_pairs(world, margin, before);
@@ -126,7 +139,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     } catch (const std::invalid_argument&) {  // InvalidShape and bad poses or margins
       check(snapshot(world) == state, "a refused call changed nothing");
-    } catch (const std::out_of_range&) {  // unknown body
+    } catch (const std::out_of_range&) {  // unknown body or stale handle
       check(snapshot(world) == state, "a refused call changed nothing");
     }
   }
