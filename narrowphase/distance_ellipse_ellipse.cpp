@@ -175,8 +175,8 @@ Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
   const double margin = p.margin();
   const double congruence = curvature_difference_bound(p);
   while (!arcs.empty() && !(out.min.g < -margin && out.max.g > margin)) {
-    const auto [x, y] = arcs.back();
-    arcs.pop_back();
+    const Containment x = arcs.back().first, y = arcs.back().second;  // not a structured binding: clang 14
+    arcs.pop_back();                                                     // cannot capture one in the lambda
     const Bend bend = bend_between(x, y, congruence);
     const bool may_lower = std::min(x.g, y.g) - bend.dip < out.min.g - rounding;
     const bool may_raise = std::max(x.g, y.g) + bend.dip > out.max.g + rounding;
