@@ -161,12 +161,8 @@ std::vector<BodyId> World::overlapping(const Shape& shape) const {
 }
 
 std::vector<BodyId> World::overlapping(const Aabb& box) const {
-  for (int k = 0; k < 2; ++k) {
-    require_finite(box.min[k], "box min");
-    require_finite(box.max[k], "box max");
-    if (box.min[k] > box.max[k]) throw std::invalid_argument("box min must not exceed box max");
-  }
-  return select(box, [](const Shape&) { return true; });
+  validate(box);
+  return select(box, [&box](const Shape& s) { return overlaps(s, box); });
 }
 
 std::vector<BodyId> World::within(const Vec2& point, double d) const {

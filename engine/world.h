@@ -13,10 +13,11 @@
 // pairs that do not overlap. With a proximity margin m, the broad-phase boxes are the shapes'
 // boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
 //
-// Queries (each validates its input and returns body ids in increasing order): the bodies that
-// overlap a shape or a box, the bodies within a distance of a point or of a shape, and the first
-// body a ray hits (exact on circles and ellipses: the ray meets the curve, not a polygon). Queries
-// test every body's box and then the exact shape: O(n) per query.
+// Queries (each validates its input and returns body ids in increasing order): the bodies whose
+// solid shape overlaps a shape or a box (the exact shape, not its bounding box), the bodies within
+// a distance of a point or of a shape, and the first body a ray hits (exact on circles and
+// ellipses: the ray meets the curve, not a polygon). Queries test every body's box and then the
+// exact shape: O(n) per query.
 //
 // Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
 // std::invalid_argument, an unknown body or a stale handle (its body removed) std::out_of_range,

@@ -128,6 +128,20 @@ bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
   return in_kernel_order(a, b, [&options](const auto& x, const auto& y, bool) { return overlap_kernel(x, y, options); });
 }
 
+bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options) {
+  validate(shape);
+  validate(box);
+  // Only the part of the box within the shape's own box matters, and cutting it out is exact (min
+  // and max): the rectangle made from that part then rounds like the shape's coordinates, not like
+  // the box's (a box 6e37 wide, its edge at 0, took in a circle 0.125 beyond it; the fuzzer).
+  const Aabb own = aabb(shape);
+  const Aabb part{box.min.cwiseMax(own.min), box.max.cwiseMin(own.max)};
+  if ((part.min.array() > part.max.array()).any()) return false;
+  // A part with no width is still a rectangle for the kernels, which skip validation.
+  const Rect r{0.5 * (part.min + part.max), 0.5 * (part.max - part.min), 0.0};
+  return std::visit([&](const auto& x) { return overlap_kernel(r, x, options); }, shape);
+}
+
 DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
   return ordered_result(a, b, [&options](const auto& x, const auto& y) { return distance_kernel(x, y, options); });
 }

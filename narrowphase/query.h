@@ -1,6 +1,7 @@
 // The user-facing narrow phase: one entry point per query over every pair of shapes, either order.
 //
 //   bool overlaps(a, b, options)            solid shapes share a point (touching counts); nothing else
+//   bool overlaps(shape, box, options)      the same for a shape and an axis-aligned box
 //   DistanceResult distance(a, b, options)  distance 0 and a witness when overlapping, else closest points
 //   DistanceResult boundary_distance(a, b, options)
 //                                           circles and ellipses: the gap between the boundary curves
@@ -46,6 +47,11 @@ class UnsupportedPair : public std::logic_error {
 };
 
 bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options = {});
+// Whether the solid shape meets the closed axis-aligned box, which may have no width or height (a
+// segment or a point): the part of the box within the shape's own box, as a rectangle of angle 0,
+// for the rectangle kernels; exact up to the rounding of that part's centre and half sizes, which
+// is the rounding of the shape's coordinates. Validates both (InvalidShape).
+bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options = {});
 DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 

@@ -52,6 +52,13 @@ void validate_point(const Vec2& p, const char* what) {
   require_coordinate(what, "y", p.y());
 }
 
+void validate(const Aabb& box) {
+  validate_point(box.min, "box min");
+  validate_point(box.max, "box max");
+  if (box.min.x() > box.max.x()) reject("box", "min x", box.min.x(), "must not exceed box max x");
+  if (box.min.y() > box.max.y()) reject("box", "min y", box.min.y(), "must not exceed box max y");
+}
+
 void validate(const Circle& c) {
   require_coordinate("circle", "cx", c.center.x());
   require_coordinate("circle", "cy", c.center.y());

@@ -70,6 +70,9 @@ void validate(const Rect& r);
 void validate(const Shape& s);
 // A query point: finite and within the coordinate range; the message calls it `what` ("point x ...").
 void validate_point(const Vec2& p, const char* what);
+// A query box: both corners valid points ("box min x ...") and min <= max on each axis. A box may
+// have no width or height (a segment or a point).
+void validate(const Aabb& box);
 
 // The word used for the shape on the command line and in messages: "circle", "ellipse", "rect".
 const char* shape_name(const Shape& s);

@@ -107,7 +107,8 @@ Real least_quadratic(const Ellipse& e, const Point& p, const Point& q) {
   const Real a(e.a), b(e.b);
   const Real w0 = lp.x / a, w1 = lp.y / b;
   const Real d0 = lq.x / a - w0, d1 = lq.y / b - w1;
-  const Real t = std::clamp(-(w0 * d0 + w1 * d1) / (d0 * d0 + d1 * d1), Real(0), Real(1));
+  const Real dd = d0 * d0 + d1 * d1;  // 0 for an edge of a rectangle with no width
+  const Real t = dd > 0 ? std::clamp(-(w0 * d0 + w1 * d1) / dd, Real(0), Real(1)) : Real(0);
   const Real x = w0 + t * d0, y = w1 + t * d1;
   return x * x + y * y;
 }
@@ -144,11 +145,13 @@ std::pair<Real, Real> project(const std::array<Point, 4>& c, const Real& ux, con
   return {lo, hi};
 }
 
+// Separating axes: each rectangle's two axis directions (from its frame rather than its edges, so
+// that a rectangle with no width, a segment, keeps the axis across it).
 bool rect_rect_overlap(const Rect& a, const Rect& b) {
   const auto ca = rect_corners(a), cb = rect_corners(b);
-  for (const auto* c : {&ca, &cb}) {
-    for (int k = 0; k < 2; ++k) {
-      const Real ux = (*c)[k + 1].x - (*c)[k].x, uy = (*c)[k + 1].y - (*c)[k].y;
+  for (const Rect* r : {&a, &b}) {
+    const Frame f = frame_of(r->center, r->angle);
+    for (const auto& [ux, uy] : {std::pair{f.c, f.s}, std::pair{-f.s, f.c}}) {
       const auto [alo, ahi] = project(ca, ux, uy);
       const auto [blo, bhi] = project(cb, ux, uy);
       if (ahi < blo || bhi < alo) return false;

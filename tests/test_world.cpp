@@ -15,6 +15,13 @@ namespace {
 
 using Rng = std::mt19937_64;
 
+}  // namespace
+
+// gtest prints handles as index:generation.
+void PrintTo(const BodyId& id, std::ostream* os) { *os << id.index << ':' << id.generation; }
+
+namespace {
+
 double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 Shape random_shape(Rng& rng, double spread) {
@@ -147,14 +154,18 @@ TEST(World, QueriesMatchBruteForce) {
     const Shape probe = random_shape(rng, 10.0);
     const Vec2 point(uniform(rng, 0, 10), uniform(rng, 0, 10));
     const double d = uniform(rng, 0.0, 1.0);
-    const Aabb box{point, point + Vec2(uniform(rng, 0, 2), uniform(rng, 0, 2))};
+    // Every third box has no width, no height, or neither (a segment or a point).
+    const double w = k % 3 == 0 && k % 2 == 0 ? 0.0 : uniform(rng, 0, 2);
+    const double h = k % 3 == 0 && k % 4 != 0 ? 0.0 : uniform(rng, 0, 2);
+    const Aabb box{point, point + Vec2(w, h)};
+    const Rect box_shape{point + Vec2(w / 2, h / 2), Vec2(w / 2, h / 2), 0.0};
     std::vector<BodyId> hit, near_point, near_shape, in_box;
     for (const BodyId id : world.bodies()) {
       const Shape& s = world.shape(id);
       if (overlaps(probe, s)) hit.push_back(id);
       if (static_cast<double>(reference::distance_to(s, reference::to_mp(point))) <= d) near_point.push_back(id);
       if (distance(probe, s).distance <= d) near_shape.push_back(id);
-      if (intersects(aabb(s), box)) in_box.push_back(id);
+      if (reference::overlap(s, box_shape)) in_box.push_back(id);  // the shape itself, not its box
     }
     ASSERT_EQ(world.overlapping(probe), hit) << k;
     ASSERT_EQ(world.within(point, d), near_point) << k;
@@ -233,6 +244,8 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   EXPECT_NE(pose.find("pose x must be finite"), std::string::npos) << pose;
   const std::string point = message([&] { static_cast<void>(world.within(Vec2(nan, 0), 1)); });
   EXPECT_NE(point.find("point x must be finite"), std::string::npos) << point;
+  const std::string box = message([&] { static_cast<void>(world.overlapping(Aabb{Vec2(1, 0), Vec2(0, 0)})); });
+  EXPECT_EQ(box, "box min x must not exceed box max x (got 1)");
   const std::string origin = message([&] { static_cast<void>(world.ray_cast(Vec2(0, 1e60), Vec2(1, 0), 1)); });
   EXPECT_NE(origin.find("ray origin y is beyond the supported range"), std::string::npos) << origin;
   EXPECT_EQ(world.size(), 2u);

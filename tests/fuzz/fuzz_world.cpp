@@ -120,13 +120,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           before = world.overlapping();
           break;
         case 4: {
-          const Shape probe = in.shape();
           std::vector<BodyId> expected;
-          const auto got = world.overlapping(probe);
-          for (const BodyId id : world.bodies()) {
-            if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
+          if (in.byte() % 2 == 0) {
+            const Shape probe = in.shape();
+            const auto got = world.overlapping(probe);
+            for (const BodyId id : world.bodies()) {
+              if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
+            }
+            check(got == expected, "overlapping(shape) equals brute force");
+          } else {
+            const Vec2 corner = in.point();
+            const Aabb box{corner, corner + in.point().cwiseAbs()};  // may have no width or height
+            const auto got = world.overlapping(box);
+            for (const BodyId id : world.bodies()) {
+              if (overlaps(world.shape(id), box)) expected.push_back(id);
+            }
+            check(got == expected, "overlapping(box) equals brute force");
           }
-          check(got == expected, "overlapping(shape) equals brute force");
           break;
         }
         default: {
