@@ -76,14 +76,16 @@ std::vector<BodyId> World::bodies() const {
   return out;
 }
 
-Aabb World::broad_box(const Shape& shape) const { return grown(aabb(shape), 0.5 * proximity_margin_); }
+Aabb World::broad_box(const Aabb& box) const { return grown(box, 0.5 * proximity_margin_); }
 
 BodyId World::add(const Shape& shape, std::uint64_t user_id) {
   validate(shape);
-  const ProxyId index = broad_.insert(broad_box(shape));
+  const Aabb box = aabb(shape);
+  const ProxyId index = broad_.insert(broad_box(box));
   if (index >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(index) + 1);
   Body& b = bodies_[index];
   b.shape = shape;  // a reused slot keeps the generation remove() gave it
+  b.box = box;
   b.user_id = user_id;
   return id_of(index);
 }
@@ -95,8 +97,10 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   require_finite(angle, "pose angle");
   const Shape moved = posed(b.shape, center, angle);
   validate(moved);  // the range of the centre
-  broad_.move(id.index, broad_box(moved));
+  const Aabb box = aabb(moved);
+  broad_.move(id.index, broad_box(box));
   b.shape = moved;
+  b.box = box;
 }
 
 void World::move_by(BodyId id, const Vec2& shift, double turn) {
@@ -113,7 +117,7 @@ void World::remove(BodyId id) {
 void World::set_proximity_margin(double margin) {
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
-  for (const BodyId id : bodies()) broad_.move(id.index, broad_box(bodies_[id.index].shape));
+  for (const BodyId id : bodies()) broad_.move(id.index, broad_box(bodies_[id.index].box));
 }
 
 void World::update() {
@@ -127,7 +131,7 @@ void World::update() {
   for (const ProxyPair& p : broad_.pairs()) {
     const Shape& a = bodies_[p.a].shape;
     const Shape& b = bodies_[p.b].shape;
-    if (overlaps(a, b)) {
+    if (intersects(bodies_[p.a].box, bodies_[p.b].box) && overlaps(a, b)) {
       now.push_back(pair_of(p));
     } else if (proximity_margin_ > 0.0) {
       const DistanceResult d = distance(a, b);
@@ -149,8 +153,8 @@ template <class Test>
 std::vector<BodyId> World::select(const Aabb& box, Test test) const {
   std::vector<BodyId> out;
   for (ProxyId index = 0; index < bodies_.size(); ++index) {
-    const Shape& s = bodies_[index].shape;
-    if (broad_.contains(index) && intersects(aabb(s), box) && test(s)) out.push_back(id_of(index));
+    const Body& b = bodies_[index];
+    if (broad_.contains(index) && intersects(b.box, box) && test(b.shape)) out.push_back(id_of(index));
   }
   return out;
 }

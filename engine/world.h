@@ -8,10 +8,13 @@
 //   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
 //   for (const Proximity& p : world.proximity()) ...   // apart but within the margin, with points
 //
-// What is computed is what was asked: each candidate pair from the broad phase gets the overlap
-// test only; a distance is computed only when a proximity margin is set, and only for candidate
-// pairs that do not overlap. With a proximity margin m, the broad-phase boxes are the shapes'
-// boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
+// What is computed is what was asked: each candidate pair from the broad phase whose tight boxes
+// meet gets the overlap test only; a distance is computed only when a proximity margin is set, and
+// only for candidate pairs that do not overlap. With a proximity margin m, the broad-phase boxes
+// are the shapes' boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
+// The tight-box test settles the pairs that the fat margin alone brought in, and makes every
+// reported overlap one whose boxes meet: a kernel's rounding (u times a needle's length) can then
+// never report a pair that a box test excludes.
 //
 // Queries (each validates its input and returns body ids in increasing order): the bodies whose
 // solid shape overlaps a shape or a box (the exact shape, not its bounding box), the bodies within
@@ -112,6 +115,7 @@ class World {
  private:
   struct Body {
     Shape shape;
+    Aabb box;  // aabb(shape), kept with the pose
     std::uint64_t user_id = 0;
     std::uint32_t generation = 1;
   };
@@ -128,7 +132,7 @@ class World {
   const Body& body(BodyId id) const;
   BodyId id_of(ProxyId index) const { return {index, bodies_[index].generation}; }
   BodyPair pair_of(const ProxyPair& p) const { return {id_of(p.a), id_of(p.b)}; }
-  Aabb broad_box(const Shape& shape) const;
+  Aabb broad_box(const Aabb& box) const;
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, Test test) const;
 };
