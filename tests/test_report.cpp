@@ -1,12 +1,12 @@
-// `collide2d report`: every method measured on the same pairs, errors against the 50-digit
+// `collide2d_report`: every method measured on the same pairs, errors against the 50-digit
 // reference, and a plot with a point per measurement.
-#include "tools/report_command.h"
+#include "bench/report.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-namespace collide2d::tool {
+namespace collide2d::report {
 namespace {
 
 TEST(Report, MeasuresEveryMethodAgainstTheReference) {
@@ -30,4 +30,4 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
 }
 
 }  // namespace
-}  // namespace collide2d::tool
+}  // namespace collide2d::report

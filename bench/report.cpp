@@ -1,4 +1,4 @@
-#include "tools/report_command.h"
+#include "bench/report.h"
 
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
@@ -12,7 +12,7 @@
 #include <ostream>
 #include <random>
 
-namespace collide2d::tool {
+namespace collide2d::report {
 namespace {
 
 struct Workload {
@@ -166,4 +166,4 @@ void write_report_svg(const std::vector<MethodResult>& results, std::ostream& ou
       << "\" font-size=\"10\">errors below 1e-17 sit on the floor</text>\n</svg>\n";
 }
 
-}  // namespace collide2d::tool
+}  // namespace collide2d::report

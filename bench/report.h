@@ -1,4 +1,4 @@
-// The `collide2d report` command as a library: speed against error for every ellipse–ellipse
+// `collide2d_report` as a library: speed against error for every ellipse–ellipse
 // distance method on one workload, as a table and as a log–log SVG plot.
 //
 // Workload: `pairs` separated ellipse pairs (seeded; centres in a 4 x 4 square, semi-axes 0.05 to
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace collide2d::tool {
+namespace collide2d::report {
 
 struct MethodResult {
   std::string method;  // e.g. "robust", "box2d inscribed"
@@ -36,4 +36,4 @@ void print_report(const std::vector<MethodResult>& results, const ReportOptions&
 // Errors below 1e-17 are drawn at 1e-17 (the floor of the axis).
 void write_report_svg(const std::vector<MethodResult>& results, std::ostream& out);
 
-}  // namespace collide2d::tool
+}  // namespace collide2d::report

@@ -1,0 +1,61 @@
+// Command-line helpers shared by `collide2d` (tools/main.cpp) and `collide2d_report`
+// (bench/report_main.cpp). Each throws UsageError, which the mains turn into a message, the usage
+// text and exit status 2.
+#pragma once
+
+#include <charconv>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace collide2d::cli {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+inline int positive_count(std::string_view option, std::string_view word) {
+  int n = 0;
+  const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), n);
+  if (ec != std::errc() || ptr != word.data() + word.size() || n < 1) {
+    throw UsageError(std::string(option) + " needs a positive integer, got '" + std::string(word) + "'");
+  }
+  return n;
+}
+
+// The value after the option at argv[i] (and i moved past it), or UsageError when it is missing.
+inline const char* value_of(int& i, int argc, char** argv) {
+  if (i + 1 == argc) throw UsageError(std::string(argv[i]) + " needs a value");
+  return argv[++i];
+}
+
+// Writes an SVG with `draw` when a path was given, and says where on stdout.
+template <class Draw>
+void write_svg_file(const std::string& path, const char* what, Draw draw) {
+  if (path.empty()) return;
+  std::ofstream out(path);
+  draw(out);
+  if (!out) throw UsageError("cannot write '" + path + "'");
+  std::cout << what << ": " << path << '\n';
+}
+
+// The body of a main: --help or -h prints the usage; otherwise `command()` runs, and any exception
+// becomes "<program>: <what>" and the usage on stderr, with exit status 2.
+template <class Command>
+int run_main(int argc, char** argv, const char* program, const char* usage, Command command) {
+  if (argc >= 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h")) {
+    std::cout << usage;
+    return 0;
+  }
+  try {
+    return command();
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << '\n' << usage;
+    return 2;
+  }
+}
+
+}  // namespace collide2d::cli
