@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -93,6 +94,28 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   }
   EXPECT_EQ(shapes, 300u);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+// The caption fits the picture's width at 0.6 em a character, for a wide, a square and a tall arena.
+TEST(Run, SvgCaptionFitsTheWidth) {
+  for (const Vec2& extent : {Vec2(40, 10), Vec2(30, 30), Vec2(10, 40)}) {
+    Scene scene = parse_scene(R"({"arena": {"min": [0, 0], "max": [1, 1]}, "frames": 1, "bodies": []})");
+    scene.arena = Aabb{Vec2(0, 0), extent};
+    for (int k = 0; k < 20; ++k) scene.bodies.push_back({Circle{Vec2(1 + k, 1 + k) / 2, 0.5}, Vec2::Zero(), 0.0, 0});
+    SceneRun run(scene);
+    run.run(nullptr);
+    std::ostringstream svg;
+    write_svg(run, svg);
+    const std::string text = svg.str();
+    const std::size_t open = text.find("<text "), start = text.find('>', open) + 1, end = text.find("</text>");
+    const auto attribute = [&](const char* name) {
+      const std::size_t at = text.find(name, open) + std::strlen(name);
+      return std::stod(text.substr(at, text.find('"', at) - at));
+    };
+    const double x = attribute(" x=\""), font = attribute("font-size=\"");
+    EXPECT_LE(x + 0.6 * font * static_cast<double>(end - start), extent.x()) << extent.transpose();
+    EXPECT_GE(font * 1000 / extent.x(), 12.0) << "at least 12 pixels in the 1000-pixel-wide picture";
+  }
 }
 
 }  // namespace
