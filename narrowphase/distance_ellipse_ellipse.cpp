@@ -92,15 +92,26 @@ struct Extremes {
   Containment max;
 };
 
-// A bound on |rho_B - rho_A| in every direction, from how far B's axes and angle are from A's. The
+// How far B's curvature can be from A's in any direction, from how far B's axes and angle are from
+// A's: bounds on |rho_B - rho_A| and on |g''| = |-n.delta + h_B'' - h_A''| (h'' = rho - h). The
 // end values of each radius on an arc (bend_between) bound the difference only by the variation of
-// either radius along the arc, which for nearly congruent, nearly aligned pairs (a ring between an
-// ellipse and its slightly smaller copy) dwarfs the difference itself: halving until that bound
-// fell below the rounding took 1e5 evaluations for a copy scaled by 1 - 1e-12. With a >= b, theta
-// modulo pi, rho = (ab)^2 / h^3 and h^2 = a^2 cos^2 + b^2 sin^2 of the angle from the major axis:
-// |d rho / da| <= 2 rho / a, |d rho / db| <= 2 rho / b and |d rho / d theta| <= 1.5 rho (a^2 - b^2)
-// / h^2, and along the straight path between the two parameter sets rho <= max a^2 / min b.
-double curvature_difference_bound(const EllipsePair<double>& p) {
+// either radius along the arc, which for nearly congruent pairs (a ring between an ellipse and its
+// slightly smaller copy) dwarfs the difference itself: halving until that bound fell below the
+// rounding took 1e5 evaluations for a copy scaled by 1 - 1e-12, and 4,097 for concentric circles,
+// whose g is constant. With a >= b, theta modulo pi, h^2 = a^2 cos^2 + b^2 sin^2 of the angle psi
+// from the major axis and rho = (ab)^2 / h^3: |d rho / da| <= 2 rho / a <= 2 a / b, |d rho / db|
+// <= 2 rho / b <= 2 a^2 / b^2, |d rho / d theta| = 3 (ab)^2 (a^2 - b^2) |sin psi cos psi| / h^5
+// <= 3 a (a^2 - b^2) / b^2 (as |sin psi cos psi| / h <= |cos psi| / (a |cos psi|)), and |dh/da|,
+// |dh/db| <= 1, |dh / d theta| <= a; along the straight path between the two parameter sets a and
+// b stay within their end values. Besides, |h''| <= a^2 / b - b for either ellipse (its extremes at
+// the ends of the axes), so |g''| <= |delta| + the two: 0 for concentric circles, where the bounds
+// from the parameters' differences still allow a bump of the size of the difference.
+struct Congruence {
+  double rho;    // bounds |rho_B - rho_A|
+  double bend;   // bounds |g''|
+};
+
+Congruence congruence_of(const EllipsePair<double>& p) {
   struct Axes {
     double a, b, theta;
   };
@@ -110,34 +121,36 @@ double curvature_difference_bound(const EllipsePair<double>& p) {
   };
   const Axes x = canonical(p.A), y = canonical(p.B);
   const double big = std::max(x.a, y.a), small = std::min(x.b, y.b);
-  const double rho = big * big / small;
+  const double da = std::abs(y.a - x.a), db = std::abs(y.b - x.b);
   const double turn = std::abs(std::remainder(y.theta - x.theta, std::numbers::pi));
-  const double spread = 2 * big * std::max(x.a - x.b, y.a - y.b);
-  return rho * (2 * std::abs(y.a - x.a) / std::min(x.a, y.a) + 2 * std::abs(y.b - x.b) / small +
-                1.5 * spread * turn / (small * small));
+  const double spread = 2 * big * std::max(x.a - x.b, y.a - y.b);  // >= a^2 - b^2 along the path
+  const double rho = 2 * big / small * da + 2 * big * big / (small * small) * db + 3 * big * spread / (small * small) * turn;
+  const auto roundness = [](const Axes& e) { return e.a * e.a / e.b - e.b; };  // max |h''|
+  return {rho, p.delta.norm() + std::min(rho + da + db + big * turn, roundness(x) + roundness(y))};
 }
 
 // Bounds of g'' over the directions between two samples, and the most g can dip below (or rise
 // above) the chord between them. The samples lie within one quarter turn of each ellipse's axes,
 // where h, and with it rho = (ab)^2 / h^3, is monotone: each rho lies between its end values, and
-// their difference within +-`congruence` (curvature_difference_bound). With |g''| <= G, g lies
-// within G w^2 / 8 of the chord, and G <= max|rho_B - rho_A| + max|g|, so G (1 - w^2 / 8) <=
-// max|rho_B - rho_A| + max(|g_0|, |g_1|), which holds for w < sqrt(8).
+// their difference within +-congruence.rho. With |g''| <= G, g lies within G w^2 / 8 of the chord,
+// and G <= max|rho_B - rho_A| + max|g|, so G (1 - w^2 / 8) <= max|rho_B - rho_A| + max(|g_0|,
+// |g_1|), which holds for w < sqrt(8); and |g''| <= congruence.bend throughout.
 struct Bend {
   double lo;
   double hi;
   double dip;
 };
 
-Bend bend_between(const Containment& x, const Containment& y, double congruence) {
+Bend bend_between(const Containment& x, const Containment& y, const Congruence& congruence) {
   const double w = y.angle - x.angle;
-  const double rho_lo = std::max(std::min(x.rho_b, y.rho_b) - std::max(x.rho_a, y.rho_a), -congruence);
-  const double rho_hi = std::min(std::max(x.rho_b, y.rho_b) - std::min(x.rho_a, y.rho_a), congruence);
+  const double rho_lo = std::max(std::min(x.rho_b, y.rho_b) - std::max(x.rho_a, y.rho_a), -congruence.rho);
+  const double rho_hi = std::min(std::max(x.rho_b, y.rho_b) - std::min(x.rho_a, y.rho_a), congruence.rho);
   const double bound = (std::max(std::abs(rho_lo), std::abs(rho_hi)) + std::max(std::abs(x.g), std::abs(y.g))) /
                        (1 - w * w / 8);
-  const double slack = bound * (w * w / 8 + 8 * std::numeric_limits<double>::epsilon());  // and rounding
-  const double lo = rho_lo - std::max(x.g, y.g) - slack;
-  const double hi = rho_hi - std::min(x.g, y.g) + slack;
+  const double rounding = 8 * std::numeric_limits<double>::epsilon();
+  const double slack = bound * (w * w / 8 + rounding);
+  const double lo = std::max(rho_lo - std::max(x.g, y.g) - slack, -congruence.bend * (1 + rounding));
+  const double hi = std::min(rho_hi - std::min(x.g, y.g) + slack, congruence.bend * (1 + rounding));
   return {lo, hi, std::max(std::abs(lo), std::abs(hi)) * w * w / 8};
 }
 
@@ -173,7 +186,7 @@ Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
   }
   const double rounding = std::numeric_limits<double>::epsilon() * p.scale;
   const double margin = p.margin();
-  const double congruence = curvature_difference_bound(p);
+  const Congruence congruence = congruence_of(p);
   while (!arcs.empty() && !(out.min.g < -margin && out.max.g > margin)) {
     const Containment x = arcs.back().first, y = arcs.back().second;  // not a structured binding: clang 14
     arcs.pop_back();                                                     // cannot capture one in the lambda

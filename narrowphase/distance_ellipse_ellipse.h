@@ -24,7 +24,8 @@
 //   sign changes of g' at 96 fixed directions and missed the least gap of a circle on an ellipse's
 //   axis near the cusp of its evolute (two minima beside a maximum at a sample where g' = 0:
 //   2.0199695559 for 2.0198941777, 106 of 480 such pairs off by up to 5.9e-6 of the size). It
-//   costs a median of 30 support evaluations on nested pairs (the sampler took 113).
+//   costs a median of 30 support evaluations on nested pairs (the sampler took 113); nearly
+//   congruent pairs, where g is flat, are bounded separately (congruence_of in the .cpp).
 //   Accuracy (tests/test_ellipse_ellipse.cpp and test_circle_pairs.cpp, against a 50-digit
 //   reference, as a fraction of max(size, centre distance); asserted at 8 u = 8.9e-16, the target
 //   being 1e-12): worst 3.7e-16 for the distance and for the boundary distance over all families
