@@ -71,11 +71,11 @@ struct Containment {
   double angle;
   double g;
   double slope;
-  double curvature;
   double rho_a;
   double rho_b;
   V2 offset_a;
   V2 offset_b;
+  double curvature() const { return -g + rho_b - rho_a; }
 };
 
 Containment containment(const EllipsePair<double>& p, double angle) {
@@ -83,8 +83,7 @@ Containment containment(const EllipsePair<double>& p, double angle) {
   const auto sa = p.A.at(n);
   const auto sb = p.B.at(n);
   const double g = n.dot(p.delta) + sb.h - sa.h;
-  return {angle, g, detail::perp(n).dot(p.delta + sb.offset - sa.offset), -g + sb.rho - sa.rho,
-          sa.rho, sb.rho, sa.offset, sb.offset};
+  return {angle, g, detail::perp(n).dot(p.delta + sb.offset - sa.offset), sa.rho, sb.rho, sa.offset, sb.offset};
 }
 
 struct Extremes {
@@ -199,7 +198,7 @@ Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
         const double sign = x.slope > 0 ? 1.0 : -1.0;  // a maximum inside, or a minimum
         const auto f = [&](double t) {
           const Containment c = containment(p, x.angle + t);
-          return std::pair<double, double>(sign * c.slope, sign * c.curvature);
+          return std::pair<double, double>(sign * c.slope, sign * c.curvature());
         };
         consider(containment(p, x.angle + detail::newton_in_bracket(f, 0.0, y.angle - x.angle, iterations)));
       }

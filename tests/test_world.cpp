@@ -2,6 +2,7 @@
 // and its refusal of bad input.
 #include "engine/world.h"
 #include "mp_reference.h"
+#include "world_reference.h"
 
 #include <gtest/gtest.h>
 
@@ -69,18 +70,7 @@ bool has(const std::vector<BodyPair>& sorted, const BodyPair& p) {
 // and a sample of them, half from the World's overlapping pairs, is checked against the 50-digit
 // reference: the verdict, and with a margin, the distance and membership of the proximity list.
 void expect_sample_matches_reference(const World& world, double margin, Rng& rng, const std::string& what) {
-  const std::vector<BodyId> ids = world.bodies();
-  std::vector<Aabb> boxes;
-  for (const BodyId id : ids) {
-    const Aabb b = reference::bounding_box(world.shape(id));
-    boxes.push_back({b.min.array() - margin / 2, b.max.array() + margin / 2});
-  }
-  std::vector<BodyPair> near;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (intersects(boxes[i], boxes[j])) near.push_back({ids[i], ids[j]});
-    }
-  }
+  const std::vector<BodyPair> near = reference::exact_box_pairs(world, margin / 2);
   for (const BodyPair& p : world.overlapping()) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
   std::vector<BodyPair> proximity;
   for (const Proximity& p : world.proximity()) proximity.push_back({p.a, p.b});
