@@ -15,10 +15,7 @@
 #pragma once
 
 #include "narrowphase/overlap_rect_ellipse.h"  // FilterVerdict
-#include "shapes/rotation.h"
-#include "shapes/shapes.h"
-
-#include <Eigen/Core>
+#include "narrowphase/support_pair.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,100 +25,12 @@
 
 namespace collide2d::detail {
 
-template <class Real>
-using V2 = Eigen::Matrix<Real, 2, 1>;
-
-template <class Real>
-V2<Real> perp(const V2<Real>& v) {
-  return {-v[1], v[0]};
-}
-
-template <class Real>
-Real cross(const V2<Real>& p, const V2<Real>& q) {
-  return p[0] * q[1] - p[1] * q[0];
-}
-
-template <class Real>
-struct Support {
-  V2<Real> offset;  // support point minus centre
-  Real h = 0;       // support function value
-  Real rho = 0;     // radius of curvature of the boundary at the support point
-};
-
-template <class Real>
-struct EllipseSupport {
-  Rotation<Real> rot;  // in the pair's frame
-  Real a = 1;
-  Real b = 1;
-
-  // n must be a unit vector.
-  Support<Real> at(const V2<Real>& n) const {
-    using std::sqrt;
-    const V2<Real> l = rot.apply_inverse(n);
-    const Real u = a * l[0];
-    const Real v = b * l[1];
-    const Real h = sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
-    const Real inv = 1 / h;
-    const Real k = a * b * inv;  // at most max(a, b): (ab)^2 / h^3 without overflow
-    return {rot.apply(V2<Real>(a * u * inv, b * v * inv)), h, k * k * inv};
-  }
-};
-
-template <class Real>
-struct Separation {
-  Real s = 0;       // s(n)
-  Real slope = 0;   // ds/dphi for n turning counter-clockwise
-  Real bend = 0;    // -d2s/dphi2 = s + rho_A + rho_B, positive wherever s > 0 (s is concave there)
-  V2<Real> gap;     // support point of B in -n minus support point of A in n
-  V2<Real> offset_a;
-  V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
-};
-
 // Everything here (directions, offsets, delta) is in the pair's frame: the axes of the longer
-// ellipse, whose rotation is then exactly the identity. In world axes a needle's normal carries an
-// absolute error of u, which its support function multiplies by its length: for a needle 1e20 long
-// a gap of 0.5 beside it was lost. In its own axes the normal is exact and directions near it
-// keep their relative precision; the shorter ellipse's rotation, composed from the two cosines and
-// sines, carries the error u instead, times its own length.
+// ellipse, whose rotation is then exactly the identity (see SupportPair).
 template <class Real>
-struct EllipsePair {
-  EllipseSupport<Real> A;
-  EllipseSupport<Real> B;
-  V2<Real> delta;  // c_B - c_A
-  Real scale = 0;  // |delta| + the two largest semi-axes: rounding errors are a few u * scale
-  Rotation<Real> frame;  // the pair's axes in world axes
-
+struct EllipsePair : SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>> {
   static EllipsePair of(const Ellipse& a, const Ellipse& b) {
-    const V2<Real> d(static_cast<Real>(b.center.x()) - static_cast<Real>(a.center.x()),
-                     static_cast<Real>(b.center.y()) - static_cast<Real>(a.center.y()));
-    const Real size = static_cast<Real>(std::max(a.a, a.b) + std::max(b.a, b.b));
-    const bool a_longer = std::max(a.a, a.b) >= std::max(b.a, b.b);
-    const Rotation<Real> ra = Rotation<Real>::of(a.angle), rb = Rotation<Real>::of(b.angle);
-    const Rotation<Real> frame = a_longer ? ra : rb;
-    // Equal angles give the identity exactly (composing would leave c^2 + s^2, off 1 by an ulp).
-    const auto in_frame = [&](const Rotation<Real>& r) {
-      return a.angle == b.angle ? Rotation<Real>{} : r.relative_to(frame);
-    };
-    const EllipseSupport<Real> A{a_longer ? Rotation<Real>{} : in_frame(ra), static_cast<Real>(a.a),
-                                 static_cast<Real>(a.b)};
-    const EllipseSupport<Real> B{a_longer ? in_frame(rb) : Rotation<Real>{}, static_cast<Real>(b.a),
-                                 static_cast<Real>(b.b)};
-    const V2<Real> local = frame.apply_inverse(d);
-    return {A, B, local, d.norm() + size, frame};
-  }
-
-  V2<Real> to_world(const V2<Real>& v) const { return frame.apply(v); }
-  V2<Real> from_world(const V2<Real>& v) const { return frame.apply_inverse(v); }
-
-  // The tolerance below which a sign computed here is not trusted.
-  Real margin() const { return 64 * std::numeric_limits<Real>::epsilon() * scale; }
-
-  Separation<Real> separation(const V2<Real>& n) const {
-    const Support<Real> sa = A.at(n);
-    const Support<Real> sb = B.at(n);
-    const V2<Real> gap = delta - sa.offset - sb.offset;
-    const Real s = n.dot(gap);
-    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset};
+    return {SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, b)};
   }
 };
 

@@ -1,5 +1,6 @@
 #include "narrowphase/query.h"
 
+#include "narrowphase/contact.h"
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
 #include "narrowphase/overlap_circle_circle.h"
@@ -60,6 +61,13 @@ DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b, const Distanc
   return distance_ellipse_ellipse(a, b, o.ellipse).result;
 }
 
+Contact contact_kernel(const Rect& a, const Rect& b, const ContactOptions& o) { return contact_rect_rect(a, b, o); }
+Contact contact_kernel(const Rect& a, const Circle& b, const ContactOptions&) { return contact_rect_circle(a, b); }
+Contact contact_kernel(const Rect& a, const Ellipse& b, const ContactOptions&) { return contact_rect_ellipse(a, b); }
+Contact contact_kernel(const Circle& a, const Circle& b, const ContactOptions&) { return contact_circle_circle(a, b); }
+Contact contact_kernel(const Circle& a, const Ellipse& b, const ContactOptions&) { return contact_circle_ellipse(a, b); }
+Contact contact_kernel(const Ellipse& a, const Ellipse& b, const ContactOptions&) { return contact_ellipse_ellipse(a, b); }
+
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 
 // Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
@@ -111,11 +119,11 @@ auto in_kernel_order(const Shape& a, const Shape& b, Kernel kernel) {
 
 // Validates, runs kernel(x, y) in kernel order and swaps the result back.
 template <class Kernel>
-DistanceResult ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
+auto ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
   validate(a);
   validate(b);
   return in_kernel_order(a, b, [&kernel](const auto& x, const auto& y, bool swapped) {
-    const DistanceResult r = kernel(x, y);
+    const auto r = kernel(x, y);
     return swapped ? r.swapped() : r;
   });
 }
@@ -148,6 +156,10 @@ DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& o
 
 DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
   return ordered_result(a, b, [&options](const auto& x, const auto& y) { return boundary_kernel(x, y, options); });
+}
+
+Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
+  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return contact_kernel(x, y, options); });
 }
 
 }  // namespace collide2d

@@ -3,11 +3,14 @@
 //   bool overlaps(a, b, options)            solid shapes share a point (touching counts); nothing else
 //   bool overlaps(shape, box, options)      the same for a shape and an axis-aligned box
 //   DistanceResult distance(a, b, options)  distance 0 and a witness when overlapping, else closest points
+//   Contact contact(a, b, options)          signed distance (minus the penetration depth when overlapping),
+//                                           normal, deepest or closest points, and a manifold
+//                                           (narrowphase/contact.h)
 //   DistanceResult boundary_distance(a, b, options)
 //                                           circles and ellipses: the gap between the boundary curves
 //                                           (0 and a common point when they meet), e.g. of nested shapes
 //
-// Both validate their shapes first and throw InvalidShape (naming the field) on NaN, infinity or a
+// All validate their shapes first and throw InvalidShape (naming the field) on NaN, infinity or a
 // non-positive size. Pairs are dispatched at compile time (std::visit) to the typed kernels below,
 // each written once for the order rect < circle < ellipse and swapped for the other order:
 //
@@ -22,8 +25,12 @@
 //
 // Boundary distance: circle–circle in closed form; circle–ellipse as ellipse–ellipse with a = b;
 // rectangles throw UnsupportedPair.
+// Contact: circle–circle and rect–circle in closed form; rect–rect by separating axes and Box2D's
+// face clipping; rect–ellipse, circle–ellipse and ellipse–ellipse by the global maximum of the
+// separation over all directions (narrowphase/deepest_direction.h).
 #pragma once
 
+#include "narrowphase/contact.h"
 #include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/distance_result.h"
 #include "narrowphase/overlap_rect_ellipse.h"
@@ -54,5 +61,6 @@ bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options = {}
 bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options = {});
 DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
+Contact contact(const Shape& a, const Shape& b, const ContactOptions& options = {});
 
 }  // namespace collide2d

@@ -47,22 +47,26 @@ Shape random_shape(Rng& rng, Kind kind, double size, const Family& f, const Vec2
   return Rect{center, Vec2(u, v), angle};
 }
 
+}  // namespace
+
 double half_size(const Shape& s) {
   if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
   if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
   return std::get<Rect>(s).half_extents.maxCoeff();
 }
 
+namespace {
+
 void translate(Shape& s, const Vec2& by) { std::visit([&by](auto& x) { x.center += by; }, s); }
 
-struct Contact {
+struct BoundaryPoint {
   Vec2 point;
   Vec2 normal;
 };
 
 // A boundary point of `a` and its outward unit normal: a rectangle face point half of the time,
 // otherwise the support point of a random direction (a corner, for a rectangle).
-Contact contact_on(Rng& rng, const Shape& a) {
+BoundaryPoint contact_on(Rng& rng, const Shape& a) {
   if (const auto* r = std::get_if<Rect>(&a); r && uniform(rng, 0.0, 1.0) < 0.5) {
     const int i = uniform(rng, 0.0, 1.0) < 0.5 ? 0 : 1;
     const double side = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
@@ -80,7 +84,7 @@ Contact contact_on(Rng& rng, const Shape& a) {
 
 // B placed against A with gap `gap` along the contact normal; a rectangle B faces A flat a third
 // of the time.
-void place_against(Rng& rng, Shape& b, const Contact& c, double gap) {
+void place_against(Rng& rng, Shape& b, const BoundaryPoint& c, double gap) {
   if (auto* r = std::get_if<Rect>(&b); r && uniform(rng, 0.0, 1.0) < 1.0 / 3) {
     r->angle = std::atan2(c.normal.y(), c.normal.x());
   }
@@ -126,12 +130,6 @@ Shape concentric_to(Rng& rng, const Shape& a, Kind kind) {
   if (kind == Kind::circle) return Circle{c, size * uniform(rng, 0.3, 1.2)};
   return Ellipse{c, size * uniform(rng, 0.3, 1.2), size * uniform(rng, 0.3, 1.2), uniform(rng, 0.0, 6.3)};
 }
-
-struct Case {
-  Shape a;
-  Shape b;
-  double delta;      // nominal gap (touching placement), or NaN
-};
 
 // The half size of a shape along n, one of its axis directions (its support function there).
 double reach(const Shape& s, const Vec2& n) { return n.dot(support(s, n) - center_of(s)); }
@@ -240,6 +238,8 @@ Shape identical_to(const Shape& a, Kind kind) {
   return Rect{e.center, Vec2(e.a, e.b), e.angle};
 }
 
+}  // namespace
+
 std::string describe(const Shape& s) {
   std::ostringstream o;
   o.precision(17);
@@ -255,6 +255,8 @@ std::string describe(const Shape& s) {
       s);
   return o.str();
 }
+
+namespace {
 
 double ulps_of(const Vec2& p) { return 4 * kU * 2 * std::max(std::abs(p.x()), std::abs(p.y())); }
 
@@ -470,15 +472,22 @@ void print_summary(const Family& f, const FamilyStats& stats) {
 
 }  // namespace
 
-FamilyStats run_family(const Family& f) {
+std::vector<Case> family_cases(const Family& f) {
   Rng rng(f.seed);
+  std::vector<Case> out;
+  for (int k = 0; k < f.cases; ++k) out.push_back(make_case(rng, f, k));
+  return out;
+}
+
+FamilyStats run_family(const Family& f) {
   FamilyStats stats;
   // The rect–ellipse overlap methods; other pairs have one overlap test.
   const bool rect_ellipse = (f.a == Kind::rect && f.b == Kind::ellipse) || (f.a == Kind::ellipse && f.b == Kind::rect);
   std::vector<OverlapOptions> methods{{RectEllipseMethod::minkowski}};
   if (rect_ellipse) methods.insert(methods.end(), {{RectEllipseMethod::closest_features}, {RectEllipseMethod::all_features}});
+  const std::vector<Case> cases = family_cases(f);
   for (int k = 0; k < f.cases; ++k) {
-    const Case c = make_case(rng, f, k);
+    const Case& c = cases[static_cast<std::size_t>(k)];
     const std::string what = f.name + " case " + std::to_string(k) + ": " + describe(c.a) + " ; " + describe(c.b);
     const double size = std::max(half_size(c.a), half_size(c.b));
     const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());

@@ -91,6 +91,19 @@ std::vector<Family> standard_families(Kind a, Kind b);
 // A gtest-safe name for a family.
 std::string test_name(const Family& f);
 
+struct Case {
+  Shape a;
+  Shape b;
+  double delta;  // nominal gap (touching and mirrored placements), or NaN
+};
+
+// The family's cases, the same every call (seeded by the family).
+std::vector<Case> family_cases(const Family& f);
+
+// A shape's largest half-size, and the shape as text for failure messages.
+double half_size(const Shape& s);
+std::string describe(const Shape& s);
+
 // Runs every case through overlaps() with each rect–ellipse method and distance(), in both orders,
 // records gtest failures for missed targets, prints one summary line and returns the statistics.
 FamilyStats run_family(const Family& family);

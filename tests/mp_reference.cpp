@@ -471,4 +471,141 @@ bool overlap(const Shape& a, const Shape& b) {
   return distance(a, b) == 0;
 }
 
+namespace {
+
+// s(theta) for the pair, in the scalar R: closed-form support functions of the shapes' axes.
+template <class R>
+struct Dual {
+  struct Side {
+    int kind;  // 0 circle, 1 ellipse, 2 rectangle
+    R c, s, p, q;
+  };
+  R dx, dy;
+  Side a, b;
+
+  static Side side_of(const Shape& shape, const R& c, const R& s) {
+    if (const auto* x = std::get_if<Circle>(&shape)) return {0, c, s, R(x->radius), R(x->radius)};
+    if (const auto* x = std::get_if<Ellipse>(&shape)) return {1, c, s, R(x->a), R(x->b)};
+    const auto& r = std::get<Rect>(shape);
+    return {2, c, s, R(r.half_extents.x()), R(r.half_extents.y())};
+  }
+  static R h(const Side& x, const R& ux, const R& uy) {
+    using std::abs;
+    using std::sqrt;
+    if (x.kind == 0) return x.p;
+    const R l0 = x.c * ux + x.s * uy, l1 = -x.s * ux + x.c * uy;
+    if (x.kind == 1) return sqrt(x.p * x.p * l0 * l0 + x.q * x.q * l1 * l1);
+    return x.p * abs(l0) + x.q * abs(l1);
+  }
+  R operator()(const R& theta) const {
+    using std::cos;
+    using std::sin;
+    const R ux = cos(theta), uy = sin(theta);
+    return ux * dx + uy * dy - h(a, ux, uy) - h(b, ux, uy);
+  }
+};
+
+// Golden-section search for the maximum of f on [lo, hi] down to width `width`.
+template <class R, class F>
+R golden_maximum(const F& f, R lo, R hi, const R& width) {
+  const R g = (sqrt_of(R(5)) - 1) / 2;
+  R x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  R f1 = f(x1), f2 = f(x2);
+  while (hi - lo > width) {
+    if (f1 >= f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - g * (hi - lo), f1 = f(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + g * (hi - lo), f2 = f(x2);
+    }
+  }
+  return f1 >= f2 ? x1 : x2;
+}
+
+}  // namespace
+
+SignedDistance signed_distance(const Shape& a, const Shape& b) {
+  const Point ca = to_mp(center_of(a)), cb = to_mp(center_of(b));
+  const Frame fa = frame_of(center_of(a), angle_of(a)), fb = frame_of(center_of(b), angle_of(b));
+  const Dual<Real> exact{cb.x - ca.x, cb.y - ca.y, Dual<Real>::side_of(a, fa.c, fa.s), Dual<Real>::side_of(b, fb.c, fb.s)};
+  const Dual<double> rough{static_cast<double>(exact.dx), static_cast<double>(exact.dy),
+                           Dual<double>::side_of(a, std::cos(angle_of(a)), std::sin(angle_of(a))),
+                           Dual<double>::side_of(b, std::cos(angle_of(b)), std::sin(angle_of(b)))};
+  const double two_pi = 2 * std::numbers::pi;
+  std::vector<double> angles;
+  for (int i = 0; i < 4096; ++i) angles.push_back(two_pi * i / 4096);
+  for (const double phi : {angle_of(a), angle_of(b)}) {
+    for (int k = 0; k < 4; ++k) {
+      const double axis = phi + k * std::numbers::pi / 2;
+      angles.push_back(axis);
+      for (double step = 0.1; step > 1e-16; step /= 10) {
+        angles.push_back(axis + step);
+        angles.push_back(axis - step);
+      }
+    }
+  }
+  for (double& t : angles) t -= two_pi * std::floor(t / two_pi);
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());  // a repeat would close a bracket
+  const std::size_t n = angles.size();
+  std::vector<double> values(n);
+  for (std::size_t i = 0; i < n; ++i) values[i] = rough(angles[i]);
+  // Local maxima of the cyclic scan, highest first.
+  std::vector<std::size_t> peaks;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (values[i] >= values[(i + n - 1) % n] && values[i] >= values[(i + 1) % n]) peaks.push_back(i);
+  }
+  std::sort(peaks.begin(), peaks.end(), [&values](std::size_t i, std::size_t j) { return values[i] > values[j]; });
+  // The six highest, each more than 1e-6 rad from those kept: a flat top or a kink shows as a
+  // cluster of ties.
+  std::vector<std::size_t> kept;
+  for (const std::size_t i : peaks) {
+    const auto near = [&](std::size_t j) {
+      const double turn = std::abs(angles[i] - angles[j]);
+      return std::min(turn, two_pi - turn) <= 1e-6;
+    };
+    if (kept.size() < 6 && std::none_of(kept.begin(), kept.end(), near)) kept.push_back(i);
+  }
+  peaks = kept;
+  // The scan's angles unrolled: index j < 0 or >= n is a turn before or after.
+  const auto angle = [&](long j) {
+    const long m = static_cast<long>(n);
+    const long turns = j >= 0 ? j / m : -((-j + m - 1) / m);
+    return angles[static_cast<std::size_t>(j - turns * m)] + two_pi * static_cast<double>(turns);
+  };
+  std::vector<std::pair<Real, Real>> found;  // value, angle
+  for (const std::size_t peak : peaks) {
+    // Climbed in 50 digits over the scan's angles first: at a flat maximum the rounding of the
+    // double values can put the highest sample a few angles away from the maximiser, and a
+    // bracket of its two neighbours would miss it.
+    long i = static_cast<long>(peak);
+    Real here = exact(Real(angle(i)));
+    for (int step = 0; step < 64; ++step) {
+      const Real left = exact(Real(angle(i - 1))), right = exact(Real(angle(i + 1)));
+      if (left > here) {
+        --i, here = left;
+      } else if (right > here) {
+        ++i, here = right;
+      } else {
+        break;
+      }
+    }
+    // All in 50 digits: a search in double would be steered by the same rounding.
+    const Real t50 = golden_maximum<Real>(exact, Real(angle(i - 1)), Real(angle(i + 1)), Real(1e-22));
+    found.emplace_back(exact(t50), t50);
+  }
+  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  const Real& t = found[0].second;
+  const Real h(1e-12);
+  SignedDistance out{found[0].first, {boost::multiprecision::cos(t), boost::multiprecision::sin(t)},
+                     -std::numeric_limits<Real>::infinity(), (2 * exact(t) - exact(t + h) - exact(t - h)) / (h * h)};
+  for (std::size_t i = 1; i < found.size(); ++i) {
+    const Real turn = abs(found[i].second - found[0].second);
+    const Real apart = std::min(turn, Real(two_pi) - turn);
+    if (apart > 1e-6 && found[i].first > out.runner_up) out.runner_up = found[i].first;
+  }
+  return out;
+}
+
 }  // namespace collide2d::reference

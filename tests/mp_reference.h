@@ -9,6 +9,11 @@
 //   outside), sampled at 720 parameters in double, each promising extremum narrowed by golden
 //   section in double and then in 50 digits; the signs of f and the centres decide overlap,
 //   containment and crossing.
+// - signed distance (contacts): the dual function s(u) = u.(c_B - c_A) - h_A(u) - h_B(u) (h the
+//   support function, in closed form per shape) scanned in double at 4,096 even angles and at
+//   geometric offsets 10^-1 ... 10^-15 around every axis direction of both shapes (a needle's
+//   support function turns within b/a of its minor axis, a rectangle's has kinks on its axes), each
+//   of the six highest local maxima narrowed by golden section in 50 digits to 1e-22 rad. No Newton step and no curvature bound: nothing the kernels do.
 // Inputs are the double shapes, taken exactly; angles become exact 50-digit cosines and sines.
 #pragma once
 
@@ -52,5 +57,19 @@ EllipsePairReference ellipse_pair(const Ellipse& a, const Ellipse& b);
 // circle need no sampling: the circle's centre against the other curve, nearest and farthest, by
 // secular equations; two ellipses use ellipse_pair.
 Real boundary_distance(const Shape& a, const Shape& b);
+
+// The signed distance of two solids (minus the penetration depth when they overlap), the unit
+// direction attaining it (from A to B), and the best value among the other local maxima found more
+// than 1e-6 rad away from it (-infinity if none): close to `separation`, the maximiser is not unique.
+// `curvature` is -s'' at the maximiser (a second difference over 1e-12 rad; huge at a kink): an
+// error e in the slope of s moves the maximiser by about e / curvature, so the normal of a flat
+// maximum is only as good as the rounding of s' over it.
+struct SignedDistance {
+  Real separation;
+  Point normal;
+  Real runner_up;
+  Real curvature;
+};
+SignedDistance signed_distance(const Shape& a, const Shape& b);
 
 }  // namespace collide2d::reference

@@ -1,0 +1,43 @@
+// Private: the contact of a pair with a curved shape, from the global maximum of its separation.
+#pragma once
+
+#include "narrowphase/contact.h"
+#include "narrowphase/deepest_direction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace collide2d::detail {
+
+// The deepest points are the two support points where s'(n) vanishes to rounding. Elsewhere n is a
+// kink of s, or a maximum sharper than a double angle resolves (a needle's flat side: s'' ~ a^2 / b,
+// so the slope moves by that times an ulp of the angle between neighbouring directions): a rectangle's face normal, where its support set is the whole face, or a needle's
+// flat side, where its support point may sit anywhere along it, tip included (see at_maximum). Either way one shape's support point jumps as n
+// turns by a hair (1e-6 rad, wider than any such kink) and the other's barely moves: the steadier
+// point is kept, and its partner is that point moved by the separation along the normal.
+template <class SA, class SB>
+Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb) {
+  const Deepest<double> d = deepest_direction(p);
+  const Separation<double>& e = d.at;
+  const Vec2 normal = p.to_world(d.n);
+  const Vec2 off_a = p.to_world(e.offset_a), off_b = p.to_world(e.offset_b);
+  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
+  Vec2 pa = ca + off_a, pb = cb - off_b;
+  if (!(std::abs(e.slope) <= rounding)) {
+    const V2<double> hair = 1e-6 * perp(d.n);
+    const V2<double> before = (d.n - hair).normalized(), after = (d.n + hair).normalized();
+    const Separation<double> x = p.separation(before, before), y = p.separation(after, after);
+    if ((y.offset_b - x.offset_b).norm() <= (y.offset_a - x.offset_a).norm()) {
+      pa = pb - e.s * normal;
+    } else {
+      pb = pa + e.s * normal;
+    }
+  }
+  Contact c = Contact::of(e.s, normal, pa, pb);
+  c.evaluations = d.evaluations;
+  return c;
+}
+
+}  // namespace collide2d::detail

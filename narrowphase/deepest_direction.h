@@ -1,0 +1,192 @@
+// Private: the global maximum of the separation s(n) of a SupportPair over every unit direction n,
+// the signed distance of the two solids (support_pair.h), with the direction that attains it.
+//
+// Why a search over the whole circle, and why it cannot stop at a local maximum. For disjoint
+// shapes s is concave on the arc where it is positive (s'' = -(s + rho_A + rho_B)), so the distance
+// solver may climb from any separating direction. For overlapping shapes no direction separates,
+// s < 0 everywhere, and s + rho_A + rho_B changes sign where the shapes are thin: two needles
+// crossing deep have one local maximum per way out (push along either needle's normal), and
+// Newton from the wrong side ends at the smaller one. So the circle is cut into arcs, and an arc is
+// dropped only when an upper bound of s over it is no more than the best value found plus its
+// rounding (branch and bound). The bound: on an arc where a shape's radius of curvature is
+// at least r, its support function is at least that of the disc of radius r tangent at the support
+// point p_x found at the arc's end x, h(n) >= n.(p_x - r x) + r (the difference w satisfies
+// w'' + w = rho - r >= 0 with w = w' = 0 at x, so w(t) is the integral of sin(t - t') (rho - r)
+// >= 0 over less than a half turn); a rectangle's r is 0 and the disc its corner. Summed over both
+// shapes, with r the least radii on the arc (each radius is monotone between a shape's axes, and
+// the arcs never cross one, so the least is at an end),
+//   s(n) <= n.(gap_x + r x) - r       (gap_x = delta - p_A - p_B at x), and the same from y,
+// and the maximum over the arc of the smaller of these two sinusoids lies at an end, at a peak of
+// either, or where they cross. It is exact for polygons and for circles (a concentric pair's s is
+// constant and its arcs drop at once), and for other curves its excess shrinks with the cube of
+// the arc's width. At a polished maximum m, s'(m) = 0 and gap_m = s(m) m, so the sinusoid from m
+// is (s(m) + r) cos(t - t_m) - r: it peaks at m with the value s(m) wherever the depth -s(m) is
+// below the radii r, and every arc ending at m drops at once: the maximum certifies itself. Deeper
+// (thin shapes), arcs near m are halved until the excess falls below the rounding. An arc whose
+// ends' slopes show a maximum inside (rising, then falling) is split at the root of s' found by
+// safeguarded Newton in tau = tan(angle / 2), any other arc at its bisector; the arc with the
+// highest bound goes first.
+//
+// The arcs start between the axes of both shapes (a rectangle's axes are its face normals, where
+// its support point jumps from corner to corner and s has its kinks), so that within an arc every
+// support point moves smoothly, s' exists, and each radius of curvature is monotone.
+#pragma once
+
+#include "narrowphase/ellipse_pair.h"
+
+#include <algorithm>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace collide2d::detail {
+
+template <class Real>
+struct ArcEnd {
+  V2<Real> n;
+  Separation<Real> at;  // with the support points of the arc's interior
+};
+
+template <class Real>
+struct Arc {
+  ArcEnd<Real> x;  // from x counter-clockwise to y, less than a half turn
+  ArcEnd<Real> y;
+  V2<Real> side;   // a direction inside, which picks a rectangle's corner
+  Real bound;      // no s on the arc exceeds it
+};
+
+template <class Real>
+Real arc_bound(const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
+  using std::min;
+  const Real r = min(x.at.rho_a, y.at.rho_a) + min(x.at.rho_b, y.at.rho_b);
+  const V2<Real> gx = x.at.gap + r * x.n;
+  const V2<Real> gy = y.at.gap + r * y.n;
+  const auto value = [&](const V2<Real>& n) { return std::min(n.dot(gx), n.dot(gy)) - r; };
+  Real best = std::max(x.at.s, y.at.s);
+  const auto candidate = [&](const V2<Real>& v) {
+    using std::sqrt;
+    const Real length = sqrt(v.squaredNorm());
+    if (!(length > 0)) return;
+    const V2<Real> n = v / length;
+    if (cross(x.n, n) >= 0 && cross(n, y.n) >= 0) best = std::max(best, value(n));
+  };
+  candidate(gx);
+  candidate(gy);
+  const V2<Real> across = perp<Real>(gx - gy);
+  candidate(across);
+  candidate(-across);
+  return best;
+}
+
+template <class Real>
+struct Deepest {
+  V2<Real> n = V2<Real>::UnitX();
+  Separation<Real> at;
+  bool certified = true;   // every other arc was bounded below s + its rounding (false: the cap was hit)
+  int evaluations = 0;
+};
+
+// The point inside the arc where s has its maximum (a root of s' by safeguarded Newton when the
+// slopes at the ends show one), or the bisector; x itself when no double lies between the ends.
+template <class Real, class P>
+ArcEnd<Real> split(const P& p, const Arc<Real>& arc, int& evaluations) {
+  const V2<Real>& x = arc.x.n;
+  const auto inside = [&](const V2<Real>& n) { return cross(x, n) > 0 && cross(n, arc.y.n) > 0; };
+  if (arc.x.at.slope > 0 && arc.y.at.slope < 0) {
+    const Real end = cross(x, arc.y.n) / (1 + x.dot(arc.y.n));  // tan of half the arc's width
+    const auto f = [&](Real tau) {
+      const Separation<Real> e = p.separation(turned(x, Real(1), tau), arc.side);
+      return std::pair<Real, Real>(e.slope, -e.bend * 2 / (1 + tau * tau));
+    };
+    const std::pair<Real, Real> start(arc.x.at.slope, -arc.x.at.bend * 2);
+    const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
+    const V2<Real> n = turned(x, Real(1), tau);
+    ++evaluations;
+    if (inside(n)) return {n, p.separation(n, arc.side)};
+  }
+  const V2<Real> mid = (x + arc.y.n).normalized();
+  if (!inside(mid)) return arc.x;
+  ++evaluations;
+  return {mid, p.separation(mid, arc.side)};
+}
+
+// The starting directions: the pair frame's axes (those of one shape) and, between them, the other
+// shape's axes, counter-clockwise, the first repeated at the end.
+template <class Real>
+int starting_directions(const Rotation<Real>& other, V2<Real> (&ends)[9]) {
+  const V2<Real> e[4] = {V2<Real>(1, 0), V2<Real>(0, 1), V2<Real>(-1, 0), V2<Real>(0, -1)};
+  const V2<Real> d0(other.c, other.s);
+  const V2<Real> d[4] = {d0, perp(d0), -d0, -perp(d0)};
+  int count = 0;
+  for (int k = 0; k < 4; ++k) {
+    ends[count++] = e[k];
+    for (const V2<Real>& x : d) {
+      if (cross(e[k], x) > 0 && cross(x, e[(k + 1) % 4]) > 0) ends[count++] = x;
+    }
+  }
+  ends[count] = ends[0];
+  return count;
+}
+
+// The global maximum of s. Stops after `cap` evaluations (then certified = false).
+template <class Real, class SA, class SB>
+Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 4096) {
+  constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
+  // Arcs are dropped within 8 u of the scale of the best value: the bound's own rounding is a few
+  // u of the scale (the pair's margin(), 64 u, left the 1e-12 target met but let a needle pair's
+  // distance fall 138 u short).
+  const Real margin = 8 * std::numeric_limits<Real>::epsilon() * p.scale;
+  Deepest<Real> best;
+  best.at.s = -std::numeric_limits<Real>::infinity();
+  const auto consider = [&best](const ArcEnd<Real>& e) {
+    if (e.at.s > best.at.s) best.n = e.n, best.at = e.at;
+  };
+  V2<Real> ends[9];
+  const bool a_is_frame = p.A.rot.c == 1 && p.A.rot.s == 0;
+  const int count = starting_directions(a_is_frame ? p.B.rot : p.A.rot, ends);
+  // Smooth shapes see one value per direction; a rectangle's corner depends on the arc.
+  Separation<Real> shared[9];
+  if (!sided) {
+    for (int k = 0; k < count; ++k) shared[k] = p.separation(ends[k]);
+    shared[count] = shared[0];
+  }
+  std::vector<Arc<Real>> arcs;
+  arcs.reserve(32);
+  for (int k = 0; k < count; ++k) {
+    const V2<Real> side = (ends[k] + ends[k + 1]).normalized();
+    const auto end = [&](int i) {
+      return ArcEnd<Real>{ends[i], sided ? p.separation(ends[i], side) : shared[i]};
+    };
+    arcs.push_back({end(k), end(k + 1), side, Real(0)});
+  }
+  best.evaluations = sided ? 2 * count : count;
+  for (Arc<Real>& arc : arcs) {
+    consider(arc.x);
+    consider(arc.y);
+    arc.bound = arc_bound(arc.x, arc.y);
+  }
+  while (!arcs.empty()) {
+    const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {
+      return l.bound < r.bound;
+    });
+    if (top->bound <= best.at.s + margin) break;
+    if (best.evaluations >= cap) {
+      best.certified = false;
+      break;
+    }
+    const Arc<Real> arc = *top;
+    *top = arcs.back();
+    arcs.pop_back();
+    const ArcEnd<Real> m = split(p, arc, best.evaluations);
+    if (m.n == arc.x.n) continue;  // no direction between the ends: they bound the arc
+    consider(m);
+    for (const auto& [x, y] : {std::pair{arc.x, m}, std::pair{m, arc.y}}) {
+      const Real bound = arc_bound(x, y);
+      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound});
+    }
+  }
+  return best;
+}
+
+}  // namespace collide2d::detail

@@ -1,0 +1,154 @@
+// Private: two convex, centrally symmetric solids seen through their exact support functions, in the
+// frame of the longer one, generic over the scalar (the ellipse overlap test repeats itself in long
+// double) and over the shapes (ellipses and circles are smooth; a rectangle's support point is a
+// corner, constant on each quarter turn of directions between its face normals).
+//
+// For a unit direction n and a shape centred at the origin, h(n) is the support function, the support
+// point is the offset from the centre, and rho is the radius of curvature there (0 at a corner).
+// With delta = c_B - c_A, the separation of the pair along n (A towards B) is
+//   s(n) = n.delta - h_A(n) - h_B(n)
+// (h_B(-n) = h_B(n) by symmetry): the signed distance between the two supporting lines normal to n.
+// The signed distance of the pair is max s over all n, apart and overlapping alike.
+#pragma once
+
+#include "shapes/rotation.h"
+#include "shapes/shapes.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace collide2d::detail {
+
+template <class Real>
+using V2 = Eigen::Matrix<Real, 2, 1>;
+
+template <class Real>
+V2<Real> perp(const V2<Real>& v) {
+  return {-v[1], v[0]};
+}
+
+template <class Real>
+Real cross(const V2<Real>& p, const V2<Real>& q) {
+  return p[0] * q[1] - p[1] * q[0];
+}
+
+template <class Real>
+struct Support {
+  V2<Real> offset;  // support point minus centre
+  Real h = 0;       // support function value
+  Real rho = 0;     // radius of curvature of the boundary at the support point
+};
+
+template <class Real>
+struct EllipseSupport {
+  Rotation<Real> rot;  // in the pair's frame
+  Real a = 1;
+  Real b = 1;
+
+  // n must be a unit vector.
+  Support<Real> at(const V2<Real>& n) const {
+    using std::sqrt;
+    const V2<Real> l = rot.apply_inverse(n);
+    const Real u = a * l[0];
+    const Real v = b * l[1];
+    const Real h = sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
+    const Real inv = 1 / h;
+    const Real k = a * b * inv;  // at most max(a, b): (ab)^2 / h^3 without overflow
+    return {rot.apply(V2<Real>(a * u * inv, b * v * inv)), h, k * k * inv};
+  }
+  // The curve is smooth: no side to choose.
+  Support<Real> at(const V2<Real>& n, const V2<Real>&) const { return at(n); }
+};
+
+// A rectangle's support point is the corner on the side of `side`, a direction in the same quarter
+// turn as n: on a face normal n itself cannot choose between the face's two corners, and a caller
+// walking an arc of directions must keep the corner of that arc's interior.
+template <class Real>
+struct RectSupport {
+  Rotation<Real> rot;  // in the pair's frame
+  Real hx = 1;
+  Real hy = 1;
+
+  Support<Real> at(const V2<Real>& n, const V2<Real>& side) const {
+    const V2<Real> l = rot.apply_inverse(side);
+    const V2<Real> offset = rot.apply(V2<Real>(l[0] >= 0 ? hx : -hx, l[1] >= 0 ? hy : -hy));
+    return {offset, n.dot(offset), Real(0)};
+  }
+};
+
+template <class Real>
+struct Separation {
+  Real s = 0;       // s(n)
+  Real slope = 0;   // ds/dphi for n turning counter-clockwise
+  Real bend = 0;    // -d2s/dphi2 = s + rho_A + rho_B, positive wherever s > 0 (s is concave there)
+  V2<Real> gap;     // support point of B in -n minus support point of A in n
+  V2<Real> offset_a;
+  V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
+  Real rho_a = 0;
+  Real rho_b = 0;
+};
+
+template <class Real>
+EllipseSupport<Real> support_in(const Ellipse& e, const Rotation<Real>& rot) {
+  return {rot, static_cast<Real>(e.a), static_cast<Real>(e.b)};
+}
+template <class Real>
+RectSupport<Real> support_in(const Rect& r, const Rotation<Real>& rot) {
+  return {rot, static_cast<Real>(r.half_extents.x()), static_cast<Real>(r.half_extents.y())};
+}
+inline double longest(const Ellipse& e) { return std::max(e.a, e.b); }
+inline double longest(const Rect& r) { return r.half_extents.maxCoeff(); }
+inline double reach(const Ellipse& e) { return longest(e); }
+inline double reach(const Rect& r) { return r.half_extents.sum(); }
+
+// Everything here (directions, offsets, delta) is in the pair's frame: the axes of the longer shape,
+// whose rotation is then exactly the identity. In world axes a needle's normal carries an absolute
+// error of u, which its support function multiplies by its length: for a needle 1e20 long a gap of
+// 0.5 beside it was lost. In its own axes the normal is exact and directions near it keep their
+// relative precision; the shorter shape's rotation, composed from the two cosines and sines,
+// carries the error u instead, times its own length.
+template <class Real, class SA, class SB>
+struct SupportPair {
+  SA A;
+  SB B;
+  V2<Real> delta;  // c_B - c_A
+  Real scale = 0;  // |delta| + the two shapes' reaches: rounding errors are a few u * scale
+  Rotation<Real> frame;  // the pair's axes in world axes
+
+  template <class X, class Y>
+  static SupportPair of(const X& a, const Y& b) {
+    const V2<Real> d(static_cast<Real>(b.center.x()) - static_cast<Real>(a.center.x()),
+                     static_cast<Real>(b.center.y()) - static_cast<Real>(a.center.y()));
+    const bool a_longer = longest(a) >= longest(b);
+    const Rotation<Real> ra = Rotation<Real>::of(a.angle), rb = Rotation<Real>::of(b.angle);
+    const Rotation<Real> frame = a_longer ? ra : rb;
+    // Equal angles give the identity exactly (composing would leave c^2 + s^2, off 1 by an ulp).
+    const auto in_frame = [&](const Rotation<Real>& r) {
+      return a.angle == b.angle ? Rotation<Real>{} : r.relative_to(frame);
+    };
+    return {support_in(a, a_longer ? Rotation<Real>{} : in_frame(ra)),
+            support_in(b, a_longer ? in_frame(rb) : Rotation<Real>{}), frame.apply_inverse(d),
+            d.norm() + static_cast<Real>(reach(a) + reach(b)), frame};
+  }
+
+  V2<Real> to_world(const V2<Real>& v) const { return frame.apply(v); }
+  V2<Real> from_world(const V2<Real>& v) const { return frame.apply_inverse(v); }
+
+  // The tolerance below which a sign computed here is not trusted.
+  Real margin() const { return 64 * std::numeric_limits<Real>::epsilon() * scale; }
+
+  // s along the unit direction n, with each rectangle's corner taken on the side of `side`.
+  Separation<Real> separation(const V2<Real>& n, const V2<Real>& side) const {
+    const Support<Real> sa = A.at(n, side);
+    const Support<Real> sb = B.at(n, side);
+    const V2<Real> gap = delta - sa.offset - sb.offset;
+    const Real s = n.dot(gap);
+    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset, sa.rho, sb.rho};
+  }
+  Separation<Real> separation(const V2<Real>& n) const { return separation(n, n); }
+};
+
+}  // namespace collide2d::detail
