@@ -146,7 +146,9 @@ Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& op
     // From the corners' difference in the frame, not from the world points, whose rounding grows
     // with the offset of the pair from the origin.
     const Vec2 towards_inc = direction_to_world(Vec2((c.on_inc - c.on_ref) / c.separation));
-    return Contact::of(c.separation, v.ref_is_a ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b);
+    Contact out = Contact::of(c.separation, v.ref_is_a ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b);
+    out.manifold[0].id = p.id;
+    return out;
   }
   const Vec2 n_ref = k == 0 ? Vec2(sigma, 0) : Vec2(0, sigma);
   const Vec2 normal = (v.ref_is_a ? 1.0 : -1.0) * direction_to_world(n_ref);

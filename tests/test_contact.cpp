@@ -7,6 +7,7 @@
 
 #include "narrowphase/query.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace collide2d::testing {
@@ -137,6 +139,133 @@ TEST_P(ContactFamilies, MatchReference) {
 
 INSTANTIATE_TEST_SUITE_P(Families, ContactFamilies, ::testing::ValuesIn(contact_families()),
                          [](const auto& info) { return name_of(info.param); });
+
+
+Shape moved(const Shape& s, double turn, const Vec2& shift) {
+  const Eigen::Rotation2Dd r(turn);
+  return std::visit(
+      [&](auto x) -> Shape {
+        x.center = r * x.center + shift;
+        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += turn;
+        return x;
+      },
+      s);
+}
+
+// What a solver relies on, over the cases of every family: apart, the separation is the distance;
+// its sign is the overlap verdict; moving B by -separation * normal leaves the pair touching; a
+// rigid motion of both keeps the separation. Tolerances: the rounding of the moved input (an ulp
+// of each centre coordinate, of the angle times the size) plus 16 u of the scale.
+TEST(ContactProperties, HoldOnEveryFamily) {
+  int apart = 0, pushed = 0;
+  double worst_push = 0, worst_motion = 0;  // as fractions of their bounds
+  for (const ContactFamily& cf : contact_families()) {
+    Family f = cf.family;
+    f.cases = 12;
+    int k = 0;
+    for (const Case& c : family_cases(f)) {
+      const std::string what = f.name + " case " + std::to_string(k++) + ": " + describe(c.a) + " ; " + describe(c.b);
+      const double size = std::max(half_size(c.a), half_size(c.b));
+      const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
+      const Contact got = contact(c.a, c.b);
+      if (got.separation > 1e-10 * size) {
+        ++apart;
+        EXPECT_NEAR(got.separation, distance(c.a, c.b).distance, 8 * kU * scale) << what;
+      }
+      if (std::abs(got.separation) > 1e-10 * size) EXPECT_EQ(overlaps(c.a, c.b), got.separation < 0) << what;
+
+      const Shape b = moved(c.b, 0.0, -got.separation * got.normal);
+      const double rounding = 4 * kU * center_of(b).cwiseAbs().sum() + 16 * kU * scale;
+      const double push = std::abs(contact(c.a, b).separation);
+      worst_push = std::max(worst_push, push / rounding);
+      EXPECT_LE(push, rounding) << what << " pushed out by " << got.separation;
+      ++pushed;
+
+      const Vec2 shift(3.0, -2.0);
+      const Contact turned = contact(moved(c.a, 0.7, shift), moved(c.b, 0.7, shift));
+      const double motion = std::abs(turned.separation - got.separation);
+      const double reach = center_of(c.a).norm() + center_of(c.b).norm() + shift.norm();
+      const double motion_bound = 16 * kU * (reach + 8 * size) + 16 * kU * scale;
+      worst_motion = std::max(worst_motion, motion / motion_bound);
+      EXPECT_LE(motion, motion_bound) << what;
+    }
+  }
+  std::printf("[contact] properties: %d pairs apart; %d pushed out, worst %.2f of the bound; rigid motion worst %.2f of it\n",
+              apart, pushed, worst_push, worst_motion);
+}
+
+// Box2D's manifold on the cases it exists for: a box resting on a box (two points, the overlap of
+// the faces, each at the exact depth 1/128), the same box tilted (one point; both with a margin),
+// the pair swapped (features renamed, normal reversed), the same features after a small motion
+// (same ids), and two corners nearest while apart (a corner pair).
+TEST(ContactManifold, RectanglesResting) {
+  const Rect floor{{0, 0}, {2, 0.5}, 0};
+  const Rect box{{0.25, 0.75 - 1.0 / 128}, {0.5, 0.25}, 0};
+  const Contact c = contact(floor, box);
+  EXPECT_EQ(c.separation, -1.0 / 128);
+  EXPECT_EQ(c.normal, Vec2(0, 1));
+  ASSERT_EQ(c.manifold_size, 2);
+  double xs[2];
+  for (int i = 0; i < 2; ++i) {
+    const ContactPoint& p = c.manifold[static_cast<std::size_t>(i)];
+    EXPECT_EQ(p.separation, -1.0 / 128);
+    EXPECT_EQ(p.point_a.y(), 0.5);
+    EXPECT_EQ(p.point_b.y(), 0.5 - 1.0 / 128);
+    EXPECT_EQ(p.point_a.x(), p.point_b.x());
+    EXPECT_EQ(feature_kind(p.id), FeatureKind::face_of_a);
+    xs[i] = p.point_b.x();
+  }
+  EXPECT_EQ(std::min(xs[0], xs[1]), -0.25);
+  EXPECT_EQ(std::max(xs[0], xs[1]), 0.75);
+  // The floor's +y face (1) against the box's lower corners (0 and 1).
+  const std::uint32_t ids[2] = {c.manifold[0].id, c.manifold[1].id};
+  EXPECT_EQ(std::min(ids[0], ids[1]), feature_id(FeatureKind::face_of_a, 1, 0));
+  EXPECT_EQ(std::max(ids[0], ids[1]), feature_id(FeatureKind::face_of_a, 1, 1));
+
+  const Contact back = contact(box, floor);
+  EXPECT_EQ(back.normal, Vec2(0, -1));
+  EXPECT_EQ(back.separation, c.separation);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.manifold[static_cast<std::size_t>(i)].id, swapped_feature(c.manifold[static_cast<std::size_t>(i)].id));
+    EXPECT_EQ(feature_kind(back.manifold[static_cast<std::size_t>(i)].id), FeatureKind::face_of_b);
+  }
+
+  Rect nudged = box;
+  nudged.center += Vec2(0.01, -0.001);
+  nudged.angle = 1e-3;
+  const Contact later = contact(floor, nudged);
+  ASSERT_EQ(later.manifold_size, 2);
+  EXPECT_EQ(std::min(later.manifold[0].id, later.manifold[1].id), std::min(ids[0], ids[1]));
+  EXPECT_EQ(std::max(later.manifold[0].id, later.manifold[1].id), std::max(ids[0], ids[1]));
+  // Deepest first: turned counter-clockwise, the box's lower right corner rises.
+  EXPECT_LT(later.manifold[0].separation, later.manifold[1].separation);
+  EXPECT_EQ(later.manifold[0].separation, later.separation);
+
+  Rect tilted = box;
+  tilted.angle = 0.1;
+  EXPECT_EQ(contact(floor, tilted).manifold_size, 1);
+  EXPECT_EQ(contact(floor, tilted, {.margin = 0.2}).manifold_size, 2);
+
+  const Rect corner{{3.5, 1.5}, {0.5, 0.5}, 0.0};  // (3, 1) is 1 from (2, 0.5) along x and 0.5 along y
+  const Contact apart = contact(floor, corner);
+  EXPECT_DOUBLE_EQ(apart.separation, std::sqrt(1.25));
+  EXPECT_EQ(apart.manifold_size, 1);
+  EXPECT_EQ(apart.manifold[0].id, feature_id(FeatureKind::corner_corner, 2, 0));
+  EXPECT_NEAR((apart.normal - Vec2(1, 0.5) / std::sqrt(1.25)).norm(), 0, 1e-16);
+}
+
+TEST(ContactManifold, CurvedPairsGiveOnePoint) {
+  const Contact c = contact(Ellipse{{0, 0}, 2, 1, 0.3}, Rect{{1, 1.2}, {0.5, 0.25}, 0.2});
+  EXPECT_EQ(c.manifold_size, 1);
+  EXPECT_EQ(c.manifold[0].id, 0u);
+  EXPECT_EQ(c.manifold[0].point_a, c.point_a);
+  EXPECT_EQ(c.manifold[0].separation, c.separation);
+}
+
+TEST(ContactValidation, NamesTheBadField) {
+  EXPECT_THROW(contact(Circle{{0, 0}, -1}, Circle{}), InvalidShape);
+  EXPECT_THROW(contact(Rect{}, Ellipse{{0, std::nan("")}, 1, 1, 0}), InvalidShape);
+}
 
 }  // namespace
 }  // namespace collide2d::testing

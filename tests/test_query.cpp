@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -149,12 +150,12 @@ struct CommandRun {
   std::string err;
 };
 
-CommandRun run(const std::string& input, const char* method = "minkowski", bool boundary = false) {
+CommandRun run(const std::string& input, const char* method = "minkowski", tool::Answer answer = tool::Answer::distance) {
   std::istringstream in(input);
   std::ostringstream out, err;
   tool::QueryOptions options;
   tool::apply_method(method, options);
-  options.boundary = boundary;
+  options.answer = answer;
   const int status = tool::run_query(in, out, err, options);
   std::vector<std::string> lines;
   std::istringstream o(out.str());
@@ -244,7 +245,7 @@ TEST(QueryCommand, MethodsAndBoundaryForEllipses) {
   const std::string nested = "circle 0 0 3 ; ellipse 1 0 1 1 0.5\n";
   EXPECT_EQ(run(nested).out.at(0).substr(0, 4), "1 0 ");
   for (const char* m : {"robust", "gradient", "polynomial"}) {
-    const CommandRun r = run(nested, m, true);
+    const CommandRun r = run(nested, m, tool::Answer::boundary);
     ASSERT_EQ(r.status, 0) << m;
     std::istringstream line(r.out.at(0));
     int hit = -1;
@@ -255,9 +256,37 @@ TEST(QueryCommand, MethodsAndBoundaryForEllipses) {
     EXPECT_NEAR(ax, 3.0, 1e-3) << m;
     EXPECT_NEAR(bx, 2.0, 1e-3) << m;
   }
-  const CommandRun r = run("rect 0 0 1 1 0 ; circle 5 0 1\n", "robust", true);
+  const CommandRun r = run("rect 0 0 1 1 0 ; circle 5 0 1\n", "robust", tool::Answer::boundary);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.at(0).find("error: the boundary distance covers circles and ellipses"), std::string::npos);
+}
+
+
+// --contact: one pair of every kind with a signed distance known in closed form (the overlap along
+// an axis of symmetry), points included; a bad line still gets its error in place.
+TEST(QueryCommand, ContactLinesForEveryPair) {
+  const std::string input =
+      "circle 0 0 1 ; circle 1.5 0 1\n"
+      "rect 0 0 1 1 0 ; circle 0 1.5 1\n"
+      "rect 0 0 1 1 0 ; rect 2.5 0 0.25 0.25 0.78539816339744828\n"
+      "rect 0 0 1 1 0 ; ellipse 0 1.75 2 1 0\n"
+      "circle 0 0 1 ; ellipse 2.5 0 2 1 0\n"
+      "ellipse 0 0 2 1 0 ; ellipse 3 0 2 1 0\n"
+      "circle 0 0 -1 ; circle 0 0 1\n";
+  const CommandRun r = run(input, "minkowski", tool::Answer::contact);
+  EXPECT_EQ(r.status, 2);
+  const std::vector<std::array<double, 7>> expected = {
+      {-0.5, 1, 0, 1, 0, 0.5, 0},   {-0.5, 0, 1, 0, 1, 0, 0.5},    {1.5 - std::sqrt(0.125), 1, 0, 1, 0, 2.5 - std::sqrt(0.125), 0},
+      {-0.25, 0, 1, 0, 1, 0, 0.75}, {-0.5, 1, 0, 1, 0, 0.5, 0},    {-1, 1, 0, 2, 0, 1, 0}};
+  ASSERT_EQ(r.out.size(), expected.size() + 1);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    std::istringstream line(r.out[k]);
+    std::array<double, 7> got{};
+    for (double& x : got) line >> x;
+    ASSERT_TRUE(line) << r.out[k];
+    for (int i = 0; i < 7; ++i) EXPECT_NEAR(got[static_cast<std::size_t>(i)], expected[k][static_cast<std::size_t>(i)], 1e-15) << r.out[k];
+  }
+  EXPECT_NE(r.out.back().find("error: circle radius must be positive"), std::string::npos) << r.out.back();
 }
 
 }  // namespace

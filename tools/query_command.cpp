@@ -107,12 +107,19 @@ void apply_method(std::string_view name, QueryOptions& options) {
 }
 
 std::string answer(const QueryLine& q, const QueryOptions& options) {
-  const bool hit = overlaps(q.a, q.b, options.overlap);
-  const DistanceResult d = options.boundary ? boundary_distance(q.a, q.b, options.distance)
-                                            : distance(q.a, q.b, options.distance);
-  char buf[160];
-  const int n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance,
-                              d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
+  char buf[200];
+  int n = 0;
+  if (options.answer == Answer::contact) {
+    const Contact c = contact(q.a, q.b);
+    n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.separation, c.normal.x(),
+                      c.normal.y(), c.point_a.x(), c.point_a.y(), c.point_b.x(), c.point_b.y());
+  } else {
+    const bool hit = overlaps(q.a, q.b, options.overlap);
+    const DistanceResult d = options.answer == Answer::boundary ? boundary_distance(q.a, q.b, options.distance)
+                                                                : distance(q.a, q.b, options.distance);
+    n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance, d.point_a.x(),
+                      d.point_a.y(), d.point_b.x(), d.point_b.y());
+  }
   return std::string(buf, static_cast<std::size_t>(n));
 }
 

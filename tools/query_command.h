@@ -5,9 +5,12 @@
 // Blank lines and lines starting with '#' are skipped (they produce no output).
 // Output: one line per query, `overlap distance ax ay bx by` (overlap 1/0 for the solids; distance 0
 // when they overlap; a and b the closest points, a common point when overlapping), numbers in %.17g
-// so they round-trip. With `boundary`, distance and points are those of the boundary curves
-// (circles and ellipses only; a rectangle gives an error line). A malformed or invalid line prints `error: <reason>` in its place and
-// `line N: <reason>` on the error stream; processing goes on.
+// so they round-trip. With Answer::boundary, distance and points are those of the boundary curves
+// (circles and ellipses only; a rectangle gives an error line). With Answer::contact, the line is
+// `separation nx ny ax ay bx by`: the signed distance (minus the penetration depth when the solids
+// overlap), the unit normal from A to B and the deepest (or closest) points (narrowphase/contact.h).
+// A malformed or invalid line prints `error: <reason>` in its place and `line N: <reason>` on the
+// error stream; processing goes on.
 #pragma once
 
 #include "narrowphase/query.h"
@@ -34,10 +37,12 @@ struct QueryLine {
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.
 std::optional<QueryLine> parse_query_line(std::string_view line);
 
+enum class Answer { distance, boundary, contact };
+
 struct QueryOptions {
   OverlapOptions overlap;
   DistanceOptions distance;
-  bool boundary = false;
+  Answer answer = Answer::distance;
 };
 
 // Applies a method named on the command line: a rect–ellipse overlap test (minkowski,
