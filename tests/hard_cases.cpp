@@ -4,6 +4,7 @@
 
 #include "narrowphase/overlap_ellipse_ellipse.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <type_traits>
 
 namespace collide2d::testing {
 namespace {
@@ -471,6 +473,17 @@ void print_summary(const Family& f, const FamilyStats& stats) {
 }
 
 }  // namespace
+
+Shape moved(const Shape& s, double turn, const Vec2& shift) {
+  const Eigen::Rotation2Dd r(turn);
+  return std::visit(
+      [&](auto x) -> Shape {
+        x.center = r * x.center + shift;
+        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += turn;
+        return x;
+      },
+      s);
+}
 
 std::vector<Case> family_cases(const Family& f) {
   Rng rng(f.seed);

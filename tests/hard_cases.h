@@ -100,6 +100,9 @@ struct Case {
 // The family's cases, the same every call (seeded by the family).
 std::vector<Case> family_cases(const Family& f);
 
+// The shape moved by the rigid motion p -> R(turn) p + shift.
+Shape moved(const Shape& s, double turn, const Vec2& shift);
+
 // A shape's largest half-size, and the shape as text for failure messages.
 double half_size(const Shape& s);
 std::string describe(const Shape& s);

@@ -7,7 +7,6 @@
 
 #include "narrowphase/query.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +15,6 @@
 #include <limits>
 #include <numbers>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace collide2d::testing {
@@ -71,6 +69,20 @@ struct Worst {
   int evaluations = 0;
 };
 
+// A case's description for failure messages, its size (the larger shape's largest half-size) and
+// its scale (also the centre distance): errors are measured against the scale.
+struct Measures {
+  std::string what;
+  double size;
+  double scale;
+};
+
+Measures measures_of(const Family& f, const Case& c, int k) {
+  const double size = std::max(half_size(c.a), half_size(c.b));
+  return {f.name + " case " + std::to_string(k) + ": " + describe(c.a) + " ; " + describe(c.b), size,
+          std::max(size, (center_of(c.b) - center_of(c.a)).norm())};
+}
+
 class ContactFamilies : public ::testing::TestWithParam<ContactFamily> {};
 
 TEST_P(ContactFamilies, MatchReference) {
@@ -80,9 +92,7 @@ TEST_P(ContactFamilies, MatchReference) {
   Worst worst;
   int k = 0;
   for (const Case& c : family_cases(small)) {
-    const std::string what = f.name + " case " + std::to_string(k++) + ": " + describe(c.a) + " ; " + describe(c.b);
-    const double size = std::max(half_size(c.a), half_size(c.b));
-    const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
+    const auto [what, size, scale] = measures_of(f, c, k++);
     const Contact got = contact(c.a, c.b);
     const reference::SignedDistance ref = reference::signed_distance(c.a, c.b);
     const double ref_sep = static_cast<double>(ref.separation);
@@ -141,17 +151,6 @@ INSTANTIATE_TEST_SUITE_P(Families, ContactFamilies, ::testing::ValuesIn(contact_
                          [](const auto& info) { return name_of(info.param); });
 
 
-Shape moved(const Shape& s, double turn, const Vec2& shift) {
-  const Eigen::Rotation2Dd r(turn);
-  return std::visit(
-      [&](auto x) -> Shape {
-        x.center = r * x.center + shift;
-        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += turn;
-        return x;
-      },
-      s);
-}
-
 // What a solver relies on, over the cases of every family: apart, the separation is the distance;
 // its sign is the overlap verdict; moving B by -separation * normal leaves the pair touching; a
 // rigid motion of both keeps the separation. Tolerances: the rounding of the moved input (an ulp
@@ -164,9 +163,7 @@ TEST(ContactProperties, HoldOnEveryFamily) {
     f.cases = 12;
     int k = 0;
     for (const Case& c : family_cases(f)) {
-      const std::string what = f.name + " case " + std::to_string(k++) + ": " + describe(c.a) + " ; " + describe(c.b);
-      const double size = std::max(half_size(c.a), half_size(c.b));
-      const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
+      const auto [what, size, scale] = measures_of(f, c, k++);
       const Contact got = contact(c.a, c.b);
       if (got.separation > 1e-10 * size) {
         ++apart;

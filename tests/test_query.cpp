@@ -1,4 +1,5 @@
 // The user-facing dispatch (invariants, errors) and the `collide2d query` command.
+#include "hard_cases.h"
 #include "mp_reference.h"
 
 #include "narrowphase/query.h"
@@ -19,6 +20,8 @@
 namespace collide2d {
 namespace {
 
+using testing::moved;
+
 std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.05, 1.5), pos(-2, 2), angle(-7, 7);
@@ -33,18 +36,6 @@ std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
     out.emplace_back(shape(k % 3), shape((k / 3) % 3));
   }
   return out;
-}
-
-// Moves a shape by the rigid motion p -> R(phi) p + t.
-Shape moved(const Shape& s, double phi, const Vec2& t) {
-  const Eigen::Rotation2Dd r(phi);
-  return std::visit(
-      [&](auto x) -> Shape {
-        x.center = r * x.center + t;
-        if constexpr (!std::is_same_v<decltype(x), Circle>) x.angle += phi;
-        return x;
-      },
-      s);
 }
 
 // The motion rounds the centres to u of the shift (up to 50) and the angles to u of the turn, and
