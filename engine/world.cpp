@@ -46,8 +46,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-World::World(const WorldOptions& options) : broad_(options.fat_margin), proximity_margin_(options.proximity_margin) {
+World::World(const WorldOptions& options)
+    : broad_(options.fat_margin),
+      proximity_margin_(options.proximity_margin),
+      contacts_on_(options.contacts),
+      speculative_margin_(options.contacts ? options.speculative_margin : 0.0) {
   require_margin(options.proximity_margin, "proximity margin");
+  require_margin(options.speculative_margin, "speculative margin");
 }
 
 bool World::contains(BodyId id) const {
@@ -76,7 +81,9 @@ std::vector<BodyId> World::bodies() const {
   return out;
 }
 
-Aabb World::broad_box(const Aabb& box) const { return grown(box, 0.5 * proximity_margin_); }
+Aabb World::broad_box(const Aabb& box) const {
+  return grown(box, 0.5 * std::max(proximity_margin_, speculative_margin_));
+}
 
 BodyId World::add(const Shape& shape, std::uint64_t user_id) {
   validate(shape);
@@ -128,14 +135,23 @@ void World::update() {
   const auto narrow_start = std::chrono::steady_clock::now();
   std::vector<BodyPair> now;
   proximity_.clear();
+  contacts_.clear();
+  const ContactOptions manifold{.margin = speculative_margin_};
   for (const ProxyPair& p : broad_.pairs()) {
-    const Shape& a = bodies_[p.a].shape;
-    const Shape& b = bodies_[p.b].shape;
-    if (intersects(bodies_[p.a].box, bodies_[p.b].box) && overlaps(a, b)) {
+    const Body& x = bodies_[p.a];
+    const Body& y = bodies_[p.b];
+    if (intersects(x.box, y.box) && overlaps(x.shape, y.shape)) {
       now.push_back(pair_of(p));
-    } else if (proximity_margin_ > 0.0) {
-      const DistanceResult d = distance(a, b);
+      if (contacts_on_) contacts_.push_back({id_of(p.a), id_of(p.b), contact(x.shape, y.shape, manifold)});
+      continue;
+    }
+    if (proximity_margin_ > 0.0) {
+      const DistanceResult d = distance(x.shape, y.shape);
       if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(p.a), id_of(p.b), d});
+    }
+    if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
+      const Contact c = contact(x.shape, y.shape, manifold);
+      if (c.separation <= speculative_margin_) contacts_.push_back({id_of(p.a), id_of(p.b), c});
     }
   }
   began_.clear();
@@ -147,6 +163,7 @@ void World::update() {
   stats_.candidates = broad_.pairs().size();
   stats_.overlapping = overlapping_.size();
   stats_.proximity = proximity_.size();
+  stats_.contacts = contacts_.size();
 }
 
 template <class Test>

@@ -7,11 +7,14 @@
 //   world.update();                                   // once per frame
 //   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
 //   for (const Proximity& p : world.proximity()) ...   // apart but within the margin, with points
+//   for (const BodyContact& c : world.contacts()) ...  // with contacts on: depth, normal, manifold
 //
 // What is computed is what was asked: each candidate pair from the broad phase whose tight boxes
 // meet gets the overlap test only; a distance is computed only when a proximity margin is set, and
-// only for candidate pairs that do not overlap. With a proximity margin m, the broad-phase boxes
-// are the shapes' boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
+// only for candidate pairs that do not overlap; a contact (narrowphase/contact.h) only when contacts
+// are switched on, for the overlapping pairs and, with a speculative margin, for the pairs whose
+// tight boxes come within it. With a proximity or speculative margin m, the broad-phase boxes are
+// the shapes' boxes grown by m / 2 (two shapes within m have boxes within m on each axis).
 // The tight-box test settles the pairs that the fat margin alone brought in, and makes every
 // reported overlap one whose boxes meet: a kernel's rounding (u times a needle's length) can then
 // never report a pair that a box test excludes.
@@ -55,12 +58,22 @@ struct BodyPair {
 struct WorldOptions {
   double fat_margin = 0.0;        // broad-phase boxes grow by this, so small motions cost nothing
   double proximity_margin = 0.0;  // > 0: report non-overlapping pairs closer than this
+  bool contacts = false;          // a contact for every overlapping pair (contacts())
+  // With contacts: pairs apart by at most this get a contact too (speculative contacts, which let a
+  // solver stop bodies before they meet); also the manifold margin of ContactOptions.
+  double speculative_margin = 0.0;
 };
 
 struct Proximity {
   BodyId a;
   BodyId b;
   DistanceResult result;  // the distance and closest points, point_a on body a
+};
+
+struct BodyContact {
+  BodyId a;  // a.index < b.index
+  BodyId b;
+  Contact contact;  // of a's shape with b's: the normal points from a to b
 };
 
 struct RayHit {
@@ -75,6 +88,7 @@ struct FrameStats {
   std::size_t candidates = 0;   // pairs from the broad phase
   std::size_t overlapping = 0;  // confirmed by the narrow phase
   std::size_t proximity = 0;
+  std::size_t contacts = 0;
   double broad_seconds = 0.0;
   double narrow_seconds = 0.0;
 };
@@ -101,6 +115,8 @@ class World {
   const std::vector<BodyPair>& began() const { return began_; }
   const std::vector<BodyPair>& ended() const { return ended_; }
   const std::vector<Proximity>& proximity() const { return proximity_; }
+  // With contacts on: the overlapping pairs and the speculative ones, sorted like overlapping().
+  const std::vector<BodyContact>& contacts() const { return contacts_; }
   const FrameStats& last_frame() const { return stats_; }
 
   // Queries on the current poses (no update needed).
@@ -122,10 +138,13 @@ class World {
   std::vector<Body> bodies_;  // indexed by the broad phase's proxy id; live exactly when it has the id
   SweepAndPrune broad_;
   double proximity_margin_;
+  bool contacts_on_;
+  double speculative_margin_;
   std::vector<BodyPair> overlapping_;
   std::vector<BodyPair> began_;
   std::vector<BodyPair> ended_;
   std::vector<Proximity> proximity_;
+  std::vector<BodyContact> contacts_;
   FrameStats stats_;
 
   Body& body(BodyId id);

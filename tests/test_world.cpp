@@ -204,6 +204,54 @@ TEST(World, RayCastFindsTheFirstExactHit) {
   EXPECT_GT(hits, 50);
 }
 
+// Contacts: off by default and then empty; on, exactly the overlapping pairs (and, with a
+// speculative margin, the pairs whose contact separation is within it), each the contact the
+// narrow phase gives for the pair, in the order of overlapping(), over frames of motion.
+TEST(World, ContactsMatchAllPairsWhenAskedFor) {
+  for (const double margin : {0.0, 0.2}) {
+    Rng rng(11);
+    World world({.fat_margin = 0.05, .contacts = true, .speculative_margin = margin});
+    World plain({.fat_margin = 0.05});
+    for (int k = 0; k < 200; ++k) {
+      const Shape s = random_shape(rng, 12.0);
+      world.add(s);
+      plain.add(s);
+    }
+    for (int frame = 0; frame < 20; ++frame) {
+      for (const BodyId id : world.bodies()) {
+        const Vec2 shift(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+        world.move_by(id, shift, 0.03);
+        plain.move_by(id, shift, 0.03);
+      }
+      world.update();
+      plain.update();
+      EXPECT_TRUE(plain.contacts().empty());
+      EXPECT_EQ(plain.last_frame().contacts, 0u);
+      const std::vector<BodyId> ids = world.bodies();
+      std::vector<BodyContact> expected;
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        for (std::size_t j = i + 1; j < ids.size(); ++j) {
+          const Shape& a = world.shape(ids[i]);
+          const Shape& b = world.shape(ids[j]);
+          const Contact c = contact(a, b, {.margin = margin});
+          if (overlaps(a, b) || (margin > 0 && c.separation <= margin)) expected.push_back({ids[i], ids[j], c});
+        }
+      }
+      ASSERT_EQ(world.contacts().size(), expected.size()) << "frame " << frame;
+      for (std::size_t k = 0; k < expected.size(); ++k) {
+        const BodyContact& got = world.contacts()[k];
+        ASSERT_EQ(BodyPair(got.a, got.b), BodyPair(expected[k].a, expected[k].b)) << "frame " << frame;
+        ASSERT_EQ(got.contact.separation, expected[k].contact.separation);
+        ASSERT_EQ(got.contact.normal, expected[k].contact.normal);
+        ASSERT_EQ(got.contact.manifold_size, expected[k].contact.manifold_size);
+      }
+      EXPECT_EQ(world.last_frame().contacts, expected.size());
+      EXPECT_EQ(plain.overlapping(), world.overlapping());
+    }
+    EXPECT_GT(world.contacts().size(), world.overlapping().size() * (margin > 0 ? 1 : 0));
+  }
+}
+
 TEST(World, BadInputIsRefusedAndChangesNothing) {
   World world({.proximity_margin = 0.5});
   const BodyId a = world.add(Circle{Vec2(0, 0), 1}, 1);
@@ -219,6 +267,8 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   EXPECT_THROW(world.remove(BodyId{42, 1}), std::out_of_range);
   EXPECT_THROW(world.shape(BodyId{}), std::out_of_range);
   EXPECT_THROW(world.set_proximity_margin(-1), std::invalid_argument);
+  EXPECT_THROW(World({.contacts = true, .speculative_margin = -0.1}), std::invalid_argument);
+  EXPECT_THROW(World({.contacts = true, .speculative_margin = std::nan("")}), std::invalid_argument);
   EXPECT_THROW(world.within(Vec2(0, 0), nan), std::invalid_argument);
   EXPECT_THROW(world.ray_cast(Vec2(0, 0), Vec2(0, 0), 1), std::invalid_argument);
   EXPECT_THROW(world.overlapping(Aabb{Vec2(1, 1), Vec2(0, 0)}), std::invalid_argument);
