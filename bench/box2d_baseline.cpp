@@ -1,5 +1,6 @@
 #include "bench/box2d_baseline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -78,6 +79,36 @@ bool box2d_overlap(const ShapePair& pair) {
   b2Transform identity;
   identity.SetIdentity();
   return b2TestOverlap(pair.shape(0), 0, pair.shape(1), 0, identity, identity);
+}
+
+void box2d_manifold(const ShapePair& pair, b2Manifold* manifold) {
+  b2Transform identity;
+  identity.SetIdentity();
+  if (pair.round[0] && pair.round[1]) {
+    b2CollideCircles(manifold, &pair.circle[0], identity, &pair.circle[1], identity);
+  } else if (pair.round[1]) {
+    b2CollidePolygonAndCircle(manifold, &pair.polygon[0], identity, &pair.circle[1], identity);
+  } else if (pair.round[0]) {
+    b2CollidePolygonAndCircle(manifold, &pair.polygon[1], identity, &pair.circle[0], identity);
+  } else {
+    b2CollidePolygons(manifold, &pair.polygon[0], identity, &pair.polygon[1], identity);
+  }
+}
+
+std::optional<Box2dContact> box2d_contact(const ShapePair& pair) {
+  b2Manifold manifold;
+  box2d_manifold(pair, &manifold);
+  if (manifold.pointCount == 0) return std::nullopt;
+  const bool swapped = pair.round[0] && !pair.round[1];
+  const int first = swapped ? 1 : 0;
+  b2Transform identity;
+  identity.SetIdentity();
+  b2WorldManifold world;
+  world.Initialize(&manifold, identity, pair.shape(first)->m_radius, identity, pair.shape(1 - first)->m_radius);
+  double least = world.separations[0];
+  for (int i = 1; i < manifold.pointCount; ++i) least = std::min(least, static_cast<double>(world.separations[i]));
+  const Vec2 normal(world.normal.x, world.normal.y);
+  return Box2dContact{least, swapped ? Vec2(-normal) : normal};
 }
 
 }  // namespace collide2d::baseline

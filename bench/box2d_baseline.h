@@ -18,6 +18,7 @@
 #include <box2d/b2_distance.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <optional>
 #include <vector>
 
 namespace collide2d::baseline {
@@ -46,5 +47,18 @@ struct ShapePair {
 };
 ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b);
 bool box2d_overlap(const ShapePair& pair);
+
+// Box2D's contact manifold for the pair: b2CollidePolygons, b2CollidePolygonAndCircle or
+// b2CollideCircles by kind (a circle first is passed second, so the manifold is then B's against
+// A's). With radius-0 polygons Box2D keeps only points that overlap or touch.
+void box2d_manifold(const ShapePair& pair, b2Manifold* manifold);
+
+// The manifold read through b2WorldManifold: its least point separation (the signed distance
+// along its normal) and the normal from A to B; nullopt when it has no point.
+struct Box2dContact {
+  double separation;
+  Vec2 normal;
+};
+std::optional<Box2dContact> box2d_contact(const ShapePair& pair);
 
 }  // namespace collide2d::baseline

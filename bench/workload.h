@@ -47,4 +47,25 @@ const Workload<A, B>& workload() {
   return w;
 }
 
+// Candidate pairs, as a broad phase hands them over: the same generator, keeping the pairs whose
+// boxes overlap.
+template <class A, class B>
+const Workload<A, B>& candidate_workload() {
+  static const Workload<A, B> w = [] {
+    Generator g;
+    Workload<A, B> out;
+    while (out.a.size() < kPairs) {
+      A a;
+      B b;
+      g.make(a);
+      g.make(b);
+      if (!intersects(aabb(a), aabb(b))) continue;
+      out.a.push_back(a);
+      out.b.push_back(b);
+    }
+    return out;
+  }();
+  return w;
+}
+
 }  // namespace collide2d::bench

@@ -42,34 +42,47 @@
 
 namespace collide2d::detail {
 
+// A direction and what s does there, with the support points of its arcs' interior.
 template <class Real>
 struct ArcEnd {
   V2<Real> n;
-  Separation<Real> at;  // with the support points of the arc's interior
+  V2<Real> gap;  // delta - p_A - p_B
+  Real s;
+  Real slope;
+  Real bend;
+  Real rho_a;
+  Real rho_b;
+
+  template <class P>
+  static ArcEnd at(const P& p, const V2<Real>& n, const V2<Real>& side) {
+    const Separation<Real> e = p.separation(n, side);
+    return {n, e.gap, e.s, e.slope, e.bend, e.rho_a, e.rho_b};
+  }
 };
 
 template <class Real>
 struct Arc {
-  ArcEnd<Real> x;  // from x counter-clockwise to y, less than a half turn
-  ArcEnd<Real> y;
-  V2<Real> side;   // a direction inside, which picks a rectangle's corner
-  Real bound;      // no s on the arc exceeds it
+  int x;          // from ends[x] counter-clockwise to ends[y], less than a half turn
+  int y;
+  V2<Real> side;  // a direction inside, which picks a rectangle's corner
+  Real bound;     // no s on the arc exceeds it
 };
 
+// The candidates are tested for lying inside the arc before they are normalised (the test is
+// scale-free): most are outside, and each square root and division costs as much as the rest.
 template <class Real>
 Real arc_bound(const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
   using std::min;
-  const Real r = min(x.at.rho_a, y.at.rho_a) + min(x.at.rho_b, y.at.rho_b);
-  const V2<Real> gx = x.at.gap + r * x.n;
-  const V2<Real> gy = y.at.gap + r * y.n;
-  const auto value = [&](const V2<Real>& n) { return std::min(n.dot(gx), n.dot(gy)) - r; };
-  Real best = std::max(x.at.s, y.at.s);
+  using std::sqrt;
+  const Real r = min(x.rho_a, y.rho_a) + min(x.rho_b, y.rho_b);
+  const V2<Real> gx = x.gap + r * x.n;
+  const V2<Real> gy = y.gap + r * y.n;
+  Real best = std::max(x.s, y.s);
   const auto candidate = [&](const V2<Real>& v) {
-    using std::sqrt;
-    const Real length = sqrt(v.squaredNorm());
-    if (!(length > 0)) return;
-    const V2<Real> n = v / length;
-    if (cross(x.n, n) >= 0 && cross(n, y.n) >= 0) best = std::max(best, value(n));
+    if (cross(x.n, v) >= 0 && cross(v, y.n) >= 0) {
+      const Real length = sqrt(v.squaredNorm());
+      if (length > 0) best = std::max(best, std::min(v.dot(gx), v.dot(gy)) / length - r);
+    }
   };
   candidate(gx);
   candidate(gy);
@@ -87,28 +100,28 @@ struct Deepest {
   int evaluations = 0;
 };
 
-// The point inside the arc where s has its maximum (a root of s' by safeguarded Newton when the
-// slopes at the ends show one), or the bisector; x itself when no double lies between the ends.
+// The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
+// Newton when the slopes at the ends show one), or the bisector; x itself when no double lies
+// between the ends.
 template <class Real, class P>
-ArcEnd<Real> split(const P& p, const Arc<Real>& arc, int& evaluations) {
-  const V2<Real>& x = arc.x.n;
-  const auto inside = [&](const V2<Real>& n) { return cross(x, n) > 0 && cross(n, arc.y.n) > 0; };
-  if (arc.x.at.slope > 0 && arc.y.at.slope < 0) {
-    const Real end = cross(x, arc.y.n) / (1 + x.dot(arc.y.n));  // tan of half the arc's width
+ArcEnd<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, int& evaluations) {
+  const auto inside = [&](const V2<Real>& n) { return cross(x.n, n) > 0 && cross(n, y.n) > 0; };
+  if (x.slope > 0 && y.slope < 0) {
+    const Real end = cross(x.n, y.n) / (1 + x.n.dot(y.n));  // tan of half the arc's width
     const auto f = [&](Real tau) {
-      const Separation<Real> e = p.separation(turned(x, Real(1), tau), arc.side);
+      const Separation<Real> e = p.separation(turned(x.n, Real(1), tau), side);
       return std::pair<Real, Real>(e.slope, -e.bend * 2 / (1 + tau * tau));
     };
-    const std::pair<Real, Real> start(arc.x.at.slope, -arc.x.at.bend * 2);
+    const std::pair<Real, Real> start(x.slope, -x.bend * 2);
     const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
-    const V2<Real> n = turned(x, Real(1), tau);
+    const V2<Real> n = turned(x.n, Real(1), tau);
     ++evaluations;
-    if (inside(n)) return {n, p.separation(n, arc.side)};
+    if (inside(n)) return ArcEnd<Real>::at(p, n, side);
   }
-  const V2<Real> mid = (x + arc.y.n).normalized();
-  if (!inside(mid)) return arc.x;
+  const V2<Real> mid = (x.n + y.n).normalized();
+  if (!inside(mid)) return x;
   ++evaluations;
-  return {mid, p.separation(mid, arc.side)};
+  return ArcEnd<Real>::at(p, mid, side);
 }
 
 // The starting directions: the pair frame's axes (those of one shape) and, between them, the other
@@ -129,7 +142,8 @@ int starting_directions(const Rotation<Real>& other, V2<Real> (&ends)[9]) {
   return count;
 }
 
-// The global maximum of s. Stops after `cap` evaluations (then certified = false).
+// The global maximum of s. Stops after `cap` evaluations (then certified = false). The directions
+// and arcs live in buffers kept per thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 4096) {
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
@@ -137,40 +151,43 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
   // u of the scale (the pair's margin(), 64 u, left the 1e-12 target met but let a needle pair's
   // distance fall 138 u short).
   const Real margin = 8 * std::numeric_limits<Real>::epsilon() * p.scale;
+  thread_local std::vector<ArcEnd<Real>> ends;
+  thread_local std::vector<Arc<Real>> arcs;
+  ends.clear();
+  arcs.clear();
   Deepest<Real> best;
-  best.at.s = -std::numeric_limits<Real>::infinity();
-  const auto consider = [&best](const ArcEnd<Real>& e) {
-    if (e.at.s > best.at.s) best.n = e.n, best.at = e.at;
+  int best_end = 0;
+  V2<Real> best_side;
+  const auto consider = [&](int i, const V2<Real>& side) {
+    if (ends[static_cast<std::size_t>(i)].s > ends[static_cast<std::size_t>(best_end)].s) best_end = i, best_side = side;
   };
-  V2<Real> ends[9];
+  V2<Real> start[9];
   const bool a_is_frame = p.A.rot.c == 1 && p.A.rot.s == 0;
-  const int count = starting_directions(a_is_frame ? p.B.rot : p.A.rot, ends);
+  const int count = starting_directions(a_is_frame ? p.B.rot : p.A.rot, start);
   // Smooth shapes see one value per direction; a rectangle's corner depends on the arc.
-  Separation<Real> shared[9];
-  if (!sided) {
-    for (int k = 0; k < count; ++k) shared[k] = p.separation(ends[k]);
-    shared[count] = shared[0];
-  }
-  std::vector<Arc<Real>> arcs;
-  arcs.reserve(32);
   for (int k = 0; k < count; ++k) {
-    const V2<Real> side = (ends[k] + ends[k + 1]).normalized();
-    const auto end = [&](int i) {
-      return ArcEnd<Real>{ends[i], sided ? p.separation(ends[i], side) : shared[i]};
-    };
-    arcs.push_back({end(k), end(k + 1), side, Real(0)});
+    const V2<Real> side = (start[k] + start[k + 1]).normalized();
+    if (sided || k == 0) ends.push_back(ArcEnd<Real>::at(p, start[k], side));
+    const int x = static_cast<int>(ends.size()) - 1;
+    if (sided) {
+      ends.push_back(ArcEnd<Real>::at(p, start[k + 1], side));
+    } else if (k + 1 < count) {
+      ends.push_back(ArcEnd<Real>::at(p, start[k + 1], side));
+    }
+    const int y = sided || k + 1 < count ? static_cast<int>(ends.size()) - 1 : 0;
+    if (k == 0) best_side = side;
+    consider(x, side);
+    consider(y, side);
+    arcs.push_back({x, y, side, Real(0)});
   }
-  best.evaluations = sided ? 2 * count : count;
-  for (Arc<Real>& arc : arcs) {
-    consider(arc.x);
-    consider(arc.y);
-    arc.bound = arc_bound(arc.x, arc.y);
-  }
+  best.evaluations = static_cast<int>(ends.size());
+  for (Arc<Real>& arc : arcs) arc.bound = arc_bound(ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)]);
   while (!arcs.empty()) {
     const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {
       return l.bound < r.bound;
     });
-    if (top->bound <= best.at.s + margin) break;
+    const Real floor = ends[static_cast<std::size_t>(best_end)].s + margin;
+    if (top->bound <= floor) break;
     if (best.evaluations >= cap) {
       best.certified = false;
       break;
@@ -178,14 +195,19 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
     const Arc<Real> arc = *top;
     *top = arcs.back();
     arcs.pop_back();
-    const ArcEnd<Real> m = split(p, arc, best.evaluations);
-    if (m.n == arc.x.n) continue;  // no direction between the ends: they bound the arc
-    consider(m);
-    for (const auto& [x, y] : {std::pair{arc.x, m}, std::pair{m, arc.y}}) {
-      const Real bound = arc_bound(x, y);
-      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound});
+    const ArcEnd<Real> m = split(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)], arc.side,
+                                 best.evaluations);
+    if (m.n == ends[static_cast<std::size_t>(arc.x)].n) continue;  // no direction between the ends: they bound the arc
+    ends.push_back(m);
+    const int mi = static_cast<int>(ends.size()) - 1;
+    consider(mi, arc.side);
+    for (const auto& [x, y] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
+      const Real bound = arc_bound(ends[static_cast<std::size_t>(x)], ends[static_cast<std::size_t>(y)]);
+      if (bound > ends[static_cast<std::size_t>(best_end)].s + margin) arcs.push_back({x, y, arc.side, bound});
     }
   }
+  best.n = ends[static_cast<std::size_t>(best_end)].n;
+  best.at = p.separation(best.n, best_side);
   return best;
 }
 

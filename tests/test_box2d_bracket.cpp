@@ -113,5 +113,55 @@ TEST(Box2dBracket, OverlapOfPolygonsBracketsTheExactVerdict) {
   EXPECT_GT(decided, 2000);
 }
 
+
+// Contacts. The signed distance only grows when the shapes shrink (s(n) = n.delta - h_A - h_B), so
+// Box2D's manifold on the circumscribed N-gons gives a separation at most ours, and on the
+// inscribed ones at least ours (b2CollidePolygons: the polygons' exact depth by separating axes).
+// Box2D 2.4.1 caps a polygon at b2_maxPolygonVertices = 8, so N runs from 5 to 8 here; the bracket
+// narrows about as 1/N^2 ((8/5)^2 = 2.6). Box2D's normal is a polygon face's, off ours by up to
+// half a side's turn (pi / N).
+TEST(Box2dBracket, ContactDepthLiesBetweenCircumscribedAndInscribed) {
+  const auto pairs = random_pairs(3000, 14);
+  const int sides[2] = {5, 8};
+  std::vector<double> widths[2], turns[2];
+  int checked = 0;
+  for (const auto& [a, b] : pairs) {
+    const Contact c = contact(a, b);
+    if (c.separation > -0.05) continue;  // deep enough that the inscribed polygons overlap too
+    const Vec2 origin = center_of(a);
+    double width[2];
+    bool both = true;
+    for (int i = 0; i < 2; ++i) {
+      const auto outer = baseline::box2d_contact(baseline::to_box2d_shapes(
+          baseline::to_box2d(a, sides[i], Fit::circumscribed, origin), baseline::to_box2d(b, sides[i], Fit::circumscribed, origin)));
+      const auto inner = baseline::box2d_contact(baseline::to_box2d_shapes(
+          baseline::to_box2d(a, sides[i], Fit::inscribed, origin), baseline::to_box2d(b, sides[i], Fit::inscribed, origin)));
+      ASSERT_TRUE(outer) << "circumscribed polygons of an overlapping pair apart";
+      ASSERT_LE(outer->separation, c.separation + kFloatTolerance) << "sides " << sides[i];
+      if (!inner) {
+        both = false;
+        continue;
+      }
+      ASSERT_GE(inner->separation, c.separation - kFloatTolerance) << "sides " << sides[i];
+      width[i] = inner->separation - outer->separation;
+      turns[i].push_back(std::acos(std::clamp(outer->normal.dot(c.normal), -1.0, 1.0)));
+    }
+    if (!both) continue;
+    for (int i = 0; i < 2; ++i) widths[i].push_back(width[i]);
+    ++checked;
+  }
+  ASSERT_GT(checked, 300);
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  std::printf("[box2d bracket] contacts of %d overlapping pairs: median depth bracket %.3e at N = 5, %.3e at N = 8 "
+              "(ratio %.2f); median normal turn %.3e, %.3e rad\n",
+              checked, median(widths[0]), median(widths[1]), median(widths[0]) / median(widths[1]), median(turns[0]),
+              median(turns[1]));
+  EXPECT_GT(median(widths[0]) / median(widths[1]), 2.0);
+  EXPECT_LT(median(turns[1]), median(turns[0]));
+}
+
 }  // namespace
 }  // namespace collide2d

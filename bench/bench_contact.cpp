@@ -1,0 +1,68 @@
+// Contact kernels against Box2D 2.4.1's manifold functions on candidate pairs (boxes overlap, as a
+// broad phase hands them over; bench/workload.h): b2CollidePolygons on the rectangles' 4-gons and on
+// the ellipses' inscribed 8-gons (b2_maxPolygonVertices = 8 in 2.4.1: no larger polygon exists),
+// b2CollidePolygonAndCircle, b2CollideCircles. Box2D's shapes are built beforehand (not timed), with
+// radius 0, so its manifold is empty for pairs apart while ours carries their exact distance.
+#include "narrowphase/contact.h"
+
+#include "bench/box2d_baseline.h"
+#include "bench/workload.h"
+
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using bench::kPairs;
+
+template <class A, class B>
+void ours(benchmark::State& state, Contact (*fn)(const A&, const B&)) {
+  const auto& w = bench::candidate_workload<A, B>();
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fn(w.a[k], w.b[k]));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+Contact rect_rect(const Rect& a, const Rect& b) { return contact_rect_rect(a, b); }
+
+template <class A, class B>
+void box2d(benchmark::State& state) {
+  const auto& w = bench::candidate_workload<A, B>();
+  std::vector<baseline::ShapePair> pairs;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    const Vec2 origin = w.a[k].center;
+    pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], 8, baseline::Fit::inscribed, origin),
+                                              baseline::to_box2d(w.b[k], 8, baseline::Fit::inscribed, origin)));
+  }
+  std::size_t k = 0;
+  b2Manifold manifold;
+  for (auto _ : state) {
+    baseline::box2d_manifold(pairs[k], &manifold);
+    benchmark::DoNotOptimize(manifold);
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK_CAPTURE(ours, rect_rect, &rect_rect);
+BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons");
+BENCHMARK_CAPTURE(ours, rect_circle, &contact_rect_circle);
+BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle");
+BENCHMARK_CAPTURE(ours, circle_circle, &contact_circle_circle);
+BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle");
+BENCHMARK_CAPTURE(ours, rect_ellipse, &contact_rect_ellipse);
+BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon");
+BENCHMARK_CAPTURE(ours, circle_ellipse, &contact_circle_ellipse);
+BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon");
+BENCHMARK_CAPTURE(ours, ellipse_ellipse, &contact_ellipse_ellipse);
+BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons");
+
+}  // namespace
+}  // namespace collide2d
+
+BENCHMARK_MAIN();
