@@ -5,8 +5,9 @@
 //
 // Method: D. Eberly, "Distance from a Point to an Ellipse, an Ellipsoid, or a Hyperellipsoid"
 // (Geometric Tools, 2013): reflect into the first quadrant, reduce the Lagrange conditions to one
-// root of the secular function g(s) = (r0 z0 / (s + r0))^2 + (z1 / (s + 1))^2 - 1, which is convex
-// and strictly decreasing on the bracket [z1 - 1, |(r0 z0, z1)| - 1]. Where Eberly bisects to the
+// root of the secular function g(t) = (r0 z0 / (t + r0 - 1))^2 + (z1 / t)^2 - 1 (Eberly's s + 1 as
+// the unknown t, which keeps its relative precision where the root is tiny: inside, near the major
+// axis), convex and strictly decreasing on the bracket [z1, |(r0 z0, z1)|]. Where Eberly bisects to the
 // last bit (60 to ~1100 halvings), this takes Newton steps inside the bracket and bisects only when
 // a step would leave it: the same guaranteed bracket, quadratic convergence near the root. The axis
 // cases (a zero coordinate) are closed forms.
