@@ -13,8 +13,8 @@
 // point p_x found at the arc's end x, h(n) >= n.(p_x - r x) + r (the difference w satisfies
 // w'' + w = rho - r >= 0 with w = w' = 0 at x, so w(t) is the integral of sin(t - t') (rho - r)
 // >= 0 over less than a half turn); a rectangle's r is 0 and the disc its corner. Summed over both
-// shapes, with r the least radii on the arc (each radius is monotone between a shape's axes, and
-// the arcs never cross one, so the least is at an end),
+// shapes, with r the least radii on the arc (an ellipse's radius is least at an end of the arc
+// unless the arc holds its major axis' direction, where it is b^2 / a: rho_floor),
 //   s(n) <= n.(gap_x + r x) - r       (gap_x = delta - p_A - p_B at x), and the same from y,
 // and the maximum over the arc of the smaller of these two sinusoids lies at an end, at a peak of
 // either, or where they cross. It is exact for polygons and for circles (a concentric pair's s is
@@ -27,9 +27,9 @@
 // safeguarded Newton in tau = tan(angle / 2), any other arc at its bisector; the arc with the
 // highest bound goes first.
 //
-// The arcs start between the axes of both shapes (a rectangle's axes are its face normals, where
-// its support point jumps from corner to corner and s has its kinks), so that within an arc every
-// support point moves smoothly, s' exists, and each radius of curvature is monotone.
+// The arcs start as the four quarter turns between a rectangle's axes (its face normals, where its
+// support point jumps from corner to corner and s has its kinks), or between the frame's axes, so
+// that within an arc every support point moves smoothly and s' exists.
 #pragma once
 
 #include "narrowphase/ellipse_pair.h"
@@ -70,11 +70,10 @@ struct Arc {
 
 // The candidates are tested for lying inside the arc before they are normalised (the test is
 // scale-free): most are outside, and each square root and division costs as much as the rest.
-template <class Real>
-Real arc_bound(const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
-  using std::min;
+template <class Real, class P>
+Real arc_bound(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
   using std::sqrt;
-  const Real r = min(x.rho_a, y.rho_a) + min(x.rho_b, y.rho_b);
+  const Real r = p.A.rho_floor(x.n, y.n, x.rho_a, y.rho_a) + p.B.rho_floor(x.n, y.n, x.rho_b, y.rho_b);
   const V2<Real> gx = x.gap + r * x.n;
   const V2<Real> gy = y.gap + r * y.n;
   Real best = std::max(x.s, y.s);
@@ -101,16 +100,19 @@ struct Deepest {
 };
 
 // The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
-// Newton when the slopes at the ends show one), or the bisector; x itself when no double lies
-// between the ends.
+// Newton when the slopes at the ends show one beyond their rounding, `flat`), or the bisector; x
+// itself when no double lies between the ends. A slope within `flat` of 0 counts as 0: the
+// iteration stops there instead of bisecting its bracket down to the last bit.
 template <class Real, class P>
-ArcEnd<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, int& evaluations) {
+ArcEnd<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, Real flat,
+                   int& evaluations) {
+  using std::abs;
   const auto inside = [&](const V2<Real>& n) { return cross(x.n, n) > 0 && cross(n, y.n) > 0; };
-  if (x.slope > 0 && y.slope < 0) {
+  if (x.slope > flat && y.slope < -flat) {
     const Real end = cross(x.n, y.n) / (1 + x.n.dot(y.n));  // tan of half the arc's width
     const auto f = [&](Real tau) {
       const Separation<Real> e = p.separation(turned(x.n, Real(1), tau), side);
-      return std::pair<Real, Real>(e.slope, -e.bend * 2 / (1 + tau * tau));
+      return std::pair<Real, Real>(abs(e.slope) <= flat ? Real(0) : e.slope, -e.bend * 2 / (1 + tau * tau));
     };
     const std::pair<Real, Real> start(x.slope, -x.bend * 2);
     const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
@@ -124,22 +126,18 @@ ArcEnd<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, con
   return ArcEnd<Real>::at(p, mid, side);
 }
 
-// The starting directions: the pair frame's axes (those of one shape) and, between them, the other
-// shape's axes, counter-clockwise, the first repeated at the end.
-template <class Real>
-int starting_directions(const Rotation<Real>& other, V2<Real> (&ends)[9]) {
-  const V2<Real> e[4] = {V2<Real>(1, 0), V2<Real>(0, 1), V2<Real>(-1, 0), V2<Real>(0, -1)};
-  const V2<Real> d0(other.c, other.s);
-  const V2<Real> d[4] = {d0, perp(d0), -d0, -perp(d0)};
-  int count = 0;
-  for (int k = 0; k < 4; ++k) {
-    ends[count++] = e[k];
-    for (const V2<Real>& x : d) {
-      if (cross(e[k], x) > 0 && cross(x, e[(k + 1) % 4]) > 0) ends[count++] = x;
-    }
-  }
-  ends[count] = ends[0];
-  return count;
+// The four starting directions: the axes of the rectangle if there is one (its face normals, where
+// its corner changes), else of the pair's frame; the first repeated at the end.
+template <class Real, class SA, class SB>
+void starting_directions(const SupportPair<Real, SA, SB>& p, V2<Real> (&ends)[5]) {
+  V2<Real> axis(1, 0);
+  if constexpr (std::is_same_v<SA, RectSupport<Real>>) axis = V2<Real>(p.A.rot.c, p.A.rot.s);
+  if constexpr (std::is_same_v<SB, RectSupport<Real>>) axis = V2<Real>(p.B.rot.c, p.B.rot.s);
+  ends[0] = axis;
+  ends[1] = perp(axis);
+  ends[2] = -axis;
+  ends[3] = -perp(axis);
+  ends[4] = axis;
 }
 
 // The global maximum of s. Stops after `cap` evaluations (then certified = false). The directions
@@ -161,9 +159,9 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
   const auto consider = [&](int i, const V2<Real>& side) {
     if (ends[static_cast<std::size_t>(i)].s > ends[static_cast<std::size_t>(best_end)].s) best_end = i, best_side = side;
   };
-  V2<Real> start[9];
-  const bool a_is_frame = p.A.rot.c == 1 && p.A.rot.s == 0;
-  const int count = starting_directions(a_is_frame ? p.B.rot : p.A.rot, start);
+  V2<Real> start[5];
+  starting_directions(p, start);
+  const int count = 4;
   // Smooth shapes see one value per direction; a rectangle's corner depends on the arc.
   for (int k = 0; k < count; ++k) {
     const V2<Real> side = (start[k] + start[k + 1]).normalized();
@@ -181,7 +179,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
     arcs.push_back({x, y, side, Real(0)});
   }
   best.evaluations = static_cast<int>(ends.size());
-  for (Arc<Real>& arc : arcs) arc.bound = arc_bound(ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)]);
+  for (Arc<Real>& arc : arcs) arc.bound = arc_bound(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)]);
   while (!arcs.empty()) {
     const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {
       return l.bound < r.bound;
@@ -196,13 +194,13 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
     *top = arcs.back();
     arcs.pop_back();
     const ArcEnd<Real> m = split(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)], arc.side,
-                                 best.evaluations);
+                                 margin / 2, best.evaluations);
     if (m.n == ends[static_cast<std::size_t>(arc.x)].n) continue;  // no direction between the ends: they bound the arc
     ends.push_back(m);
     const int mi = static_cast<int>(ends.size()) - 1;
     consider(mi, arc.side);
     for (const auto& [x, y] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
-      const Real bound = arc_bound(ends[static_cast<std::size_t>(x)], ends[static_cast<std::size_t>(y)]);
+      const Real bound = arc_bound(p, ends[static_cast<std::size_t>(x)], ends[static_cast<std::size_t>(y)]);
       if (bound > ends[static_cast<std::size_t>(best_end)].s + margin) arcs.push_back({x, y, arc.side, bound});
     }
   }

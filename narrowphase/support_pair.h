@@ -61,6 +61,16 @@ struct EllipseSupport {
   }
   // The curve is smooth: no side to choose.
   Support<Real> at(const V2<Real>& n, const V2<Real>&) const { return at(n); }
+  // The least radius of curvature over the directions from x to y (less than a half turn), given
+  // its values there: rho = (ab)^2 / h^3 falls as h grows towards the major axis, so it is least at
+  // an end unless the arc holds the major axis' direction, where it is b^2 / a.
+  Real rho_floor(const V2<Real>& x, const V2<Real>& y, Real rho_x, Real rho_y) const {
+    using std::min;
+    const V2<Real> major = a >= b ? V2<Real>(rot.c, rot.s) : V2<Real>(-rot.s, rot.c);
+    const auto holds = [&](const V2<Real>& m) { return cross(x, m) >= 0 && cross(m, y) >= 0; };
+    if (holds(major) || holds(V2<Real>(-major))) return min(a, b) * min(a, b) / std::max(a, b);
+    return min(rho_x, rho_y);
+  }
 };
 
 // A rectangle's support point is the corner on the side of `side`, a direction in the same quarter
@@ -77,6 +87,7 @@ struct RectSupport {
     const V2<Real> offset = rot.apply(V2<Real>(l[0] >= 0 ? hx : -hx, l[1] >= 0 ? hy : -hy));
     return {offset, n.dot(offset), Real(0)};
   }
+  Real rho_floor(const V2<Real>&, const V2<Real>&, Real, Real) const { return 0; }
 };
 
 template <class Real>

@@ -111,8 +111,10 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
   int n = 0;
   if (options.answer == Answer::contact) {
     const Contact c = contact(q.a, q.b);
-    n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.separation, c.normal.x(),
-                      c.normal.y(), c.point_a.x(), c.point_a.y(), c.point_b.x(), c.point_b.y());
+    // + 0.0 prints a zero as 0, never -0 (a normal's sign of zero carries nothing).
+    n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.separation + 0.0,
+                      c.normal.x() + 0.0, c.normal.y() + 0.0, c.point_a.x() + 0.0, c.point_a.y() + 0.0,
+                      c.point_b.x() + 0.0, c.point_b.y() + 0.0);
   } else {
     const bool hit = overlaps(q.a, q.b, options.overlap);
     const DistanceResult d = options.answer == Answer::boundary ? boundary_distance(q.a, q.b, options.distance)
