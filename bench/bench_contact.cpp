@@ -30,6 +30,22 @@ void ours(benchmark::State& state, Contact (*fn)(const A&, const B&)) {
 
 Contact rect_rect(const Rect& a, const Rect& b) { return contact_rect_rect(a, b); }
 
+// With the orientations kept, as Box2D keeps its transforms.
+void rect_rect_oriented(benchmark::State& state) {
+  const auto& w = bench::candidate_workload<Rect, Rect>();
+  std::vector<Orientation> oa, ob;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    oa.push_back(Orientation::of(w.a[k].angle));
+    ob.push_back(Orientation::of(w.b[k].angle));
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(contact_rect_rect(w.a[k], oa[k], w.b[k], ob[k]));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 template <class A, class B>
 void box2d(benchmark::State& state) {
   const auto& w = bench::candidate_workload<A, B>();
@@ -50,6 +66,7 @@ void box2d(benchmark::State& state) {
 }
 
 BENCHMARK_CAPTURE(ours, rect_rect, &rect_rect);
+BENCHMARK(rect_rect_oriented)->Name("ours/rect_rect_oriented");
 BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons");
 BENCHMARK_CAPTURE(ours, rect_circle, &contact_rect_circle);
 BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle");

@@ -84,6 +84,9 @@ struct ContactOptions {
 Contact contact_circle_circle(const Circle& a, const Circle& b);
 Contact contact_rect_circle(const Rect& a, const Circle& b);
 Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options = {});
+// The same with each rectangle's Orientation::of(angle) kept by the caller (as Box2D keeps b2Rot).
+Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                          const Orientation& b_orientation, const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Ellipse& b);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b);
 Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b);

@@ -72,7 +72,8 @@ bool clip(std::array<Feature, 2>& seg, int j, double limit) {
   return true;
 }
 
-// The closest corners of two rectangles apart whose nearest features are corners.
+// The closest corners of two rectangles apart whose nearest features are corners (compared by
+// squared distance: one square root in all).
 Feature nearest_corners(const View& v) {
   Feature best{Vec2::Zero(), Vec2::Zero(), std::numeric_limits<double>::infinity(), 0, 0};
   for (const double rx : {-1.0, 1.0}) {
@@ -81,12 +82,13 @@ Feature nearest_corners(const View& v) {
       for (const double ix : {-1.0, 1.0}) {
         for (const double iy : {-1.0, 1.0}) {
           const Vec2 p = v.incident_point(Vec2(ix * v.inc_half.x(), iy * v.inc_half.y()));
-          const double d = (p - r).norm();
+          const double d = (p - r).squaredNorm();
           if (d < best.separation) best = {r, p, d, corner_index(rx, ry), corner_index(ix, iy)};
         }
       }
     }
   }
+  best.separation = std::sqrt(best.separation);
   return best;
 }
 
@@ -100,7 +102,12 @@ Feature nearest_corners(const View& v) {
 // A's faces: the separation is the exact maximum, and the ids change only where the geometry's
 // deepest face does.
 Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options) {
-  const detail::RectPairFrame f(a, b);
+  return contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle), options);
+}
+
+Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                          const Orientation& b_orientation, const ContactOptions& options) {
+  const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
   const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center),
                     false};

@@ -12,9 +12,10 @@ struct RectPairFrame {
   Vec2 b_center;            // B's centre in A's frame
 
   RectPairFrame(const Rect& a, const Rect& b)
-      : a_rot(Rotation<double>::of(a.angle)),
-        b_rel(Rotation<double>::of(b.angle).relative_to(a_rot)),
-        b_center(a_rot.apply_inverse(Vec2(b.center - a.center))) {}
+      : RectPairFrame(a, Rotation<double>::of(a.angle), b, Rotation<double>::of(b.angle)) {}
+  // With each rectangle's orientation given (the cosine and sine of its angle).
+  RectPairFrame(const Rect& a, const Rotation<double>& ra, const Rect& b, const Rotation<double>& rb)
+      : a_rot(ra), b_rel(rb.relative_to(ra)), b_center(ra.apply_inverse(Vec2(b.center - a.center))) {}
 };
 
 }  // namespace collide2d::detail
