@@ -2,6 +2,7 @@
 
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
+#include "narrowphase/contact.h"
 #include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/overlap_ellipse_ellipse.h"
 
@@ -22,7 +23,9 @@ struct Workload {
   std::vector<double> scale;
 };
 
-Workload make_workload(const ReportOptions& options) {
+// Pairs the generator draws until `keep` accepts `pairs` of them, with `reference` for each.
+template <class Keep, class Reference>
+Workload make_workload(const ReportOptions& options, Keep keep, Reference reference) {
   std::mt19937_64 rng(options.seed);
   const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
   const auto ellipse = [&] {
@@ -32,10 +35,10 @@ Workload make_workload(const ReportOptions& options) {
   Workload w;
   while (static_cast<int>(w.a.size()) < options.pairs) {
     const Ellipse a = ellipse(), b = ellipse();
-    if (overlap_ellipse_ellipse(a, b)) continue;
+    if (!keep(a, b)) continue;
     w.a.push_back(a);
     w.b.push_back(b);
-    w.reference.push_back(static_cast<double>(reference::ellipse_pair(a, b).distance));
+    w.reference.push_back(reference(a, b));
     w.scale.push_back(std::max({a.a, a.b, b.a, b.b, (b.center - a.center).norm()}));
   }
   return w;
@@ -64,7 +67,9 @@ MethodResult measure(const Workload& w, int repetitions, std::string method, int
 }  // namespace
 
 std::vector<MethodResult> measure_methods(const ReportOptions& options) {
-  const Workload w = make_workload(options);
+  const Workload w = make_workload(
+      options, [](const Ellipse& a, const Ellipse& b) { return !overlap_ellipse_ellipse(a, b); },
+      [](const Ellipse& a, const Ellipse& b) { return static_cast<double>(reference::ellipse_pair(a, b).distance); });
   std::vector<MethodResult> out;
   for (const auto& [name, m] : {std::pair{"robust", EllipseDistanceMethod::robust},
                                 std::pair{"gradient", EllipseDistanceMethod::gradient},
@@ -89,10 +94,37 @@ std::vector<MethodResult> measure_methods(const ReportOptions& options) {
   return out;
 }
 
-void print_report(const std::vector<MethodResult>& results, const ReportOptions& options, std::ostream& out) {
-  char line[160];
-  std::snprintf(line, sizeof line, "ellipse-ellipse distance, %d separated pairs, time = median of %d passes\n",
-                options.pairs, options.repetitions);
+std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) {
+  const Workload w = make_workload(
+      options,
+      [](const Ellipse& a, const Ellipse& b) {
+        return contact_ellipse_ellipse(a, b).separation < -0.02 * std::max({a.a, a.b, b.a, b.b});
+      },
+      [](const Ellipse& a, const Ellipse& b) { return static_cast<double>(reference::signed_distance(a, b).separation); });
+  std::vector<MethodResult> out;
+  out.push_back(measure(w, options.repetitions, "collide2d contact", 0,
+                        [&w](std::size_t k) { return contact_ellipse_ellipse(w.a[k], w.b[k]).separation; }));
+  for (const auto& [name, fit] : {std::pair{"box2d manifold inscribed", baseline::Fit::inscribed},
+                                  std::pair{"box2d manifold circumscribed", baseline::Fit::circumscribed}}) {
+    for (int sides = 5; sides <= 8; ++sides) {
+      std::vector<baseline::ShapePair> pairs;
+      for (std::size_t k = 0; k < w.a.size(); ++k) {
+        pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], sides, fit, w.a[k].center),
+                                                  baseline::to_box2d(w.b[k], sides, fit, w.a[k].center)));
+      }
+      out.push_back(measure(w, options.repetitions, name, sides, [&pairs](std::size_t k) {
+        const auto c = baseline::box2d_contact(pairs[k]);
+        return c ? c->separation : 0.0;
+      }));
+    }
+  }
+  return out;
+}
+
+void print_report(const std::vector<MethodResult>& results, const std::string& title, const ReportOptions& options,
+                  std::ostream& out) {
+  char line[200];
+  std::snprintf(line, sizeof line, "%s, time = median of %d passes\n", title.c_str(), options.repetitions);
   out << line;
   out << "| method | N | time per query | median error | max error |\n| --- | --- | --- | --- | --- |\n";
   for (const MethodResult& r : results) {

@@ -6,6 +6,12 @@
 // gradient and polynomial, and Box2D's b2Distance on the inscribed and on the circumscribed N-gons
 // for N = 8 ... 256. Time: the median over `repetitions` passes of the mean time per query in the
 // pass. Error: |d - d_ref| / max(size, centre distance), median and maximum over the pairs.
+//
+// Contacts: `pairs` overlapping ellipse pairs of the same generator, deeper than 2% of the larger
+// size; collide2d's contact() against Box2D's manifold (b2CollidePolygons) on the inscribed and
+// the circumscribed N-gons, N = 5 ... 8 (b2_maxPolygonVertices is 8 in 2.4.1). Error: |separation -
+// reference| / scale, the reference being the 50-digit signed distance (a scan of the dual
+// function); a Box2D manifold without points (inscribed polygons apart) counts as separation 0.
 #pragma once
 
 #include <iosfwd>
@@ -29,8 +35,11 @@ struct ReportOptions {
 };
 
 std::vector<MethodResult> measure_methods(const ReportOptions& options);
+std::vector<MethodResult> measure_contact_methods(const ReportOptions& options);
 
-void print_report(const std::vector<MethodResult>& results, const ReportOptions& options, std::ostream& out);
+// `title` heads the table, e.g. "ellipse-ellipse distance, 200 separated pairs".
+void print_report(const std::vector<MethodResult>& results, const std::string& title, const ReportOptions& options,
+                  std::ostream& out);
 
 // Time per query against error, log-log, one point per method and one curve per Box2D fit over N.
 // Errors below 1e-17 are drawn at 1e-17 (the floor of the axis).

@@ -1,4 +1,5 @@
-// collide2d_report: speed against error of every ellipse-ellipse distance method (bench/report.h).
+// collide2d_report: speed against error of every ellipse-ellipse distance method and of the contact
+// depth (bench/report.h).
 // Not installed: it links Box2D and the 50-digit reference, which the library and the collide2d
 // command do not.
 //   collide2d_report [--svg FILE] [--pairs N]
@@ -15,7 +16,9 @@ constexpr const char* kUsage =
     "usage: collide2d_report [--svg FILE] [--pairs N]\n"
     "  Times every ellipse-ellipse distance method (robust, gradient, polynomial, Box2D on\n"
     "  inscribed and circumscribed 8- to 256-gons) on N separated pairs (default 200) and\n"
-    "  measures its error against 50-digit arithmetic; prints a table, --svg plots it.\n";
+    "  measures its error against 50-digit arithmetic; prints a table, --svg plots it.\n"
+    "  Then the contact depth of N overlapping pairs: collide2d's contact() against Box2D's\n"
+    "  manifold on inscribed and circumscribed 5- to 8-gons (a second table).\n";
 
 int report(int argc, char** argv) {
   collide2d::report::ReportOptions options;
@@ -31,7 +34,12 @@ int report(int argc, char** argv) {
     }
   }
   const auto results = collide2d::report::measure_methods(options);
-  collide2d::report::print_report(results, options, std::cout);
+  collide2d::report::print_report(results, "ellipse-ellipse distance, " + std::to_string(options.pairs) + " separated pairs",
+                                  options, std::cout);
+  std::cout << '\n';
+  collide2d::report::print_report(collide2d::report::measure_contact_methods(options),
+                                  "ellipse-ellipse contact depth, " + std::to_string(options.pairs) + " overlapping pairs",
+                                  options, std::cout);
   collide2d::cli::write_svg_file(svg_path, "plot",
                                  [&results](std::ostream& out) { collide2d::report::write_report_svg(results, out); });
   return 0;

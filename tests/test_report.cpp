@@ -21,12 +21,28 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   EXPECT_EQ(results[3].sides, 8);
   EXPECT_EQ(results[8].sides, 256);
   std::ostringstream table, svg;
-  print_report(results, options, table);
+  print_report(results, "distance", options, table);
   write_report_svg(results, svg);
   EXPECT_NE(table.str().find("| box2d circumscribed | 256 |"), std::string::npos);
   std::size_t points = 0;
   for (std::size_t at = svg.str().find("r=\"4\""); at != std::string::npos; at = svg.str().find("r=\"4\"", at + 1)) ++points;
   EXPECT_EQ(points, results.size() + 5);  // one per measurement, one per legend entry
+}
+
+// The contact depth: ours exact, Box2D's manifolds closer as N grows from 5 to 8.
+TEST(Report, MeasuresTheContactDepth) {
+  const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 4};
+  const std::vector<MethodResult> results = measure_contact_methods(options);
+  ASSERT_EQ(results.size(), 1u + 2u * 4u);
+  EXPECT_EQ(results[0].method, "collide2d contact");
+  EXPECT_LE(results[0].max_error, 1e-15);
+  EXPECT_EQ(results[1].sides, 5);
+  EXPECT_EQ(results[4].sides, 8);
+  for (const std::size_t circumscribed : {5u, 8u}) EXPECT_EQ(results[circumscribed].method, "box2d manifold circumscribed");
+  EXPECT_LT(results[8].median_error, results[5].median_error);
+  std::ostringstream table;
+  print_report(results, "contact depth", options, table);
+  EXPECT_NE(table.str().find("| box2d manifold inscribed | 8 |"), std::string::npos);
 }
 
 }  // namespace
