@@ -60,14 +60,21 @@ std::array<Feature, 2> incident_face(const View& v, int k, double sigma) {
 }
 
 // Cuts the incident segment to the reference face's side planes (coordinate j within +-limit);
-// false when nothing is left.
+// false when nothing is left. A cut point lies on its plane exactly: interpolated, its j coordinate
+// would carry the rounding of the whole segment, and an incident face 1e20 long cut to a face 16
+// wide landed beyond the other plane (the fuzzer; the pair was then taken for two corners).
 bool clip(std::array<Feature, 2>& seg, int j, double limit) {
   for (const double sign : {-1.0, 1.0}) {
     const double d0 = sign * seg[0].on_inc[j] - limit, d1 = sign * seg[1].on_inc[j] - limit;
     if (d0 > 0 && d1 > 0) return false;
     const int id = sign < 0 ? 4 : 5;
-    if (d0 > 0) seg[0] = {Vec2::Zero(), seg[0].on_inc + (d0 / (d0 - d1)) * (seg[1].on_inc - seg[0].on_inc), 0, 0, id};
-    if (d1 > 0) seg[1] = {Vec2::Zero(), seg[1].on_inc + (d1 / (d1 - d0)) * (seg[0].on_inc - seg[1].on_inc), 0, 0, id};
+    const auto cut = [&](const Vec2& from, const Vec2& to, double d_from, double d_to) {
+      Vec2 p = from + (d_from / (d_from - d_to)) * (to - from);
+      p[j] = sign * limit;
+      return Feature{Vec2::Zero(), p, 0, 0, id};
+    };
+    if (d0 > 0) seg[0] = cut(seg[0].on_inc, seg[1].on_inc, d0, d1);
+    if (d1 > 0) seg[1] = cut(seg[1].on_inc, seg[0].on_inc, d1, d0);
   }
   return true;
 }

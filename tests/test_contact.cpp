@@ -251,6 +251,33 @@ TEST(ContactManifold, RectanglesResting) {
   EXPECT_NEAR((apart.normal - Vec2(1, 0.5) / std::sqrt(1.25)).norm(), 0, 1e-16);
 }
 
+// A face 6.9e20 long as the incident face of a face 16 wide: the cut points must land on the side
+// planes (interpolated along the long face they carried its rounding, 3.5e4, past the other plane,
+// and the pair was taken for two corners 3.5e20 apart; the fuzzer found it). The distance is the
+// gap between the parallel long sides.
+TEST(ContactManifold, LongIncidentFaceClipsToAShortReferenceFace) {
+  const Rect needle{{-3.8125, 10843966555981446}, {7.8125, 3.4621985169758506e+20}, -8};
+  const Rect box{{-8, -8}, {8, 8}, -8};
+  for (const bool swap : {false, true}) {
+    const Contact c = swap ? contact(box, needle) : contact(needle, box);
+    EXPECT_EQ(c.separation, distance(needle, box).distance) << swap;
+    EXPECT_EQ(c.manifold_size, 2) << swap;
+  }
+}
+
+// A box inside an ellipse 2.9e47 long of aspect 4,446: the bound on the ellipse's flat side (radius
+// of curvature 1.3e51) must not drown in the rounding of that radius (the search ran to its cap of
+// 4,096 evaluations; the fuzzer found it).
+TEST(ContactSearch, HugeFlatSideCertifiesWithinItsRounding) {
+  const Rect box{{-2.25, -2.25}, {2.25, 2.25}, 8.5884776959808324e-275};
+  const Ellipse needle{{8.3138050000613955e-275, 8.3138050000613955e-275}, 6.419116461067246e+43, 2.8545232667078439e+47,
+                       -13203.574554449877};
+  const Contact c = contact(box, needle);
+  EXPECT_LT(c.evaluations, 200);
+  const double reference = static_cast<double>(reference::signed_distance(box, needle).separation);
+  EXPECT_LE(std::abs(c.separation - reference), 8 * kU * 2.9e47);
+}
+
 TEST(ContactManifold, CurvedPairsGiveOnePoint) {
   const Contact c = contact(Ellipse{{0, 0}, 2, 1, 0.3}, Rect{{1, 1.2}, {0.5, 0.25}, 0.2});
   EXPECT_EQ(c.manifold_size, 1);

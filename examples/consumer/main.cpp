@@ -11,9 +11,11 @@ int main() {
   const DistanceResult d = distance(wall, rock);                   // 0 and a witness when overlapping
   std::printf("%g from (%g, %g) to (%g, %g)\n", d.distance,
               d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
+  const Contact c = contact(wall, rock);                           // how deep, along which normal, where
+  std::printf("separation %g along (%g, %g)\n", c.separation, c.normal.x(), c.normal.y());
 
   // Many bodies moving every frame: the World (sweep and prune, then the narrow phase).
-  World world({.fat_margin = 0.1, .proximity_margin = 0.5});
+  World world({.fat_margin = 0.1, .proximity_margin = 0.5, .contacts = true});
   const BodyId ship = world.add(Ellipse{Vec2(0, 0), 1.0, 0.3, 0.0}, /*user_id=*/1);
   world.add(Circle{Vec2(3, 0), 1.0}, 2);
   for (int frame = 0; frame < 3; ++frame) {
@@ -24,5 +26,6 @@ int main() {
                   static_cast<unsigned long long>(world.user_id(p.b)));
     }
     for (const Proximity& p : world.proximity()) std::printf("frame %d: %g apart\n", frame, p.result.distance);
+    for (const BodyContact& b : world.contacts()) std::printf("frame %d: %g deep\n", frame, -b.contact.separation);
   }
 }

@@ -3,10 +3,13 @@
 // Invalid shapes must be refused with InvalidShape; for valid ones the answers must be finite, the
 // overlap verdict must match the distance (0 exactly when overlapping), swapping A and B must swap
 // the result exactly, and moving both shapes by one rigid motion must keep the distance (to 1e-9 of
-// the scale).
+// the scale). The contact must be finite with a unit normal, its separation the distance when apart
+// and at most 0 when overlapping (to 1e-9 of the scale), the same both ways with the normal reversed,
+// and its search certified within its cap of support evaluations.
 #include "fuzz_input.h"
 #include "narrowphase/query.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -56,6 +59,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(hit == overlaps(b, a), "overlap symmetric");
   const DistanceResult back = distance(b, a);
   check(back.distance == d.distance && back.point_a == d.point_b, "distance symmetric");
+  const double reach = std::max({fuzz::extent(a), fuzz::extent(b), 1e-300});
+  const Contact c = contact(a, b);
+  check(std::isfinite(c.separation) && c.point_a.allFinite() && c.point_b.allFinite(), "contact finite");
+  check(std::abs(c.normal.norm() - 1) <= 1e-12, "contact normal unit");
+  check(hit ? c.separation <= 1e-9 * reach : std::abs(c.separation - d.distance) <= 1e-9 * reach,
+        "contact separation is the distance apart and not positive overlapping");
+  const Contact c_back = contact(b, a);
+  check(c_back.separation == c.separation && (c_back.normal == -c.normal || center_of(a) == center_of(b)),
+        "contact symmetric");
+  check(c.evaluations < 4096, "contact search certified within its cap");
   if (!std::holds_alternative<Rect>(a) && !std::holds_alternative<Rect>(b)) {
     const DistanceResult g = boundary_distance(a, b);
     check(std::isfinite(g.distance) && g.distance >= 0 && g.point_a.allFinite(), "boundary distance finite");
