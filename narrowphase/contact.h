@@ -55,7 +55,9 @@ struct Contact {
   Vec2 normal = Vec2::UnitX();       // unit, from A to B: moving B by -separation * normal leaves them touching
   // Apart: the closest points. Overlapping: the deepest points, the support point of A along
   // `normal` and of B along -normal (where a support set is a whole face, the point of it facing the
-  // other shape's deepest point). point_b - point_a = separation * normal.
+  // other shape's deepest point). point_b - point_a = separation * normal. One exception keeps both
+  // points on their shapes: where two rectangles' deepest corner lies beyond the reference face's
+  // ends, the incident face's deepest point within them stands in for it.
   Vec2 point_a = Vec2::Zero();
   Vec2 point_b = Vec2::Zero();
   // The manifold a solver stacks with: one point for curved pairs (the one above); for two

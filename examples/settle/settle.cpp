@@ -8,6 +8,7 @@
 #include <numbers>
 #include <ostream>
 #include <random>
+#include <sstream>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -250,21 +251,26 @@ SettleResult settle(const SettleOptions& options, std::ostream* progress) {
   return r;
 }
 
+// Strokes in the pile's units, not non-scaling pixels: renderers without vector-effect (rsvg) drew
+// them half a unit wide, wider than the bodies. The caption fits the width at 0.6 em a character.
 void write_settle_svg(const SettleResult& r, std::ostream& out) {
   double top = kWall;
   for (const Shape& s : r.shapes) top = std::max(top, aabb(s).max.y());
   top += kWall;
+  std::ostringstream caption;
+  caption << r.shapes.size() << " bodies at rest after " << r.seconds << " s (" << r.steps << " steps); deepest contact "
+          << r.max_penetration / r.smallest * 100 << "% of the smallest half-size";
   const double left = -kWall, right = r.width + kWall, bottom = -kWall;
-  const double w = right - left, font = 0.025 * w, h = top - bottom + 2 * font;
+  const double w = right - left, font = std::min(0.98 * w / (0.6 * static_cast<double>(caption.str().size())), 0.025 * w);
+  const double h = top - bottom + 2 * font;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << left << ' ' << -top << ' ' << w << ' ' << h
       << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * h / w) << "\">\n"
-      << "<style>.body{fill:#9db4cc;stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}"
-         ".wall{fill:#566573}text{font-family:sans-serif}</style>\n<g transform=\"scale(1,-1)\">\n";
+      << "<style>.body{fill:#9db4cc;stroke:#34495e;stroke-width:0.02}.wall{fill:#566573}text{font-family:sans-serif}</style>\n"
+      << "<g transform=\"scale(1,-1)\">\n";
   for (const Shape& s : r.walls) tool::svg_shape(out, s, "wall");
   for (const Shape& s : r.shapes) tool::svg_shape(out, s, "body");
   out << "</g>\n<text x=\"" << left + 0.01 * w << "\" y=\"" << -bottom + 1.5 * font << "\" font-size=\"" << font << "\">"
-      << r.shapes.size() << " bodies at rest after " << r.seconds << " s (" << r.steps << " steps); deepest contact "
-      << r.max_penetration / r.smallest * 100 << "% of the smallest half-size</text>\n</svg>\n";
+      << caption.str() << "</text>\n</svg>\n";
 }
 
 }  // namespace collide2d::settle
