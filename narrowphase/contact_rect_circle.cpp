@@ -26,7 +26,7 @@ Contact contact_rect_circle(const Rect& a, const Circle& b) {
   Vec2 on_a = q;
   double d;
   if (out_x && out_y) {
-    d = (p - q).norm();
+    d = std::hypot(p.x() - q.x(), p.y() - q.y());  // no denormal squares (contact_circle_circle.cpp)
     n = (p - q) / d;
   } else if (out_x || out_y) {
     const int k = out_x ? 0 : 1;

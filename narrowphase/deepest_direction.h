@@ -53,10 +53,10 @@ struct ArcEnd {
   Real rho_a;
   Real rho_b;
 
+  static ArcEnd of(const V2<Real>& n, const Separation<Real>& e) { return {n, e.gap, e.s, e.slope, e.bend, e.rho_a, e.rho_b}; }
   template <class P>
   static ArcEnd at(const P& p, const V2<Real>& n, const V2<Real>& side) {
-    const Separation<Real> e = p.separation(n, side);
-    return {n, e.gap, e.s, e.slope, e.bend, e.rho_a, e.rho_b};
+    return of(n, p.separation(n, side));
   }
 };
 
@@ -168,23 +168,24 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
   V2<Real> start[5];
   starting_directions(p, start);
   const int count = 4;
-  // Smooth shapes see one value per direction; a rectangle's corner depends on the arc.
+  // Smooth shapes see one value per direction; a rectangle's corner depends on the arc, so each
+  // start has a value for the arc before it and one for the arc after (one curved support for both).
+  V2<Real> sides[4];
+  for (int k = 0; k < count; ++k) sides[k] = (start[k] + start[k + 1]).normalized();
   for (int k = 0; k < count; ++k) {
-    const V2<Real> side = (start[k] + start[k + 1]).normalized();
-    if (sided || k == 0) ends.push_back(ArcEnd<Real>::at(p, start[k], side));
-    const int x = static_cast<int>(ends.size()) - 1;
-    if (sided) {
-      ends.push_back(ArcEnd<Real>::at(p, start[k + 1], side));
-    } else if (k + 1 < count) {
-      ends.push_back(ArcEnd<Real>::at(p, start[k + 1], side));
-    }
-    const int y = sided || k + 1 < count ? static_cast<int>(ends.size()) - 1 : 0;
-    if (k == 0) best_side = side;
-    consider(x, side);
-    consider(y, side);
-    arcs.push_back({x, y, side, Real(0)});
+    const std::array<Separation<Real>, 2> e = p.separations(start[k], sides[(k + 3) % 4], sides[k]);
+    ends.push_back(ArcEnd<Real>::of(start[k], e[0]));  // sided: 2k, as the end of arc k - 1
+    if (sided) ends.push_back(ArcEnd<Real>::of(start[k], e[1]));  // 2k + 1: as the start of arc k
   }
-  best.evaluations = static_cast<int>(ends.size());
+  const int per_start = sided ? 2 : 1;
+  best_side = sides[count - 1];  // ends[0] is the end of the last arc
+  for (int k = 0; k < count; ++k) {
+    const int x = per_start * k + per_start - 1, y = per_start * ((k + 1) % count);
+    consider(x, sides[k]);
+    consider(y, sides[k]);
+    arcs.push_back({x, y, sides[k], Real(0)});
+  }
+  best.evaluations = count;
   for (Arc<Real>& arc : arcs) arc.bound = arc_bound(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)]);
   while (!arcs.empty()) {
     const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {

@@ -36,18 +36,23 @@ struct EllipsePair : SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real
 
 // Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):
 // Newton steps from the latest point, and a step to mid(lo, hi) whenever Newton would leave the
-// bracket. Stops at a point where f is exactly 0, when the bracket reaches the last bits of the
+// bracket or would not take a step under half the last one (as in rtsafe: on either side of a
+// peak much sharper than its surroundings, a needle's flat side beside a far rectangle, Newton
+// swung from side to side with steps of one size, and 200 of them gained 1e-6 of the bracket).
+// Stops at a point where f is exactly 0, when the bracket reaches the last bits of the
 // parameter, or (unless only_at_zero) when a step does. `iterations` counts evaluations.
 template <class Real, class F, class Mid>
 Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& iterations, Mid mid,
                        bool only_at_zero = false) {
+  using std::abs;
   const auto tiny = [](Real step, Real at) {
-    return std::abs(step) <= 4 * std::numeric_limits<Real>::epsilon() * std::max(Real(1), std::abs(at));
+    return abs(step) <= 4 * std::numeric_limits<Real>::epsilon() * std::max(Real(1), abs(at));
   };
   Real t = lo;
+  Real last = std::numeric_limits<Real>::infinity();  // the last step's length
   for (int k = 0; k < 200; ++k) {
     Real next = t - cur.first / cur.second;
-    const bool newton = cur.second < 0 && next > lo && next < hi;
+    const bool newton = cur.second < 0 && next > lo && next < hi && abs(next - t) <= last / 2;
     // With only_at_zero, a step too small to move t (a derivative huge only locally, as at a kink)
     // gives way to the bracket instead of ending the search.
     if (!newton || (only_at_zero && tiny(next - t, t))) next = mid(lo, hi);
@@ -55,6 +60,7 @@ Real newton_in_bracket(F f, Real lo, Real hi, std::pair<Real, Real> cur, int& it
     const auto ev = f(next);
     ++iterations;
     const Real step = next - t;
+    last = abs(step);
     t = next;
     cur = ev;
     if (ev.first > 0) {

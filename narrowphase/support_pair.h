@@ -17,8 +17,10 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace collide2d::detail {
 
@@ -153,13 +155,24 @@ struct SupportPair {
 
   // s along the unit direction n, with each rectangle's corner taken on the side of `side`.
   Separation<Real> separation(const V2<Real>& n, const V2<Real>& side) const {
-    const Support<Real> sa = A.at(n, side);
-    const Support<Real> sb = B.at(n, side);
+    return combine(n, A.at(n, side), B.at(n, side));
+  }
+  Separation<Real> separation(const V2<Real>& n) const { return separation(n, n); }
+  // s along n with the corners of two sides of a rectangle's face normal n (the arcs before and
+  // after it): the curved shape's support is evaluated once for both.
+  std::array<Separation<Real>, 2> separations(const V2<Real>& n, const V2<Real>& before, const V2<Real>& after) const {
+    const Support<Real> a = A.at(n, before), b = B.at(n, before);
+    const Support<Real> a2 = std::is_same_v<SA, RectSupport<Real>> ? A.at(n, after) : a;
+    const Support<Real> b2 = std::is_same_v<SB, RectSupport<Real>> ? B.at(n, after) : b;
+    return {combine(n, a, b), combine(n, a2, b2)};
+  }
+
+ private:
+  Separation<Real> combine(const V2<Real>& n, const Support<Real>& sa, const Support<Real>& sb) const {
     const V2<Real> gap = delta - sa.offset - sb.offset;
     const Real s = n.dot(gap);
     return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset, sa.rho, sb.rho};
   }
-  Separation<Real> separation(const V2<Real>& n) const { return separation(n, n); }
 };
 
 }  // namespace collide2d::detail

@@ -278,6 +278,31 @@ TEST(ContactSearch, HugeFlatSideCertifiesWithinItsRounding) {
   EXPECT_LE(std::abs(c.separation - reference), 8 * kU * 2.9e47);
 }
 
+// A needle's flat side (aspect 9,440) facing a rectangle 8,604 away: s has a peak far sharper than
+// its surroundings, and Newton swung from side to side of it with steps of one size (every call ran
+// its 200 iterations, the search its cap, and the separation fell 1.1e-3 short; the fuzzer found
+// it). It now bisects whenever a step would not halve the last.
+TEST(ContactSearch, SharpPeakBesideAFarRectangle) {
+  const Rect box{{-8, 4}, {6.375, 5.6875}, 2};
+  const Ellipse needle{{-7.75, 8616.3496323525906}, 4.5, 0.00047666206976579019, 0};
+  const Contact c = contact(box, needle);
+  EXPECT_LT(c.evaluations, 100);
+  EXPECT_NEAR(c.separation, distance(box, needle).distance, 8 * kU * 8620);
+}
+
+// Centres 1e-160 apart: their difference squares to a denormal, and a normal from norm() came out
+// 1.00004 long (the fuzzer). The circle pairs, nearly concentric (a rectangle's corner, at least
+// 1e-50 from its centre, keeps differences beside it far above the denormals).
+TEST(ContactNormal, UnitWhenTheCentresNearlyCoincide) {
+  const Vec2 tiny(0, 1.1436311670790528e-160);
+  const Shape pairs[][2] = {{Circle{{7.9375, 0}, 8}, Circle{Vec2(7.9375, 0) + tiny, 6.125}},
+                            {Circle{{0, 0}, 1}, Ellipse{tiny, 2, 1, 0}}};
+  for (const auto& pair : pairs) {
+    const Contact c = contact(pair[0], pair[1]);
+    EXPECT_NEAR(c.normal.norm(), 1.0, 4 * kU) << shape_name(pair[0]) << "-" << shape_name(pair[1]);
+  }
+}
+
 TEST(ContactManifold, CurvedPairsGiveOnePoint) {
   const Contact c = contact(Ellipse{{0, 0}, 2, 1, 0.3}, Rect{{1, 1.2}, {0.5, 0.25}, 0.2});
   EXPECT_EQ(c.manifold_size, 1);
