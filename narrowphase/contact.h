@@ -71,8 +71,9 @@ struct Contact {
   std::span<const ContactPoint> points() const { return {manifold.data(), static_cast<std::size_t>(manifold_size)}; }
   // The same contact for the pair (B, A).
   Contact swapped() const;
-  // The single-point contact from the signed distance, normal and the two points.
-  static Contact of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b);
+  // The single-point contact from the signed distance, normal, the two points and their feature id.
+  static Contact of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
+                    std::uint32_t id = 0);
 };
 
 struct ContactOptions {

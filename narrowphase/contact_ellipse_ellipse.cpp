@@ -17,8 +17,7 @@ Contact contact_circle_ellipse(const Circle& a, const Ellipse& b) {
   const PointEllipseResult r = distance_point_ellipse(b.a, b.b, rot.apply_inverse(Vec2(a.center - b.center)));
   const Vec2 normal = -rot.apply(Vec2(r.closest.x() / (b.a * b.a), r.closest.y() / (b.b * b.b)).stableNormalized());
   const double separation = (r.inside ? -r.distance : r.distance) - a.radius;
-  Contact c = Contact::of(separation, normal, a.center + a.radius * normal, b.center + rot.apply(r.closest));
-  return c;
+  return Contact::of(separation, normal, a.center + a.radius * normal, b.center + rot.apply(r.closest));
 }
 
 }  // namespace collide2d

@@ -160,9 +160,7 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
     // From the corners' difference in the frame, not from the world points, whose rounding grows
     // with the offset of the pair from the origin.
     const Vec2 towards_inc = direction_to_world(Vec2((c.on_inc - c.on_ref) / c.separation));
-    Contact out = Contact::of(c.separation, v.ref_is_a ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b);
-    out.manifold[0].id = p.id;
-    return out;
+    return Contact::of(c.separation, v.ref_is_a ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b, p.id);
   }
   const Vec2 n_ref = k == 0 ? Vec2(sigma, 0) : Vec2(0, sigma);
   const Vec2 normal = (v.ref_is_a ? 1.0 : -1.0) * direction_to_world(n_ref);
@@ -179,8 +177,7 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
   Feature deepest = best > 0 || (cut && std::abs(deep.on_inc[j]) > v.ref_half[j]) ? face[0] : deep;
   if (best <= 0) deepest.separation = deep.separation;
   const ContactPoint main = on_face(deepest);
-  Contact out = Contact::of(main.separation, normal, main.point_a, main.point_b);
-  out.manifold[0].id = main.id;
+  Contact out = Contact::of(main.separation, normal, main.point_a, main.point_b, main.id);
   if (!cut) return out;
   const double keep = std::max(main.separation, 0.0) + options.margin;
   int size = 0;

@@ -4,19 +4,18 @@
 #include "narrowphase/contact.h"
 #include "narrowphase/deepest_direction.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace collide2d::detail {
 
 // The deepest points are the two support points where s'(n) vanishes to rounding. Elsewhere n is a
-// kink of s, or a maximum sharper than a double angle resolves (a needle's flat side: s'' ~ a^2 / b,
-// so the slope moves by that times an ulp of the angle between neighbouring directions): a rectangle's face normal, where its support set is the whole face, or a needle's
-// flat side, where its support point may sit anywhere along it, tip included (see at_maximum). Either way one shape's support point jumps as n
-// turns by a hair (1e-6 rad, wider than any such kink) and the other's barely moves: the steadier
-// point is kept, and its partner is that point moved by the separation along the normal.
+// kink of s (a rectangle's face normal, where its support set is the whole face), or a maximum
+// sharper than a double angle resolves (a needle's flat side, s'' ~ a^2 / b, where its support
+// point may sit anywhere along the side, tip included; see at_maximum). Either way one shape's
+// support point jumps as n turns by a hair (1e-6 rad, wider than any such kink) and the other's
+// barely moves: the steadier point is kept, and its partner is that point moved by the separation
+// along the normal.
 template <class SA, class SB>
 Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb) {
   const Deepest<double> d = deepest_direction(p);

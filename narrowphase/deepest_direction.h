@@ -54,10 +54,6 @@ struct ArcEnd {
   Real rho_b;
 
   static ArcEnd of(const V2<Real>& n, const Separation<Real>& e) { return {n, e.gap, e.s, e.slope, e.bend, e.rho_a, e.rho_b}; }
-  template <class P>
-  static ArcEnd at(const P& p, const V2<Real>& n, const V2<Real>& side) {
-    return of(n, p.separation(n, side));
-  }
 };
 
 template <class Real>
@@ -97,39 +93,44 @@ Real arc_bound(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
   return best;
 }
 
+// The global maximum: its direction, the separation there (with its support points), and the
+// support evaluations it took (the search stops at `cap` of them, uncertified; the tests and the
+// fuzzers require fewer).
 template <class Real>
-struct Deepest {
-  V2<Real> n = V2<Real>::UnitX();
-  Separation<Real> at;
-  bool certified = true;   // every other arc was bounded below s + its rounding (false: the cap was hit)
+struct Deepest : Direction<Real> {
   int evaluations = 0;
 };
 
 // The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
-// Newton when the slopes at the ends show one beyond their rounding, `flat`), or the bisector; x
-// itself when no double lies between the ends. A slope within `flat` of 0 counts as 0: the
-// iteration stops there instead of bisecting its bracket down to the last bit.
+// Newton when the slopes at the ends show one beyond their rounding, `flat`), or the bisector,
+// with s there; x itself when no double lies between the ends. A slope within `flat` of 0 counts
+// as 0: the iteration stops there instead of bisecting its bracket down to the last bit.
 template <class Real, class P>
-ArcEnd<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, Real flat,
-                   int& evaluations) {
+Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, Real flat,
+                      int& evaluations) {
   using std::abs;
   const auto inside = [&](const V2<Real>& n) { return cross(x.n, n) > 0 && cross(n, y.n) > 0; };
   if (x.slope > flat && y.slope < -flat) {
     const Real end = cross(x.n, y.n) / (1 + x.n.dot(y.n));  // tan of half the arc's width
+    Direction<Real> last;
+    Real last_tau = -1;
     const auto f = [&](Real tau) {
-      const Separation<Real> e = p.separation(turned(x.n, Real(1), tau), side);
-      return std::pair<Real, Real>(abs(e.slope) <= flat ? Real(0) : e.slope, -e.bend * 2 / (1 + tau * tau));
+      last = {turned(x.n, Real(1), tau), p.separation(turned(x.n, Real(1), tau), side)};
+      last_tau = tau;
+      return std::pair<Real, Real>(abs(last.at.slope) <= flat ? Real(0) : last.at.slope, -last.at.bend * 2 / (1 + tau * tau));
     };
     const std::pair<Real, Real> start(x.slope, -x.bend * 2);
     const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
-    const V2<Real> n = turned(x.n, Real(1), tau);
-    ++evaluations;
-    if (inside(n)) return ArcEnd<Real>::at(p, n, side);
+    if (tau != last_tau) {  // the iteration ended on a point it had left
+      ++evaluations;
+      f(tau);
+    }
+    if (inside(last.n)) return last;
   }
   const V2<Real> mid = (x.n + y.n).normalized();
-  if (!inside(mid)) return x;
+  if (!inside(mid)) return {x.n, Separation<Real>{}};
   ++evaluations;
-  return ArcEnd<Real>::at(p, mid, side);
+  return {mid, p.separation(mid, side)};
 }
 
 // The four starting directions: the axes of the rectangle if there is one (its face normals, where
@@ -146,8 +147,8 @@ void starting_directions(const SupportPair<Real, SA, SB>& p, V2<Real> (&ends)[5]
   ends[4] = axis;
 }
 
-// The global maximum of s. Stops after `cap` evaluations (then certified = false). The directions
-// and arcs live in buffers kept per thread, so that a query allocates nothing once warm.
+// The global maximum of s. The directions and arcs live in buffers kept per thread, so that a
+// query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 4096) {
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
@@ -160,59 +161,46 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
   ends.clear();
   arcs.clear();
   Deepest<Real> best;
-  int best_end = 0;
-  V2<Real> best_side;
-  const auto consider = [&](int i, const V2<Real>& side) {
-    if (ends[static_cast<std::size_t>(i)].s > ends[static_cast<std::size_t>(best_end)].s) best_end = i, best_side = side;
+  best.at.s = -std::numeric_limits<Real>::infinity();
+  const auto add = [&](const V2<Real>& n, const Separation<Real>& e) {
+    ends.push_back(ArcEnd<Real>::of(n, e));
+    if (e.s > best.at.s) best.n = n, best.at = e;
+    return static_cast<int>(ends.size()) - 1;
   };
+  const auto end = [&](int i) -> const ArcEnd<Real>& { return ends[static_cast<std::size_t>(i)]; };
   V2<Real> start[5];
   starting_directions(p, start);
-  const int count = 4;
   // Smooth shapes see one value per direction; a rectangle's corner depends on the arc, so each
   // start has a value for the arc before it and one for the arc after (one curved support for both).
   V2<Real> sides[4];
-  for (int k = 0; k < count; ++k) sides[k] = (start[k] + start[k + 1]).normalized();
-  for (int k = 0; k < count; ++k) {
+  for (int k = 0; k < 4; ++k) sides[k] = (start[k] + start[k + 1]).normalized();
+  int before[4], after[4];  // the ends at start[k] as seen from the arcs k - 1 and k
+  for (int k = 0; k < 4; ++k) {
     const std::array<Separation<Real>, 2> e = p.separations(start[k], sides[(k + 3) % 4], sides[k]);
-    ends.push_back(ArcEnd<Real>::of(start[k], e[0]));  // sided: 2k, as the end of arc k - 1
-    if (sided) ends.push_back(ArcEnd<Real>::of(start[k], e[1]));  // 2k + 1: as the start of arc k
+    before[k] = add(start[k], e[0]);
+    after[k] = sided ? add(start[k], e[1]) : before[k];
   }
-  const int per_start = sided ? 2 : 1;
-  best_side = sides[count - 1];  // ends[0] is the end of the last arc
-  for (int k = 0; k < count; ++k) {
-    const int x = per_start * k + per_start - 1, y = per_start * ((k + 1) % count);
-    consider(x, sides[k]);
-    consider(y, sides[k]);
-    arcs.push_back({x, y, sides[k], Real(0)});
+  for (int k = 0; k < 4; ++k) {
+    const int x = after[k], y = before[(k + 1) % 4];
+    arcs.push_back({x, y, sides[k], arc_bound(p, end(x), end(y))});
   }
-  best.evaluations = count;
-  for (Arc<Real>& arc : arcs) arc.bound = arc_bound(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)]);
-  while (!arcs.empty()) {
+  best.evaluations = 4;
+  while (!arcs.empty() && best.evaluations < cap) {
     const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {
       return l.bound < r.bound;
     });
-    const Real floor = ends[static_cast<std::size_t>(best_end)].s + margin;
-    if (top->bound <= floor) break;
-    if (best.evaluations >= cap) {
-      best.certified = false;
-      break;
-    }
+    if (top->bound <= best.at.s + margin) break;
     const Arc<Real> arc = *top;
     *top = arcs.back();
     arcs.pop_back();
-    const ArcEnd<Real> m = split(p, ends[static_cast<std::size_t>(arc.x)], ends[static_cast<std::size_t>(arc.y)], arc.side,
-                                 margin / 2, best.evaluations);
-    if (m.n == ends[static_cast<std::size_t>(arc.x)].n) continue;  // no direction between the ends: they bound the arc
-    ends.push_back(m);
-    const int mi = static_cast<int>(ends.size()) - 1;
-    consider(mi, arc.side);
+    const Direction<Real> m = split(p, end(arc.x), end(arc.y), arc.side, margin / 2, best.evaluations);
+    if (m.n == end(arc.x).n) continue;  // no direction between the ends: they bound the arc
+    const int mi = add(m.n, m.at);
     for (const auto& [x, y] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
-      const Real bound = arc_bound(p, ends[static_cast<std::size_t>(x)], ends[static_cast<std::size_t>(y)]);
-      if (bound > ends[static_cast<std::size_t>(best_end)].s + margin) arcs.push_back({x, y, arc.side, bound});
+      const Real bound = arc_bound(p, end(x), end(y));
+      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound});
     }
   }
-  best.n = ends[static_cast<std::size_t>(best_end)].n;
-  best.at = p.separation(best.n, best_side);
   return best;
 }
 
