@@ -12,13 +12,6 @@
 namespace collide2d::settle {
 namespace {
 
-double area(const Shape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return 3.141592653589793 * c->radius * c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return 3.141592653589793 * e->a * e->b;
-  const Vec2& h = std::get<Rect>(s).half_extents;
-  return 4 * h.x() * h.y();
-}
-
 TEST(Settle, SmallPileComesToRestInsideTheBox) {
   const SettleResult r = settle({.bodies = 150, .width = 8.0, .seed = 3});
   std::printf("[settle] %zu bodies at rest %d after %.2f s (%d steps): fastest %.2e, deepest %.2e = %.3f%% of %.3f, %d outside\n",

@@ -24,8 +24,8 @@ constexpr double kLargest = 0.4;     // the largest half-extent of a body
 constexpr double kDrag = 1.0;        // a light drag on every body (per second), which hastens the rest
 constexpr double kCell = 2 * kLargest + 0.05;
 
+// A body's motion; its shape and pose live in the World.
 struct Body {
-  Shape shape;
   Vec2 velocity = Vec2::Zero();
   double spin = 0.0;
   double mass = 0.0;  // 0: a wall, which never moves
@@ -43,13 +43,6 @@ struct Spring {
   Vec2 stretch;
   auto key() const { return std::tie(a, b, id); }
 };
-
-double area(const Shape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return std::numbers::pi * c->radius * c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::numbers::pi * e->a * e->b;
-  const Vec2& h = std::get<Rect>(s).half_extents;
-  return 4 * h.x() * h.y();
-}
 
 // The moment of inertia of the uniform solid about its centre, per unit mass.
 double inertia_per_mass(const Shape& s) {
@@ -96,20 +89,20 @@ class Pile {
     for (int k = 0; k < options.bodies; ++k) {
       const Vec2 cell(kCell * (k % columns + 0.5), kCell * (k / columns + 0.5));
       const Vec2 jitter(std::uniform_real_distribution<double>(-0.02, 0.02)(rng), 0.0);
-      bodies_.emplace_back().shape = random_shape(rng, k, Vec2(cell + jitter));
-      Body& b = bodies_.back();
-      b.mass = area(b.shape);
-      b.inertia = b.mass * inertia_per_mass(b.shape);
+      const Shape shape = random_shape(rng, k, Vec2(cell + jitter));
+      Body& b = bodies_.emplace_back();
+      b.mass = area(shape);
+      b.inertia = b.mass * inertia_per_mass(shape);
+      b.id = world_.add(shape, bodies_.size() - 1);
       total_area += b.mass;
-      smallest_ = std::min(smallest_, smallest_half_size(b.shape));
+      smallest_ = std::min(smallest_, smallest_half_size(shape));
     }
     height_ = kCell * (options.bodies / columns + 2);
     for (const Rect& wall : {Rect{Vec2(width_ / 2, -kWall / 2), Vec2(width_ / 2 + kWall, kWall / 2), 0.0},
                              Rect{Vec2(-kWall / 2, height_ / 2), Vec2(kWall / 2, height_ / 2), 0.0},
                              Rect{Vec2(width_ + kWall / 2, height_ / 2), Vec2(kWall / 2, height_ / 2), 0.0}}) {
-      bodies_.emplace_back().shape = wall;
+      bodies_.emplace_back().id = world_.add(wall, bodies_.size());
     }
-    for (std::size_t i = 0; i < bodies_.size(); ++i) bodies_[i].id = world_.add(bodies_[i].shape, i);
     stiffness_ = stiffness_for(total_area, width_, smallest_);
     // 0.15 sqrt(m / k) for the lightest body: a body pressed by several contacts, their lever arms
     // turning it, vibrates several times faster than one contact alone (at twelve steps to a
@@ -152,7 +145,6 @@ class Pile {
       b.velocity = drag * (b.velocity + forces_[i] / b.mass * step_);
       b.spin = drag * (b.spin + torques_[i] / b.inertia * step_);
       world_.move_by(b.id, b.velocity * step_, b.spin * step_);
-      b.shape = world_.shape(b.id);
     }
     return deepest;
   }
@@ -168,7 +160,7 @@ class Pile {
     SettleResult r;
     r.width = width_;
     r.smallest = smallest_;
-    for (const Body& b : bodies_) (b.mass > 0 ? r.shapes : r.walls).push_back(b.shape);
+    for (const Body& b : bodies_) (b.mass > 0 ? r.shapes : r.walls).push_back(world_.shape(b.id));
     const double tolerance = 0.01 * smallest_;
     for (const Shape& s : r.shapes) {
       const Aabb box = aabb(s);
@@ -187,7 +179,7 @@ class Pile {
     const Body& a = bodies_[i];
     const Body& b = bodies_[j];
     const Vec2 at = 0.5 * (p.point_a + p.point_b);
-    const Vec2 ra = at - center_of(a.shape), rb = at - center_of(b.shape);
+    const Vec2 ra = at - center_of(world_.shape(a.id)), rb = at - center_of(world_.shape(b.id));
     const Vec2 relative = b.velocity + cross(b.spin, rb) - a.velocity - cross(a.spin, ra);
     const double approach = relative.dot(normal);
     const double mass = a.mass == 0 ? b.mass : b.mass == 0 ? a.mass : a.mass * b.mass / (a.mass + b.mass);
@@ -227,6 +219,13 @@ class Pile {
 };
 
 }  // namespace
+
+double area(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return std::numbers::pi * c->radius * c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::numbers::pi * e->a * e->b;
+  const Vec2& h = std::get<Rect>(s).half_extents;
+  return 4 * h.x() * h.y();
+}
 
 SettleResult settle(const SettleOptions& options, std::ostream* progress) {
   Pile pile(options);
