@@ -30,12 +30,7 @@ using bench::workload;
 template <class A, class B, class Result>
 void kernel(benchmark::State& state, Result (*fn)(const A&, const B&)) {
   const Workload<A, B>& w = workload<A, B>();
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(fn(w.a[k], w.b[k]));
-    k = (k + 1) & (kPairs - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::time_queries(state, [&](std::size_t k) { return fn(w.a[k], w.b[k]); });
 }
 
 bool minkowski(const Rect& r, const Ellipse& e) { return overlap_rect_ellipse(r, e, RectEllipseMethod::minkowski); }
@@ -75,12 +70,7 @@ void boundary_ellipse_ellipse_nested(benchmark::State& state) {
     }
     return out;
   }();
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(boundary_distance_ellipse_ellipse(w.a[k], w.b[k]));
-    k = (k + 1) & (kPairs - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::time_queries(state, [&](std::size_t k) { return boundary_distance_ellipse_ellipse(w.a[k], w.b[k]); });
 }
 BENCHMARK(boundary_ellipse_ellipse_nested);
 
@@ -124,24 +114,14 @@ void box2d_overlap_rect_ellipse_8gon(benchmark::State& state) {
   const auto b = polygons<Rect, Ellipse>(8, false);
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) pairs.push_back(baseline::to_box2d_shapes(a[k], b[k]));
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(baseline::box2d_overlap(pairs[k]));
-    k = (k + 1) & (kPairs - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_overlap(pairs[k]); });
 }
 
 void box2d_distance_ellipse_ellipse(benchmark::State& state) {
   const int sides = static_cast<int>(state.range(0));
   const auto a = polygons<Ellipse, Ellipse>(sides, true);
   const auto b = polygons<Ellipse, Ellipse>(sides, false);
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(baseline::box2d_distance(a[k], b[k]));
-    k = (k + 1) & (kPairs - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_distance(a[k], b[k]); });
 }
 
 // The Minkowski test with each shape's orientation kept, as Box2D keeps its polygons' transforms.
@@ -152,12 +132,7 @@ void overlap_rect_ellipse_minkowski_oriented(benchmark::State& state) {
     ro.push_back(Orientation::of(w.a[k].angle));
     eo.push_back(Orientation::of(w.b[k].angle));
   }
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(overlap_rect_ellipse(w.a[k], ro[k], w.b[k], eo[k]));
-    k = (k + 1) & (kPairs - 1);
-  }
-  state.SetItemsProcessed(state.iterations());
+  bench::time_queries(state, [&](std::size_t k) { return overlap_rect_ellipse(w.a[k], ro[k], w.b[k], eo[k]); });
 }
 
 BENCHMARK(overlap_rect_ellipse_minkowski_oriented);

@@ -4,6 +4,8 @@
 
 #include "shapes/shapes.h"
 
+#include <benchmark/benchmark.h>
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -17,6 +19,17 @@ struct Workload {
   std::vector<A> a;
   std::vector<B> b;
 };
+
+// Runs query(k) once per benchmark iteration, k cycling over the pairs.
+template <class Query>
+void time_queries(benchmark::State& state, Query query) {
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(query(k));
+    k = (k + 1) & (kPairs - 1);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
 
 // Random centres in a 4 x 4 square, sizes log-uniform in [0.05, 1], ellipse aspect up to `aspect`.
 struct Generator {
