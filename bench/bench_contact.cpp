@@ -1,7 +1,8 @@
 // Contact kernels against Box2D 2.4.1's manifold functions on candidate pairs (boxes overlap, as a
 // broad phase hands them over; bench/workload.h): b2CollidePolygons on the rectangles' 4-gons and on
-// the ellipses' inscribed 8-gons (b2_maxPolygonVertices = 8 in 2.4.1: no larger polygon exists),
-// b2CollidePolygonAndCircle, b2CollideCircles. Box2D's shapes are built beforehand (not timed), with
+// the ellipses' inscribed 8-gons, b2CollidePolygonAndCircle, b2CollideCircles. Debian's Box2D caps
+// polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt
+// with a cap of 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with
 // radius 0, so its manifold is empty for pairs apart while ours carries their exact distance.
 #include "narrowphase/contact.h"
 
@@ -36,14 +37,14 @@ void rect_rect_oriented(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return contact_rect_rect(w.a[k], oa[k], w.b[k], ob[k]); });
 }
 
-template <class A, class B>
+template <class A, class B, int Sides = 8>
 void box2d(benchmark::State& state) {
   const auto& w = bench::candidate_workload<A, B>();
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
     const Vec2 origin = w.a[k].center;
-    pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], 8, baseline::Fit::inscribed, origin),
-                                              baseline::to_box2d(w.b[k], 8, baseline::Fit::inscribed, origin)));
+    pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], Sides, baseline::Fit::inscribed, origin),
+                                              baseline::to_box2d(w.b[k], Sides, baseline::Fit::inscribed, origin)));
   }
   b2Manifold manifold;
   // box2d_manifold is compiled apart (the baseline library): the call cannot be optimised away.
@@ -66,6 +67,11 @@ BENCHMARK_CAPTURE(ours, circle_ellipse, &contact_circle_ellipse);
 BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon");
 BENCHMARK_CAPTURE(ours, ellipse_ellipse, &contact_ellipse_ellipse);
 BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons");
+#if b2_maxPolygonVertices >= 16
+BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon");
+BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon");
+BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons");
+#endif
 
 }  // namespace
 }  // namespace collide2d
