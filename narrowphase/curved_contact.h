@@ -9,6 +9,15 @@
 
 namespace collide2d::detail {
 
+// Whether n is exactly one of the rectangle's face normals (the climb and the search start from
+// them, and a face contact's maximum stays there): the rectangle's support point is then the one
+// that jumps, and no probing is needed to tell.
+inline bool on_face_normal(const RectSupport<double>& r, const V2<double>& n) {
+  const V2<double> x(r.rot.c, r.rot.s);
+  return cross(x, n) == 0 || x.dot(n) == 0;
+}
+inline bool on_face_normal(const EllipseSupport<double>&, const V2<double>&) { return false; }
+
 // The deepest points are the two support points where s'(n) vanishes to rounding. Elsewhere n is a
 // kink of s (a rectangle's face normal, where its support set is the whole face), or a maximum
 // sharper than a double angle resolves (a needle's flat side, s'' ~ a^2 / b, where its support
@@ -24,7 +33,11 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   const Vec2 off_a = p.to_world(e.offset_a), off_b = p.to_world(e.offset_b);
   const double rounding = 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
   Vec2 pa = ca + off_a, pb = cb - off_b;
-  if (!(std::abs(e.slope) <= rounding)) {
+  if (on_face_normal(p.A, d.n)) {
+    pa = pb - e.s * normal;
+  } else if (on_face_normal(p.B, d.n)) {
+    pb = pa + e.s * normal;
+  } else if (!(std::abs(e.slope) <= rounding)) {
     const V2<double> hair = 1e-6 * perp(d.n);
     const V2<double> before = (d.n - hair).normalized(), after = (d.n + hair).normalized();
     const Separation<double> x = p.separation(before, before), y = p.separation(after, after);

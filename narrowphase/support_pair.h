@@ -70,9 +70,11 @@ struct EllipseSupport {
     using std::min;
     const V2<Real> major = a >= b ? V2<Real>(rot.c, rot.s) : V2<Real>(-rot.s, rot.c);
     const auto holds = [&](const V2<Real>& m) { return cross(x, m) >= 0 && cross(m, y) >= 0; };
-    if (holds(major) || holds(V2<Real>(-major))) return min(a, b) * min(a, b) / std::max(a, b);
+    if (holds(major) || holds(V2<Real>(-major))) return rho_min();
     return min(rho_x, rho_y);
   }
+  // The least radius of curvature, at the ends of the major axis.
+  Real rho_min() const { return std::min(a, b) * std::min(a, b) / std::max(a, b); }
 };
 
 // A rectangle's support point is the corner on the side of `side`, a direction in the same quarter
@@ -90,6 +92,17 @@ struct RectSupport {
     return {offset, n.dot(offset), Real(0)};
   }
   Real rho_floor(const V2<Real>&, const V2<Real>&, Real, Real) const { return 0; }
+  // The signed distance from q (relative to the centre) to the solid rectangle.
+  Real signed_distance(const V2<Real>& q) const {
+    using std::abs;
+    using std::max;
+    using std::sqrt;
+    const V2<Real> l = rot.apply_inverse(q);
+    const Real dx = abs(l[0]) - hx, dy = abs(l[1]) - hy;
+    if (dx <= 0 && dy <= 0) return max(dx, dy);
+    const Real ox = max(dx, Real(0)), oy = max(dy, Real(0));
+    return sqrt(ox * ox + oy * oy);
+  }
 };
 
 template <class Real>
