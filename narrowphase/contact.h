@@ -83,15 +83,22 @@ struct ContactOptions {
   double margin = 0.0;
 };
 
-// The typed kernels, shapes in the dispatch order of query.h. They assume valid shapes.
+// The typed kernels, shapes in the dispatch order of query.h. They assume valid shapes. Each has
+// an overload taking the orientations (Orientation::of(angle)) the caller keeps, as Box2D keeps
+// b2Rot: it skips the cosines and sines, and returns the same result bit for bit.
 Contact contact_circle_circle(const Circle& a, const Circle& b);
 Contact contact_rect_circle(const Rect& a, const Circle& b);
+Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b);
 Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options = {});
-// The same with each rectangle's Orientation::of(angle) kept by the caller (as Box2D keeps b2Rot).
 Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
                           const Orientation& b_orientation, const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Ellipse& b);
+Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b);
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation);
 Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                const Orientation& b_orientation);
 
 }  // namespace collide2d

@@ -17,7 +17,11 @@ double sign_of(double x) { return x < 0 ? -1.0 : 1.0; }
 // boundary), p leaves through the nearer face, at depth (half extent - |p|) plus the radius. Where
 // two faces are equally near, either is a maximiser; the x face is reported.
 Contact contact_rect_circle(const Rect& a, const Circle& b) {
-  const detail::Rotation<double> rot = detail::Rotation<double>::of(a.angle);
+  return contact_rect_circle(a, Orientation::of(a.angle), b);
+}
+
+Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b) {
+  const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 p = rot.apply_inverse(Vec2(b.center - a.center));
   const Vec2& h = a.half_extents;
   const Vec2 q = detail::clamp_to_box(p, h);

@@ -146,10 +146,14 @@ struct SupportPair {
 
   template <class X, class Y>
   static SupportPair of(const X& a, const Y& b) {
+    return of(a, Rotation<Real>::of(a.angle), b, Rotation<Real>::of(b.angle));
+  }
+  // With each shape's orientation (the cosine and sine of its angle) kept by the caller.
+  template <class X, class Y>
+  static SupportPair of(const X& a, const Rotation<Real>& ra, const Y& b, const Rotation<Real>& rb) {
     const V2<Real> d(static_cast<Real>(b.center.x()) - static_cast<Real>(a.center.x()),
                      static_cast<Real>(b.center.y()) - static_cast<Real>(a.center.y()));
     const bool a_longer = longest(a) >= longest(b);
-    const Rotation<Real> ra = Rotation<Real>::of(a.angle), rb = Rotation<Real>::of(b.angle);
     const Rotation<Real> frame = a_longer ? ra : rb;
     // Equal angles give the identity exactly (composing would leave c^2 + s^2, off 1 by an ulp).
     const auto in_frame = [&](const Rotation<Real>& r) {

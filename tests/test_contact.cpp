@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -189,6 +191,49 @@ TEST(ContactProperties, HoldOnEveryFamily) {
   }
   std::printf("[contact] properties: %d pairs apart; %d pushed out, worst %.2f of the bound; rigid motion worst %.2f of it\n",
               apart, pushed, worst_push, worst_motion);
+}
+
+// The kernels with orientations kept against the same kernels computing them, on every family:
+// the same contact bit for bit (Orientation::of is the kernels' own rotation).
+using KernelPair = std::optional<std::pair<Contact, Contact>>;
+template <class A, class B>
+KernelPair both_ways(const A&, const B&) { return std::nullopt; }
+KernelPair both_ways(const Rect& a, const Rect& b) {
+  return std::pair{contact_rect_rect(a, b), contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
+}
+KernelPair both_ways(const Rect& a, const Circle& b) {
+  return std::pair{contact_rect_circle(a, b), contact_rect_circle(a, Orientation::of(a.angle), b)};
+}
+KernelPair both_ways(const Rect& a, const Ellipse& b) {
+  return std::pair{contact_rect_ellipse(a, b), contact_rect_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
+}
+KernelPair both_ways(const Circle& a, const Ellipse& b) {
+  return std::pair{contact_circle_ellipse(a, b), contact_circle_ellipse(a, b, Orientation::of(b.angle))};
+}
+KernelPair both_ways(const Ellipse& a, const Ellipse& b) {
+  return std::pair{contact_ellipse_ellipse(a, b),
+                   contact_ellipse_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
+}
+
+TEST(ContactOrientations, KeptGiveTheSameContact) {
+  int compared = 0;
+  for (const ContactFamily& cf : contact_families()) {
+    Family f = cf.family;
+    f.cases = 12;
+    for (const Case& c : family_cases(f)) {
+      const KernelPair got = std::visit([](const auto& a, const auto& b) { return both_ways(a, b); }, c.a, c.b);
+      if (!got) continue;
+      ++compared;
+      const auto& [plain, kept] = *got;
+      EXPECT_EQ(plain.separation, kept.separation) << describe(c.a) << " ; " << describe(c.b);
+      EXPECT_EQ(plain.normal, kept.normal);
+      EXPECT_EQ(plain.point_a, kept.point_a);
+      EXPECT_EQ(plain.point_b, kept.point_b);
+      EXPECT_EQ(plain.manifold_size, kept.manifold_size);
+    }
+  }
+  EXPECT_GT(compared, 500);
+  std::printf("[contact] orientations kept: %d pairs compared\n", compared);
 }
 
 // Box2D's manifold on the cases it exists for: a box resting on a box (two points, the overlap of
