@@ -6,8 +6,9 @@
 // for pairs apart and overlapping alike: apart, the distance; overlapping, minus the penetration
 // depth (the length of the shortest translation of B that leaves the solids only touching); 0 when
 // they touch. It is continuous through contact. The maximiser is the normal. Curved pairs find the
-// global maximum by branch and bound over arcs of directions (narrowphase/deepest_direction.h says
-// why no local maximum can pass for it); rectangle pairs by their face normals.
+// global maximum by a climb that a bound over every direction certifies, else by branch and bound
+// over arcs of directions (narrowphase/deepest_direction.h says why no local maximum can pass for
+// it); rectangle pairs by their face normals.
 //
 // Where the maximiser is not unique (concentric shapes, symmetric crossings, a rectangle's face
 // against a parallel face) any maximiser is a correct normal, and the separation is exact all the

@@ -1,6 +1,9 @@
 // Private: the global maximum of the separation s(n) of a SupportPair over every unit direction n,
 // the signed distance of the two solids (support_pair.h), with the direction that attains it.
 //
+// First a climb from the line of centres, kept only when disc_bound, an upper bound of s over every
+// direction, shows that no direction does better (certified_climb, below); else the search.
+//
 // Why a search over the whole circle, and why it cannot stop at a local maximum. For disjoint
 // shapes s is concave on the arc where it is positive (s'' = -(s + rho_A + rho_B)), so the distance
 // solver may climb from any separating direction. For overlapping shapes no direction separates,
