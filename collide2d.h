@@ -6,4 +6,5 @@
 #include "engine/world.h"
 #include "narrowphase/query.h"
 #include "narrowphase/ray_cast.h"
+#include "narrowphase/time_of_impact.h"
 #include "shapes/shapes.h"

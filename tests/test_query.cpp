@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <numbers>
 #include <random>
+#include <optional>
 #include <sstream>
 
 namespace collide2d {
@@ -253,6 +254,16 @@ TEST(QueryCommand, MethodsAndBoundaryForEllipses) {
 }
 
 
+// The numbers of an answer line; empty when it does not hold N of them.
+template <std::size_t N>
+std::optional<std::array<double, N>> numbers_of(const std::string& text) {
+  std::istringstream line(text);
+  std::array<double, N> got{};
+  for (double& x : got) line >> x;
+  if (!line) return std::nullopt;
+  return got;
+}
+
 // --contact: one pair of every kind with a signed distance known in closed form (the overlap along
 // an axis of symmetry), points included; a bad line still gets its error in place.
 TEST(QueryCommand, ContactLinesForEveryPair) {
@@ -271,13 +282,44 @@ TEST(QueryCommand, ContactLinesForEveryPair) {
       {-0.25, 0, 1, 0, 1, 0, 0.75}, {-0.5, 1, 0, 1, 0, 0.5, 0},    {-1, 1, 0, 2, 0, 1, 0}};
   ASSERT_EQ(r.out.size(), expected.size() + 1);
   for (std::size_t k = 0; k < expected.size(); ++k) {
-    std::istringstream line(r.out[k]);
-    std::array<double, 7> got{};
-    for (double& x : got) line >> x;
-    ASSERT_TRUE(line) << r.out[k];
-    for (int i = 0; i < 7; ++i) EXPECT_NEAR(got[static_cast<std::size_t>(i)], expected[k][static_cast<std::size_t>(i)], 1e-15) << r.out[k];
+    const auto got = numbers_of<7>(r.out[k]);
+    ASSERT_TRUE(got) << r.out[k];
+    for (std::size_t i = 0; i < 7; ++i) EXPECT_NEAR((*got)[i], expected[k][i], 1e-15) << r.out[k];
   }
   EXPECT_NE(r.out.back().find("error: circle radius must be positive"), std::string::npos) << r.out.back();
+}
+
+// Time-of-impact lines: exact first contacts (a circle closing a gap of 8 at 20 per step, a bullet
+// through a wall, a needle turning acos(0.22) into a circle), a miss, a start in overlap, and the
+// bad lines: a motion without --toi, a motion with two numbers, a NaN velocity.
+TEST(QueryCommand, TimeOfImpactLines) {
+  const std::string input =
+      "circle 0 0 1 ; circle 10 0 1 @ -20 0 0\n"
+      "rect 0 0 0.005 1 0 ; circle -1000 0.3 0.001 @ 2000 0 0\n"
+      "rect 0 0 1 0.01 0 @ 0 0 100 ; circle 0 0.5 0.1\n"
+      "circle 0 0 1 ; circle 3 0 1 @ 1 0 0\n"
+      "ellipse 0 0 2 1 0.3 ; circle 1 0 1 @ 5 0 0\n"
+      "circle 0 0 1 @ 1 0 ; circle 1 0 1\n"
+      "circle 0 0 1 @ nan 0 0 ; circle 5 0 1\n";
+  const CommandRun r = run(input, "minkowski", tool::Answer::toi);
+  EXPECT_EQ(r.status, 2);
+  ASSERT_EQ(r.out.size(), 7u);
+  const std::array<double, 5> times = {0.4, (1000 - 0.005 - 0.001) / 2000, std::acos(0.22) / 100, 1.0, 0.0};
+  const std::array<int, 5> hits = {1, 1, 1, 0, 1};
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const auto got = numbers_of<6>(r.out[k]);
+    ASSERT_TRUE(got) << r.out[k];
+    EXPECT_EQ((*got)[0], hits[k]) << r.out[k];
+    EXPECT_LE((*got)[1], times[k] + 1e-15) << r.out[k];
+    EXPECT_GE((*got)[1], times[k] - 1e-9) << r.out[k];
+    EXPECT_NEAR(Vec2((*got)[2], (*got)[3]).norm(), 1.0, 1e-15) << r.out[k];
+  }
+  EXPECT_NE(r.out[5].find("error: a motion takes 3 numbers (vx vy w) after '@', got 2"), std::string::npos) << r.out[5];
+  EXPECT_NE(r.out[6].find("error: A velocity x must be finite"), std::string::npos) << r.out[6];
+  const CommandRun plain = run("circle 0 0 1 ; circle 3 0 1 @ 1 0 0\n");
+  EXPECT_EQ(plain.status, 2);
+  ASSERT_EQ(plain.out.size(), 1u);
+  EXPECT_NE(plain.out[0].find("error: a motion ('@ vx vy w') needs --toi"), std::string::npos) << plain.out[0];
 }
 
 }  // namespace

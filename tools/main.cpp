@@ -1,5 +1,5 @@
 // collide2d: the command line.
-//   collide2d query [--method NAME]... [--boundary | --contact] < queries   (see query_command.h)
+//   collide2d query [--method NAME]... [--boundary | --contact | --toi] < queries   (query_command.h)
 //   collide2d run [scene.json] [--svg FILE] [--frames N]          (see run_command.h, scene.h)
 // It links the library and the JSON reader only; the speed-against-error report, which needs Box2D
 // and the 50-digit reference, is bench/collide2d_report.
@@ -15,7 +15,7 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: collide2d query [--method NAME]... [--boundary | --contact]\n"
+    "usage: collide2d query [--method NAME]... [--boundary | --contact | --toi]\n"
     "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being\n"
     "    circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta   (radians)\n"
     "  and writes 'overlap distance ax ay bx by' per line (errors as 'error: <reason>').\n"
@@ -29,6 +29,10 @@ constexpr const char* kUsage =
     "  --contact   writes 'separation nx ny ax ay bx by' instead: the signed distance (minus\n"
     "      the penetration depth when the solids overlap), the unit normal from A to B, and\n"
     "      the deepest points (the closest points when apart)\n"
+    "  --toi       reads '<shapeA> @ vx vy w ; <shapeB> @ vx vy w' (velocity and turn per\n"
+    "      step; a shape without '@' is at rest) and writes 'hit t nx ny px py': hit 1 and\n"
+    "      the first time of contact in [0, 1] (0 if they overlap at the start), or hit 0\n"
+    "      and t 1; the normal from A to B and the midpoint of the closest points at t\n"
     "\n"
     "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
@@ -46,10 +50,11 @@ int query(int argc, char** argv) {
     if (arg == "--method") {
       if (i + 1 == argc) throw collide2d::tool::ParseError("--method needs a name");
       collide2d::tool::apply_method(argv[++i], options);
-    } else if (arg == "--boundary" || arg == "--contact") {
-      const auto chosen = arg == "--boundary" ? collide2d::tool::Answer::boundary : collide2d::tool::Answer::contact;
-      if (options.answer != collide2d::tool::Answer::distance && options.answer != chosen) {
-        throw collide2d::tool::ParseError("--boundary and --contact cannot be combined");
+    } else if (arg == "--boundary" || arg == "--contact" || arg == "--toi") {
+      using collide2d::tool::Answer;
+      const Answer chosen = arg == "--boundary" ? Answer::boundary : arg == "--contact" ? Answer::contact : Answer::toi;
+      if (options.answer != Answer::distance && options.answer != chosen) {
+        throw collide2d::tool::ParseError("--boundary, --contact and --toi cannot be combined");
       }
       options.answer = chosen;
     } else {

@@ -70,6 +70,24 @@ Shape parse_shape(std::string_view text, const char* side) {
   throw ParseError("unknown shape '" + std::string(words[0]) + "' (expected circle, ellipse or rect)");
 }
 
+struct Side {
+  Shape shape;
+  Motion motion;
+  bool moving = false;
+};
+
+// `<shape>` or `<shape> @ vx vy w`.
+Side parse_side(std::string_view text, const char* side) {
+  const auto at = text.find('@');
+  if (at == std::string_view::npos) return {parse_shape(text, side), {}, false};
+  const std::vector<std::string_view> words = split_words(text.substr(at + 1));
+  if (words.size() != 3) {
+    throw ParseError(std::string("a motion takes 3 numbers (vx vy w) after '@', got ") + std::to_string(words.size()));
+  }
+  return {parse_shape(text.substr(0, at), side), {{parse_number(words[0]), parse_number(words[1])}, parse_number(words[2])},
+          true};
+}
+
 std::string_view trimmed(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
   if (first == std::string_view::npos) return {};
@@ -84,7 +102,8 @@ std::optional<QueryLine> parse_query_line(std::string_view line) {
   const auto sep = body.find(';');
   if (sep == std::string_view::npos) throw ParseError("expected '<shape> ; <shape>', found no ';'");
   if (body.find(';', sep + 1) != std::string_view::npos) throw ParseError("expected one ';', found more");
-  return QueryLine{parse_shape(body.substr(0, sep), "A"), parse_shape(body.substr(sep + 1), "B")};
+  const Side a = parse_side(body.substr(0, sep), "A"), b = parse_side(body.substr(sep + 1), "B");
+  return QueryLine{a.shape, b.shape, a.motion, b.motion, a.moving || b.moving};
 }
 
 void apply_method(std::string_view name, QueryOptions& options) {
@@ -109,7 +128,12 @@ void apply_method(std::string_view name, QueryOptions& options) {
 std::string answer(const QueryLine& q, const QueryOptions& options) {
   char buf[200];
   int n = 0;
-  if (options.answer == Answer::contact) {
+  if (q.moving && options.answer != Answer::toi) throw ParseError("a motion ('@ vx vy w') needs --toi");
+  if (options.answer == Answer::toi) {
+    const TimeOfImpact r = time_of_impact(q.a, q.a_motion, q.b, q.b_motion);
+    n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", r.status == ToiStatus::miss ? 0 : 1,
+                      r.t + 0.0, r.normal.x() + 0.0, r.normal.y() + 0.0, r.point.x() + 0.0, r.point.y() + 0.0);
+  } else if (options.answer == Answer::contact) {
     const Contact c = contact(q.a, q.b);
     // + 0.0 prints a zero as 0, never -0 (a normal's sign of zero carries nothing).
     n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.separation + 0.0,

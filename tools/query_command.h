@@ -9,11 +9,19 @@
 // (circles and ellipses only; a rectangle gives an error line). With Answer::contact, the line is
 // `separation nx ny ax ay bx by`: the signed distance (minus the penetration depth when the solids
 // overlap), the unit normal from A to B and the deepest (or closest) points (narrowphase/contact.h).
+// With Answer::toi, either shape may carry a motion over one step, `<shape> @ vx vy w` (velocity
+// of the centre and turn in radians, per step; at rest without it), and the line is
+// `hit t nx ny px py` (narrowphase/time_of_impact.h): hit 1 and t the first time of contact (0 when
+// they overlap at the start; when the iteration stalls, the time up to which they certainly do not
+// touch, still hit 1, so that nothing tunnels), or hit 0 and t 1 for a miss; the normal from A to B
+// and the midpoint of the closest points at t (for a miss, at the last time evaluated). A motion on
+// a line without Answer::toi is an error.
 // A malformed or invalid line prints `error: <reason>` in its place and `line N: <reason>` on the
 // error stream; processing goes on.
 #pragma once
 
 #include "narrowphase/query.h"
+#include "narrowphase/time_of_impact.h"
 
 #include <iosfwd>
 #include <optional>
@@ -32,12 +40,15 @@ class ParseError : public std::runtime_error {
 struct QueryLine {
   Shape a;
   Shape b;
+  Motion a_motion;
+  Motion b_motion;
+  bool moving = false;  // a motion was written
 };
 
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.
 std::optional<QueryLine> parse_query_line(std::string_view line);
 
-enum class Answer { distance, boundary, contact };
+enum class Answer { distance, boundary, contact, toi };
 
 struct QueryOptions {
   OverlapOptions overlap;

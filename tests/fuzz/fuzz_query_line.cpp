@@ -1,6 +1,7 @@
-// Query-line fuzzer: any bytes as `collide2d query` input. Every line must be answered or refused
-// with an `error:` line (ParseError, InvalidShape), never crash; answers carry six finite numbers,
-// and the output keeps one line per query line.
+// Query-line fuzzer: any bytes as `collide2d query` input, answered for distances and for times of
+// impact. Every line must be answered or refused with an `error:` line (ParseError, InvalidShape),
+// never crash; answers carry six finite numbers (a distance 0 exactly when overlapping; a time in
+// [0, 1], 1 on a miss), and the output keeps one line per query line.
 #include "tools/query_command.h"
 
 #include <cmath>
@@ -9,11 +10,15 @@
 #include <sstream>
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 4096));
+namespace {
+
+// Checks one mode's output against the input's query count; aborts on any breach.
+void check(const std::string& text, collide2d::tool::Answer mode) {
   std::istringstream in(text);
   std::ostringstream out, err;
-  const int status = collide2d::tool::run_query(in, out, err, {});
+  collide2d::tool::QueryOptions options;
+  options.answer = mode;
+  const int status = collide2d::tool::run_query(in, out, err, options);
   if (status != 0 && status != 2) std::abort();
   std::size_t queries = 0;
   std::istringstream lines(text);
@@ -21,6 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto first = line.find_first_not_of(" \t\r");
     if (first != std::string::npos && line[first] != '#') ++queries;
   }
+  const bool toi = mode == collide2d::tool::Answer::toi;
   std::size_t answers = 0;
   std::istringstream produced(out.str());
   for (std::string line; std::getline(produced, line); ++answers) {
@@ -33,11 +39,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const double x : v) {
       if (!std::isfinite(x)) std::abort();
     }
-    if ((v[0] == 0) != (hit == 1)) std::abort();
+    if (toi ? (v[0] < 0 || v[0] > 1 || (hit == 0 && v[0] != 1)) : (v[0] == 0) != (hit == 1)) std::abort();
   }
   if (answers != queries) {
     std::fprintf(stderr, "%zu answers for %zu queries\n", answers, queries);
     std::abort();
   }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 4096));
+  check(text, collide2d::tool::Answer::distance);
+  check(text, collide2d::tool::Answer::toi);
   return 0;
 }

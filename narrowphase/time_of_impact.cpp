@@ -1,0 +1,84 @@
+#include "narrowphase/time_of_impact.h"
+
+#include "narrowphase/query.h"
+
+#include <cmath>
+#include <sstream>
+#include <type_traits>
+
+namespace collide2d {
+namespace {
+
+// How far a turning shape's support function can move per unit of turn: its farthest point from
+// the centre. A circle's does not move at all.
+double turning_reach(const Shape& s) {
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
+  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.norm();
+  return 0.0;
+}
+
+double reach(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
+  return turning_reach(s);
+}
+
+[[noreturn]] void reject(const char* which, const char* field, double value, const char* rule) {
+  std::ostringstream msg;
+  msg.precision(17);
+  msg << which << ' ' << field << ' ' << rule << " (got " << value << ')';
+  throw InvalidShape(msg.str());
+}
+
+// The motion must be finite and keep the centre within the supported range over the step.
+void validate(const Shape& s, const Motion& m, const char* which) {
+  validate(s);
+  for (int k = 0; k < 2; ++k) {
+    const char* field = k == 0 ? "velocity x" : "velocity y";
+    const double v = m.velocity[k];
+    if (!std::isfinite(v)) reject(which, field, v, "must be finite");
+    if (std::abs(center_of(s)[k] + v) > kMaxMagnitude) reject(which, field, v, "carries the centre beyond +-1e50");
+  }
+  if (!std::isfinite(m.angular_velocity)) reject(which, "angular velocity", m.angular_velocity, "must be finite");
+}
+
+TimeOfImpact result(ToiStatus status, double t, const Contact& c, int iterations) {
+  return {status, t, c.normal, Vec2((c.point_a + c.point_b) / 2), iterations};
+}
+
+}  // namespace
+
+Shape at_time(const Shape& s, const Motion& m, double t) {
+  return std::visit(
+      [&](auto shape) -> Shape {
+        shape.center += t * m.velocity;
+        if constexpr (!std::is_same_v<decltype(shape), Circle>) shape.angle += t * m.angular_velocity;
+        return shape;
+      },
+      s);
+}
+
+TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion,
+                            const ToiOptions& options) {
+  validate(a, a_motion, "A");
+  validate(b, b_motion, "B");
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
+    reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
+  }
+  const double tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * (reach(a) + reach(b));
+  const Vec2 v = b_motion.velocity - a_motion.velocity;
+  const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +
+                      std::abs(b_motion.angular_velocity) * turning_reach(b);
+  double t = 0.0;
+  for (int k = 1;; ++k) {
+    const Contact c = contact(at_time(a, a_motion, t), at_time(b, b_motion, t));
+    if (k == 1 && c.separation <= 0) return result(ToiStatus::overlapping, 0.0, c, k);
+    if (c.separation <= tolerance) return result(ToiStatus::hit, t, c, k);
+    const double closing = spin - c.normal.dot(v);  // the fastest the separation can fall
+    const double step = closing > 0 ? (c.separation - tolerance / 2) / closing : INFINITY;
+    if (!(t + step < 1.0)) return result(ToiStatus::miss, 1.0, c, k);
+    if (k == options.max_iterations) return result(ToiStatus::stalled, t, c, k);
+    t += step;
+  }
+}
+
+}  // namespace collide2d

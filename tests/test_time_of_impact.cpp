@@ -1,0 +1,175 @@
+// Time of impact against constructions whose first contact time is known exactly, and the
+// guarantees over random motions: never after the first contact, within tolerance at the time
+// reported, no contact anywhere before it.
+#include "narrowphase/time_of_impact.h"
+
+#include "narrowphase/query.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <string>
+
+namespace collide2d {
+namespace {
+
+constexpr double kU = 1.1102230246251565e-16;
+
+// The reported time lies before the exact first contact t0, by no more than the tolerance over the
+// closing speed (plus the rounding of the construction, `slack`).
+void expect_hit_before(const TimeOfImpact& got, double t0, double tolerance, double closing, double slack = 0) {
+  ASSERT_EQ(got.status, ToiStatus::hit);
+  EXPECT_LE(got.t, t0 + slack);
+  EXPECT_GE(got.t, t0 - tolerance / closing - slack);
+}
+
+TEST(TimeOfImpact, CirclesHeadOn) {
+  const Circle a{{0, 0}, 1}, b{{10, 0}, 1};
+  const TimeOfImpact got = time_of_impact(a, {}, b, {{-20, 0}, 0}, {1e-9, 1000});
+  expect_hit_before(got, 0.4, 1e-9, 20, 4 * kU);
+  EXPECT_NEAR(got.normal.x(), 1.0, 1e-15);
+  EXPECT_NEAR(got.point.x(), 1.0, 1e-8);
+  EXPECT_LE(got.iterations, 3);
+}
+
+TEST(TimeOfImpact, BothMoving) {
+  const Circle a{{-3, 0}, 0.5}, b{{3, 0}, 0.5};
+  const TimeOfImpact got = time_of_impact(a, {{4, 0}, 0}, b, {{-6, 0}, 0}, {1e-9, 1000});
+  expect_hit_before(got, 0.5, 1e-9, 10, 4 * kU);  // gap 5 closed at 10 per step
+}
+
+// A bullet at 10 to 1e6 of its size per step through a wall 10 of its sizes thick: without
+// continuous collision it is on one side at t = 0 and on the other at t = 1.
+TEST(TimeOfImpact, BulletsDoNotTunnel) {
+  const Rect wall{{0, 0}, {0.005, 1}, 0};
+  for (const double sizes_per_step : {10.0, 1e2, 1e3, 1e4, 1e5, 1e6}) {
+    const double r = 0.001, speed = sizes_per_step * 2 * r;
+    const Circle bullet{{-speed / 2, 0.3}, r};  // after the step, as far beyond the wall
+    ASSERT_FALSE(overlaps(wall, at_time(bullet, {{speed, 0}, 0}, 1.0)));
+    const TimeOfImpact got = time_of_impact(wall, {}, bullet, {{speed, 0}, 0}, {1e-12, 1000});
+    const double t0 = (speed / 2 - 0.005 - r) / speed;
+    expect_hit_before(got, t0, 1e-12, speed, 8 * kU);
+    EXPECT_NEAR(got.normal.x(), -1.0, 1e-12) << sizes_per_step;
+  }
+}
+
+// An ellipse falling onto a rectangle's face, and a spinning one.
+TEST(TimeOfImpact, EllipseOntoAFace) {
+  const Rect floor{{0, 0}, {4, 1}, 0};
+  const Ellipse e{{0.5, 5}, 2, 0.5, 0};
+  const TimeOfImpact got = time_of_impact(floor, {}, e, {{0, -10}, 0}, {1e-9, 1000});
+  expect_hit_before(got, 0.35, 1e-9, 10, 8 * kU);
+  EXPECT_NEAR(got.normal.y(), 1.0, 1e-12);
+}
+
+// A needle (half-length 1, half-width 0.01) turning about its centre towards a circle of radius 0.1
+// centred 0.5 along the normal of its start: its side reaches the circle when 0.5 cos(theta) =
+// 0.11, at theta = acos(0.22), whatever the rate (1.6 to 100 radians per step).
+TEST(TimeOfImpact, SpinningNeedle) {
+  const Rect needle{{0, 0}, {1, 0.01}, 0};
+  const Circle c{{0, 0.5}, 0.1};
+  const double theta = std::acos(0.22);
+  for (const double w : {std::numbers::pi / 2, 10.0, 100.0}) {
+    const TimeOfImpact got = time_of_impact(needle, {Vec2::Zero(), w}, c, {}, {1e-12, 100000});
+    ASSERT_EQ(got.status, ToiStatus::hit) << w;
+    const double t0 = theta / w;
+    EXPECT_LE(got.t, t0 + 8 * kU) << w;
+    EXPECT_GE(got.t, t0 - 1e-9) << w << " after " << got.iterations << " evaluations";
+    std::printf("[toi] needle turning %.3g rad per step: %d contact evaluations\n", w, got.iterations);
+  }
+}
+
+TEST(TimeOfImpact, GrazingPasses) {
+  const Rect wall{{0, 0}, {0.5, 0.5}, 0};
+  for (const double gap : {1e-3, 1e-6, 1e-9}) {
+    const Circle passing{{-3, 0.5 + 0.1 + gap}, 0.1};
+    const TimeOfImpact miss = time_of_impact(wall, {}, passing, {{6, 0}, 0}, {gap / 4, 1000});
+    EXPECT_EQ(miss.status, ToiStatus::miss) << gap;
+    EXPECT_EQ(miss.t, 1.0);
+    const Circle touching{{-3, 0.5 + 0.1 - gap}, 0.1};
+    const TimeOfImpact hit = time_of_impact(wall, {}, touching, {{6, 0}, 0}, {gap / 4, 1000});
+    EXPECT_EQ(hit.status, ToiStatus::hit) << gap;
+  }
+}
+
+TEST(TimeOfImpact, OverlappingAtTheStart) {
+  const TimeOfImpact got = time_of_impact(Circle{{0, 0}, 1}, {}, Ellipse{{1, 0}, 1, 0.5, 0.3}, {{5, 0}, 0});
+  EXPECT_EQ(got.status, ToiStatus::overlapping);
+  EXPECT_EQ(got.t, 0.0);
+  EXPECT_EQ(got.iterations, 1);
+}
+
+TEST(TimeOfImpact, MovingApartMisses) {
+  const TimeOfImpact got = time_of_impact(Rect{{0, 0}, {1, 1}, 0}, {}, Circle{{3, 0}, 1}, {{1, 0}, 0});
+  EXPECT_EQ(got.status, ToiStatus::miss);
+  EXPECT_EQ(got.iterations, 1);
+}
+
+// Random pairs of every kind with random motions, spins up to 20 radians per step: at a hit the
+// separation is within (0, tolerance], and 200 times before it the pair is apart; at a miss
+// the pair is apart at 200 times over the step and at its end.
+TEST(TimeOfImpact, NeverAfterTheFirstContact) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto shape = [&](int kind) -> Shape {
+    const Vec2 c(3 * u(rng), 3 * u(rng));
+    const double s = 0.1 + 0.45 * (u(rng) + 1);
+    if (kind == 0) return Circle{c, s};
+    if (kind == 1) return Ellipse{c, s, s * (0.05 + 0.475 * (u(rng) + 1)), 3 * u(rng)};
+    return Rect{c, {s, s * (0.05 + 0.475 * (u(rng) + 1))}, 3 * u(rng)};
+  };
+  int hits = 0, misses = 0, checked = 0, most = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Shape a = shape(k % 3), b = shape((k / 3) % 3);
+    if (overlaps(a, b)) continue;
+    const Motion ma{{6 * u(rng), 6 * u(rng)}, k % 2 ? 20 * u(rng) : 0.0};
+    const Motion mb{{6 * u(rng), 6 * u(rng)}, k % 4 == 1 ? 20 * u(rng) : 0.0};
+    const double tolerance = 1e-9;
+    const TimeOfImpact got = time_of_impact(a, ma, b, mb, {tolerance, 100000});
+    ASSERT_NE(got.status, ToiStatus::stalled) << k;
+    most = std::max(most, got.iterations);
+    ASSERT_NE(got.status, ToiStatus::overlapping) << k;
+    const double end = got.status == ToiStatus::hit ? got.t : 1.0;
+    for (int j = 0; j <= 200; ++j) {
+      const double t = end * j / 200;
+      const double d = contact(at_time(a, ma, t), at_time(b, mb, t)).separation;
+      EXPECT_GT(d, 0) << "case " << k << " apart until " << end << " but not at " << t;
+      ++checked;
+    }
+    if (got.status == ToiStatus::hit) {
+      ++hits;
+      const double d = contact(at_time(a, ma, got.t), at_time(b, mb, got.t)).separation;
+      EXPECT_LE(d, tolerance);
+    } else {
+      ++misses;
+    }
+  }
+  EXPECT_GT(hits, 40);
+  EXPECT_GT(misses, 50);
+  std::printf("[toi] random motions: %d hits, %d misses, %d earlier times apart; at most %d contact evaluations\n", hits,
+              misses, checked, most);
+}
+
+TEST(TimeOfImpact, BadMotionsNameTheField) {
+  const Circle c{{0, 0}, 1};
+  const auto message = [&](const Motion& ma, const Motion& mb, const ToiOptions& o = {}) {
+    try {
+      time_of_impact(c, ma, c, mb, o);
+    } catch (const InvalidShape& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({{NAN, 0}, 0}, {}).find("A velocity x must be finite"), std::string::npos);
+  EXPECT_NE(message({}, {{0, INFINITY}, 0}).find("B velocity y must be finite"), std::string::npos);
+  EXPECT_NE(message({}, {{0, 0}, NAN}).find("B angular velocity must be finite"), std::string::npos);
+  EXPECT_NE(message({{2e50, 0}, 0}, {}).find("A velocity x carries the centre beyond"), std::string::npos);
+  EXPECT_NE(message({}, {}, {-1.0, 10}).find("tolerance must be finite and not negative"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace collide2d
