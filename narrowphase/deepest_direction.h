@@ -182,10 +182,11 @@ template <class Real, class SA, class SB>
 std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, Real margin, int& evaluations) {
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
-  const Real length = p.delta.norm();
-  if (!(length > 0)) return std::nullopt;
+  if (p.delta == V2<Real>::Zero()) return std::nullopt;
   const Real flat = margin / 2;
-  V2<Real> n = p.delta / length;
+  // Scaled before it is squared: centres 1e-158 apart square to a denormal, and the direction
+  // divided by that norm came out 1e-9 off unit length (the fuzzer).
+  V2<Real> n = p.delta.stableNormalized();
   V2<Real> face = n;  // with a rectangle: the face normal the climb starts from, and the corners'
   V2<Real> side = n;  // side, which keeps the climb in one quarter turn from it
   Separation<Real> e;

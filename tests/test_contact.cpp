@@ -341,7 +341,10 @@ TEST(ContactSearch, SharpPeakBesideAFarRectangle) {
 TEST(ContactNormal, UnitWhenTheCentresNearlyCoincide) {
   const Vec2 tiny(0, 1.1436311670790528e-160);
   const Shape pairs[][2] = {{Circle{{7.9375, 0}, 8}, Circle{Vec2(7.9375, 0) + tiny, 6.125}},
-                            {Circle{{0, 0}, 1}, Ellipse{tiny, 2, 1, 0}}};
+                            {Circle{{0, 0}, 1}, Ellipse{tiny, 2, 1, 0}},
+                            // the climb's start direction (the fuzzer: 1e-9 off unit length)
+                            {Ellipse{{2.5278101602652375e-158, -8}, 8, 8, 5.5322820227311624e-222},
+                             Ellipse{{5.4110079941854194e-312, -8}, 8, 8, -8}}};
   for (const auto& pair : pairs) {
     const Contact c = contact(pair[0], pair[1]);
     EXPECT_NEAR(c.normal.norm(), 1.0, 4 * kU) << shape_name(pair[0]) << "-" << shape_name(pair[1]);
