@@ -40,6 +40,27 @@ Shape posed(Shape shape, const Vec2& center, double angle) {
 
 Aabb grown(const Aabb& box, double by) { return {box.min.array() - by, box.max.array() + by}; }
 
+Aabb merged(const Aabb& p, const Aabb& q) { return {p.min.cwiseMin(q.min), p.max.cwiseMax(q.max)}; }
+
+// The farthest point of a shape from its centre.
+double reach(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
+  return std::get<Rect>(s).half_extents.norm();
+}
+
+// Every pose of a step from `start` to `end` (its centre on the segment, any angle) lies in the
+// segment grown by the shape's reach; the two end boxes are kept in it against rounding.
+Aabb swept(const Shape& start, const Shape& end) {
+  const Vec2 c0 = center_of(start), c1 = center_of(end);
+  const double r = reach(end);
+  return merged(merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(start)), aabb(end));
+}
+
+Motion step_of(const Shape& start, const Shape& end) {
+  return {center_of(end) - center_of(start), angle_of(end) - angle_of(start)};
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -105,7 +126,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   const Shape moved = posed(b.shape, center, angle);
   validate(moved);  // the range of the centre
   const Aabb box = aabb(moved);
-  broad_.move(id.index, broad_box(box));
+  broad_.move(id.index, broad_box(b.continuous ? swept(b.start, moved) : box));
   b.shape = moved;
   b.box = box;
 }
@@ -115,8 +136,22 @@ void World::move_by(BodyId id, const Vec2& shift, double turn) {
   set_pose(id, center_of(s) + shift, angle_of(s) + turn);
 }
 
+void World::set_continuous(BodyId id, bool continuous) {
+  Body& b = body(id);
+  if (b.continuous == continuous) return;
+  if (continuous) {
+    continuous_.push_back(id.index);
+  } else {
+    continuous_.erase(std::find(continuous_.begin(), continuous_.end(), id.index));
+  }
+  b.continuous = continuous;
+  b.start = b.shape;
+  broad_.move(id.index, broad_box(b.box));
+}
+
 void World::remove(BodyId id) {
   Body& b = body(id);
+  if (b.continuous) set_continuous(id, false);
   broad_.remove(id.index);
   b.generation = b.generation == UINT32_MAX ? 1 : b.generation + 1;  // 0 names no body
 }
@@ -136,10 +171,12 @@ void World::update() {
   std::vector<BodyPair> now;
   proximity_.clear();
   contacts_.clear();
+  impacts_.clear();
   const ContactOptions manifold{.margin = speculative_margin_};
   for (const ProxyPair& p : broad_.pairs()) {
     const Body& x = bodies_[p.a];
     const Body& y = bodies_[p.b];
+    if (x.continuous || y.continuous) impact(p);
     if (intersects(x.box, y.box) && overlaps(x.shape, y.shape)) {
       now.push_back(pair_of(p));
       if (contacts_on_) contacts_.push_back({id_of(p.a), id_of(p.b), contact(x.shape, y.shape, manifold)});
@@ -159,11 +196,30 @@ void World::update() {
   std::set_difference(now.begin(), now.end(), overlapping_.begin(), overlapping_.end(), std::back_inserter(began_));
   std::set_difference(overlapping_.begin(), overlapping_.end(), now.begin(), now.end(), std::back_inserter(ended_));
   overlapping_ = std::move(now);
+  for (const ProxyId index : continuous_) {  // the next step begins here
+    Body& b = bodies_[index];
+    b.start = b.shape;
+    broad_.move(index, broad_box(b.box));
+  }
   stats_.narrow_seconds = seconds_since(narrow_start);
   stats_.candidates = broad_.pairs().size();
   stats_.overlapping = overlapping_.size();
   stats_.proximity = proximity_.size();
   stats_.contacts = contacts_.size();
+  stats_.impacts = impacts_.size();
+}
+
+// A pair with a continuous body, over the step: each continuous body from its start pose, any other
+// at rest where it is now. Pairs that start the step overlapping are the overlap test's.
+void World::impact(const ProxyPair& p) {
+  const Body& x = bodies_[p.a];
+  const Body& y = bodies_[p.b];
+  const auto from = [](const Body& b) { return b.continuous ? b.start : b.shape; };
+  const auto motion = [](const Body& b) { return b.continuous ? step_of(b.start, b.shape) : Motion{}; };
+  const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
+  if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
+    impacts_.push_back({id_of(p.a), id_of(p.b), r.t, r.normal, r.point});
+  }
 }
 
 template <class Test>
@@ -197,6 +253,20 @@ std::vector<BodyId> World::within(const Shape& shape, double d) const {
   validate(shape);
   require_margin(d, "distance");
   return select(grown(aabb(shape), d), [&](const Shape& s) { return distance(shape, s).distance <= d; });
+}
+
+std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translation) const {
+  validate(shape);
+  require_finite(translation.x(), "cast translation x");
+  require_finite(translation.y(), "cast translation y");
+  const Shape end = at_time(shape, {translation, 0.0}, 1.0);
+  validate(end);  // the range of the centre
+  std::optional<BodyCastHit> best;
+  for (const BodyId id : select(swept(shape, end), [](const Shape&) { return true; })) {
+    const auto hit = shape_cast(shape, translation, bodies_[id.index].shape);
+    if (hit && (!best || hit->fraction < best->fraction)) best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
+  }
+  return best;
 }
 
 std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const {

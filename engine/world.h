@@ -25,6 +25,15 @@
 // ellipses: the ray meets the curve, not a polygon). Queries test every body's box and then the
 // exact shape: O(n) per query.
 //
+// Continuous bodies (bullets): set_continuous(id) makes a body's step, from its pose at the last
+// update to its pose now, count. Its broad-phase box covers the whole path (the segment between the
+// two centres grown by the shape's farthest point, whatever it turns), and update() reports, for each
+// of its candidate pairs that starts the step apart, the first time of impact within the step
+// (narrowphase/time_of_impact.h; a body not flagged is taken at its current pose), in impacts():
+// pair, time in [0, 1], normal from a to b, point. Bodies not flagged cost one flag test per pair.
+// cast(shape, translation) is the shape cast against every body: the first hit, with its fraction,
+// point and the body's outward normal.
+//
 // Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
 // std::invalid_argument, an unknown body or a stale handle (its body removed) std::out_of_range,
 // with a message that says which; the World is left exactly as it was.
@@ -32,6 +41,7 @@
 
 #include "broadphase/broad_phase.h"
 #include "narrowphase/query.h"
+#include "narrowphase/time_of_impact.h"
 
 #include <cstdint>
 #include <optional>
@@ -76,6 +86,21 @@ struct BodyContact {
   Contact contact;  // of a's shape with b's: the normal points from a to b
 };
 
+struct Impact {
+  BodyId a;  // a.index < b.index
+  BodyId b;
+  double t = 0.0;              // the first time of contact within the step, in [0, 1]
+  Vec2 normal = Vec2::UnitX();  // from a to b
+  Vec2 point = Vec2::Zero();
+};
+
+struct BodyCastHit {
+  BodyId body;
+  double fraction = 0.0;        // of the translation, at the first contact
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::UnitX();  // the body's outward normal there, towards the cast shape
+};
+
 struct RayHit {
   BodyId body;
   double distance = 0.0;       // from the ray's origin to the hit point
@@ -89,6 +114,7 @@ struct FrameStats {
   std::size_t overlapping = 0;  // confirmed by the narrow phase
   std::size_t proximity = 0;
   std::size_t contacts = 0;
+  std::size_t impacts = 0;
   double broad_seconds = 0.0;
   double narrow_seconds = 0.0;
 };
@@ -102,6 +128,9 @@ class World {
   void move_by(BodyId id, const Vec2& shift, double turn = 0.0);
   void remove(BodyId id);
   void set_proximity_margin(double margin);
+  // A continuous body's step runs from its pose at the last update (or at this call) to its pose
+  // at the next update.
+  void set_continuous(BodyId id, bool continuous = true);
   void update();
 
   bool contains(BodyId id) const;
@@ -117,6 +146,8 @@ class World {
   const std::vector<Proximity>& proximity() const { return proximity_; }
   // With contacts on: the overlapping pairs and the speculative ones, sorted like overlapping().
   const std::vector<BodyContact>& contacts() const { return contacts_; }
+  // The first times of impact of continuous bodies' pairs within the last step, sorted by pair.
+  const std::vector<Impact>& impacts() const { return impacts_; }
   const FrameStats& last_frame() const { return stats_; }
 
   // Queries on the current poses (no update needed).
@@ -127,6 +158,9 @@ class World {
   // The first body hit by the ray from `origin` along `direction` (any non-zero length) within
   // `max_distance` of the origin; a body containing the origin is hit at distance 0.
   std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const;
+  // The first body the shape meets when translated by `translation` (the lowest body index on a
+  // tie); a body it overlaps at the start is hit at fraction 0.
+  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation) const;
 
  private:
   struct Body {
@@ -134,6 +168,8 @@ class World {
     Aabb box;  // aabb(shape), kept with the pose
     std::uint64_t user_id = 0;
     std::uint32_t generation = 1;
+    bool continuous = false;
+    Shape start;  // continuous: the pose at the last update, where the step begins
   };
   std::vector<Body> bodies_;  // indexed by the broad phase's proxy id; live exactly when it has the id
   SweepAndPrune broad_;
@@ -145,6 +181,8 @@ class World {
   std::vector<BodyPair> ended_;
   std::vector<Proximity> proximity_;
   std::vector<BodyContact> contacts_;
+  std::vector<Impact> impacts_;
+  std::vector<ProxyId> continuous_;  // the continuous bodies' slots
   FrameStats stats_;
 
   Body& body(BodyId id);
@@ -152,6 +190,7 @@ class World {
   BodyId id_of(ProxyId index) const { return {index, bodies_[index].generation}; }
   BodyPair pair_of(const ProxyPair& p) const { return {id_of(p.a), id_of(p.b)}; }
   Aabb broad_box(const Aabb& box) const;
+  void impact(const ProxyPair& p);
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, Test test) const;
 };

@@ -81,4 +81,11 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   }
 }
 
+std::optional<CastHit> shape_cast(const Shape& shape, const Vec2& translation, const Shape& target,
+                                  const ToiOptions& options) {
+  const TimeOfImpact r = time_of_impact(target, {}, shape, {translation, 0.0}, options);
+  if (r.status == ToiStatus::miss) return std::nullopt;
+  return CastHit{r.t, r.point, r.normal};
+}
+
 }  // namespace collide2d

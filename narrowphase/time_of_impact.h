@@ -29,6 +29,8 @@
 
 #include "shapes/shapes.h"
 
+#include <optional>
+
 namespace collide2d {
 
 struct Motion {
@@ -60,5 +62,18 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
 
 // The shape's pose at time t of its motion.
 Shape at_time(const Shape& s, const Motion& m, double t);
+
+// A shape cast: `shape` translated by `translation` (no turn) against a `target` at rest, the query
+// a character controller or a thrown object needs. The fraction of the translation at the first
+// contact (0 when they overlap at the start; for a stalled search the fraction up to which they
+// certainly do not touch), the point, and the target's outward normal there (towards the moving
+// shape); nullopt when the whole translation is free.
+struct CastHit {
+  double fraction = 0.0;
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::UnitX();
+};
+std::optional<CastHit> shape_cast(const Shape& shape, const Vec2& translation, const Shape& target,
+                                  const ToiOptions& options = {});
 
 }  // namespace collide2d

@@ -154,6 +154,23 @@ TEST(TimeOfImpact, NeverAfterTheFirstContact) {
               misses, checked, most);
 }
 
+// A circle of radius 0.5 cast 4 to the right at a box whose face is 2.5 away from its edge: the
+// fraction 2.5 / 4, the point on the face, the box's outward normal (towards the circle); a cast
+// that stops short misses; one that starts in overlap hits at 0.
+TEST(ShapeCast, FractionPointAndTheTargetsNormal) {
+  const Rect box{{4, 0}, {1, 1}, 0};
+  const auto hit = shape_cast(Circle{{0, 0}, 0.5}, Vec2(4, 0), box, {1e-12, 1000});
+  ASSERT_TRUE(hit);
+  EXPECT_LE(hit->fraction, 2.5 / 4);
+  EXPECT_GE(hit->fraction, 2.5 / 4 - 1e-12 / 4 - 4 * kU);
+  EXPECT_NEAR(hit->normal.x(), -1.0, 1e-15);
+  EXPECT_NEAR(hit->point.x(), 3.0, 1e-12);
+  EXPECT_FALSE(shape_cast(Circle{{0, 0}, 0.5}, Vec2(2, 0), box));
+  const auto inside = shape_cast(Circle{{3.4, 0}, 0.5}, Vec2(-4, 0), box);
+  ASSERT_TRUE(inside);
+  EXPECT_EQ(inside->fraction, 0.0);
+}
+
 TEST(TimeOfImpact, BadMotionsNameTheField) {
   const Circle c{{0, 0}, 1};
   const auto message = [&](const Motion& ma, const Motion& mb, const ToiOptions& o = {}) {

@@ -1,11 +1,13 @@
-// World fuzzer: a random sequence of add, set_pose, remove, update and queries from the bytes. Bad
-// input (an unknown body or a handle kept past its remove() among it) must throw and leave the World
-// as it was; after every update the overlapping pairs, the began/ended lists and the proximity
-// pairs must equal an all-pairs check.
+// World fuzzer: a random sequence of add, set_pose, set_continuous, remove, update and queries from
+// the bytes. Bad input (an unknown body or a handle kept past its remove() among it) must throw and
+// leave the World as it was; after every update the overlapping pairs, the began/ended lists and the
+// proximity pairs must equal an all-pairs check, and every impact must name a continuous body, with
+// a time in [0, 1] and a unit normal.
 #include "engine/world.h"
 #include "fuzz_input.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iterator>
@@ -84,6 +86,18 @@ std::vector<std::pair<BodyId, std::size_t>> snapshot(const World& w) {
   return out;
 }
 
+void check_impacts(const World& w, const std::vector<BodyId>& continuous) {
+  const auto flagged = [&](BodyId id) { return std::find(continuous.begin(), continuous.end(), id) != continuous.end(); };
+  for (const Impact& i : w.impacts()) {
+    check(i.a.index < i.b.index && (flagged(i.a) || flagged(i.b)), "an impact names a continuous body");
+    check(i.t >= 0 && i.t <= 1, "an impact's time lies in the step");
+    check(std::abs(i.normal.norm() - 1) < 1e-9 && i.point.allFinite(), "an impact's normal is a unit vector");
+  }
+  check(std::is_sorted(w.impacts().begin(), w.impacts().end(),
+                       [](const Impact& x, const Impact& y) { return BodyPair{x.a, x.b} < BodyPair{y.a, y.b}; }),
+        "impacts sorted by pair");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -92,6 +106,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   World world({.fat_margin = (in.byte() % 3) * 0.1, .proximity_margin = margin});
   std::vector<BodyPair> before;
   std::vector<BodyId> removed;  // stale handles: every call with one must be refused
+  std::vector<BodyId> continuous;
   for (int op = 0; op < 64 && !in.empty(); ++op) {
     const auto state = snapshot(world);
     const std::vector<BodyId> ids = world.bodies();
@@ -104,7 +119,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       return some;
     };
     try {
-      switch (in.byte() % 6) {
+      switch (in.byte() % 7) {
         case 0:
           if (world.size() < 24) world.add(in.shape());
           break;
@@ -120,11 +135,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           world.remove(id);
           check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
           removed.push_back(id);
+          continuous.erase(std::remove(continuous.begin(), continuous.end(), id), continuous.end());
+          break;
+        }
+        case 5: {
+          const BodyId id = target();
+          const bool on = in.byte() % 2 == 0;
+          world.set_continuous(id, on);
+          check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
+          continuous.erase(std::remove(continuous.begin(), continuous.end(), id), continuous.end());
+          if (on) continuous.push_back(id);
           break;
         }
         case 3:
           world.update();
           compare_with_all_pairs(world, margin, before);
+          check_impacts(world, continuous);
           before = world.overlapping();
           break;
         case 4: {
