@@ -184,9 +184,10 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   if (p.delta == V2<Real>::Zero()) return std::nullopt;
   const Real flat = margin / 2;
-  // Scaled before it is squared: centres 1e-158 apart square to a denormal, and the direction
-  // divided by that norm came out 1e-9 off unit length (the fuzzer).
-  V2<Real> n = p.delta.stableNormalized();
+  // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
+  // denormal, and the direction divided by that norm came out 1e-9 off unit length (the fuzzer).
+  // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
+  V2<Real> n = V2<Real>(p.delta / p.delta.cwiseAbs().maxCoeff()).normalized();
   V2<Real> face = n;  // with a rectangle: the face normal the climb starts from, and the corners'
   V2<Real> side = n;  // side, which keeps the climb in one quarter turn from it
   Separation<Real> e;

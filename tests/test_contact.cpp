@@ -344,10 +344,14 @@ TEST(ContactNormal, UnitWhenTheCentresNearlyCoincide) {
                             {Circle{{0, 0}, 1}, Ellipse{tiny, 2, 1, 0}},
                             // the climb's start direction (the fuzzer: 1e-9 off unit length)
                             {Ellipse{{2.5278101602652375e-158, -8}, 8, 8, 5.5322820227311624e-222},
-                             Ellipse{{5.4110079941854194e-312, -8}, 8, 8, -8}}};
+                             Ellipse{{5.4110079941854194e-312, -8}, 8, 8, -8}},
+                            {Ellipse{{0, -8}, 8, 8, 3.8125}, Ellipse{{1.2598673968951787e-321, -8}, 8, 8, -8}}};
   for (const auto& pair : pairs) {
     const Contact c = contact(pair[0], pair[1]);
     EXPECT_NEAR(c.normal.norm(), 1.0, 4 * kU) << shape_name(pair[0]) << "-" << shape_name(pair[1]);
+    // Concentric to within 1e-160: the depth is the two radii across, the ellipse's minor one.
+    const double across = std::holds_alternative<Circle>(pair[1]) ? 14.125 : std::get<Ellipse>(pair[1]).b == 1 ? 2 : 16;
+    EXPECT_NEAR(c.separation, -across, 8 * kU * 16);
   }
 }
 
