@@ -2,7 +2,9 @@
 
 #include "narrowphase/query.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <type_traits>
 
@@ -64,7 +66,13 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
     reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
   }
-  const double tolerance = options.tolerance > 0 ? options.tolerance : 1e-9 * (reach(a) + reach(b));
+  // Poses along the step are rounded to their coordinates' ulps, and a separation below that cannot
+  // be kept: a step aimed closer could land on a rounded pose that overlaps (a bullet 1e6 from the
+  // origin, with a tolerance of 1e-12, did). The tolerance is at least 8 u of the coordinates.
+  const double coordinates = center_of(a).cwiseAbs().maxCoeff() + a_motion.velocity.cwiseAbs().maxCoeff() +
+                             center_of(b).cwiseAbs().maxCoeff() + b_motion.velocity.cwiseAbs().maxCoeff();
+  const double tolerance = std::max(options.tolerance > 0 ? options.tolerance : 1e-9 * (reach(a) + reach(b)),
+                                    8 * std::numeric_limits<double>::epsilon() * coordinates);
   const Vec2 v = b_motion.velocity - a_motion.velocity;
   const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +
                       std::abs(b_motion.angular_velocity) * turning_reach(b);

@@ -39,7 +39,8 @@ struct Motion {
 };
 
 struct ToiOptions {
-  // The separation at which contact counts; 0 means 1e-9 of the two shapes' reaches summed.
+  // The separation at which contact counts; 0 means 1e-9 of the two shapes' reaches summed. It is
+  // raised to 8 u of the largest coordinates the step reaches, below which poses are not resolved.
   double tolerance = 0.0;
   // Contact evaluations at most (each a contact() query); then the status is stalled.
   int max_iterations = 1000;
