@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 namespace collide2d::baseline {
 namespace {
@@ -109,6 +110,48 @@ std::optional<Box2dContact> box2d_contact(const ShapePair& pair) {
   for (int i = 1; i < manifold.pointCount; ++i) least = std::min(least, static_cast<double>(world.separations[i]));
   const Vec2 normal(world.normal.x, world.normal.y);
   return Box2dContact{least, swapped ? Vec2(-normal) : normal};
+}
+
+namespace {
+
+b2Sweep sweep_of(const Shape& s, const Motion& m, const Vec2& origin) {
+  b2Sweep sweep;
+  sweep.localCenter.SetZero();
+  sweep.c0 = to_float(center_of(s) - origin);
+  sweep.c = to_float(center_of(s) + m.velocity - origin);
+  sweep.a0 = static_cast<float>(angle_of(s));
+  sweep.a = static_cast<float>(angle_of(s) + m.angular_velocity);
+  sweep.alpha0 = 0.0f;
+  return sweep;
+}
+
+// The shape in its own frame: centred at the origin, angle 0.
+Shape at_rest(Shape s) {
+  std::visit(
+      [](auto& x) {
+        x.center = Vec2::Zero();
+        if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, Circle>) x.angle = 0.0;
+      },
+      s);
+  return s;
+}
+
+}  // namespace
+
+ToiPair to_box2d_toi(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, int sides, Fit fit) {
+  const Vec2 origin = center_of(a);
+  return {to_box2d(at_rest(a), sides, fit, Vec2::Zero()), to_box2d(at_rest(b), sides, fit, Vec2::Zero()),
+          sweep_of(a, ma, origin), sweep_of(b, mb, origin)};
+}
+
+void box2d_time_of_impact(const ToiPair& pair, b2TOIOutput* out) {
+  b2TOIInput input;
+  input.proxyA.Set(pair.a.vertices.data(), static_cast<int32>(pair.a.vertices.size()), pair.a.radius);
+  input.proxyB.Set(pair.b.vertices.data(), static_cast<int32>(pair.b.vertices.size()), pair.b.radius);
+  input.sweepA = pair.sweep_a;
+  input.sweepB = pair.sweep_b;
+  input.tMax = 1.0f;
+  b2TimeOfImpact(out, &input);
 }
 
 }  // namespace collide2d::baseline

@@ -10,6 +10,7 @@
 // shape radii; the polygons built here have radius 0, so overlap means the polygons themselves meet.
 #pragma once
 
+#include "narrowphase/time_of_impact.h"
 #include "shapes/shapes.h"
 
 #include <box2d/b2_broad_phase.h>
@@ -17,6 +18,7 @@
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
 #include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_time_of_impact.h>
 
 #include <optional>
 #include <vector>
@@ -60,5 +62,18 @@ struct Box2dContact {
   Vec2 normal;
 };
 std::optional<Box2dContact> box2d_contact(const ShapePair& pair);
+
+// b2TimeOfImpact's shapes and sweeps for two shapes moving over one step: each an N-gon (a circle a
+// point with its radius) in its own frame, swept by a b2Sweep from its pose at t = 0 by its motion,
+// centres relative to A's start.
+struct ToiPair {
+  Polygon a;
+  Polygon b;
+  b2Sweep sweep_a;
+  b2Sweep sweep_b;
+};
+ToiPair to_box2d_toi(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, int sides, Fit fit);
+// b2TimeOfImpact on the pair (tMax 1; the proxies are set per call, a few stores); out->t is in [0, 1].
+void box2d_time_of_impact(const ToiPair& pair, b2TOIOutput* out);
 
 }  // namespace collide2d::baseline
