@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and runs the built-in scene (4000 moving circles,
-# ellipses and rectangles) with `collide2d run`, writing a picture of the last frame.
+# ellipses and rectangles, and 8 continuous bullets) with `collide2d run`, writing a picture of the
+# last frame.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"

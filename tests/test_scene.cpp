@@ -17,6 +17,27 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
   EXPECT_EQ(back.bodies.size(), 60u);
+  // One bullet per 500 bodies, continuous, and read back so.
+  const Scene big = default_scene(1000, 10, 3);
+  ASSERT_EQ(big.bodies.size(), 1002u);
+  EXPECT_TRUE(big.bodies[1000].continuous && big.bodies[1001].continuous && !big.bodies[999].continuous);
+  EXPECT_TRUE(parse_scene(write_scene(big)) == big);
+}
+
+// A bullet crossing a wall within one frame (300 per second at 60 Hz: 5 per frame; the wall is 0.2
+// thick): the World's overlap test never sees it, its impacts do, once.
+TEST(SceneRun, BulletsHitWithinAFrame) {
+  const Scene scene = parse_scene(R"({"arena": {"min": [0, 0], "max": [100, 100]}, "frames": 2, "bodies": [
+      {"shape": "rect", "center": [50, 50], "half_extents": [0.1, 5]},
+      {"shape": "circle", "center": [47.6, 50], "radius": 0.1, "velocity": [300, 0], "continuous": true}]})");
+  SceneRun run(scene);
+  const RunSummary s = run.run(nullptr);
+  EXPECT_EQ(s.continuous, 1u);
+  EXPECT_EQ(s.impacts, 1u);
+  EXPECT_EQ(s.began, 0u);
+  std::ostringstream out;
+  print_summary(s, out);
+  EXPECT_NE(out.str().find("continuous bodies           1, 1 impacts within frames over the run"), std::string::npos) << out.str();
 }
 
 TEST(Scene, ExampleFileParses) {
@@ -57,6 +78,8 @@ TEST(Scene, BrokenFilesNameTheField) {
       {with_body(R"({"shape": "circle", "center": [1, 1], "radus": 1})"), "bodies[0]: unknown field 'radus'"},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1]})"), "bodies[0].velocity: expected an array"},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": -4})"), "bodies[0].id: expected a non-negative integer"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "continuous": "yes"})"),
+       "bodies[0].continuous: expected true or false, got \"yes\""},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1e999})"), "number overflow parsing '1e999'"},
   };
   for (const auto& [text, expected] : cases) {

@@ -36,9 +36,10 @@ constexpr const char* kUsage =
     "\n"
     "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
-    "  rectangles) through the sweep-and-prune broad phase and the narrow phase, frame by\n"
-    "  frame, then prints what they found and how long they took. --svg draws the last\n"
-    "  frame; --frames overrides the scene's frame count.\n"
+    "  rectangles and 8 continuous bullets) through the sweep-and-prune broad phase and the\n"
+    "  narrow phase, frame by frame, then prints what they found (bullets: their impacts\n"
+    "  within each frame) and how long it took. --svg draws the last frame; --frames\n"
+    "  overrides the scene's frame count.\n"
     "\n"
     "The speed-against-error report of the ellipse distance methods is a separate program\n"
     "of the build tree, bench/collide2d_report (it links Box2D; not installed).\n";

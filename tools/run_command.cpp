@@ -31,13 +31,18 @@ void draw_progress(std::ostream& out, int done, int total) {
 
 SceneRun::SceneRun(Scene scene)
     : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
-  for (const SceneBody& b : scene_.bodies) ids_.push_back(world_.add(b.shape, b.id));
+  for (const SceneBody& b : scene_.bodies) {
+    ids_.push_back(world_.add(b.shape, b.id));
+    if (b.continuous) world_.set_continuous(ids_.back());
+  }
 }
 
 RunSummary SceneRun::run(std::ostream* progress) {
   RunSummary s;
   s.frames = scene_.frames;
   s.bodies = scene_.bodies.size();
+  s.continuous = static_cast<std::size_t>(std::count_if(scene_.bodies.begin(), scene_.bodies.end(),
+                                                        [](const SceneBody& b) { return b.continuous; }));
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
@@ -55,6 +60,7 @@ RunSummary SceneRun::run(std::ostream* progress) {
     s.proximity_per_frame += static_cast<double>(f.proximity);
     s.began += world_.began().size();
     s.ended += world_.ended().size();
+    s.impacts += world_.impacts().size();
     if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames)) draw_progress(*progress, frame + 1, scene_.frames);
   }
   if (progress) *progress << '\n';
@@ -76,6 +82,7 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "overlapping pairs per frame " << s.overlapping_per_frame << " (narrow phase), " << s.began << " began, "
       << s.ended << " ended over the run\n"
       << "proximity pairs per frame   " << s.proximity_per_frame << '\n'
+      << "continuous bodies           " << s.continuous << ", " << s.impacts << " impacts within frames over the run\n"
       << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms << " ms\n"
       << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms << " ms\n";
 }

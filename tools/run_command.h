@@ -18,6 +18,8 @@ struct RunSummary {
   double proximity_per_frame = 0.0;    // pairs apart but within the margin, mean
   std::size_t began = 0;               // overlap events over the run
   std::size_t ended = 0;
+  std::size_t continuous = 0;          // bullets
+  std::size_t impacts = 0;             // their first contacts within a frame, over the run
   double broad_median_ms = 0.0;
   double broad_p95_ms = 0.0;
   double narrow_median_ms = 0.0;

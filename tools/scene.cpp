@@ -86,8 +86,9 @@ Shape parse_shape(const json& b, const std::string& field) {
 SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = "bodies[" + std::to_string(index) + "]";
   if (!b.is_object()) fail(field, "expected an object");
-  reject_unknown_keys(b, {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id"},
-                      field);
+  reject_unknown_keys(
+      b, {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id", "continuous"},
+      field);
   SceneBody body;
   body.shape = parse_shape(b, field);
   if (const auto it = b.find("velocity"); it != b.end()) body.velocity = vec2(*it, field + ".velocity");
@@ -96,6 +97,10 @@ SceneBody parse_body(const json& b, std::size_t index) {
   if (const auto it = b.find("id"); it != b.end()) {
     if (!it->is_number_unsigned()) fail(field + ".id", "expected a non-negative integer, got " + it->dump());
     body.id = it->get<std::uint64_t>();
+  }
+  if (const auto it = b.find("continuous"); it != b.end()) {
+    if (!it->is_boolean()) fail(field + ".continuous", "expected true or false, got " + it->dump());
+    body.continuous = it->get<bool>();
   }
   return body;
 }
@@ -139,7 +144,8 @@ bool same_shape(const Shape& a, const Shape& b) {
 }  // namespace
 
 bool SceneBody::operator==(const SceneBody& o) const {
-  return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id;
+  return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id &&
+         continuous == o.continuous;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -185,6 +191,7 @@ std::string write_scene(const Scene& scene) {
     j["velocity"] = {b.velocity.x(), b.velocity.y()};
     j["angular_velocity"] = b.angular_velocity;
     j["id"] = b.id;
+    if (b.continuous) j["continuous"] = true;
     bodies.push_back(std::move(j));
   }
   const json root{{"arena", {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
@@ -218,6 +225,12 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
     const double speed = uniform(0, 6);
     scene.bodies.push_back({shape, speed * Vec2(std::cos(heading), std::sin(heading)), uniform(-1, 1),
                             static_cast<std::uint64_t>(k)});
+  }
+  for (int k = 0; k < count / 500; ++k) {
+    const double heading = uniform(0, 2 * std::numbers::pi);
+    scene.bodies.push_back({Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1},
+                            300 * Vec2(std::cos(heading), std::sin(heading)), 0.0,
+                            static_cast<std::uint64_t>(count + k), true});
   }
   return scene;
 }
