@@ -42,18 +42,11 @@ Aabb grown(const Aabb& box, double by) { return {box.min.array() - by, box.max.a
 
 Aabb merged(const Aabb& p, const Aabb& q) { return {p.min.cwiseMin(q.min), p.max.cwiseMax(q.max)}; }
 
-// The farthest point of a shape from its centre.
-double reach(const Shape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
-  return std::get<Rect>(s).half_extents.norm();
-}
-
 // Every pose of a step from `start` to `end` (its centre on the segment, any angle) lies in the
 // segment grown by the shape's reach; the two end boxes are kept in it against rounding.
 Aabb swept(const Shape& start, const Shape& end) {
   const Vec2 c0 = center_of(start), c1 = center_of(end);
-  const double r = reach(end);
+  const double r = reach_of(end);
   return merged(merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(start)), aabb(end));
 }
 

@@ -13,16 +13,7 @@ namespace {
 
 // How far a turning shape's support function can move per unit of turn: its farthest point from
 // the centre. A circle's does not move at all.
-double turning_reach(const Shape& s) {
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
-  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.norm();
-  return 0.0;
-}
-
-double reach(const Shape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
-  return turning_reach(s);
-}
+double turning_reach(const Shape& s) { return std::holds_alternative<Circle>(s) ? 0.0 : reach_of(s); }
 
 [[noreturn]] void reject(const char* which, const char* field, double value, const char* rule) {
   std::ostringstream msg;
@@ -71,7 +62,7 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   // origin, with a tolerance of 1e-12, did). The tolerance is at least 8 u of the coordinates.
   const double coordinates = center_of(a).cwiseAbs().maxCoeff() + a_motion.velocity.cwiseAbs().maxCoeff() +
                              center_of(b).cwiseAbs().maxCoeff() + b_motion.velocity.cwiseAbs().maxCoeff();
-  const double tolerance = std::max(options.tolerance > 0 ? options.tolerance : 1e-9 * (reach(a) + reach(b)),
+  const double tolerance = std::max(options.tolerance > 0 ? options.tolerance : 1e-9 * (reach_of(a) + reach_of(b)),
                                     8 * std::numeric_limits<double>::epsilon() * coordinates);
   const Vec2 v = b_motion.velocity - a_motion.velocity;
   const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +

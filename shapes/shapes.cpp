@@ -2,6 +2,7 @@
 
 #include "shapes/rotation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -93,6 +94,12 @@ double angle_of(const Shape& s) {
   if (const auto* e = std::get_if<Ellipse>(&s)) return e->angle;
   if (const auto* r = std::get_if<Rect>(&s)) return r->angle;
   return 0.0;
+}
+
+double reach_of(const Shape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
+  return std::get<Rect>(s).half_extents.norm();
 }
 
 bool intersects(const Aabb& p, const Aabb& q) {

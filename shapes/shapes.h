@@ -80,6 +80,9 @@ const char* shape_name(const Shape& s);
 // The centre of any shape, and its angle (0 for a circle).
 Vec2 center_of(const Shape& s);
 double angle_of(const Shape& s);
+// The distance from the centre to the shape's farthest point: the radius, the major semi-axis, the
+// half diagonal.
+double reach_of(const Shape& s);
 
 // Whether two closed boxes share a point.
 bool intersects(const Aabb& p, const Aabb& q);

@@ -73,6 +73,13 @@ std::vector<Shape> random_shapes(int n) {
   return out;
 }
 
+// The farthest point from the centre: a radius, a major semi-axis, a half diagonal (3-4-5).
+TEST(Shapes, ReachIsTheFarthestPointFromTheCentre) {
+  EXPECT_EQ(reach_of(Circle{{1, 2}, 0.5}), 0.5);
+  EXPECT_EQ(reach_of(Ellipse{{1, 2}, 0.5, 2, 0.3}), 2.0);
+  EXPECT_EQ(reach_of(Rect{{1, 2}, {3, 4}, 0.3}), 5.0);
+}
+
 TEST(Shapes, SupportMaximisesTheDirection) {
   std::mt19937_64 rng(10);
   std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
