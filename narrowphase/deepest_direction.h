@@ -172,22 +172,25 @@ Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Sep
   }
 }
 
-// The quick way, tried before the search: from the line of centres (with a rectangle, from its
-// face normal nearest that line, where s has a kink and the maximum of a face contact sits) Newton
-// climbs s' while s is concave, and the maximum it reaches is kept when disc_bound certifies it.
-// Pairs apart, and overlaps shallower than the radii, end here after two or three evaluations;
-// nullopt hands the rest (a step leaving its quarter turn, a convex stretch, a bound too loose)
-// to the search; `evaluations` counts the support evaluations either way.
+// The quick way, tried before the search: from `start` (a direction near the expected normal, such
+// as the last step's; zero: the line of centres), or with a rectangle from its face normal nearest
+// that direction (where s has a kink and the maximum of a face contact sits), Newton climbs s' while
+// s is concave, and the maximum it reaches is kept when disc_bound certifies it. Pairs apart, and
+// overlaps shallower than the radii, end here after two or three evaluations; nullopt hands the
+// rest (a step leaving its quarter turn, a convex stretch, a bound too loose) to the search;
+// `evaluations` counts the support evaluations either way.
 template <class Real, class SA, class SB>
-std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, Real margin, int& evaluations) {
+std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin,
+                                             int& evaluations) {
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
-  if (p.delta == V2<Real>::Zero()) return std::nullopt;
+  const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
+  if (toward == V2<Real>::Zero()) return std::nullopt;
   const Real flat = margin / 2;
   // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
   // denormal, and the direction divided by that norm came out 1e-9 off unit length (the fuzzer).
   // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
-  V2<Real> n = V2<Real>(p.delta / p.delta.cwiseAbs().maxCoeff()).normalized();
+  V2<Real> n = V2<Real>(toward / toward.cwiseAbs().maxCoeff()).normalized();
   V2<Real> face = n;  // with a rectangle: the face normal the climb starts from, and the corners'
   V2<Real> side = n;  // side, which keeps the climb in one quarter turn from it
   Separation<Real> e;
@@ -209,31 +212,46 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   const auto in_quarter = [&](const V2<Real>& v) { return !sided || (cross(face, v) * cross(face, side) > 0 && v.dot(face) > 0); };
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
   // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
+  // Where s > 0 the shapes are apart and s is concave on the whole arc where it is positive, with
+  // the maximum inside: a step that is too long (over half a right angle, or landing lower) is cut
+  // instead of handing over to the search. A time of impact climbs from the last step's normal,
+  // which the shapes' approach has turned away from, and one in six of its climbs ended there.
   for (int k = 0; !kink && (abs(e.slope) > flat || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
-    const Real tau = e.slope / (2 * e.bend);  // Newton on s' in tan(angle / 2)
-    if (k == 6 || !(e.bend > 0) || !(abs(tau) < Real(0.5))) return std::nullopt;
-    const V2<Real> next = turned(n, Real(1), tau);
-    if (!in_quarter(next)) return std::nullopt;
-    const Separation<Real> en = p.separation(next, sided ? side : next);
-    ++evaluations;
-    if (en.s < e.s - margin) return std::nullopt;
-    n = next, e = en;
+    const bool apart = e.s > 0;
+    if (k == (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
+    Real tau = e.slope / (2 * e.bend);  // Newton on s' in tan(angle / 2)
+    if (!(abs(tau) < Real(0.5))) {
+      if (!apart) return std::nullopt;
+      tau = std::copysign(Real(0.5), tau);
+    }
+    for (;;) {
+      const V2<Real> next = turned(n, Real(1), tau);
+      if (!in_quarter(next)) return std::nullopt;
+      const Separation<Real> en = p.separation(next, sided ? side : next);
+      ++evaluations;
+      if (en.s >= e.s - margin) {
+        n = next, e = en;
+        break;
+      }
+      if (!apart || evaluations > 16) return std::nullopt;
+      tau /= 2;
+    }
   }
   if (!(disc_bound(p, n, e) <= e.s + margin)) return std::nullopt;
   return Deepest<Real>{{n, e}, evaluations};
 }
 
-// The global maximum of s: certified_climb, else the search. The directions and arcs live in
-// buffers kept per thread, so that a query allocates nothing once warm.
+// The global maximum of s: certified_climb from `start`, else the search. The directions and arcs
+// live in buffers kept per thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
-Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 4096) {
+Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, int cap = 4096) {
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   // Arcs are dropped within 8 u of the scale of the best value: the bound's own rounding is a few
   // u of the scale (the pair's margin(), 64 u, left the 1e-12 target met but let a needle pair's
   // distance fall 138 u short).
   const Real margin = 8 * std::numeric_limits<Real>::epsilon() * p.scale;
   Deepest<Real> best;
-  if (const auto quick = certified_climb(p, margin, best.evaluations)) return *quick;
+  if (const auto quick = certified_climb(p, start, margin, best.evaluations)) return *quick;
   // Not seeded with the climb's best: a point short of its maximum by less than the rounding of s
   // would be kept over the polished one.
   best.at.s = -std::numeric_limits<Real>::infinity();
@@ -247,17 +265,17 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, int cap = 40
     return static_cast<int>(ends.size()) - 1;
   };
   const auto end = [&](int i) -> const ArcEnd<Real>& { return ends[static_cast<std::size_t>(i)]; };
-  V2<Real> start[5];
-  starting_directions(p, start);
+  V2<Real> axes[5];
+  starting_directions(p, axes);
   // Smooth shapes see one value per direction; a rectangle's corner depends on the arc, so each
   // start has a value for the arc before it and one for the arc after (one curved support for both).
   V2<Real> sides[4];
-  for (int k = 0; k < 4; ++k) sides[k] = (start[k] + start[k + 1]).normalized();
-  int before[4], after[4];  // the ends at start[k] as seen from the arcs k - 1 and k
+  for (int k = 0; k < 4; ++k) sides[k] = (axes[k] + axes[k + 1]).normalized();
+  int before[4], after[4];  // the ends at axes[k] as seen from the arcs k - 1 and k
   for (int k = 0; k < 4; ++k) {
-    const std::array<Separation<Real>, 2> e = p.separations(start[k], sides[(k + 3) % 4], sides[k]);
-    before[k] = add(start[k], e[0]);
-    after[k] = sided ? add(start[k], e[1]) : before[k];
+    const std::array<Separation<Real>, 2> e = p.separations(axes[k], sides[(k + 3) % 4], sides[k]);
+    before[k] = add(axes[k], e[0]);
+    after[k] = sided ? add(axes[k], e[1]) : before[k];
   }
   for (int k = 0; k < 4; ++k) {
     const int x = after[k], y = before[(k + 1) % 4];

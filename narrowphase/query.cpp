@@ -61,12 +61,25 @@ DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b, const Distanc
   return distance_ellipse_ellipse(a, b, o.ellipse).result;
 }
 
-Contact contact_kernel(const Rect& a, const Rect& b, const ContactOptions& o) { return contact_rect_rect(a, b, o); }
-Contact contact_kernel(const Rect& a, const Circle& b, const ContactOptions&) { return contact_rect_circle(a, b); }
-Contact contact_kernel(const Rect& a, const Ellipse& b, const ContactOptions&) { return contact_rect_ellipse(a, b); }
-Contact contact_kernel(const Circle& a, const Circle& b, const ContactOptions&) { return contact_circle_circle(a, b); }
-Contact contact_kernel(const Circle& a, const Ellipse& b, const ContactOptions&) { return contact_circle_ellipse(a, b); }
-Contact contact_kernel(const Ellipse& a, const Ellipse& b, const ContactOptions&) { return contact_ellipse_ellipse(a, b); }
+using O = Orientation;
+Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, const ContactOptions& o) {
+  return contact_rect_rect(a, oa, b, ob, o);
+}
+Contact contact_kernel(const Rect& a, const O& oa, const Circle& b, const O&, const ContactOptions&) {
+  return contact_rect_circle(a, oa, b);
+}
+Contact contact_kernel(const Rect& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o) {
+  return contact_rect_ellipse(a, oa, b, ob, o);
+}
+Contact contact_kernel(const Circle& a, const O&, const Circle& b, const O&, const ContactOptions&) {
+  return contact_circle_circle(a, b);
+}
+Contact contact_kernel(const Circle& a, const O&, const Ellipse& b, const O& ob, const ContactOptions&) {
+  return contact_circle_ellipse(a, b, ob);
+}
+Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o) {
+  return contact_ellipse_ellipse(a, oa, b, ob, o);
+}
 
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 
@@ -159,7 +172,20 @@ DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceO
 }
 
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
-  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return contact_kernel(x, y, options); });
+  validate(a);
+  validate(b);
+  if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
+  return contact(a, Orientation::of(angle_of(a)), b, Orientation::of(angle_of(b)), options);
+}
+
+Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
+                const ContactOptions& options) {
+  return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
+    if (!swapped) return contact_kernel(x, a_orientation, y, b_orientation, options);
+    ContactOptions reversed = options;
+    reversed.guess = -options.guess;
+    return contact_kernel(x, b_orientation, y, a_orientation, reversed).swapped();
+  });
 }
 
 }  // namespace collide2d

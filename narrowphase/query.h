@@ -62,5 +62,10 @@ bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options
 DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options = {});
+// The same contact, bit for bit, for callers that validated both shapes when they posed them and
+// keep each one's Orientation::of(angle_of(shape)) (the World, a time of impact): no validation, no
+// cosines and sines.
+Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
+                const ContactOptions& options = {});
 
 }  // namespace collide2d

@@ -138,6 +138,18 @@ TEST_P(ContactFamilies, MatchReference) {
     EXPECT_LE(off_a, 16 * kU * scale) << what << " point_a is off A";
     EXPECT_LE(off_b, 16 * kU * scale) << what << " point_b is off B";
 
+    // A guess moves only where the climb starts: from near the normal, and from its opposite.
+    const double c3 = std::cos(0.3), s3 = std::sin(0.3);
+    for (const Vec2& guess : {Vec2(c3 * ref_normal.x() - s3 * ref_normal.y(), s3 * ref_normal.x() + c3 * ref_normal.y()),
+                              Vec2(-ref_normal)}) {
+      ContactOptions from;
+      from.guess = guess;
+      const Contact guessed = contact(c.a, c.b, from);
+      EXPECT_LE(std::abs(guessed.separation - ref_sep) / scale, 8 * kU)
+          << what << " from the guess (" << guess.transpose() << "): " << guessed.separation << " reference " << ref_sep;
+      EXPECT_LE(guessed.evaluations, 1000) << what << " support evaluations from a guess";
+    }
+
     const Contact back = contact(c.b, c.a);
     EXPECT_EQ(back.separation, got.separation) << what << " swapped";
     // Shapes of one kind and one centre are dispatched in one order both ways, and -n maximises s
@@ -230,6 +242,30 @@ TEST(ContactOrientations, KeptGiveTheSameContact) {
       EXPECT_EQ(plain.point_a, kept.point_a);
       EXPECT_EQ(plain.point_b, kept.point_b);
       EXPECT_EQ(plain.manifold_size, kept.manifold_size);
+    }
+  }
+  EXPECT_GT(compared, 500);
+}
+
+// The same for the query over any pair (either order, shapes of one kind put in kernel order).
+TEST(ContactOrientations, KeptByTheCallerGiveTheSameQuery) {
+  int compared = 0;
+  for (const ContactFamily& cf : contact_families()) {
+    Family f = cf.family;
+    f.cases = 6;
+    for (const Case& c : family_cases(f)) {
+      const Orientation oa = Orientation::of(angle_of(c.a)), ob = Orientation::of(angle_of(c.b));
+      for (const bool swap : {false, true}) {
+        const Shape& a = swap ? c.b : c.a;
+        const Shape& b = swap ? c.a : c.b;
+        const Contact plain = contact(a, b);
+        const Contact kept = contact(a, swap ? ob : oa, b, swap ? oa : ob);
+        EXPECT_EQ(plain.separation, kept.separation) << describe(a) << " ; " << describe(b);
+        EXPECT_EQ(plain.normal, kept.normal);
+        EXPECT_EQ(plain.point_a, kept.point_a);
+        EXPECT_EQ(plain.point_b, kept.point_b);
+        ++compared;
+      }
     }
   }
   EXPECT_GT(compared, 500);
@@ -366,6 +402,14 @@ TEST(ContactManifold, CurvedPairsGiveOnePoint) {
 TEST(ContactValidation, NamesTheBadField) {
   EXPECT_THROW(contact(Circle{{0, 0}, -1}, Circle{}), InvalidShape);
   EXPECT_THROW(contact(Rect{}, Ellipse{{0, std::nan("")}, 1, 1, 0}), InvalidShape);
+  ContactOptions bad;
+  bad.guess = Vec2(1, INFINITY);
+  try {
+    contact(Rect{}, Ellipse{{3, 0}, 1, 1, 0}, bad);
+    ADD_FAILURE() << "an infinite guess was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "contact guess must be finite");
+  }
 }
 
 }  // namespace
