@@ -11,9 +11,18 @@
 namespace collide2d {
 namespace {
 
-// How far a turning shape's support function can move per unit of turn: its farthest point from
-// the centre. A circle's does not move at all.
-double turning_reach(const Shape& s) { return std::holds_alternative<Circle>(s) ? 0.0 : reach_of(s); }
+// How fast a shape's support function h(n) changes as the shape turns, per radian: the distance
+// from the centre of the normal line at the support point, |p x n|, at its largest. For an ellipse
+// the point (a cos u, b sin u) gives (a^2 - b^2) |sin u cos u| / sqrt(b^2 cos^2 u + a^2 sin^2 u),
+// largest at tan^2 u = b / a, where it is a - b; a rectangle's corner (hx, hy) supports the
+// directions between its two faces' normals, where |hx n_y - hy n_x| is largest at a face normal:
+// the longer half side. Both are less than the farthest point, the bound of plain conservative
+// advancement, and a circle's is 0.
+double turning_reach(const Shape& s) {
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::abs(e->a - e->b);
+  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.maxCoeff();
+  return 0.0;
+}
 
 [[noreturn]] void reject(const char* which, const char* field, double value, const char* rule) {
   std::ostringstream msg;
@@ -67,9 +76,18 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   const Vec2 v = b_motion.velocity - a_motion.velocity;
   const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +
                       std::abs(b_motion.angular_velocity) * turning_reach(b);
+  // Shapes stay valid over the step (validate above), and only a turning one needs its cosine and
+  // sine again.
+  const Orientation a_start = Orientation::of(angle_of(a)), b_start = Orientation::of(angle_of(b));
+  const auto orientation = [](const Shape& s, const Motion& m, const Orientation& start) {
+    return m.angular_velocity == 0 ? start : Orientation::of(angle_of(s));
+  };
   double t = 0.0;
+  ContactOptions warm;  // each step's climb starts from the last normal, near the next one
   for (int k = 1;; ++k) {
-    const Contact c = contact(at_time(a, a_motion, t), at_time(b, b_motion, t));
+    const Shape at_a = at_time(a, a_motion, t), at_b = at_time(b, b_motion, t);
+    const Contact c = contact(at_a, orientation(at_a, a_motion, a_start), at_b, orientation(at_b, b_motion, b_start), warm);
+    warm.guess = c.normal;
     if (k == 1 && c.separation <= 0) return result(ToiStatus::overlapping, 0.0, c, k);
     if (c.separation <= tolerance) return result(ToiStatus::hit, t, c, k);
     const double closing = spin - c.normal.dot(v);  // the fastest the separation can fall

@@ -8,15 +8,19 @@
 // Method: conservative advancement on the exact signed distance d(t) (contact(), narrowphase/
 // contact.h). At time t, with separation d and normal n, the separation of the pair along the fixed
 // direction n changes at the rate n.(v_B - v_A) plus that of the two support functions, and a
-// shape turning at rate w changes its support function at most |w| R (R its farthest point from the
-// centre; 0 for a circle). As d(t') >= s(n, t'),
-//   d(t') >= d - (W - n.(v_B - v_A)) (t' - t),      W = |w_A| R_A + |w_B| R_B,
+// shape turning at rate w changes its support function at most |w| L, L the largest distance of its
+// normal lines from its centre (a - b for an ellipse, the longer half side of a rectangle, 0 for a
+// circle; time_of_impact.cpp derives them), less than the farthest point that Mirtich's
+// conservative advancement uses. As d(t') >= s(n, t'),
+//   d(t') >= d - (W - n.(v_B - v_A)) (t' - t),      W = |w_A| L_A + |w_B| L_B,
 // and the step goes to where this lower bound reaches half the tolerance: never past the first time
 // the shapes touch, nor past the first time their separation falls to half the tolerance. For
 // translation alone (W = 0) d is convex in t (a maximum of functions affine in t) with slope
 // n.(v_B - v_A) at t, so the step is Newton's on d from below its root: quadratic, never past it.
 // With rotation the bound is Lipschitz and the convergence linear, fast while the approach is
-// mostly translation and slower the more the spin's bound exceeds the actual approach.
+// mostly translation and slower the more the spin's bound exceeds the actual approach. Each step's
+// contact climbs from the last step's normal (ContactOptions::guess) and reuses the cosines and
+// sines of a shape that does not turn.
 //
 // Result. hit: the separation at t is within (0, tolerance]; the solids first touch at or after t,
 // and at most tolerance / (closing speed) later. miss: the lower bound stays above half the
