@@ -17,8 +17,14 @@
 // the shapes touch, nor past the first time their separation falls to half the tolerance. For
 // translation alone (W = 0) d is convex in t (a maximum of functions affine in t) with slope
 // n.(v_B - v_A) at t, so the step is Newton's on d from below its root: quadratic, never past it.
-// With rotation the bound is Lipschitz and the convergence linear, fast while the approach is
-// mostly translation and slower the more the spin's bound exceeds the actual approach. Each step's
+// With rotation that bound alone converges linearly, so a second one, a Taylor bound, rides along:
+// each turning support function along n is at most a parabola in t' - t (an ellipse's, from its
+// exact slope and h'' <= a^2 / b - b; a rectangle's, the largest of one parabola per corner), so
+// s(n, t') is at least a concave function whose first root is safe too, and the step goes to the
+// later of the two roots (time_of_impact.cpp). An ellipse pair turning 2 radians per step now
+// takes about 5 contact evaluations instead of 8.5. Face contacts with a turning rectangle stay
+// slow: along the fixed n its far corner rises at once while d does not move to first order, the
+// weakness of any fixed axis (Box2D's face separation functions turn with the body). Each step's
 // contact climbs from the last step's normal (ContactOptions::guess) and reuses the cosines and
 // sines of a shape that does not turn.
 //
