@@ -72,7 +72,7 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
   if (const auto* e = std::get_if<Ellipse>(&s)) {
     const Vec2 q(e->a * e->a * local.x(), e->b * e->b * local.y());
     const double major = std::max(e->a, e->b), minor = std::min(e->a, e->b);
-    out.pieces[0] = {0.0, w * turn(q / std::hypot(e->a * local.x(), e->b * local.y())),
+    out.pieces[0] = {0.0, w * turn(q / std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y())),
                      w * w * (major * major / minor - minor)};
   } else if (const auto* r = std::get_if<Rect>(&s)) {
     // The support corner first: its pieces decide most steps.
@@ -88,34 +88,51 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
   return out;
 }
 
-// The first time at which gap + slope t - bend t^2 / 2 (gap > 0, bend >= 0) falls to 0.
+// The first time at which gap + slope t - bend t^2 / 2 (gap > 0, bend >= 0) falls to 0; 0 where
+// the terms overflow (an infinite bend over an infinite root would claim a miss).
 double first_root(double gap, double slope, double bend) {
-  if (slope <= 0) return 2 * gap / (std::sqrt(slope * slope + 2 * bend * gap) - slope);
-  return bend > 0 ? (slope + std::sqrt(slope * slope + 2 * bend * gap)) / bend : INFINITY;
+  if (std::isnan(slope) || std::isnan(bend)) return 0.0;
+  if (bend == 0) return slope < 0 ? gap / -slope : INFINITY;
+  const double root = slope <= 0 ? 2 * gap / (std::sqrt(slope * slope + 2 * bend * gap) - slope)
+                                 : (slope + std::sqrt(slope * slope + 2 * bend * gap)) / bend;
+  return root >= 0 ? root : 0.0;
 }
 
-// The time from now until the separation d along the normal n could fall to `target`, from two lower
-// bounds of it (time_of_impact.h): the rate bound d - closing t, and the Taylor bound: d less the
-// growth of both support bounds, the least over their pieces, a concave function of t. The later of
-// the two first roots is safe. `along` is n.(v_B - v_A), less its rounding. A pair of pieces positive
-// at the time found so far is positive before it (concave) and needs no root.
-double safe_step(double d, double target, double closing, double along, const SupportBound& a,
-                 const SupportBound& b) {
-  const double linear = closing > 0 ? (d - target) / closing : INFINITY;
-  double taylor = INFINITY;
-  for (int i = 0; i < a.count; ++i) {
-    for (int j = 0; j < b.count; ++j) {
-      const Parabola& pa = a.pieces[static_cast<std::size_t>(i)];
-      const Parabola& pb = b.pieces[static_cast<std::size_t>(j)];
-      const double gap = d - target + pa.gap + pb.gap, bend = pa.bend + pb.bend;
-      const double slope = along - pa.slope - pb.slope;
-      const auto at = [&](double t) { return gap + slope * t - bend * t * t / 2; };
-      if (linear < INFINITY && !(at(linear) > 0)) return linear;
-      if (taylor < INFINITY && at(taylor) > 0) continue;
-      taylor = std::min(taylor, first_root(gap, slope, bend));
+// A lower bound of the separation along an axis u(t') that starts at the normal n and turns at a
+// constant rate omega: d(t') >= s(u(t'), t') for any axis, as d is the largest separation over all
+// of them. Each shape then turns relative to the axis, at its rate less omega, and the centres'
+// offset c + v t' (now c) projects onto the axis as (c.n + t' v.n) cos x + (c.m + t' v.m) sin x,
+// x = omega t', m = perp(n): at least c.n + (v.n + omega c.m) t' - bend t'^2 / 2 with
+// bend = omega^2 (|c.n| + |c.m| + |v.n| + |v.m|) + 2 |omega v.m| for t' <= 1 (|cos x - 1| and
+// |sin x - x| are at most x^2 / 2). An axis fixed in the world (omega 0) suits curved contacts; one
+// that turns with a rectangle suits a contact on its face, which a fixed axis sees its far corner
+// cross at once (Box2D's face separation functions turn with the body too).
+struct Axis {
+  double slope = 0.0;  // of the centres' term, less its rounding
+  double bend = 0.0;
+  SupportBound a;      // A's support function along u, B's along -u
+  SupportBound b;
+};
+
+// The later of `step` and the first time at which the axis' bound could fall from `gap` (the
+// separation less its target) to 0: the least over pairs of support pieces of a concave function of
+// time. A pair of pieces not above 0 at `step` makes this axis no better than `step`; a pair
+// positive at the least root found so far is positive before it (concave) and needs no root.
+double later_root(double step, double gap, const Axis& axis) {
+  double root = INFINITY;
+  for (int i = 0; i < axis.a.count; ++i) {
+    for (int j = 0; j < axis.b.count; ++j) {
+      const Parabola& pa = axis.a.pieces[static_cast<std::size_t>(i)];
+      const Parabola& pb = axis.b.pieces[static_cast<std::size_t>(j)];
+      const double g = gap + pa.gap + pb.gap, bend = axis.bend + pa.bend + pb.bend;
+      const double slope = axis.slope - pa.slope - pb.slope;
+      const auto at = [&](double t) { return g + slope * t - bend * t * t / 2; };
+      if (step < INFINITY && !(at(step) > 0)) return step;
+      if (root < INFINITY && at(root) > 0) continue;
+      root = std::min(root, first_root(g, slope, bend));
     }
   }
-  return std::max(linear, taylor);
+  return std::max(step, root);
 }
 
 TimeOfImpact result(ToiStatus status, double t, const Contact& c, int iterations) {
@@ -151,9 +168,7 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   const Vec2 v = b_motion.velocity - a_motion.velocity;
   const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +
                       std::abs(b_motion.angular_velocity) * turning_reach(b);
-  // The Taylor bound's slope less the rounding of its terms (n is a rounded unit vector), which the
-  // tolerance of a fast bullet would not cover.
-  const double slope_rounding = 16 * kU * (v.norm() + spin);
+  const double reaches = turning_reach(a) + turning_reach(b);
   // Shapes stay valid over the step (validate above), and only a turning one needs its cosine and
   // sine again.
   const Orientation a_start = Orientation::of(angle_of(a)), b_start = Orientation::of(angle_of(b));
@@ -169,11 +184,29 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
     warm.guess = c.normal;
     if (k == 1 && c.separation <= 0) return result(ToiStatus::overlapping, 0.0, c, k);
     if (c.separation <= tolerance) return result(ToiStatus::hit, t, c, k);
-    const double along = c.normal.dot(v);
+    // The step goes to the latest of the first times at which a lower bound of d could fall to half
+    // the tolerance: the rate bound, then the Taylor bounds along a fixed axis and along axes that
+    // turn with either shape (time_of_impact.h).
+    const Vec2 n = c.normal, m(-n.y(), n.x());
+    const double along = n.dot(v), gap = c.separation - tolerance / 2;
     const double closing = spin - along;  // the fastest the separation can fall
-    const double step = safe_step(c.separation, tolerance / 2, closing, along - slope_rounding,
-                                  support_bound(at_a, oa, a_motion.angular_velocity, c.normal),
-                                  support_bound(at_b, ob, b_motion.angular_velocity, -c.normal));
+    double step = closing > 0 ? gap / closing : INFINITY;
+    const Vec2 centres = center_of(at_b) - center_of(at_a);
+    const double offset = std::abs(centres.dot(n)) + std::abs(centres.dot(m)) + std::abs(along) + std::abs(m.dot(v));
+    const double wa = a_motion.angular_velocity, wb = b_motion.angular_velocity;
+    const std::array<double, 3> omegas{0.0, wa, wb};
+    for (std::size_t i = 0; i < omegas.size(); ++i) {
+      const double omega = omegas[i];
+      // An axis already tried; and the fixed one when both shapes turn, which cost more than it
+      // saved (3% more steps, a fifth less time for rectangle pairs in bench_toi).
+      if ((i == 0 && wa != 0 && wb != 0) || (i > 0 && omega == 0.0) || (i == 2 && omega == wa)) continue;
+      // The slope less the rounding of its terms (n is a rounded unit vector), which the tolerance
+      // of a fast bullet would not cover.
+      const double rounding = 16 * kU * (v.norm() + spin + std::abs(omega) * (centres.norm() + reaches));
+      const Axis axis{along + omega * centres.dot(m) - rounding, omega * omega * offset + 2 * std::abs(omega * m.dot(v)),
+                      support_bound(at_a, oa, wa - omega, n), support_bound(at_b, ob, wb - omega, -n)};
+      step = later_root(step, gap, axis);
+    }
     if (!(t + step < 1.0)) return result(ToiStatus::miss, 1.0, c, k);
     if (k == options.max_iterations) return result(ToiStatus::stalled, t, c, k);
     t += step;

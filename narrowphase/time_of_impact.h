@@ -17,16 +17,19 @@
 // the shapes touch, nor past the first time their separation falls to half the tolerance. For
 // translation alone (W = 0) d is convex in t (a maximum of functions affine in t) with slope
 // n.(v_B - v_A) at t, so the step is Newton's on d from below its root: quadratic, never past it.
-// With rotation that bound alone converges linearly, so a second one, a Taylor bound, rides along:
-// each turning support function along n is at most a parabola in t' - t (an ellipse's, from its
-// exact slope and h'' <= a^2 / b - b; a rectangle's, the largest of one parabola per corner), so
-// s(n, t') is at least a concave function whose first root is safe too, and the step goes to the
-// later of the two roots (time_of_impact.cpp). An ellipse pair turning 2 radians per step now
-// takes about 5 contact evaluations instead of 8.5. Face contacts with a turning rectangle stay
-// slow: along the fixed n its far corner rises at once while d does not move to first order, the
-// weakness of any fixed axis (Box2D's face separation functions turn with the body). Each step's
-// contact climbs from the last step's normal (ContactOptions::guess) and reuses the cosines and
-// sines of a shape that does not turn.
+// With rotation that bound alone converges linearly, so Taylor bounds ride along. d(t') is at least
+// the separation along any axis u(t'), as it is the largest over all of them; take u turning from
+// n at a constant rate omega. Each shape then turns relative to the axis, and its support function
+// along u is at most a parabola in t' - t (an ellipse's from its exact slope and h'' <= a^2 / b - b;
+// a rectangle's the largest of one parabola per corner), as is the centres' offset projected on u
+// from below, so d(t') is at least a concave function whose first root is safe too. The axes: one
+// turning with A, one with B (a contact on a rectangle's face: along a fixed axis its far corner
+// crosses at once while d does not move to first order; Box2D's face separation functions turn
+// with the body too), and the fixed one unless both turn. The step goes to the latest of all the
+// first roots (time_of_impact.cpp). On bench_toi's pairs turning up to 2 radians per step the
+// mean contact evaluations fell from 10.2 to 5.0 (ellipse pairs), 12.1 to 5.3 (rect–ellipse) and
+// 13.4 to 5.5 (rectangle pairs). Each step's contact climbs from the last step's normal
+// (ContactOptions::guess) and reuses the cosines and sines of a shape that does not turn.
 //
 // Result. hit: the separation at t is within (0, tolerance]; the solids first touch at or after t,
 // and at most tolerance / (closing speed) later. miss: the lower bound stays above half the
