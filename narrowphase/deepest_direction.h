@@ -178,10 +178,13 @@ Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Sep
 // s is concave, and the maximum it reaches is kept when disc_bound certifies it. Pairs apart, and
 // overlaps shallower than the radii, end here after two or three evaluations; nullopt hands the
 // rest (a step leaving its quarter turn, a convex stretch, a bound too loose) to the search;
-// `evaluations` counts the support evaluations either way.
+// `evaluations` counts the support evaluations either way. A caller that needs only a lower bound
+// of s near its maximum (a time of impact's step far from contact) passes `rough` > 0: the climb
+// then stops, uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is
+// below rough * s.
 template <class Real, class SA, class SB>
 std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin,
-                                             int& evaluations) {
+                                             int& evaluations, Real rough = 0) {
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
@@ -230,7 +233,8 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   // the same reason a step out of the quarter turn, apart, goes on from the face normal it crossed
   // (the maximum lies on it or beyond): a fifth of a rectangle–ellipse time of impact's climbs
   // ended there.
-  for (int k = 0; !kink && (abs(e.slope) > flat || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
+  const auto near_enough = [&] { return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s); };
+  for (int k = 0; !near_enough() && !kink && (abs(e.slope) > flat || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
     const bool apart = e.s > 0;
     if (k == (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
     Real tau = e.slope / (2 * e.bend);  // Newton on s' in tan(angle / 2)
@@ -257,7 +261,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
       tau /= 2;
     }
   }
-  if (!(disc_bound(p, n, e) <= e.s + margin)) return std::nullopt;
+  if (!near_enough() && !(disc_bound(p, n, e) <= e.s + margin)) return std::nullopt;
   return Deepest<Real>{{n, e}, evaluations};
 }
 

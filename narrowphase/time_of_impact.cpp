@@ -1,11 +1,13 @@
 #include "narrowphase/time_of_impact.h"
 
+#include "narrowphase/deepest_direction.h"
 #include "narrowphase/query.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
@@ -135,6 +137,45 @@ double later_root(double step, double gap, const Axis& axis) {
   return std::max(step, root);
 }
 
+// The separation along a direction near the maximiser, a lower bound of d that serves a step far
+// from contact as well as d itself: the contact's climb from the last normal, stopped once its next
+// gain is below 1e-3 of the separation (the step is then within 0.1% of the exact one), where an
+// exact contact certifies its maximum to rounding (two or three more support evaluations). Pairs
+// with an ellipse and without a circle; nullopt for the others (closed forms), and where the climb
+// does not end apart.
+struct Probe {
+  double separation;
+  Vec2 normal;
+};
+
+template <class SA, class SB, class X, class Y>
+std::optional<Probe> climb(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const Vec2& guess) {
+  using Pair = detail::SupportPair<double, SA, SB>;
+  const Pair p = Pair::of(a, {oa.c, oa.s}, b, {ob.c, ob.s});
+  int evaluations = 0;
+  const auto d = detail::certified_climb(p, p.from_world(guess), 8 * std::numeric_limits<double>::epsilon() * p.scale,
+                                         evaluations, 1e-3);
+  if (!d || !(d->at.s > 0)) return std::nullopt;
+  return Probe{d->at.s, p.to_world(d->n)};
+}
+
+std::optional<Probe> probe(const Shape& a, const Orientation& oa, const Shape& b, const Orientation& ob,
+                           const Vec2& guess) {
+  using detail::EllipseSupport, detail::RectSupport;
+  const auto* ea = std::get_if<Ellipse>(&a);
+  const auto* eb = std::get_if<Ellipse>(&b);
+  const auto* ra = std::get_if<Rect>(&a);
+  const auto* rb = std::get_if<Rect>(&b);
+  if (ea && eb) return climb<EllipseSupport<double>, EllipseSupport<double>>(*ea, oa, *eb, ob, guess);
+  if (ra && eb) return climb<RectSupport<double>, EllipseSupport<double>>(*ra, oa, *eb, ob, guess);
+  if (ea && rb) {
+    std::optional<Probe> r = climb<RectSupport<double>, EllipseSupport<double>>(*rb, ob, *ea, oa, Vec2(-guess));
+    if (r) r->normal = -r->normal;
+    return r;
+  }
+  return std::nullopt;
+}
+
 TimeOfImpact result(ToiStatus status, double t, const Contact& c, int iterations) {
   return {status, t, c.normal, Vec2((c.point_a + c.point_b) / 2), iterations};
 }
@@ -180,15 +221,21 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   for (int k = 1;; ++k) {
     const Shape at_a = at_time(a, a_motion, t), at_b = at_time(b, b_motion, t);
     const Orientation oa = orientation(at_a, a_motion, a_start), ob = orientation(at_b, b_motion, b_start);
-    const Contact c = contact(at_a, oa, at_b, ob, warm);
-    warm.guess = c.normal;
-    if (k == 1 && c.separation <= 0) return result(ToiStatus::overlapping, 0.0, c, k);
-    if (c.separation <= tolerance) return result(ToiStatus::hit, t, c, k);
+    // Far from contact a probe serves; near it, and for every result, the exact contact.
+    const auto exact = [&] { return contact(at_a, oa, at_b, ob, warm); };
+    std::optional<Probe> c = probe(at_a, oa, at_b, ob, warm.guess);
+    if (!c || c->separation <= tolerance) {
+      const Contact x = exact();
+      if (k == 1 && x.separation <= 0) return result(ToiStatus::overlapping, 0.0, x, k);
+      if (x.separation <= tolerance) return result(ToiStatus::hit, t, x, k);
+      c = Probe{x.separation, x.normal};
+    }
+    warm.guess = c->normal;
     // The step goes to the latest of the first times at which a lower bound of d could fall to half
     // the tolerance: the rate bound, then the Taylor bounds along a fixed axis and along axes that
     // turn with either shape (time_of_impact.h).
-    const Vec2 n = c.normal, m(-n.y(), n.x());
-    const double along = n.dot(v), gap = c.separation - tolerance / 2;
+    const Vec2 n = c->normal, m(-n.y(), n.x());
+    const double along = n.dot(v), gap = c->separation - tolerance / 2;
     const double closing = spin - along;  // the fastest the separation can fall
     double step = closing > 0 ? gap / closing : INFINITY;
     const Vec2 centres = center_of(at_b) - center_of(at_a);
@@ -207,8 +254,8 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
                       support_bound(at_a, oa, wa - omega, n), support_bound(at_b, ob, wb - omega, -n)};
       step = later_root(step, gap, axis);
     }
-    if (!(t + step < 1.0)) return result(ToiStatus::miss, 1.0, c, k);
-    if (k == options.max_iterations) return result(ToiStatus::stalled, t, c, k);
+    if (!(t + step < 1.0)) return result(ToiStatus::miss, 1.0, exact(), k);
+    if (k == options.max_iterations) return result(ToiStatus::stalled, t, exact(), k);
     t += step;
   }
 }

@@ -81,8 +81,8 @@ TEST(TimeOfImpact, SpinningNeedle) {
     ASSERT_EQ(got.status, ToiStatus::hit) << w;
     const double t0 = theta / w;
     EXPECT_LE(got.t, t0 + 8 * kU) << w;
-    EXPECT_GE(got.t, t0 - 1e-9) << w << " after " << got.iterations << " evaluations";
-    std::printf("[toi] needle turning %.3g rad per step: %d contact evaluations\n", w, got.iterations);
+    EXPECT_GE(got.t, t0 - 1e-9) << w << " after " << got.iterations << " steps";
+    std::printf("[toi] needle turning %.3g rad per step: %d steps\n", w, got.iterations);
   }
 }
 
@@ -153,7 +153,7 @@ TEST(TimeOfImpact, NeverAfterTheFirstContact) {
   }
   EXPECT_GT(hits, 40);
   EXPECT_GT(misses, 50);
-  std::printf("[toi] random motions: %d hits, %d misses, %d earlier times apart; at most %d contact evaluations\n", hits,
+  std::printf("[toi] random motions: %d hits, %d misses, %d earlier times apart; at most %d steps\n", hits,
               misses, checked, most);
 }
 
@@ -334,7 +334,7 @@ TEST(TimeOfImpact, MatchesTheReferenceOnEveryFamily) {
       if (!c.grazing) EXPECT_GE(got.t, ref->apart - 1e-9 - resolution) << what;
       earliest = std::max(earliest, ref->apart - got.t);
     }
-    std::printf("[toi] %-34s %2d hits %2d misses, worst %.1e before the reference's bracket, at most %d evaluations\n",
+    std::printf("[toi] %-34s %2d hits %2d misses, worst %.1e before the reference's bracket, at most %d steps\n",
                 f.name.c_str(), hits, misses, earliest, most);
   }
 }
