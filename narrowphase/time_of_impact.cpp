@@ -138,11 +138,12 @@ double later_root(double step, double gap, const Axis& axis) {
 }
 
 // The separation along a direction near the maximiser, a lower bound of d that serves a step far
-// from contact as well as d itself: the contact's climb from the last normal, stopped once its next
-// gain is below 1e-3 of the separation (the step is then within 0.1% of the exact one), where an
-// exact contact certifies its maximum to rounding (two or three more support evaluations). Pairs
-// with an ellipse and without a circle; nullopt for the others (closed forms), and where the climb
-// does not end apart.
+// from contact as well as d itself (time_of_impact.h), for pairs without a circle (whose contacts
+// are closed forms and cheap). With an ellipse, the contact's climb from the last normal, stopped
+// once its next gain is below 1e-3 of the separation (the step is then within 0.1% of the exact
+// one), where an exact contact certifies its maximum to rounding (two or three more support
+// evaluations); for two rectangles, and where the climb does not end apart, widest_gap (below).
+// nullopt where neither finds the pair apart.
 struct Probe {
   double separation;
   Vec2 normal;
@@ -159,6 +160,38 @@ std::optional<Probe> climb(const X& a, const Orientation& oa, const Y& b, const 
   return Probe{d->at.s, p.to_world(d->n)};
 }
 
+// The support function of a shape along a unit direction n, with its kept orientation.
+double support(const Shape& s, const Orientation& o, const Vec2& n) {
+  const Vec2 local(o.c * n.x() + o.s * n.y(), o.c * n.y() - o.s * n.x());
+  if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
+  return std::get<Circle>(s).radius;
+}
+
+// The widest gap along the last normal and each rectangle's face normals (the separating axes; for
+// two rectangles apart, all the exact contact adds is a corner–corner distance beyond them, its
+// closest features and its manifold): the probe of rectangle pairs, and where a climb does not end
+// apart.
+std::optional<Probe> widest_gap(const Shape& a, const Orientation& oa, const Shape& b, const Orientation& ob,
+                                const Vec2& guess) {
+  const Vec2 delta = center_of(b) - center_of(a);
+  Probe best{0.0, Vec2::UnitX()};
+  const auto try_axis = [&](const Vec2& axis) {
+    const Vec2 n = delta.dot(axis) >= 0 ? axis : Vec2(-axis);
+    const double gap = n.dot(delta) - support(a, oa, n) - support(b, ob, n);
+    if (gap > best.separation) best = {gap, n};
+  };
+  if (guess != Vec2::Zero()) try_axis(guess);
+  for (const auto& [s, o] : {std::pair{&a, &oa}, std::pair{&b, &ob}}) {
+    if (std::holds_alternative<Rect>(*s)) {
+      try_axis(Vec2(o->c, o->s));
+      try_axis(Vec2(-o->s, o->c));
+    }
+  }
+  if (!(best.separation > 0)) return std::nullopt;
+  return best;
+}
+
 std::optional<Probe> probe(const Shape& a, const Orientation& oa, const Shape& b, const Orientation& ob,
                            const Vec2& guess) {
   using detail::EllipseSupport, detail::RectSupport;
@@ -166,14 +199,15 @@ std::optional<Probe> probe(const Shape& a, const Orientation& oa, const Shape& b
   const auto* eb = std::get_if<Ellipse>(&b);
   const auto* ra = std::get_if<Rect>(&a);
   const auto* rb = std::get_if<Rect>(&b);
-  if (ea && eb) return climb<EllipseSupport<double>, EllipseSupport<double>>(*ea, oa, *eb, ob, guess);
-  if (ra && eb) return climb<RectSupport<double>, EllipseSupport<double>>(*ra, oa, *eb, ob, guess);
+  std::optional<Probe> r;
+  if (ea && eb) r = climb<EllipseSupport<double>, EllipseSupport<double>>(*ea, oa, *eb, ob, guess);
+  if (ra && eb) r = climb<RectSupport<double>, EllipseSupport<double>>(*ra, oa, *eb, ob, guess);
   if (ea && rb) {
-    std::optional<Probe> r = climb<RectSupport<double>, EllipseSupport<double>>(*rb, ob, *ea, oa, Vec2(-guess));
+    r = climb<RectSupport<double>, EllipseSupport<double>>(*rb, ob, *ea, oa, Vec2(-guess));
     if (r) r->normal = -r->normal;
-    return r;
   }
-  return std::nullopt;
+  if (r || std::holds_alternative<Circle>(a) || std::holds_alternative<Circle>(b)) return r;
+  return widest_gap(a, oa, b, ob, guess);
 }
 
 TimeOfImpact result(ToiStatus status, double t, const Contact& c, int iterations) {

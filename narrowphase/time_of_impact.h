@@ -31,8 +31,9 @@
 // (rectangle pairs). Each step's contact climbs from the last step's normal (ContactOptions::guess)
 // and reuses the cosines and sines of a shape that does not turn. Far from contact a pair with an
 // ellipse (and no circle) takes the climb's direction once Newton's next gain is below 1e-3 of the
-// separation, without certifying the maximum: any direction's separation is a lower bound of d, and
-// the step is then within 0.1% of the exact one. Every result comes from an exact contact().
+// separation, without certifying the maximum, and two rectangles the widest gap along the last
+// normal and their face normals: any direction's separation is a lower bound of d, and the step
+// stays safe. Every result comes from an exact contact().
 //
 // Result. hit: the separation at t is within (0, tolerance]; the solids first touch at or after t,
 // and at most tolerance / (closing speed) later. miss: the lower bound stays above half the
