@@ -26,8 +26,9 @@
 // Boundary distance: circle–circle in closed form; circle–ellipse as ellipse–ellipse with a = b;
 // rectangles throw UnsupportedPair.
 // Contact: circle–circle and rect–circle in closed form; rect–rect by separating axes and Box2D's
-// face clipping; rect–ellipse, circle–ellipse and ellipse–ellipse by the global maximum of the
-// separation over all directions (narrowphase/deepest_direction.h).
+// face clipping; circle–ellipse by the point–ellipse distance of the centre less the radius;
+// rect–ellipse and ellipse–ellipse by the global maximum of the separation over all directions
+// (narrowphase/deepest_direction.h).
 #pragma once
 
 #include "narrowphase/contact.h"

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <type_traits>
 
 namespace collide2d {
@@ -27,13 +26,6 @@ double turning_reach(const Shape& s) {
   if (const auto* e = std::get_if<Ellipse>(&s)) return std::abs(e->a - e->b);
   if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.maxCoeff();
   return 0.0;
-}
-
-[[noreturn]] void reject(const char* which, const char* field, double value, const char* rule) {
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << which << ' ' << field << ' ' << rule << " (got " << value << ')';
-  throw InvalidShape(msg.str());
 }
 
 // The motion must be finite and keep the centre within the supported range over the step.

@@ -12,13 +12,6 @@ namespace {
 
 using Rot = detail::Rotation<double>;
 
-[[noreturn]] void reject(const char* shape, const char* field, double value, const char* rule) {
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << shape << ' ' << field << ' ' << rule << " (got " << value << ')';
-  throw InvalidShape(msg.str());
-}
-
 void require_finite(const char* shape, const char* field, double value) {
   if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
 }
@@ -42,6 +35,13 @@ Aabb around(const Vec2& center, const Vec2& half) {
 }
 
 }  // namespace
+
+void reject(const char* what, const char* field, double value, const char* rule) {
+  std::ostringstream msg;
+  msg.precision(17);
+  msg << what << ' ' << field << ' ' << rule << " (got " << value << ')';
+  throw InvalidShape(msg.str());
+}
 
 Orientation Orientation::of(double angle) {
   const Rot r = Rot::of(angle);

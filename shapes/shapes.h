@@ -64,6 +64,10 @@ class InvalidShape : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// Throws InvalidShape("<what> <field> <rule> (got <value>)"), the form of every validation message
+// ("ellipse a must be positive (got -1)"), for the checks of other modules to share.
+[[noreturn]] void reject(const char* what, const char* field, double value, const char* rule);
+
 void validate(const Circle& c);
 void validate(const Ellipse& e);
 void validate(const Rect& r);
