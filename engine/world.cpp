@@ -58,7 +58,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
+
 }  // namespace
+
+bool should_pair(const Filter& a, const Filter& b) {
+  if (a.group == b.group && a.group != 0) return a.group > 0;
+  return (a.mask & b.category) != 0 && (a.category & b.mask) != 0;
+}
 
 World::World(const WorldOptions& options)
     : broad_(options.fat_margin),
@@ -86,6 +93,15 @@ World::Body& World::body(BodyId id) { return const_cast<Body&>(std::as_const(*th
 
 const Shape& World::shape(BodyId id) const { return body(id).shape; }
 std::uint64_t World::user_id(BodyId id) const { return body(id).user_id; }
+const Filter& World::filter(BodyId id) const { return body(id).filter; }
+
+void World::set_filter(BodyId id, const Filter& filter) { body(id).filter = filter; }
+
+void World::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) { pair_predicate_ = std::move(predicate); }
+
+bool World::passes(const ProxyPair& p) const {
+  return should_pair(bodies_[p.a].filter, bodies_[p.b].filter) && (!pair_predicate_ || pair_predicate_(id_of(p.a), id_of(p.b)));
+}
 
 std::vector<BodyId> World::bodies() const {
   std::vector<BodyId> out;
@@ -99,7 +115,7 @@ Aabb World::broad_box(const Aabb& box) const {
   return grown(box, 0.5 * std::max(proximity_margin_, speculative_margin_));
 }
 
-BodyId World::add(const Shape& shape, std::uint64_t user_id) {
+BodyId World::add(const Shape& shape, std::uint64_t user_id, const Filter& filter) {
   validate(shape);
   const Aabb box = aabb(shape);
   const ProxyId index = broad_.insert(broad_box(box));
@@ -108,6 +124,7 @@ BodyId World::add(const Shape& shape, std::uint64_t user_id) {
   b.shape = shape;  // a reused slot keeps the generation remove() gave it
   b.box = box;
   b.user_id = user_id;
+  b.filter = filter;
   return id_of(index);
 }
 
@@ -167,6 +184,10 @@ void World::update() {
   impacts_.clear();
   const ContactOptions manifold{.margin = speculative_margin_};
   for (const ProxyPair& p : broad_.pairs()) {
+    if (!passes(p)) {
+      ++stats_.filtered;
+      continue;
+    }
     const Body& x = bodies_[p.a];
     const Body& y = bodies_[p.b];
     if (x.continuous || y.continuous) impact(p);
@@ -216,53 +237,56 @@ void World::impact(const ProxyPair& p) {
 }
 
 template <class Test>
-std::vector<BodyId> World::select(const Aabb& box, Test test) const {
+std::vector<BodyId> World::select(const Aabb& box, const QueryFilter& filter, Test test) const {
   std::vector<BodyId> out;
   for (ProxyId index = 0; index < bodies_.size(); ++index) {
     const Body& b = bodies_[index];
-    if (broad_.contains(index) && intersects(b.box, box) && test(b.shape)) out.push_back(id_of(index));
+    if (broad_.contains(index) && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape)) {
+      out.push_back(id_of(index));
+    }
   }
   return out;
 }
 
-std::vector<BodyId> World::overlapping(const Shape& shape) const {
+std::vector<BodyId> World::overlapping(const Shape& shape, const QueryFilter& filter) const {
   validate(shape);
-  return select(aabb(shape), [&shape](const Shape& s) { return overlaps(shape, s); });
+  return select(aabb(shape), filter, [&shape](const Shape& s) { return overlaps(shape, s); });
 }
 
-std::vector<BodyId> World::overlapping(const Aabb& box) const {
+std::vector<BodyId> World::overlapping(const Aabb& box, const QueryFilter& filter) const {
   validate(box);
-  return select(box, [&box](const Shape& s) { return overlaps(s, box); });
+  return select(box, filter, [&box](const Shape& s) { return overlaps(s, box); });
 }
 
-std::vector<BodyId> World::within(const Vec2& point, double d) const {
+std::vector<BodyId> World::within(const Vec2& point, double d, const QueryFilter& filter) const {
   validate_point(point, "point");
   require_margin(d, "distance");
-  if (d > 0.0) return overlapping(Shape(Circle{point, d}));
-  return select({point, point}, [&point](const Shape& s) { return collide2d::contains(s, point); });
+  if (d > 0.0) return overlapping(Shape(Circle{point, d}), filter);
+  return select({point, point}, filter, [&point](const Shape& s) { return collide2d::contains(s, point); });
 }
 
-std::vector<BodyId> World::within(const Shape& shape, double d) const {
+std::vector<BodyId> World::within(const Shape& shape, double d, const QueryFilter& filter) const {
   validate(shape);
   require_margin(d, "distance");
-  return select(grown(aabb(shape), d), [&](const Shape& s) { return distance(shape, s).distance <= d; });
+  return select(grown(aabb(shape), d), filter, [&](const Shape& s) { return distance(shape, s).distance <= d; });
 }
 
-std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translation) const {
+std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter) const {
   validate(shape);
   require_finite(translation.x(), "cast translation x");
   require_finite(translation.y(), "cast translation y");
   const Shape end = at_time(shape, {translation, 0.0}, 1.0);
   validate(end);  // the range of the centre
   std::optional<BodyCastHit> best;
-  for (const BodyId id : select(swept(shape, end), [](const Shape&) { return true; })) {
+  for (const BodyId id : select(swept(shape, end), filter, [](const Shape&) { return true; })) {
     const auto hit = shape_cast(shape, translation, bodies_[id.index].shape);
     if (hit && (!best || hit->fraction < best->fraction)) best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
   }
   return best;
 }
 
-std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const {
+std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                                      const QueryFilter& filter) const {
   validate_point(origin, "ray origin");
   require_finite(direction.x(), "ray direction x");
   require_finite(direction.y(), "ray direction y");
@@ -272,7 +296,7 @@ std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction,
   const Vec2 unit = direction / length;
   std::optional<RayHit> best;
   for (ProxyId index = 0; index < bodies_.size(); ++index) {
-    if (!broad_.contains(index)) continue;
+    if (!broad_.contains(index) || !lets_through(filter, bodies_[index].filter)) continue;
     const double reach = best ? best->distance : max_distance;
     const auto hit = collide2d::ray_cast(bodies_[index].shape, origin, unit, reach);
     if (hit && (!best || hit->distance < best->distance)) best = RayHit{id_of(index), hit->distance, hit->point, hit->normal};

@@ -34,6 +34,9 @@
 // cast(shape, translation) is the shape cast against every body: the first hit, with its fraction,
 // point and the body's outward normal.
 //
+// Filters (Filter, below): each body has one, and the World pairs two bodies only where
+// should_pair() lets them and the pair predicate, if set, agrees; every query takes a QueryFilter.
+//
 // Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
 // std::invalid_argument, an unknown body or a stale handle (its body removed) std::out_of_range,
 // with a message that says which; the World is left exactly as it was.
@@ -44,6 +47,7 @@
 #include "narrowphase/time_of_impact.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -63,6 +67,25 @@ struct BodyPair {
   BodyId a;  // a.index < b.index
   BodyId b;
   friend auto operator<=>(const BodyPair&, const BodyPair&) = default;
+};
+
+// Which bodies may pair, with Box2D's semantics (b2Filter): two bodies of one non-zero group always
+// pair when it is positive and never when it is negative; otherwise each one's category must meet
+// the other's mask. The World checks it, and then the pair predicate if one is set, on every
+// candidate pair before any narrow-phase work.
+struct Filter {
+  std::uint64_t category = 1;                   // the bits this body is
+  std::uint64_t mask = ~std::uint64_t{0};       // the bits it pairs with
+  std::int32_t group = 0;
+  friend bool operator==(const Filter&, const Filter&) = default;
+};
+bool should_pair(const Filter& a, const Filter& b);
+
+// Which bodies a query reports (Box2D v3's b2QueryFilter): those whose category meets the query's
+// mask and whose mask meets the query's category. The default reports every body.
+struct QueryFilter {
+  std::uint64_t category = 1;
+  std::uint64_t mask = ~std::uint64_t{0};
 };
 
 struct WorldOptions {
@@ -111,6 +134,7 @@ struct RayHit {
 // What the last update did.
 struct FrameStats {
   std::size_t candidates = 0;   // pairs from the broad phase
+  std::size_t filtered = 0;     // of them, dropped by the filters or the pair predicate
   std::size_t overlapping = 0;  // confirmed by the narrow phase
   std::size_t proximity = 0;
   std::size_t contacts = 0;
@@ -123,8 +147,13 @@ class World {
  public:
   explicit World(const WorldOptions& options = {});
 
-  BodyId add(const Shape& shape, std::uint64_t user_id = 0);
+  BodyId add(const Shape& shape, std::uint64_t user_id = 0, const Filter& filter = {});
   void set_pose(BodyId id, const Vec2& center, double angle);
+  // Takes effect at the next update: pairs that no longer pass end there (ended()).
+  void set_filter(BodyId id, const Filter& filter);
+  // Called for the candidate pairs that pass both filters (a.index < b.index), before any
+  // narrow-phase work; false drops the pair. An empty function passes every pair.
+  void set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate);
   void move_by(BodyId id, const Vec2& shift, double turn = 0.0);
   void remove(BodyId id);
   void set_proximity_margin(double margin);
@@ -137,6 +166,7 @@ class World {
   std::size_t size() const { return broad_.size(); }
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
+  const Filter& filter(BodyId id) const;
   std::vector<BodyId> bodies() const;
 
   // Results of the last update.
@@ -150,23 +180,25 @@ class World {
   const std::vector<Impact>& impacts() const { return impacts_; }
   const FrameStats& last_frame() const { return stats_; }
 
-  // Queries on the current poses (no update needed).
-  std::vector<BodyId> overlapping(const Shape& shape) const;
-  std::vector<BodyId> overlapping(const Aabb& box) const;
-  std::vector<BodyId> within(const Vec2& point, double distance) const;
-  std::vector<BodyId> within(const Shape& shape, double distance) const;
+  // Queries on the current poses (no update needed), over the bodies the filter lets through.
+  std::vector<BodyId> overlapping(const Shape& shape, const QueryFilter& filter = {}) const;
+  std::vector<BodyId> overlapping(const Aabb& box, const QueryFilter& filter = {}) const;
+  std::vector<BodyId> within(const Vec2& point, double distance, const QueryFilter& filter = {}) const;
+  std::vector<BodyId> within(const Shape& shape, double distance, const QueryFilter& filter = {}) const;
   // The first body hit by the ray from `origin` along `direction` (any non-zero length) within
   // `max_distance` of the origin; a body containing the origin is hit at distance 0.
-  std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance) const;
+  std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                                 const QueryFilter& filter = {}) const;
   // The first body the shape meets when translated by `translation` (the lowest body index on a
   // tie); a body it overlaps at the start is hit at fraction 0.
-  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation) const;
+  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {}) const;
 
  private:
   struct Body {
     Shape shape;
     Aabb box;  // aabb(shape), kept with the pose
     std::uint64_t user_id = 0;
+    Filter filter;
     std::uint32_t generation = 1;
     bool continuous = false;
     Shape start;  // continuous: the pose at the last update, where the step begins
@@ -183,6 +215,7 @@ class World {
   std::vector<BodyContact> contacts_;
   std::vector<Impact> impacts_;
   std::vector<ProxyId> continuous_;  // the continuous bodies' slots
+  std::function<bool(BodyId, BodyId)> pair_predicate_;
   FrameStats stats_;
 
   Body& body(BodyId id);
@@ -191,8 +224,9 @@ class World {
   BodyPair pair_of(const ProxyPair& p) const { return {id_of(p.a), id_of(p.b)}; }
   Aabb broad_box(const Aabb& box) const;
   void impact(const ProxyPair& p);
+  bool passes(const ProxyPair& p) const;
   template <class Test>
-  std::vector<BodyId> select(const Aabb& box, Test test) const;
+  std::vector<BodyId> select(const Aabb& box, const QueryFilter& filter, Test test) const;
 };
 
 }  // namespace collide2d

@@ -1,8 +1,9 @@
-// World fuzzer: a random sequence of add, set_pose, set_continuous, remove, update and queries from
-// the bytes. Bad input (an unknown body or a handle kept past its remove() among it) must throw and
-// leave the World as it was; after every update the overlapping pairs, the began/ended lists and the
-// proximity pairs must equal an all-pairs check, and the impacts must be those of time_of_impact on
-// every pair with a continuous body, from the poses the fuzzer saw at the last update: all of them
+// World fuzzer: a random sequence of add (with a filter), set_pose, set_filter, set_continuous,
+// remove, update and filtered queries from the bytes. Bad input (an unknown body or a handle kept
+// past its remove() among it) must throw and leave the World as it was; after every update the
+// overlapping pairs, the began/ended lists and the proximity pairs must equal an all-pairs check over
+// the pairs the filters let through, and the impacts must be those of time_of_impact on every such
+// pair with a continuous body, from the poses the fuzzer saw at the last update: all of them
 // where the boxes over the step meet, and none that time_of_impact does not find. (Where they do
 // not meet the shapes can still come within the tolerance, which grows with the coordinates: 5e3 at
 // 3e18; the World never pairs them, as with a proximity pair culled by its boxes.)
@@ -49,6 +50,7 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
   std::vector<BodyPair> hit, near, unresolved;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      if (!should_pair(w.filter(ids[i]), w.filter(ids[j]))) continue;
       const Shape& a = w.shape(ids[i]);
       const Shape& b = w.shape(ids[j]);
       if (intersects(aabb(a), aabb(b)) && overlaps(a, b)) {
@@ -85,6 +87,14 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
   check(w.began() == began && w.ended() == ended, "began and ended");
 }
 
+// Filters from three categories, every mask of them, and groups -2 … 2.
+Filter filter_from(fuzz::Input& in) {
+  return {.category = std::uint64_t{1} << (in.byte() % 3), .mask = static_cast<std::uint64_t>(in.byte() % 8),
+          .group = static_cast<std::int32_t>(in.byte() % 5) - 2};
+}
+
+bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
+
 // The World's observable state, to check that a refused call changed nothing.
 std::vector<std::pair<BodyId, std::size_t>> snapshot(const World& w) {
   std::vector<std::pair<BodyId, std::size_t>> out;
@@ -106,6 +116,7 @@ void check_impacts(const World& w, const Starts& starts) {
   std::vector<Impact> expected;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
+      if (!should_pair(w.filter(ids[i]), w.filter(ids[j]))) continue;
       const Shape* si = start_of(ids[i]);
       const Shape* sj = start_of(ids[j]);
       if (!si && !sj) continue;
@@ -171,10 +182,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       return some;
     };
     try {
-      switch (in.byte() % 7) {
+      switch (in.byte() % 8) {
         case 0:
-          if (world.size() < 24) world.add(in.shape());
+          if (world.size() < 24) world.add(in.shape(), 0, filter_from(in));
           break;
+        case 6: {
+          const BodyId id = target();
+          world.set_filter(id, filter_from(in));
+          check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
+          break;
+        }
         case 1: {
           const BodyId id = target();
           const Vec2 centre = in.point();
@@ -209,19 +226,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           break;
         case 4: {
           std::vector<BodyId> expected;
+          const QueryFilter q{.category = std::uint64_t{1} << (in.byte() % 3), .mask = static_cast<std::uint64_t>(in.byte() % 8)};
           if (in.byte() % 2 == 0) {
             const Shape probe = in.shape();
-            const auto got = world.overlapping(probe);
+            const auto got = world.overlapping(probe, q);
             for (const BodyId id : world.bodies()) {
+              if (!lets_through(q, world.filter(id))) continue;
               if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
             }
             check(got == expected, "overlapping(shape) equals brute force");
           } else {
             const Vec2 corner = in.point();
             const Aabb box{corner, corner + in.point().cwiseAbs()};  // may have no width or height
-            const auto got = world.overlapping(box);
+            const auto got = world.overlapping(box, q);
             for (const BodyId id : world.bodies()) {
-              if (overlaps(world.shape(id), box)) expected.push_back(id);
+              if (lets_through(q, world.filter(id)) && overlaps(world.shape(id), box)) expected.push_back(id);
             }
             check(got == expected, "overlapping(box) equals brute force");
           }
