@@ -236,7 +236,8 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   const auto near_enough = [&] { return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s); };
   for (int k = 0; !near_enough() && !kink && (abs(e.slope) > flat || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
     const bool apart = e.s > 0;
-    if (k == (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
+    // At least, not equal: touching, s flips sign from one direction to the next.
+    if (k >= (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
     Real tau = e.slope / (2 * e.bend);  // Newton on s' in tan(angle / 2)
     if (!(abs(tau) < Real(0.5))) {
       if (!apart) return std::nullopt;
