@@ -40,6 +40,29 @@ TEST(SceneRun, BulletsHitWithinAFrame) {
   EXPECT_NE(out.str().find("continuous bodies           1, 1 impacts within frames over the run"), std::string::npos) << out.str();
 }
 
+// Two circles that overlap all run long: on layers that refuse each other, or sharing a negative
+// group although their masks accept each other, they never pair, and the summary counts the
+// candidate pair the filters dropped; on one layer they pair. The filter fields read back as written.
+TEST(SceneRun, FiltersKeepLayersApart) {
+  const std::pair<const char*, bool> cases[] = {
+      {R"("category": 1, "mask": 1)", false}, {R"("category": 2, "mask": 2, "group": -3)", false}, {R"("category": 2, "mask": 2)", true}};
+  for (const auto& [filters, pair] : cases) {
+    const std::string text = std::string(R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [
+        {"shape": "circle", "center": [5, 5], "radius": 1, "category": 2, "mask": 2, "group": -3},
+        {"shape": "circle", "center": [5.5, 5], "radius": 1, )") + filters + "}]}";
+    const Scene scene = parse_scene(text);
+    EXPECT_TRUE(parse_scene(write_scene(scene)) == scene);
+    SceneRun run(scene);
+    const RunSummary s = run.run(nullptr);
+    EXPECT_EQ(s.overlapping_per_frame, pair ? 1.0 : 0.0) << filters;
+    EXPECT_EQ(s.filtered_per_frame, pair ? 0.0 : 1.0) << filters;
+    std::ostringstream out;
+    print_summary(s, out);
+    EXPECT_NE(out.str().find(pair ? "(broad phase), 0 of them" : "(broad phase), 1 of them dropped by filters"), std::string::npos)
+        << out.str();
+  }
+}
+
 TEST(Scene, ExampleFileParses) {
   std::ifstream in(std::string(COLLIDE2D_SOURCE_DIR) + "/examples/scene.json");
   std::stringstream text;
@@ -81,6 +104,12 @@ TEST(Scene, BrokenFilesNameTheField) {
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "continuous": "yes"})"),
        "bodies[0].continuous: expected true or false, got \"yes\""},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1e999})"), "number overflow parsing '1e999'"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "category": -1})"),
+       "bodies[0].category: expected a non-negative integer of 64 bits, got -1"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "mask": "all"})"),
+       "bodies[0].mask: expected a non-negative integer of 64 bits, got \"all\""},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "group": 3000000000})"),
+       "bodies[0].group: expected an integer from -2147483648 to 2147483647, got 3000000000"},
   };
   for (const auto& [text, expected] : cases) {
     try {
@@ -92,7 +121,8 @@ TEST(Scene, BrokenFilesNameTheField) {
   }
 }
 
-// After the run, the World's overlapping pairs are exactly the pairs of final shapes that overlap.
+// After the run, the World's overlapping pairs are exactly the pairs of final shapes that overlap
+// and that the filters let pair (the built-in scene's two layers never do).
 TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   SceneRun run(default_scene(300, 30, 5));
   const RunSummary s = run.run(nullptr);
@@ -103,11 +133,14 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   const auto ids = w.bodies();
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (overlaps(w.shape(ids[i]), w.shape(ids[j]))) expected.push_back({ids[i], ids[j]});
+      if (should_pair(w.filter(ids[i]), w.filter(ids[j])) && overlaps(w.shape(ids[i]), w.shape(ids[j]))) {
+        expected.push_back({ids[i], ids[j]});
+      }
     }
   }
   EXPECT_EQ(w.overlapping(), expected);
   EXPECT_GT(s.overlapping_per_frame, 0.0);
+  EXPECT_GT(s.filtered_per_frame, 0.0);
   std::ostringstream svg;
   write_svg(run, svg);
   const std::string text = svg.str();

@@ -32,7 +32,7 @@ void draw_progress(std::ostream& out, int done, int total) {
 SceneRun::SceneRun(Scene scene)
     : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
   for (const SceneBody& b : scene_.bodies) {
-    ids_.push_back(world_.add(b.shape, b.id));
+    ids_.push_back(world_.add(b.shape, b.id, b.filter));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
 }
@@ -56,6 +56,7 @@ RunSummary SceneRun::run(std::ostream* progress) {
     broad.push_back(1e3 * f.broad_seconds);
     narrow.push_back(1e3 * f.narrow_seconds);
     s.candidates_per_frame += static_cast<double>(f.candidates);
+    s.filtered_per_frame += static_cast<double>(f.filtered);
     s.overlapping_per_frame += static_cast<double>(f.overlapping);
     s.proximity_per_frame += static_cast<double>(f.proximity);
     s.began += world_.began().size();
@@ -66,6 +67,7 @@ RunSummary SceneRun::run(std::ostream* progress) {
   if (progress) *progress << '\n';
   const double n = std::max(1, scene_.frames);
   s.candidates_per_frame /= n;
+  s.filtered_per_frame /= n;
   s.overlapping_per_frame /= n;
   s.proximity_per_frame /= n;
   s.broad_median_ms = percentile(broad, 0.5);
@@ -78,7 +80,8 @@ RunSummary SceneRun::run(std::ostream* progress) {
 void print_summary(const RunSummary& s, std::ostream& out) {
   out << "frames                      " << s.frames << '\n'
       << "bodies                      " << s.bodies << '\n'
-      << "candidate pairs per frame   " << s.candidates_per_frame << " (broad phase)\n"
+      << "candidate pairs per frame   " << s.candidates_per_frame << " (broad phase), " << s.filtered_per_frame
+      << " of them dropped by filters\n"
       << "overlapping pairs per frame " << s.overlapping_per_frame << " (narrow phase), " << s.began << " began, "
       << s.ended << " ended over the run\n"
       << "proximity pairs per frame   " << s.proximity_per_frame << '\n'

@@ -14,6 +14,7 @@ struct RunSummary {
   int frames = 0;
   std::size_t bodies = 0;
   double candidates_per_frame = 0.0;   // broad-phase pairs, mean over frames
+  double filtered_per_frame = 0.0;     // of them, dropped by the bodies' filters
   double overlapping_per_frame = 0.0;  // confirmed overlaps, mean
   double proximity_per_frame = 0.0;    // pairs apart but within the margin, mean
   std::size_t began = 0;               // overlap events over the run

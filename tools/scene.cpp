@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <set>
@@ -83,11 +84,20 @@ Shape parse_shape(const json& b, const std::string& field) {
   fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse or rect)");
 }
 
+std::uint64_t bits(const json& object, const char* key, const std::string& field, std::uint64_t fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_number_unsigned()) fail(child(field, key), "expected a non-negative integer of 64 bits, got " + it->dump());
+  return it->get<std::uint64_t>();
+}
+
 SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = "bodies[" + std::to_string(index) + "]";
   if (!b.is_object()) fail(field, "expected an object");
   reject_unknown_keys(
-      b, {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id", "continuous"},
+      b,
+      {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id", "continuous",
+       "category", "mask", "group"},
       field);
   SceneBody body;
   body.shape = parse_shape(b, field);
@@ -101,6 +111,14 @@ SceneBody parse_body(const json& b, std::size_t index) {
   if (const auto it = b.find("continuous"); it != b.end()) {
     if (!it->is_boolean()) fail(field + ".continuous", "expected true or false, got " + it->dump());
     body.continuous = it->get<bool>();
+  }
+  body.filter.category = bits(b, "category", field, body.filter.category);
+  body.filter.mask = bits(b, "mask", field, body.filter.mask);
+  if (const auto it = b.find("group"); it != b.end()) {
+    if (!it->is_number_integer() || it->get<long long>() < INT32_MIN || it->get<long long>() > INT32_MAX) {
+      fail(field + ".group", "expected an integer from -2147483648 to 2147483647, got " + it->dump());
+    }
+    body.filter.group = static_cast<std::int32_t>(it->get<long long>());
   }
   return body;
 }
@@ -145,7 +163,7 @@ bool same_shape(const Shape& a, const Shape& b) {
 
 bool SceneBody::operator==(const SceneBody& o) const {
   return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id &&
-         continuous == o.continuous;
+         continuous == o.continuous && filter == o.filter;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -192,6 +210,10 @@ std::string write_scene(const Scene& scene) {
     j["angular_velocity"] = b.angular_velocity;
     j["id"] = b.id;
     if (b.continuous) j["continuous"] = true;
+    const Filter pairs_with_all;
+    if (b.filter.category != pairs_with_all.category) j["category"] = b.filter.category;
+    if (b.filter.mask != pairs_with_all.mask) j["mask"] = b.filter.mask;
+    if (b.filter.group != pairs_with_all.group) j["group"] = b.filter.group;
     bodies.push_back(std::move(j));
   }
   const json root{{"arena", {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
@@ -202,6 +224,10 @@ std::string write_scene(const Scene& scene) {
                   {"bodies", bodies}};
   return root.dump(1);
 }
+
+// The built-in scene's two layers, which pair within themselves and never with each other.
+constexpr Filter kFirstLayer{.category = 1, .mask = 1};
+constexpr Filter kSecondLayer{.category = 2, .mask = 2};
 
 Scene default_scene(int count, int frames, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -223,14 +249,19 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
     }();
     const double heading = uniform(0, 2 * std::numbers::pi);
     const double speed = uniform(0, 6);
-    scene.bodies.push_back({shape, speed * Vec2(std::cos(heading), std::sin(heading)), uniform(-1, 1),
-                            static_cast<std::uint64_t>(k)});
+    scene.bodies.push_back({.shape = shape,
+                            .velocity = speed * Vec2(std::cos(heading), std::sin(heading)),
+                            .angular_velocity = uniform(-1, 1),
+                            .id = static_cast<std::uint64_t>(k),
+                            .filter = k % 4 == 3 ? kSecondLayer : kFirstLayer});
   }
   for (int k = 0; k < count / 500; ++k) {
     const double heading = uniform(0, 2 * std::numbers::pi);
-    scene.bodies.push_back({Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1},
-                            300 * Vec2(std::cos(heading), std::sin(heading)), 0.0,
-                            static_cast<std::uint64_t>(count + k), true});
+    scene.bodies.push_back({.shape = Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1},
+                            .velocity = 300 * Vec2(std::cos(heading), std::sin(heading)),
+                            .id = static_cast<std::uint64_t>(count + k),
+                            .continuous = true,
+                            .filter = kFirstLayer});
   }
   return scene;
 }

@@ -12,18 +12,21 @@
 //       {"shape": "ellipse", "center": [30, 20], "a": 3, "b": 1, "angle": 0.4,
 //        "velocity": [2, -1], "angular_velocity": 0.5, "id": 7},
 //       {"shape": "rect",    "center": [50, 50], "half_extents": [2, 1], "angle": 0},
-//       {"shape": "circle",  "center": [5, 5], "radius": 0.1, "velocity": [300, 40], "continuous": true}
+//       {"shape": "circle",  "center": [5, 5], "radius": 0.1, "velocity": [300, 40], "continuous": true,
+//        "category": 2, "mask": 5, "group": -1}
 //     ]
 //   }
 // velocity (default [0, 0]), angular_velocity (default 0), angle (default 0), id (default: the
-// body's index) and continuous (default false: a bullet, whose impacts within each frame the World
-// finds) are optional. Bodies move in straight lines and bounce off the arena walls (the
+// body's index), continuous (default false: a bullet, whose impacts within each frame the World
+// finds) and the collision filter's category, mask and group (engine/world.h; defaults 1, every
+// bit, 0: the body pairs with every other) are optional. Bodies move in straight lines and bounce off the arena walls (the
 // velocity component towards a wall flips when the body's box crosses it); there is no physics.
 //
 // Errors: parse_scene throws SceneError naming the field, e.g. `bodies[3].radius: must be positive
 // (got -1)`, `frames: missing`, `bodies[0]: unknown field 'radus'`.
 #pragma once
 
+#include "engine/world.h"
 #include "shapes/shapes.h"
 
 #include <cstdint>
@@ -45,6 +48,7 @@ struct SceneBody {
   double angular_velocity = 0.0;
   std::uint64_t id = 0;
   bool continuous = false;
+  Filter filter;
   bool operator==(const SceneBody&) const;
 };
 
@@ -64,7 +68,8 @@ std::string write_scene(const Scene& scene);  // JSON that parse_scene reads bac
 // The built-in scene: `count` mixed circles, ellipses (aspect up to 8) and rectangles, sizes 0.3 to
 // 2, random velocities up to 6 per second, in an arena sized for about 8% coverage, and one bullet
 // per 500 of them (continuous circles of radius 0.1 at 300 per second: 25 radii a frame at 60 Hz);
-// seeded.
+// seeded. Every fourth body is on a second layer (category 2, mask 2) that never pairs with the
+// first (category 1, mask 1; the bullets too).
 Scene default_scene(int count = 4000, int frames = 600, std::uint64_t seed = 1);
 
 // One frame of kinematics: each body advances by dt and bounces off the walls.
