@@ -122,6 +122,7 @@ BodyId World::add(const Shape& shape, std::uint64_t user_id, const Filter& filte
   if (index >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(index) + 1);
   Body& b = bodies_[index];
   b.shape = shape;  // a reused slot keeps the generation remove() gave it
+  b.orientation = Orientation::of(angle_of(shape));
   b.box = box;
   b.user_id = user_id;
   b.filter = filter;
@@ -138,6 +139,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   const Aabb box = aabb(moved);
   broad_.move(id.index, broad_box(b.continuous ? swept(b.start, moved) : box));
   b.shape = moved;
+  b.orientation = Orientation::of(angle_of(moved));
   b.box = box;
 }
 
@@ -193,7 +195,7 @@ void World::update() {
     if (x.continuous || y.continuous) impact(p);
     if (intersects(x.box, y.box) && overlaps(x.shape, y.shape)) {
       now.push_back(pair_of(p));
-      if (contacts_on_) contacts_.push_back({id_of(p.a), id_of(p.b), contact(x.shape, y.shape, manifold)});
+      if (contacts_on_) contacts_.push_back({id_of(p.a), id_of(p.b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
       continue;
     }
     if (proximity_margin_ > 0.0) {
@@ -201,7 +203,7 @@ void World::update() {
       if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(p.a), id_of(p.b), d});
     }
     if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
-      const Contact c = contact(x.shape, y.shape, manifold);
+      const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
       if (c.separation <= speculative_margin_) contacts_.push_back({id_of(p.a), id_of(p.b), c});
     }
   }
