@@ -266,15 +266,21 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   return Deepest<Real>{{n, e}, evaluations};
 }
 
+// The rounding within which the climb and the search take two values of s as equal, 8 u of the
+// pair's scale: arcs are dropped within it of the best value, as the bound's own rounding is a few
+// u of the scale (the pair's margin(), 64 u, left the 1e-12 target met but let a needle pair's
+// distance fall 138 u short).
+template <class Real, class SA, class SB>
+Real climb_margin(const SupportPair<Real, SA, SB>& p) {
+  return 8 * std::numeric_limits<Real>::epsilon() * p.scale;
+}
+
 // The global maximum of s: certified_climb from `start`, else the search. The directions and arcs
 // live in buffers kept per thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, int cap = 4096) {
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
-  // Arcs are dropped within 8 u of the scale of the best value: the bound's own rounding is a few
-  // u of the scale (the pair's margin(), 64 u, left the 1e-12 target met but let a needle pair's
-  // distance fall 138 u short).
-  const Real margin = 8 * std::numeric_limits<Real>::epsilon() * p.scale;
+  const Real margin = climb_margin(p);
   Deepest<Real> best;
   if (const auto quick = certified_climb(p, start, margin, best.evaluations)) return *quick;
   // Not seeded with the climb's best: a point short of its maximum by less than the rounding of s

@@ -2,6 +2,7 @@
 
 #include "narrowphase/deepest_direction.h"
 #include "narrowphase/query.h"
+#include "shapes/rotation.h"
 
 #include <algorithm>
 #include <array>
@@ -40,6 +41,16 @@ void validate(const Shape& s, const Motion& m, const char* which) {
   if (!std::isfinite(m.angular_velocity)) reject(which, "angular velocity", m.angular_velocity, "must be finite");
 }
 
+// A world direction in a shape's own axes, with its kept orientation.
+Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<double>{o.c, o.s}.apply_inverse(n); }
+
+// The support function of a shape along a unit direction given in its own axes.
+double support_in_axes(const Shape& s, const Vec2& local) {
+  if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
+  return std::get<Circle>(s).radius;
+}
+
 // An upper bound of a turning shape's support function h along a fixed direction n over the rest of
 // the step, for the Taylor bound (time_of_impact.h): the largest of a few parabolas in the time from
 // now, each h_now - gap + slope t + bend t^2 / 2. The slope of h is w dh/dtheta = w n.perp(q), q the
@@ -61,13 +72,12 @@ struct SupportBound {
 SupportBound support_bound(const Shape& s, const Orientation& o, double w, const Vec2& n) {
   SupportBound out;
   if (w == 0) return out;
-  const Vec2 local(o.c * n.x() + o.s * n.y(), o.c * n.y() - o.s * n.x());
+  const Vec2 local = in_axes(o, n);
   const auto turn = [&](const Vec2& q) { return local.y() * q.x() - local.x() * q.y(); };  // dh/dtheta
   if (const auto* e = std::get_if<Ellipse>(&s)) {
     const Vec2 q(e->a * e->a * local.x(), e->b * e->b * local.y());
     const double major = std::max(e->a, e->b), minor = std::min(e->a, e->b);
-    out.pieces[0] = {0.0, w * turn(q / std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y())),
-                     w * w * (major * major / minor - minor)};
+    out.pieces[0] = {0.0, w * turn(q / support_in_axes(s, local)), w * w * (major * major / minor - minor)};
   } else if (const auto* r = std::get_if<Rect>(&s)) {
     // The support corner first: its pieces decide most steps.
     const Vec2 p(std::copysign(r->half_extents.x(), local.x()), std::copysign(r->half_extents.y(), local.y()));
@@ -146,18 +156,9 @@ std::optional<Probe> climb(const X& a, const Orientation& oa, const Y& b, const 
   using Pair = detail::SupportPair<double, SA, SB>;
   const Pair p = Pair::of(a, {oa.c, oa.s}, b, {ob.c, ob.s});
   int evaluations = 0;
-  const auto d = detail::certified_climb(p, p.from_world(guess), 8 * std::numeric_limits<double>::epsilon() * p.scale,
-                                         evaluations, 1e-3);
+  const auto d = detail::certified_climb(p, p.from_world(guess), detail::climb_margin(p), evaluations, 1e-3);
   if (!d || !(d->at.s > 0)) return std::nullopt;
   return Probe{d->at.s, p.to_world(d->n)};
-}
-
-// The support function of a shape along a unit direction n, with its kept orientation.
-double support(const Shape& s, const Orientation& o, const Vec2& n) {
-  const Vec2 local(o.c * n.x() + o.s * n.y(), o.c * n.y() - o.s * n.x());
-  if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
-  return std::get<Circle>(s).radius;
 }
 
 // The widest gap along the last normal and each rectangle's face normals (the separating axes; for
@@ -170,7 +171,7 @@ std::optional<Probe> widest_gap(const Shape& a, const Orientation& oa, const Sha
   Probe best{0.0, Vec2::UnitX()};
   const auto try_axis = [&](const Vec2& axis) {
     const Vec2 n = delta.dot(axis) >= 0 ? axis : Vec2(-axis);
-    const double gap = n.dot(delta) - support(a, oa, n) - support(b, ob, n);
+    const double gap = n.dot(delta) - support_in_axes(a, in_axes(oa, n)) - support_in_axes(b, in_axes(ob, n));
     if (gap > best.separation) best = {gap, n};
   };
   if (guess != Vec2::Zero()) try_axis(guess);
