@@ -122,7 +122,7 @@ BodyId World::add(const Shape& shape, std::uint64_t user_id, const Filter& filte
   if (index >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(index) + 1);
   Body& b = bodies_[index];
   b.shape = shape;  // a reused slot keeps the generation remove() gave it
-  b.orientation = Orientation::of(angle_of(shape));
+  if (contacts_on_) b.orientation = Orientation::of(angle_of(shape));
   b.box = box;
   b.user_id = user_id;
   b.filter = filter;
@@ -139,7 +139,7 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   const Aabb box = aabb(moved);
   broad_.move(id.index, broad_box(b.continuous ? swept(b.start, moved) : box));
   b.shape = moved;
-  b.orientation = Orientation::of(angle_of(moved));
+  if (contacts_on_) b.orientation = Orientation::of(angle_of(moved));  // only contacts use it
   b.box = box;
 }
 
