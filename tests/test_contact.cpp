@@ -209,6 +209,14 @@ TEST(ContactProperties, HoldOnEveryFamily) {
               apart, pushed, worst_push, worst_motion);
 }
 
+void expect_same_contact(const Contact& plain, const Contact& kept, const std::string& what) {
+  EXPECT_EQ(plain.separation, kept.separation) << what;
+  EXPECT_EQ(plain.normal, kept.normal) << what;
+  EXPECT_EQ(plain.point_a, kept.point_a) << what;
+  EXPECT_EQ(plain.point_b, kept.point_b) << what;
+  EXPECT_EQ(plain.manifold_size, kept.manifold_size) << what;
+}
+
 // The kernels with orientations kept against the same kernels computing them, on every family:
 // the same contact bit for bit (Orientation::of is the kernels' own rotation).
 using KernelPair = std::optional<std::pair<Contact, Contact>>;
@@ -241,11 +249,7 @@ TEST(ContactOrientations, KeptGiveTheSameContact) {
       if (!got) continue;
       ++compared;
       const auto& [plain, kept] = *got;
-      EXPECT_EQ(plain.separation, kept.separation) << describe(c.a) << " ; " << describe(c.b);
-      EXPECT_EQ(plain.normal, kept.normal);
-      EXPECT_EQ(plain.point_a, kept.point_a);
-      EXPECT_EQ(plain.point_b, kept.point_b);
-      EXPECT_EQ(plain.manifold_size, kept.manifold_size);
+      expect_same_contact(plain, kept, describe(c.a) + " ; " + describe(c.b));
     }
   }
   EXPECT_GT(compared, 500);
@@ -262,12 +266,7 @@ TEST(ContactOrientations, KeptByTheCallerGiveTheSameQuery) {
       for (const bool swap : {false, true}) {
         const Shape& a = swap ? c.b : c.a;
         const Shape& b = swap ? c.a : c.b;
-        const Contact plain = contact(a, b);
-        const Contact kept = contact(a, swap ? ob : oa, b, swap ? oa : ob);
-        EXPECT_EQ(plain.separation, kept.separation) << describe(a) << " ; " << describe(b);
-        EXPECT_EQ(plain.normal, kept.normal);
-        EXPECT_EQ(plain.point_a, kept.point_a);
-        EXPECT_EQ(plain.point_b, kept.point_b);
+        expect_same_contact(contact(a, b), contact(a, swap ? ob : oa, b, swap ? oa : ob), describe(a) + " ; " + describe(b));
         ++compared;
       }
     }
