@@ -48,13 +48,6 @@ struct MovingBoxes {
   }
 };
 
-b2AABB to_b2(const Aabb& box) {
-  b2AABB out;
-  out.lowerBound.Set(static_cast<float>(box.min.x()), static_cast<float>(box.min.y()));
-  out.upperBound.Set(static_cast<float>(box.max.x()), static_cast<float>(box.max.y()));
-  return out;
-}
-
 // Box2D's dynamic-tree broad phase, driven the way b2World drives it: MoveProxy for every moved
 // box (Box2D fattens by b2_aabbMargin = 0.1, as our margin here), UpdatePairs to collect the new
 // pairs, and, as b2ContactManager::Collide does, a TestOverlap on every known pair to drop those
@@ -66,7 +59,7 @@ class Box2dBroadPhase {
     std::vector<ProxyId> ids;
     for (const Aabb& box : boxes) {
       ids.push_back(static_cast<ProxyId>(proxy_.size()));
-      proxy_.push_back(tree_.CreateProxy(to_b2(box), reinterpret_cast<void*>(static_cast<std::uintptr_t>(ids.back()))));
+      proxy_.push_back(tree_.CreateProxy(baseline::to_box2d(box), reinterpret_cast<void*>(static_cast<std::uintptr_t>(ids.back()))));
       centre_.push_back(0.5 * (box.min + box.max));
     }
     return ids;
@@ -75,7 +68,7 @@ class Box2dBroadPhase {
     const Vec2 centre = 0.5 * (box.min + box.max);
     const Vec2 shift = centre - centre_[id];
     centre_[id] = centre;
-    tree_.MoveProxy(proxy_[id], to_b2(box), b2Vec2(static_cast<float>(shift.x()), static_cast<float>(shift.y())));
+    tree_.MoveProxy(proxy_[id], baseline::to_box2d(box), b2Vec2(static_cast<float>(shift.x()), static_cast<float>(shift.y())));
   }
   void update() {
     tree_.UpdatePairs(this);

@@ -34,6 +34,13 @@ Polygon ellipse_polygon(const Ellipse& e, int sides, Fit fit, const Vec2& origin
 
 }  // namespace
 
+b2AABB to_box2d(const Aabb& box) {
+  b2AABB out;
+  out.lowerBound.Set(static_cast<float>(box.min.x()), static_cast<float>(box.min.y()));
+  out.upperBound.Set(static_cast<float>(box.max.x()), static_cast<float>(box.max.y()));
+  return out;
+}
+
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
   if (const auto* e = std::get_if<Ellipse>(&shape)) return ellipse_polygon(*e, sides, fit, origin);
   if (const auto* c = std::get_if<Circle>(&shape)) return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};

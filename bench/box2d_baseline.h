@@ -33,6 +33,9 @@ struct Polygon {
   float radius = 0.0f;
 };
 
+// A box in Box2D's float, rounded to nearest.
+b2AABB to_box2d(const Aabb& box);
+
 // `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact.
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
 
