@@ -92,13 +92,14 @@ std::vector<ProxyId> BroadPhaseBase::insert_batch(std::span<const Aabb> boxes) {
   return ids;
 }
 
-void BroadPhaseBase::move(ProxyId id, const Aabb& box) {
+bool BroadPhaseBase::move(ProxyId id, const Aabb& box) {
   check(id);
   validate_box(box);
   Aabb& fat = proxies_[id].fat;
-  if (inside(box, fat)) return;
+  if (inside(box, fat)) return false;
   const Vec2 grow = Vec2::Constant(margin_);
   fat = {box.min - grow, box.max + grow};
+  return true;
 }
 
 void BroadPhaseBase::remove(ProxyId id) {

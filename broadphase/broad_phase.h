@@ -57,7 +57,8 @@ class BroadPhaseBase {
 
   ProxyId insert(const Aabb& box);
   std::vector<ProxyId> insert_batch(std::span<const Aabb> boxes);
-  void move(ProxyId id, const Aabb& box);
+  // True when the box left its fat box, which then grew around it again.
+  bool move(ProxyId id, const Aabb& box);
   void remove(ProxyId id);
 
   bool contains(ProxyId id) const;

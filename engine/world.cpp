@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace collide2d {
@@ -77,7 +78,7 @@ World::World(const WorldOptions& options)
 }
 
 bool World::contains(BodyId id) const {
-  return broad_.contains(id.index) && bodies_[id.index].generation == id.generation;
+  return id.index < bodies_.size() && bodies_[id.index].alive && bodies_[id.index].generation == id.generation;
 }
 
 const World::Body& World::body(BodyId id) const {
@@ -94,19 +95,21 @@ World::Body& World::body(BodyId id) { return const_cast<Body&>(std::as_const(*th
 const Shape& World::shape(BodyId id) const { return body(id).shape; }
 std::uint64_t World::user_id(BodyId id) const { return body(id).user_id; }
 const Filter& World::filter(BodyId id) const { return body(id).filter; }
+bool World::is_static(BodyId id) const { return body(id).is_static; }
+bool World::is_sensor(BodyId id) const { return body(id).sensor; }
 
 void World::set_filter(BodyId id, const Filter& filter) { body(id).filter = filter; }
 
 void World::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) { pair_predicate_ = std::move(predicate); }
 
-bool World::passes(const ProxyPair& p) const {
-  return should_pair(bodies_[p.a].filter, bodies_[p.b].filter) && (!pair_predicate_ || pair_predicate_(id_of(p.a), id_of(p.b)));
+bool World::passes(std::uint32_t a, std::uint32_t b) const {
+  return should_pair(bodies_[a].filter, bodies_[b].filter) && (!pair_predicate_ || pair_predicate_(id_of(a), id_of(b)));
 }
 
 std::vector<BodyId> World::bodies() const {
   std::vector<BodyId> out;
-  for (ProxyId index = 0; index < bodies_.size(); ++index) {
-    if (broad_.contains(index)) out.push_back(id_of(index));
+  for (std::uint32_t index = 0; index < bodies_.size(); ++index) {
+    if (bodies_[index].alive) out.push_back(id_of(index));
   }
   return out;
 }
@@ -115,17 +118,70 @@ Aabb World::broad_box(const Aabb& box) const {
   return grown(box, 0.5 * std::max(proximity_margin_, speculative_margin_));
 }
 
-BodyId World::add(const Shape& shape, std::uint64_t user_id, const Filter& filter) {
-  validate(shape);
-  const Aabb box = aabb(shape);
-  const ProxyId index = broad_.insert(broad_box(box));
-  if (index >= bodies_.size()) bodies_.resize(static_cast<std::size_t>(index) + 1);
+Aabb World::broad_box(const Body& b) const { return broad_box(b.continuous ? swept(b.start, b.shape) : b.box); }
+
+// Into the broad phase of its kind: the static tree, or the sweep and prune and the moving tree.
+void World::enter(std::uint32_t index) {
   Body& b = bodies_[index];
-  b.shape = shape;  // a reused slot keeps the generation remove() gave it
+  if (b.is_static) {
+    b.leaf = static_tree_.insert(broad_box(b), index);
+    statics_changed_ = true;
+    ++statics_since_rebuild_;
+    return;
+  }
+  b.proxy = broad_.insert(broad_box(b));
+  if (b.proxy >= body_of_.size()) body_of_.resize(static_cast<std::size_t>(b.proxy) + 1, kNoBody);
+  body_of_[b.proxy] = index;
+  b.leaf = moving_tree_.insert(broad_.fat_box(b.proxy), index);
+  b.requery = true;
+}
+
+void World::leave(std::uint32_t index) {
+  Body& b = bodies_[index];
+  if (b.is_static) {
+    static_tree_.remove(b.leaf);
+    statics_changed_ = true;
+    return;
+  }
+  broad_.remove(b.proxy);
+  body_of_[b.proxy] = kNoBody;
+  moving_tree_.remove(b.leaf);
+  b.statics.clear();
+}
+
+// Its broad-phase box, after a new pose or margin.
+void World::place(std::uint32_t index) {
+  Body& b = bodies_[index];
+  if (b.is_static) {
+    static_tree_.move(b.leaf, broad_box(b));
+    statics_changed_ = true;
+  } else if (broad_.move(b.proxy, broad_box(b))) {
+    moving_tree_.move(b.leaf, broad_.fat_box(b.proxy));
+  }
+}
+
+BodyId World::add(const Shape& shape, const BodyDef& def) {
+  validate(shape);
+  std::uint32_t index;
+  if (free_.empty()) {
+    index = static_cast<std::uint32_t>(bodies_.size());
+    bodies_.emplace_back();
+  } else {
+    index = free_.back();
+    free_.pop_back();
+  }
+  Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
+  b.shape = shape;
   if (contacts_on_) b.orientation = Orientation::of(angle_of(shape));
-  b.box = box;
-  b.user_id = user_id;
-  b.filter = filter;
+  b.box = aabb(shape);
+  b.user_id = def.user_id;
+  b.filter = def.filter;
+  b.is_static = def.is_static;
+  b.sensor = def.sensor;
+  b.continuous = false;
+  b.alive = true;
+  enter(index);
+  ++live_;
   return id_of(index);
 }
 
@@ -136,11 +192,10 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   require_finite(angle, "pose angle");
   const Shape moved = posed(b.shape, center, angle);
   validate(moved);  // the range of the centre
-  const Aabb box = aabb(moved);
-  broad_.move(id.index, broad_box(b.continuous ? swept(b.start, moved) : box));
   b.shape = moved;
   if (contacts_on_) b.orientation = Orientation::of(angle_of(moved));  // only contacts use it
-  b.box = box;
+  b.box = aabb(moved);
+  place(id.index);
 }
 
 void World::move_by(BodyId id, const Vec2& shift, double turn) {
@@ -148,9 +203,21 @@ void World::move_by(BodyId id, const Vec2& shift, double turn) {
   set_pose(id, center_of(s) + shift, angle_of(s) + turn);
 }
 
+void World::set_static(BodyId id, bool is_static) {
+  Body& b = body(id);
+  if (b.is_static == is_static) return;
+  if (b.continuous) set_continuous(id, false);
+  leave(id.index);
+  b.is_static = is_static;
+  enter(id.index);
+}
+
 void World::set_continuous(BodyId id, bool continuous) {
   Body& b = body(id);
   if (b.continuous == continuous) return;
+  if (b.is_static) {
+    throw std::invalid_argument("body " + std::to_string(id.index) + " is static: only moving bodies can be continuous");
+  }
   if (continuous) {
     continuous_.push_back(id.index);
   } else {
@@ -158,95 +225,159 @@ void World::set_continuous(BodyId id, bool continuous) {
   }
   b.continuous = continuous;
   b.start = b.shape;
-  broad_.move(id.index, broad_box(b.box));
+  place(id.index);
 }
 
 void World::remove(BodyId id) {
   Body& b = body(id);
   if (b.continuous) set_continuous(id, false);
-  broad_.remove(id.index);
+  leave(id.index);
+  b.alive = false;
   b.generation = b.generation == UINT32_MAX ? 1 : b.generation + 1;  // 0 names no body
+  free_.push_back(id.index);
+  --live_;
 }
 
 void World::set_proximity_margin(double margin) {
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
-  for (const BodyId id : bodies()) broad_.move(id.index, broad_box(bodies_[id.index].box));
+  for (const BodyId id : bodies()) place(id.index);
+}
+
+// The pairs of moving bodies from the sweep and prune, and each moving body's pairs with the static
+// bodies it keeps, looked up again where its fat box or the statics changed.
+void World::find_candidates() {
+  broad_.update();
+  if (statics_changed_ && static_tree_.size() >= 64 && 4 * statics_since_rebuild_ >= static_tree_.size()) {
+    static_tree_.rebuild();
+    statics_since_rebuild_ = 0;
+  }
+  candidates_.clear();
+  const auto ordered = [](std::uint32_t a, std::uint32_t b) { return a < b ? std::pair(a, b) : std::pair(b, a); };
+  for (const ProxyPair& p : broad_.pairs()) candidates_.push_back(ordered(body_of_[p.a], body_of_[p.b]));
+  for (ProxyId proxy = 0; proxy < body_of_.size(); ++proxy) {
+    const std::uint32_t index = body_of_[proxy];
+    if (index == kNoBody) continue;
+    Body& b = bodies_[index];
+    const Aabb& fat = broad_.fat_box(proxy);
+    if (statics_changed_ || b.requery || fat.min != b.queried.min || fat.max != b.queried.max) {
+      b.statics.clear();
+      static_tree_.query(fat, [&](std::uint32_t s) {
+        if (intersects(broad_box(bodies_[s]), fat)) b.statics.push_back(s);
+      });
+      b.queried = fat;
+      b.requery = false;
+      ++stats_.requeried;
+    }
+    for (const std::uint32_t s : b.statics) candidates_.push_back(ordered(index, s));
+  }
+  statics_changed_ = false;
 }
 
 void World::update() {
   const auto start = std::chrono::steady_clock::now();
-  broad_.update();
   stats_ = {};
+  find_candidates();
   stats_.broad_seconds = seconds_since(start);
   const auto narrow_start = std::chrono::steady_clock::now();
   std::vector<BodyPair> now;
+  std::vector<SensorPair> sensed;
   proximity_.clear();
   contacts_.clear();
   impacts_.clear();
-  const ContactOptions manifold{.margin = speculative_margin_};
-  for (const ProxyPair& p : broad_.pairs()) {
-    if (!passes(p)) {
+  for (const auto& [a, b] : candidates_) {
+    if (!passes(a, b)) {
       ++stats_.filtered;
       continue;
     }
-    const Body& x = bodies_[p.a];
-    const Body& y = bodies_[p.b];
-    if (x.continuous || y.continuous) impact(p);
-    if (intersects(x.box, y.box) && overlaps(x.shape, y.shape)) {
-      now.push_back(pair_of(p));
-      if (contacts_on_) contacts_.push_back({id_of(p.a), id_of(p.b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
-      continue;
-    }
-    if (proximity_margin_ > 0.0) {
-      const DistanceResult d = distance(x.shape, y.shape);
-      if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(p.a), id_of(p.b), d});
-    }
-    if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
-      const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
-      if (c.separation <= speculative_margin_) contacts_.push_back({id_of(p.a), id_of(p.b), c});
-    }
+    narrow(a, b, now, sensed);
   }
+  // The candidates come in no useful order: the results are sorted by pair.
+  const auto by_pair = [](const auto& p, const auto& q) { return std::tie(p.a, p.b) < std::tie(q.a, q.b); };
+  std::sort(now.begin(), now.end());
+  std::sort(sensed.begin(), sensed.end());
+  std::sort(proximity_.begin(), proximity_.end(), by_pair);
+  std::sort(contacts_.begin(), contacts_.end(), by_pair);
+  std::sort(impacts_.begin(), impacts_.end(), by_pair);
   began_.clear();
   ended_.clear();
   std::set_difference(now.begin(), now.end(), overlapping_.begin(), overlapping_.end(), std::back_inserter(began_));
   std::set_difference(overlapping_.begin(), overlapping_.end(), now.begin(), now.end(), std::back_inserter(ended_));
   overlapping_ = std::move(now);
-  for (const ProxyId index : continuous_) {  // the next step begins here
-    Body& b = bodies_[index];
-    b.start = b.shape;
-    broad_.move(index, broad_box(b.box));
+  sensor_began_.clear();
+  sensor_ended_.clear();
+  std::set_difference(sensed.begin(), sensed.end(), sensing_.begin(), sensing_.end(), std::back_inserter(sensor_began_));
+  std::set_difference(sensing_.begin(), sensing_.end(), sensed.begin(), sensed.end(), std::back_inserter(sensor_ended_));
+  sensing_ = std::move(sensed);
+  for (const std::uint32_t index : continuous_) {  // the next step begins here
+    bodies_[index].start = bodies_[index].shape;
+    place(index);
   }
   stats_.narrow_seconds = seconds_since(narrow_start);
-  stats_.candidates = broad_.pairs().size();
+  stats_.candidates = candidates_.size();
   stats_.overlapping = overlapping_.size();
   stats_.proximity = proximity_.size();
   stats_.contacts = contacts_.size();
   stats_.impacts = impacts_.size();
+  stats_.sensing = sensing_.size();
+}
+
+// One candidate pair that passed the filters: a sensor's overlap, or the solid pair's overlap,
+// proximity, contact and time of impact, as far as they were asked for.
+void World::narrow(std::uint32_t a, std::uint32_t b, std::vector<BodyPair>& now, std::vector<SensorPair>& sensed) {
+  const Body& x = bodies_[a];
+  const Body& y = bodies_[b];
+  const bool meet = intersects(x.box, y.box);
+  if (x.sensor || y.sensor) {
+    if (!(x.sensor && y.sensor) && meet && overlaps(x.shape, y.shape)) {
+      sensed.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
+    }
+    return;
+  }
+  const ContactOptions manifold{.margin = speculative_margin_};
+  if (x.continuous || y.continuous) impact(a, b);
+  if (meet && overlaps(x.shape, y.shape)) {
+    now.push_back({id_of(a), id_of(b)});
+    if (contacts_on_) contacts_.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
+    return;
+  }
+  if (proximity_margin_ > 0.0) {
+    const DistanceResult d = distance(x.shape, y.shape);
+    if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(a), id_of(b), d});
+  }
+  if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
+    const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
+    if (c.separation <= speculative_margin_) contacts_.push_back({id_of(a), id_of(b), c});
+  }
 }
 
 // A pair with a continuous body, over the step: each continuous body from its start pose, any other
 // at rest where it is now. Pairs that start the step overlapping are the overlap test's.
-void World::impact(const ProxyPair& p) {
-  const Body& x = bodies_[p.a];
-  const Body& y = bodies_[p.b];
-  const auto from = [](const Body& b) { return b.continuous ? b.start : b.shape; };
-  const auto motion = [](const Body& b) { return b.continuous ? step_of(b.start, b.shape) : Motion{}; };
+void World::impact(std::uint32_t a, std::uint32_t b) {
+  const Body& x = bodies_[a];
+  const Body& y = bodies_[b];
+  const auto from = [](const Body& body) { return body.continuous ? body.start : body.shape; };
+  const auto motion = [](const Body& body) { return body.continuous ? step_of(body.start, body.shape) : Motion{}; };
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
-    impacts_.push_back({id_of(p.a), id_of(p.b), r.t, r.normal, r.point});
+    impacts_.push_back({id_of(a), id_of(b), r.t, r.normal, r.point});
   }
 }
 
+// The solid bodies the filter lets through whose tight box meets `box` and that pass `test`, by index.
 template <class Test>
 std::vector<BodyId> World::select(const Aabb& box, const QueryFilter& filter, Test test) const {
-  std::vector<BodyId> out;
-  for (ProxyId index = 0; index < bodies_.size(); ++index) {
+  std::vector<std::uint32_t> found;
+  const auto visit = [&](std::uint32_t index) {
     const Body& b = bodies_[index];
-    if (broad_.contains(index) && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape)) {
-      out.push_back(id_of(index));
-    }
-  }
+    if (!b.sensor && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape)) found.push_back(index);
+  };
+  moving_tree_.query(box, visit);
+  static_tree_.query(box, visit);
+  std::sort(found.begin(), found.end());
+  std::vector<BodyId> out;
+  out.reserve(found.size());
+  for (const std::uint32_t index : found) out.push_back(id_of(index));
   return out;
 }
 
@@ -287,8 +418,11 @@ std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translati
   return best;
 }
 
-std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
-                                      const QueryFilter& filter) const {
+// on_hit(hit) for each solid body the filter lets through that the ray hits within the reach, which
+// starts at max_distance and becomes what on_hit returns.
+template <class OnHit>
+void World::rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter,
+                 OnHit on_hit) const {
   validate_point(origin, "ray origin");
   require_finite(direction.x(), "ray direction x");
   require_finite(direction.y(), "ray direction y");
@@ -296,14 +430,40 @@ std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction,
   const double length = direction.norm();
   if (!(length > 0.0)) throw std::invalid_argument("ray direction must not be zero");
   const Vec2 unit = direction / length;
+  const auto visit = [&](std::uint32_t index, double reach) {
+    const Body& b = bodies_[index];
+    if (b.sensor || !lets_through(filter, b.filter)) return reach;
+    const auto hit = collide2d::ray_cast(b.shape, origin, unit, reach);
+    return hit ? on_hit(RayHit{id_of(index), hit->distance, hit->point, hit->normal}, reach) : reach;
+  };
+  double reach = max_distance;
+  moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) { return reach = visit(index, r); });
+  static_tree_.ray_cast(origin, unit, reach, visit);
+}
+
+std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                                      const QueryFilter& filter) const {
   std::optional<RayHit> best;
-  for (ProxyId index = 0; index < bodies_.size(); ++index) {
-    if (!broad_.contains(index) || !lets_through(filter, bodies_[index].filter)) continue;
-    const double reach = best ? best->distance : max_distance;
-    const auto hit = collide2d::ray_cast(bodies_[index].shape, origin, unit, reach);
-    if (hit && (!best || hit->distance < best->distance)) best = RayHit{id_of(index), hit->distance, hit->point, hit->normal};
-  }
+  rays(origin, direction, max_distance, filter, [&best](const RayHit& hit, double) {
+    if (!best || hit.distance < best->distance || (hit.distance == best->distance && hit.body.index < best->body.index)) {
+      best = hit;
+    }
+    return best->distance;
+  });
   return best;
+}
+
+std::vector<RayHit> World::ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
+                                        const QueryFilter& filter) const {
+  std::vector<RayHit> hits;
+  rays(origin, direction, max_distance, filter, [&hits](const RayHit& hit, double reach) {
+    hits.push_back(hit);
+    return reach;
+  });
+  std::sort(hits.begin(), hits.end(), [](const RayHit& p, const RayHit& q) {
+    return std::tie(p.distance, p.body.index) < std::tie(q.distance, q.body.index);
+  });
+  return hits;
 }
 
 }  // namespace collide2d

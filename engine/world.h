@@ -2,7 +2,9 @@
 // narrow phase that confirms them.
 //
 //   World world({.fat_margin = 0.1, .proximity_margin = 0.5});
-//   BodyId id = world.add(Ellipse{Vec2(1, 2), 1.5, 0.4, 0.3}, /*user_id=*/7);
+//   BodyId id = world.add(Ellipse{Vec2(1, 2), 1.5, 0.4, 0.3}, {.user_id = 7});
+//   world.add(Rect{Vec2(0, -1), Vec2(50, 1), 0.0}, {.is_static = true});  // the floor
+//   world.add(Circle{Vec2(9, 0), 2.0}, {.sensor = true});                 // a trigger
 //   world.set_pose(id, Vec2(1.1, 2.0), 0.35);          // or move_by(id, shift, turn)
 //   world.update();                                   // once per frame
 //   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
@@ -21,11 +23,25 @@
 // reported overlap one whose boxes meet: a kernel's rounding (u times a needle's length) can then
 // never report a pair that a box test excludes.
 //
-// Queries (each validates its input and returns body ids in increasing order): the bodies whose
+// Static bodies (BodyDef::is_static) are level geometry: never paired with each other, kept in a
+// tree of their own (broadphase/aabb_tree.h) instead of the sweep and prune, so a level of 100,000
+// of them costs its insertion once and not a sort every frame. Each moving body keeps the static
+// bodies its broad-phase box meets, and looks them up again only when that box leaves its fat box
+// (so a fat margin makes them nearly free) or the statics changed: adding, removing, moving or
+// re-kinding a static body costs one tree query per moving body at the next update. The static
+// tree is rebuilt top-down when a quarter or more of it came in since the last rebuild.
+//
+// Sensors (BodyDef::sensor) report the solid bodies that overlap them, in sensing() with began and
+// ended lists of their own, and nothing else: a sensor never appears in the solid bodies' pairs,
+// proximity, contacts, impacts or in queries, and sensors do not sense each other (Box2D v3's rules).
+//
+// Queries (each validates its input and returns body ids in increasing order) look up the boxes they
+// meet in the moving bodies' tree and the static tree, then test the exact shapes: the bodies whose
 // solid shape overlaps a shape or a box (the exact shape, not its bounding box), the bodies within
-// a distance of a point or of a shape, and the first body a ray hits (exact on circles and
-// ellipses: the ray meets the curve, not a polygon). Queries test every body's box and then the
-// exact shape: O(n) per query.
+// a distance of a point or of a shape, and the bodies a ray hits, first or all (exact on circles and
+// ellipses: the ray meets the curve, not a polygon). The sweep-and-prune strips are not used for
+// them: a strip's endpoints answer "which boxes overlap along the sweep axis" well, but neither a
+// ray nor a box far smaller than a strip, and a tree answers both in O(log n + hits).
 //
 // Continuous bodies (bullets): set_continuous(id) makes a body's step, from its pose at the last
 // update to its pose now, count. Its broad-phase box covers the whole path (the segment between the
@@ -37,13 +53,15 @@
 // point and the body's outward normal.
 //
 // Filters (Filter, below): each body has one, and the World pairs two bodies only where
-// should_pair() lets them and the pair predicate, if set, agrees; every query takes a QueryFilter.
+// should_pair() lets them and the pair predicate, if set, agrees (sensor pairs too); every query
+// takes a QueryFilter.
 //
 // Errors: an invalid shape throws InvalidShape, a NaN or infinite pose, margin or query argument
 // std::invalid_argument, an unknown body or a stale handle (its body removed) std::out_of_range,
 // with a message that says which; the World is left exactly as it was.
 #pragma once
 
+#include "broadphase/aabb_tree.h"
 #include "broadphase/broad_phase.h"
 #include "narrowphase/query.h"
 #include "narrowphase/time_of_impact.h"
@@ -51,6 +69,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
@@ -88,6 +107,21 @@ bool should_pair(const Filter& a, const Filter& b);
 struct QueryFilter {
   std::uint64_t category = 1;
   std::uint64_t mask = ~std::uint64_t{0};
+};
+
+// What a body is, besides its shape.
+struct BodyDef {
+  std::uint64_t user_id = 0;
+  Filter filter;
+  bool is_static = false;  // level geometry: see the header comment
+  bool sensor = false;     // reports what overlaps it, and is otherwise not solid
+};
+
+// A sensor and a solid body that overlaps it.
+struct SensorPair {
+  BodyId sensor;
+  BodyId visitor;
+  friend auto operator<=>(const SensorPair&, const SensorPair&) = default;
 };
 
 struct WorldOptions {
@@ -141,6 +175,8 @@ struct FrameStats {
   std::size_t proximity = 0;
   std::size_t contacts = 0;
   std::size_t impacts = 0;
+  std::size_t sensing = 0;    // sensor pairs
+  std::size_t requeried = 0;  // moving bodies whose static neighbours were looked up again
   double broad_seconds = 0.0;
   double narrow_seconds = 0.0;
 };
@@ -149,8 +185,12 @@ class World {
  public:
   explicit World(const WorldOptions& options = {});
 
-  BodyId add(const Shape& shape, std::uint64_t user_id = 0, const Filter& filter = {});
+  BodyId add(const Shape& shape, const BodyDef& def = {});
+  // For a static body too, at the price the header comment gives.
   void set_pose(BodyId id, const Vec2& center, double angle);
+  // A static body becoming moving or back; a continuous body stops being continuous when it
+  // becomes static.
+  void set_static(BodyId id, bool is_static);
   // Takes effect at the next update: pairs that no longer pass end there (ended()).
   void set_filter(BodyId id, const Filter& filter);
   // Called for the candidate pairs that pass both filters (a.index < b.index), before any
@@ -160,15 +200,17 @@ class World {
   void remove(BodyId id);
   void set_proximity_margin(double margin);
   // A continuous body's step runs from its pose at the last update (or at this call) to its pose
-  // at the next update.
+  // at the next update. Static bodies cannot be continuous.
   void set_continuous(BodyId id, bool continuous = true);
   void update();
 
   bool contains(BodyId id) const;
-  std::size_t size() const { return broad_.size(); }
+  std::size_t size() const { return live_; }
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
   const Filter& filter(BodyId id) const;
+  bool is_static(BodyId id) const;
+  bool is_sensor(BodyId id) const;
   std::vector<BodyId> bodies() const;
 
   // Results of the last update.
@@ -180,6 +222,10 @@ class World {
   const std::vector<BodyContact>& contacts() const { return contacts_; }
   // The first times of impact of continuous bodies' pairs within the last step, sorted by pair.
   const std::vector<Impact>& impacts() const { return impacts_; }
+  // Each sensor's visitors now, and those that entered or left at the last update; sorted.
+  const std::vector<SensorPair>& sensing() const { return sensing_; }
+  const std::vector<SensorPair>& sensor_began() const { return sensor_began_; }
+  const std::vector<SensorPair>& sensor_ended() const { return sensor_ended_; }
   const FrameStats& last_frame() const { return stats_; }
 
   // Queries on the current poses (no update needed), over the bodies the filter lets through.
@@ -191,6 +237,9 @@ class World {
   // `max_distance` of the origin; a body containing the origin is hit at distance 0.
   std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                                  const QueryFilter& filter = {}) const;
+  // Every body the ray hits within `max_distance`, nearest first (by body index on a tie).
+  std::vector<RayHit> ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
+                                   const QueryFilter& filter = {}) const;
   // The first body the shape meets when translated by `translation` (the lowest body index on a
   // tie); a body it overlaps at the start is hit at fraction 0.
   std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {}) const;
@@ -203,33 +252,61 @@ class World {
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;
+    bool alive = false;
+    bool is_static = false;
+    bool sensor = false;
     bool continuous = false;
+    ProxyId proxy = 0;          // moving: its sweep-and-prune proxy
+    AabbTree::Leaf leaf = -1;   // its leaf in the moving or the static tree
+    Aabb queried;               // moving: the fat box its static neighbours were looked up for
+    bool requery = true;        // moving: look them up at the next update whatever the box
+    std::vector<std::uint32_t> statics;  // moving: those neighbours (body indices)
     Shape start;  // continuous: the pose at the last update, where the step begins
   };
-  std::vector<Body> bodies_;  // indexed by the broad phase's proxy id; live exactly when it has the id
-  SweepAndPrune broad_;
+  static constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
+
+  std::vector<Body> bodies_;  // by BodyId::index
+  std::vector<std::uint32_t> free_;
+  std::size_t live_ = 0;
+  SweepAndPrune broad_;                 // the moving bodies
+  std::vector<std::uint32_t> body_of_;  // by sweep-and-prune proxy: its body, or kNoBody
+  AabbTree moving_tree_;                // the moving bodies' fat boxes, for queries
+  AabbTree static_tree_;                // the static bodies' broad-phase boxes
+  bool statics_changed_ = false;
+  std::size_t statics_since_rebuild_ = 0;
   double proximity_margin_;
   bool contacts_on_;
   double speculative_margin_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a < b
   std::vector<BodyPair> overlapping_;
   std::vector<BodyPair> began_;
   std::vector<BodyPair> ended_;
   std::vector<Proximity> proximity_;
   std::vector<BodyContact> contacts_;
   std::vector<Impact> impacts_;
-  std::vector<ProxyId> continuous_;  // the continuous bodies' slots
+  std::vector<SensorPair> sensing_;
+  std::vector<SensorPair> sensor_began_;
+  std::vector<SensorPair> sensor_ended_;
+  std::vector<std::uint32_t> continuous_;  // the continuous bodies' indices
   std::function<bool(BodyId, BodyId)> pair_predicate_;
   FrameStats stats_;
 
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
-  BodyId id_of(ProxyId index) const { return {index, bodies_[index].generation}; }
-  BodyPair pair_of(const ProxyPair& p) const { return {id_of(p.a), id_of(p.b)}; }
+  BodyId id_of(std::uint32_t index) const { return {index, bodies_[index].generation}; }
   Aabb broad_box(const Aabb& box) const;
-  void impact(const ProxyPair& p);
-  bool passes(const ProxyPair& p) const;
+  Aabb broad_box(const Body& b) const;
+  void enter(std::uint32_t index);
+  void leave(std::uint32_t index);
+  void place(std::uint32_t index);
+  void find_candidates();
+  void narrow(std::uint32_t a, std::uint32_t b, std::vector<BodyPair>& now, std::vector<SensorPair>& sensed);
+  void impact(std::uint32_t a, std::uint32_t b);
+  bool passes(std::uint32_t a, std::uint32_t b) const;
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, const QueryFilter& filter, Test test) const;
+  template <class OnHit>
+  void rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter, OnHit on_hit) const;
 };
 
 }  // namespace collide2d

@@ -39,30 +39,52 @@ Shape random_shape(Rng& rng, double spread) {
   }
 }
 
-// Every pair tested directly with the narrow phase the World uses: overlaps, and the distance of the
-// others against the margin (expect_sample_matches_reference checks that narrow phase itself).
+// Every pair tested directly with the narrow phase the World uses, under the World's rules: no pair
+// of two static bodies, none the filters refuse; a pair with one sensor goes to sensing() (sensors
+// sense no sensor). Overlaps, and the distance of the others against the margin
+// (expect_sample_matches_reference checks that narrow phase itself).
 void expect_matches_all_pairs(const World& world, double margin, const std::string& what) {
   const std::vector<BodyId> ids = world.bodies();
   std::vector<BodyPair> overlapping;
   std::vector<BodyPair> near;
+  std::vector<SensorPair> sensing;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      const Shape& a = world.shape(ids[i]);
-      const Shape& b = world.shape(ids[j]);
-      if (overlaps(a, b)) {
-        overlapping.push_back({ids[i], ids[j]});
+      const BodyId x = ids[i], y = ids[j];
+      if ((world.is_static(x) && world.is_static(y)) || !should_pair(world.filter(x), world.filter(y))) continue;
+      const Shape& a = world.shape(x);
+      const Shape& b = world.shape(y);
+      if (world.is_sensor(x) || world.is_sensor(y)) {
+        if (world.is_sensor(x) != world.is_sensor(y) && overlaps(a, b)) {
+          sensing.push_back(world.is_sensor(x) ? SensorPair{x, y} : SensorPair{y, x});
+        }
+      } else if (overlaps(a, b)) {
+        overlapping.push_back({x, y});
       } else if (margin > 0 && distance(a, b).distance <= margin) {
-        near.push_back({ids[i], ids[j]});
+        near.push_back({x, y});
       }
     }
   }
   ASSERT_EQ(world.overlapping(), overlapping) << what;
+  std::sort(sensing.begin(), sensing.end());
+  ASSERT_EQ(world.sensing(), sensing) << what;
   std::vector<BodyPair> reported;
   for (const Proximity& p : world.proximity()) {
     reported.push_back({p.a, p.b});
     ASSERT_EQ(p.result.distance, distance(world.shape(p.a), world.shape(p.b)).distance);
   }
   ASSERT_EQ(reported, near) << what;
+}
+
+// began and ended are what `now` gained and lost since `previous`.
+template <class Pair>
+void expect_changes(const std::vector<Pair>& previous, const std::vector<Pair>& now, const std::vector<Pair>& began,
+                    const std::vector<Pair>& ended, const std::string& what) {
+  std::vector<Pair> gained, lost;
+  std::set_difference(now.begin(), now.end(), previous.begin(), previous.end(), std::back_inserter(gained));
+  std::set_difference(previous.begin(), previous.end(), now.begin(), now.end(), std::back_inserter(lost));
+  ASSERT_EQ(began, gained) << what;
+  ASSERT_EQ(ended, lost) << what;
 }
 
 bool has(const std::vector<BodyPair>& sorted, const BodyPair& p) {
@@ -103,7 +125,7 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
     Rng rng(7);
     World world({.fat_margin = 0.05, .proximity_margin = margin});
     std::vector<Vec2> velocity(400);
-    for (int k = 0; k < 250; ++k) world.add(random_shape(rng, 15.0), static_cast<std::uint64_t>(k));
+    for (int k = 0; k < 250; ++k) world.add(random_shape(rng, 15.0), {.user_id = static_cast<std::uint64_t>(k)});
     std::vector<BodyPair> previous;
     for (int frame = 0; frame < 40; ++frame) {
       for (const BodyId id : world.bodies()) {
@@ -121,13 +143,8 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
       if (HasFatalFailure()) return;
       expect_sample_matches_reference(world, margin, rng, "frame " + std::to_string(frame));
       if (HasFatalFailure()) return;
-      std::vector<BodyPair> began, ended;
-      std::set_difference(world.overlapping().begin(), world.overlapping().end(), previous.begin(), previous.end(),
-                          std::back_inserter(began));
-      std::set_difference(previous.begin(), previous.end(), world.overlapping().begin(), world.overlapping().end(),
-                          std::back_inserter(ended));
-      ASSERT_EQ(world.began(), began);
-      ASSERT_EQ(world.ended(), ended);
+      expect_changes(previous, world.overlapping(), world.began(), world.ended(), "frame " + std::to_string(frame));
+      if (HasFatalFailure()) return;
       previous = world.overlapping();
     }
     EXPECT_GT(world.overlapping().size(), 0u);
@@ -258,8 +275,8 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
 
 TEST(World, BadInputIsRefusedAndChangesNothing) {
   World world({.proximity_margin = 0.5});
-  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, 1);
-  const BodyId b = world.add(Ellipse{Vec2(1.5, 0), 1, 0.5, 0}, 2);
+  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, {.user_id = 1});
+  const BodyId b = world.add(Ellipse{Vec2(1.5, 0), 1, 0.5, 0}, {.user_id = 2});
   world.update();
   const auto pairs = world.overlapping();
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -304,11 +321,11 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
 // body is untouched by calls made with it.
 TEST(World, StaleHandlesAreRefusedAfterTheirSlotIsReused) {
   World world;
-  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, 1);
-  world.add(Circle{Vec2(5, 0), 1}, 2);
+  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, {.user_id = 1});
+  world.add(Circle{Vec2(5, 0), 1}, {.user_id = 2});
   world.remove(a);
   world.update();  // the broad phase hands a's slot out again after an update
-  const BodyId c = world.add(Circle{Vec2(10, 0), 1}, 3);
+  const BodyId c = world.add(Circle{Vec2(10, 0), 1}, {.user_id = 3});
   ASSERT_EQ(c.index, a.index);
   EXPECT_NE(c.generation, a.generation);
   EXPECT_FALSE(world.contains(a));
@@ -475,7 +492,7 @@ Filter random_filter(Rng& rng) {
 TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
   Rng rng(21);
   World world({.fat_margin = 0.05});
-  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 12.0), static_cast<std::uint64_t>(k), random_filter(rng));
+  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = random_filter(rng)});
   world.set_pair_predicate([&world](BodyId a, BodyId b) { return (world.user_id(a) + world.user_id(b)) % 5 != 0; });
   std::vector<BodyPair> previous;
   std::size_t refused = 0, ended_by_filters = 0;
@@ -504,12 +521,9 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
       }
     }
     ASSERT_EQ(world.overlapping(), expected) << "frame " << frame;
-    std::vector<BodyPair> began, ended;
-    std::set_difference(expected.begin(), expected.end(), previous.begin(), previous.end(), std::back_inserter(began));
-    std::set_difference(previous.begin(), previous.end(), expected.begin(), expected.end(), std::back_inserter(ended));
-    ASSERT_EQ(world.began(), began) << "frame " << frame;
-    ASSERT_EQ(world.ended(), ended) << "frame " << frame;
-    if (frame == 10) ended_by_filters = ended.size();
+    expect_changes(previous, expected, world.began(), world.ended(), "frame " + std::to_string(frame));
+    if (HasFatalFailure()) return;
+    if (frame == 10) ended_by_filters = world.ended().size();
     EXPECT_GT(world.last_frame().filtered, 0u);
     previous = expected;
   }
@@ -524,7 +538,7 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
 TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
   Rng rng(22);
   World world;
-  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 10.0), 0, random_filter(rng));
+  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 10.0), {.filter = random_filter(rng)});
   const auto through = [](const QueryFilter& q, const Filter& f) { return (f.category & q.mask) && (f.mask & q.category); };
   for (int k = 0; k < 60; ++k) {
     const QueryFilter q{.category = std::uint64_t{1} << static_cast<int>(uniform(rng, 0, 3)),
@@ -548,6 +562,162 @@ TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
     ASSERT_EQ(got.has_value(), first.has_value()) << k;
     if (got) ASSERT_EQ(got->distance, first->distance) << k;
   }
+}
+
+// A level: static bodies (overlapping each other, never paired), moving bodies and sensors of both
+// kinds, with filters. Over frames of motion, static churn, a static body moved, bodies changing
+// kind, a filter change and moving churn, everything the World reports matches all pairs under the
+// same rules, and the began and ended lists (solid and sensor) are the differences from the frame
+// before. A frame where nothing moves looks up no static neighbours.
+TEST(WorldStatic, PairsMatchAllPairsWithStaticsAndSensors) {
+  for (const double margin : {0.0, 0.25}) {
+    Rng rng(31);
+    World world({.fat_margin = 0.1, .proximity_margin = margin});
+    const auto add = [&](bool is_static, bool sensor) {
+      const Filter f = uniform(rng, 0, 1) < 0.2 ? random_filter(rng) : Filter{};
+      return world.add(random_shape(rng, 15.0), {.user_id = 0, .filter = f, .is_static = is_static, .sensor = sensor});
+    };
+    for (int k = 0; k < 150; ++k) add(true, k % 15 == 0);
+    for (int k = 0; k < 120; ++k) add(false, k % 20 == 0);
+    std::vector<BodyPair> previous;
+    std::vector<SensorPair> previous_sensing;
+    std::size_t static_overlaps = 0, sensor_began = 0, sensor_ended = 0;
+    for (int frame = 0; frame < 30; ++frame) {
+      const std::vector<BodyId> ids = world.bodies();
+      if (frame != 29) {
+        for (const BodyId id : ids) {
+          if (!world.is_static(id)) world.move_by(id, Vec2(uniform(rng, -0.15, 0.15), uniform(rng, -0.15, 0.15)), 0.05);
+        }
+      }
+      if (frame == 7) {
+        for (std::size_t k = 0; k < ids.size(); k += 11) {
+          if (world.is_static(ids[k])) world.remove(ids[k]);
+        }
+        for (int k = 0; k < 12; ++k) add(true, k % 4 == 0);
+      }
+      if (frame == 12) {
+        for (std::size_t k = 1; k < ids.size(); k += 13) {
+          if (world.is_static(ids[k])) world.move_by(ids[k], Vec2(0.7, -0.4), 0.3);
+        }
+      }
+      if (frame == 15) {
+        for (std::size_t k = 2; k < ids.size(); k += 9) world.set_static(ids[k], !world.is_static(ids[k]));
+      }
+      if (frame == 20) {
+        for (std::size_t k = 3; k < ids.size(); k += 7) world.set_filter(ids[k], random_filter(rng));
+      }
+      if (frame == 25) {
+        for (std::size_t k = 4; k < ids.size(); k += 10) {
+          if (!world.is_static(ids[k])) world.remove(ids[k]);
+        }
+        for (int k = 0; k < 10; ++k) add(false, k % 5 == 0);
+      }
+      world.update();
+      const std::string what = "margin " + std::to_string(margin) + ", frame " + std::to_string(frame);
+      expect_matches_all_pairs(world, margin, what);
+      if (HasFatalFailure()) return;
+      expect_changes(previous, world.overlapping(), world.began(), world.ended(), what);
+      expect_changes(previous_sensing, world.sensing(), world.sensor_began(), world.sensor_ended(), what);
+      if (HasFatalFailure()) return;
+      if (frame == 29) EXPECT_EQ(world.last_frame().requeried, 0u) << "nothing moved, nothing static changed";
+      previous = world.overlapping();
+      previous_sensing = world.sensing();
+      sensor_began += world.sensor_began().size();
+      sensor_ended += world.sensor_ended().size();
+    }
+    const std::vector<BodyId> ids = world.bodies();
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      for (std::size_t j = i + 1; j < ids.size(); ++j) {
+        const bool both = world.is_static(ids[i]) && world.is_static(ids[j]);
+        if (both && overlaps(world.shape(ids[i]), world.shape(ids[j]))) ++static_overlaps;
+      }
+    }
+    EXPECT_GT(static_overlaps, 10u);  // overlapping static pairs exist and were left out
+    EXPECT_GT(sensor_began, 10u);
+    EXPECT_GT(sensor_ended, 5u);
+    EXPECT_GT(world.overlapping().size(), 20u);
+    std::printf("[world] statics: %zu overlapping static pairs left out, %zu sensor entries, %zu exits\n",
+                static_overlaps, sensor_began, sensor_ended);
+  }
+}
+
+// Queries through the trees: the solid bodies, moving and static (never sensors), that a scan of
+// every body finds, also right after bodies moved (no update in between).
+TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
+  Rng rng(32);
+  World world({.fat_margin = 0.1});
+  for (int k = 0; k < 450; ++k) {
+    world.add(random_shape(rng, 12.0), {.user_id = 0, .filter = random_filter(rng), .is_static = k % 3 != 0, .sensor = k % 10 == 0});
+  }
+  world.update();
+  const auto through = [](const QueryFilter& q, const Filter& f) { return (f.category & q.mask) && (f.mask & q.category); };
+  for (int k = 0; k < 80; ++k) {
+    if (k == 40) {
+      for (const BodyId id : world.bodies()) world.move_by(id, Vec2(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5)), 0.2);
+    }
+    const QueryFilter q = k % 2 == 0 ? QueryFilter{} : QueryFilter{.category = 1, .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
+    const Shape probe = random_shape(rng, 12.0);
+    const Vec2 point(uniform(rng, 0, 12), uniform(rng, 0, 12));
+    const Aabb box{point, point + Vec2(uniform(rng, 0, 3), uniform(rng, 0, 3))};
+    const Vec2 origin(uniform(rng, -1, 13), uniform(rng, -1, 13));
+    const double angle = uniform(rng, 0, 6.3);
+    const Vec2 dir(2.0 * std::cos(angle), 2.0 * std::sin(angle));
+    const Vec2 unit = dir / dir.norm();
+    const Vec2 shift(uniform(rng, -4, 4), uniform(rng, -4, 4));
+    std::vector<BodyId> hit, near, in_box;
+    std::vector<RayHit> all;
+    std::optional<BodyCastHit> cast;
+    for (const BodyId id : world.bodies()) {
+      if (world.is_sensor(id) || !through(q, world.filter(id))) continue;
+      const Shape& s = world.shape(id);
+      if (overlaps(probe, s)) hit.push_back(id);
+      if (distance(probe, s).distance <= 0.4) near.push_back(id);
+      if (overlaps(s, box)) in_box.push_back(id);
+      if (const auto r = ray_cast(s, origin, unit, 15.0)) all.push_back({id, r->distance, r->point, r->normal});
+      const auto c = shape_cast(probe, shift, s);
+      if (c && (!cast || c->fraction < cast->fraction)) cast = BodyCastHit{id, c->fraction, c->point, c->normal};
+    }
+    std::stable_sort(all.begin(), all.end(), [](const RayHit& a, const RayHit& b) { return a.distance < b.distance; });
+    ASSERT_EQ(world.overlapping(probe, q), hit) << k;
+    ASSERT_EQ(world.within(probe, 0.4, q), near) << k;
+    ASSERT_EQ(world.overlapping(box, q), in_box) << k;
+    const std::vector<RayHit> got = world.ray_cast_all(origin, dir, 15.0, q);
+    ASSERT_EQ(got.size(), all.size()) << k;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      ASSERT_EQ(got[i].body, all[i].body) << k;
+      ASSERT_EQ(got[i].distance, all[i].distance) << k;
+    }
+    const auto first = world.ray_cast(origin, dir, 15.0, q);
+    ASSERT_EQ(first.has_value(), !all.empty()) << k;
+    if (first) ASSERT_EQ(first->body, all.front().body) << k;
+    const auto got_cast = world.cast(probe, shift, q);
+    ASSERT_EQ(got_cast.has_value(), cast.has_value()) << k;
+    if (got_cast) ASSERT_EQ(got_cast->body, cast->body) << k;
+  }
+}
+
+TEST(WorldStatic, StaticBodiesCannotBeContinuous) {
+  World world;
+  const BodyId wall = world.add(Rect{{0, 0}, {1, 5}, 0}, {.user_id = 4, .filter = {}, .is_static = true, .sensor = false});
+  const BodyId ball = world.add(Circle{{0.5, 0}, 1});
+  world.update();
+  const auto pairs = world.overlapping();
+  try {
+    world.set_continuous(wall);
+    ADD_FAILURE() << "a static body was made continuous";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "body 0 is static: only moving bodies can be continuous");
+  }
+  world.set_continuous(ball);
+  world.set_static(ball, true);  // stops being continuous
+  world.set_pose(ball, Vec2(0.5, 0.2), 0.0);
+  world.update();
+  EXPECT_TRUE(world.impacts().empty());
+  EXPECT_TRUE(world.overlapping().empty());  // two static bodies
+  world.set_static(ball, false);
+  world.update();
+  EXPECT_EQ(world.overlapping().size(), pairs.size());
+  EXPECT_THROW(world.set_static(BodyId{9, 1}, true), std::out_of_range);
 }
 
 }  // namespace

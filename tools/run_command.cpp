@@ -32,7 +32,7 @@ void draw_progress(std::ostream& out, int done, int total) {
 SceneRun::SceneRun(Scene scene)
     : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
   for (const SceneBody& b : scene_.bodies) {
-    ids_.push_back(world_.add(b.shape, b.id, b.filter));
+    ids_.push_back(world_.add(b.shape, {.user_id = b.id, .filter = b.filter}));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
 }

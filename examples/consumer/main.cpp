@@ -16,8 +16,8 @@ int main() {
 
   // Many bodies moving every frame: the World (sweep and prune, then the narrow phase).
   World world({.fat_margin = 0.1, .proximity_margin = 0.5, .contacts = true});
-  const BodyId ship = world.add(Ellipse{Vec2(0, 0), 1.0, 0.3, 0.0}, /*user_id=*/1);
-  world.add(Circle{Vec2(3, 0), 1.0}, 2);
+  const BodyId ship = world.add(Ellipse{Vec2(0, 0), 1.0, 0.3, 0.0}, {.user_id = 1});
+  world.add(Circle{Vec2(3, 0), 1.0}, {.user_id = 2});
   for (int frame = 0; frame < 3; ++frame) {
     world.move_by(ship, Vec2(0.5, 0.0), 0.1);
     world.update();

@@ -93,7 +93,9 @@ class Pile {
       Body& b = bodies_.emplace_back();
       b.mass = area(shape);
       b.inertia = b.mass * inertia_per_mass(shape);
-      b.id = world_.add(shape, bodies_.size() - 1);
+      BodyDef def;
+      def.user_id = bodies_.size() - 1;
+      b.id = world_.add(shape, def);
       total_area += b.mass;
       smallest_ = std::min(smallest_, smallest_half_size(shape));
     }
@@ -101,7 +103,10 @@ class Pile {
     for (const Rect& wall : {Rect{Vec2(width_ / 2, -kWall / 2), Vec2(width_ / 2 + kWall, kWall / 2), 0.0},
                              Rect{Vec2(-kWall / 2, height_ / 2), Vec2(kWall / 2, height_ / 2), 0.0},
                              Rect{Vec2(width_ + kWall / 2, height_ / 2), Vec2(kWall / 2, height_ / 2), 0.0}}) {
-      bodies_.emplace_back().id = world_.add(wall, bodies_.size());
+      BodyDef def;  // walls never move: static bodies, never paired with each other
+      def.user_id = bodies_.size();
+      def.is_static = true;
+      bodies_.emplace_back().id = world_.add(wall, def);
     }
     stiffness_ = stiffness_for(total_area, width_, smallest_);
     // 0.15 sqrt(m / k) for the lightest body: a body pressed by several contacts, their lever arms

@@ -184,7 +184,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
       switch (in.byte() % 8) {
         case 0:
-          if (world.size() < 24) world.add(in.shape(), 0, filter_from(in));
+          if (world.size() < 24) world.add(in.shape(), {.filter = filter_from(in)});
           break;
         case 6: {
           const BodyId id = target();
