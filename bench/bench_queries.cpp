@@ -1,18 +1,24 @@
-// Queries through a box tree: the boxes within a query box, and the boxes along a ray, over n boxes
-// in a uniform scene (the broad-phase benchmark's: 8% of the arena covered, half sides 0.3 to 2),
-// against Box2D 2.4.1's b2DynamicTree::Query and RayCast on the same boxes. Box2D's CreateProxy
-// grows each box by b2_aabbMargin = 0.1, so ours are grown by 0.1 too. Query boxes have half side 4;
-// rays start anywhere in the arena, in any direction, 30 long. Both report every box they meet (the
-// box part of a World query; World queries then test the exact shapes, timed in bench_world).
+// Queries over n bodies in a uniform scene (the broad-phase benchmark's density: 8% of the arena
+// covered; circles, ellipses and rectangles at any angle, 0.3 to 2 across half): the bodies within
+// a query box (half side 4) and along a ray (from anywhere in the arena, any direction, 30 long).
 //
-// Our tree is timed as insert() leaves it (the order of insertion, as Box2D's) and after rebuild()
-// (what the World does for static bodies).
+// The box part, against Box2D 2.4.1's b2DynamicTree::Query and RayCast on the same boxes: each
+// shape's box grown by 0.1 (Box2D's CreateProxy grows by b2_aabbMargin = 0.1, so ours are given
+// grown), every box met reported. Our tree is timed as insert() leaves it (in order of insertion,
+// as Box2D's) and after rebuild().
+//
+// The World's queries, box part and exact shapes together: overlapping(box) and ray_cast_all() (every
+// body the ray meets, exact), and ray_cast() (the first hit, where a near hit prunes the rest), in a
+// World whose bodies are all static (their tree rebuilt, boxes not fattened) or all moving (fat
+// margin 0.1, the tree as motion leaves it, below).
 #include "bench/box2d_baseline.h"
 #include "broadphase/aabb_tree.h"
+#include "engine/world.h"
 
 #include <benchmark/benchmark.h>
 #include <box2d/b2_dynamic_tree.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -23,9 +29,11 @@ namespace collide2d {
 namespace {
 
 constexpr int kQueries = 1024;
+constexpr double kRayLength = 30.0;
 
 struct Scene {
-  std::vector<Aabb> boxes;
+  std::vector<Shape> shapes;
+  std::vector<Aabb> boxes;  // grown by 0.1
   std::vector<Aabb> queries;
   std::vector<std::pair<Vec2, Vec2>> rays;  // origin, unit direction
 
@@ -35,8 +43,14 @@ struct Scene {
     const double side = std::sqrt(28.0 * n);
     for (int k = 0; k < n; ++k) {
       const Vec2 c(u(rng) * side, u(rng) * side);
-      const double half = 0.3 + 1.7 * u(rng) + 0.1;
-      boxes.push_back({c.array() - half, c.array() + half});
+      const double half = 0.3 + 1.7 * u(rng), angle = 2 * M_PI * u(rng);
+      switch (k % 3) {
+        case 0: shapes.push_back(Circle{c, half}); break;
+        case 1: shapes.push_back(Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle}); break;
+        default: shapes.push_back(Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle});
+      }
+      const Aabb box = aabb(shapes.back());
+      boxes.push_back({box.min.array() - 0.1, box.max.array() + 0.1});
     }
     for (int k = 0; k < kQueries; ++k) {
       const Vec2 c(u(rng) * side, u(rng) * side);
@@ -46,7 +60,6 @@ struct Scene {
     }
   }
 };
-constexpr double kRayLength = 30.0;
 
 const Scene& scene(int n) {
   static std::map<int, std::unique_ptr<Scene>> cache;
@@ -55,18 +68,21 @@ const Scene& scene(int n) {
   return *s;
 }
 
+enum class Kind { tree, tree_rebuilt, box2d, static_world, moving_world };
+enum class Query { box, ray_all, ray_first };
+
 struct Ours {
   AabbTree tree;
-  Ours(const Scene& s, bool rebuilt) {
+  Ours(const Scene& s, Kind kind) {
     for (std::size_t k = 0; k < s.boxes.size(); ++k) tree.insert(s.boxes[k], static_cast<std::uint32_t>(k));
-    if (rebuilt) tree.rebuild();
+    if (kind == Kind::tree_rebuilt) tree.rebuild();
   }
-  std::size_t query(const Aabb& box) const {
+  std::size_t run(const Aabb& box) const {
     std::size_t hits = 0;
     tree.query(box, [&hits](std::uint32_t) { ++hits; });
     return hits;
   }
-  std::size_t ray(const Vec2& o, const Vec2& d) const {
+  std::size_t run(const Vec2& o, const Vec2& d, Query) const {
     std::size_t hits = 0;
     tree.ray_cast(o, d, kRayLength, [&hits](std::uint32_t, double reach) {
       ++hits;
@@ -79,7 +95,7 @@ struct Ours {
 struct Box2d {
   b2DynamicTree tree;
   mutable std::size_t hits = 0;
-  Box2d(const Scene& s, bool) {
+  Box2d(const Scene& s, Kind) {
     for (const Aabb& box : s.boxes) {  // CreateProxy grows it by 0.1 again
       tree.CreateProxy(baseline::to_box2d({box.min.array() + 0.1, box.max.array() - 0.1}), nullptr);
     }
@@ -92,12 +108,12 @@ struct Box2d {
     ++hits;
     return input.maxFraction;
   }
-  std::size_t query(const Aabb& box) const {
+  std::size_t run(const Aabb& box) const {
     hits = 0;
     tree.Query(const_cast<Box2d*>(this), baseline::to_box2d(box));
     return hits;
   }
-  std::size_t ray(const Vec2& o, const Vec2& d) const {
+  std::size_t run(const Vec2& o, const Vec2& d, Query) const {
     hits = 0;
     b2RayCastInput input;
     input.p1.Set(static_cast<float>(o.x()), static_cast<float>(o.y()));
@@ -108,38 +124,65 @@ struct Box2d {
   }
 };
 
-template <class Tree, bool rebuilt>
-const Tree& tree_of(int n) {
-  static std::map<int, std::unique_ptr<Tree>> cache;
-  auto& t = cache[n];
-  if (!t) t = std::make_unique<Tree>(scene(n), rebuilt);
+struct Bodies {
+  World world;
+  // Moving bodies are then moved for some frames (up to 0.1 a frame and 0.05 rad), so that their
+  // tree is timed as motion leaves it: nearly every box has left its fat box and been re-inserted.
+  Bodies(const Scene& s, Kind kind) : world({.fat_margin = 0.1}) {
+    BodyDef def;
+    def.is_static = kind == Kind::static_world;
+    for (const Shape& shape : s.shapes) world.add(shape, def);
+    world.update();  // where a tree of newly added bodies is rebuilt
+    if (def.is_static) return;
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<BodyId> ids = world.bodies();
+    for (std::size_t frame = 0; frame < std::clamp<std::size_t>(3000000 / ids.size(), 3, 60); ++frame) {
+      for (const BodyId id : ids) world.move_by(id, Vec2(0.1 * u(rng), 0.1 * u(rng)), 0.05 * u(rng));
+      world.update();
+    }
+  }
+  std::size_t run(const Aabb& box) const { return world.overlapping(box).size(); }
+  std::size_t run(const Vec2& o, const Vec2& d, Query q) const {
+    if (q == Query::ray_first) return world.ray_cast(o, d, kRayLength) ? 1 : 0;
+    return world.ray_cast_all(o, d, kRayLength).size();
+  }
+};
+
+template <class Target>
+const Target& target(int n, Kind kind) {
+  static std::map<std::pair<int, Kind>, std::unique_ptr<Target>> cache;
+  auto& t = cache[{n, kind}];
+  if (!t) t = std::make_unique<Target>(scene(n), kind);
   return *t;
 }
 
-template <class Tree, bool rebuilt, bool ray>
+template <class Target, Kind kind, Query query>
 void run(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const Scene& s = scene(n);
-  const Tree& tree = tree_of<Tree, rebuilt>(n);
+  const Target& t = target<Target>(n, kind);
   std::size_t k = 0, hits = 0;
   for (auto _ : state) {
     const std::size_t q = k++ % kQueries;
-    hits += ray ? tree.ray(s.rays[q].first, s.rays[q].second) : tree.query(s.queries[q]);
+    hits += query == Query::box ? t.run(s.queries[q]) : t.run(s.rays[q].first, s.rays[q].second, query);
   }
   state.counters["hits"] = static_cast<double>(hits) / static_cast<double>(state.iterations());
 }
-template <class Tree, bool rebuilt>
-void box_query(benchmark::State& state) { run<Tree, rebuilt, false>(state); }
-template <class Tree, bool rebuilt>
-void ray_query(benchmark::State& state) { run<Tree, rebuilt, true>(state); }
 
 #define SIZES ->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)
-BENCHMARK(box_query<Ours, false>) SIZES;
-BENCHMARK(box_query<Ours, true>) SIZES;
-BENCHMARK(box_query<Box2d, false>) SIZES;
-BENCHMARK(ray_query<Ours, false>) SIZES;
-BENCHMARK(ray_query<Ours, true>) SIZES;
-BENCHMARK(ray_query<Box2d, false>) SIZES;
+BENCHMARK(run<Ours, Kind::tree, Query::box>)->Name("box/tree") SIZES;
+BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::box>)->Name("box/tree_rebuilt") SIZES;
+BENCHMARK(run<Box2d, Kind::box2d, Query::box>)->Name("box/box2d") SIZES;
+BENCHMARK(run<Bodies, Kind::static_world, Query::box>)->Name("box/world_static") SIZES;
+BENCHMARK(run<Bodies, Kind::moving_world, Query::box>)->Name("box/world_moving") SIZES;
+BENCHMARK(run<Ours, Kind::tree, Query::ray_all>)->Name("ray/tree") SIZES;
+BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::ray_all>)->Name("ray/tree_rebuilt") SIZES;
+BENCHMARK(run<Box2d, Kind::box2d, Query::ray_all>)->Name("ray/box2d") SIZES;
+BENCHMARK(run<Bodies, Kind::static_world, Query::ray_all>)->Name("ray/world_static_all") SIZES;
+BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_all>)->Name("ray/world_moving_all") SIZES;
+BENCHMARK(run<Bodies, Kind::static_world, Query::ray_first>)->Name("ray/world_static_first") SIZES;
+BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_first>)->Name("ray/world_moving_first") SIZES;
 
 }  // namespace
 }  // namespace collide2d

@@ -27,7 +27,9 @@
 
 #include "shapes/shapes.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -43,8 +45,19 @@ class AabbTree {
   void remove(Leaf leaf);
   void rebuild();
   void clear();
+  // A new box for a leaf with the tree's shape kept: O(1), and the inner boxes are stale until
+  // refit(), which must come before the next query. For many leaves moving a little each frame,
+  // set_box on each and one refit() cost O(n) in all, less than re-inserting them one by one.
+  void set_box(Leaf leaf, const Aabb& box) { store(box, nodes_[leaf].lo, nodes_[leaf].hi); }
+  // Every inner box recomputed from its children; returns the sum of the inner boxes' perimeters
+  // (half perimeters: width plus height), which grows as the leaves drift from where a rebuild put
+  // them: a measure of when to rebuild.
+  double refit();
 
   std::size_t size() const { return leaves_; }
+  // Leaves inserted since the last rebuild() (moves do not count): how much of the tree is in the
+  // order boxes came in rather than grouped by place.
+  std::size_t inserted_since_rebuild() const { return inserted_; }
   int height() const { return root_ < 0 ? -1 : nodes_[root_].height; }
 
   // visit(value) for each stored box that meets `box` (closed boxes: touching counts).
@@ -76,6 +89,7 @@ class AabbTree {
   std::vector<std::int32_t> free_;
   std::int32_t root_ = -1;
   std::size_t leaves_ = 0;
+  std::size_t inserted_ = 0;
 
   std::int32_t allocate();
   void release(std::int32_t node);
@@ -86,6 +100,7 @@ class AabbTree {
   std::int32_t balance(std::int32_t node);
   void refit_up(std::int32_t node);
   std::int32_t build(std::int32_t* first, std::int32_t* last);
+  double refit_below(std::int32_t node);
   static bool overlap(const Node& n, const float lo[2], const float hi[2]) {
     return n.lo[0] <= hi[0] && lo[0] <= n.hi[0] && n.lo[1] <= hi[1] && lo[1] <= n.hi[1];
   }
@@ -116,21 +131,24 @@ template <class Visit>
 void AabbTree::ray_cast(const Vec2& origin, const Vec2& direction, double reach, Visit&& visit) const {
   if (root_ < 0) return;
   const double o[2] = {origin.x(), origin.y()};
-  const double d[2] = {direction.x(), direction.y()};
-  const double inv[2] = {1.0 / d[0], 1.0 / d[1]};
+  // A zero component gets a huge finite inverse instead of an infinite one: 0 * inf would be NaN
+  // for a box side through the origin, while 0 * 1e300 = 0 keeps the slab test branch-free and exact
+  // (its slab then spans everything or nothing, as it should).
+  const auto inverse = [](double d) {
+    const double inv = 1.0 / d;
+    return std::isfinite(inv) ? inv : std::copysign(1e300, d);
+  };
+  const double inv[2] = {inverse(direction.x()), inverse(direction.y())};
+  // The segment's box, rounded outward, rejects most nodes with four comparisons before the slab test.
+  float lo[2], hi[2];
+  store({origin.cwiseMin(origin + reach * direction), origin.cwiseMax(origin + reach * direction)}, lo, hi);
   // The parameter at which the ray enters the node's box, or -1 when it misses it within reach.
   const auto entry = [&](const Node& n) {
-    double t0 = 0.0, t1 = reach;
-    for (int k = 0; k < 2; ++k) {
-      if (d[k] == 0.0) {  // parallel to the slab: 0 * inf would be NaN
-        if (o[k] < n.lo[k] || o[k] > n.hi[k]) return -1.0;
-        continue;
-      }
-      double a = (n.lo[k] - o[k]) * inv[k], b = (n.hi[k] - o[k]) * inv[k];
-      if (a > b) std::swap(a, b);
-      t0 = a > t0 ? a : t0;
-      t1 = b < t1 ? b : t1;
-    }
+    if (!overlap(n, lo, hi)) return -1.0;
+    const double ax = (n.lo[0] - o[0]) * inv[0], bx = (n.hi[0] - o[0]) * inv[0];
+    const double ay = (n.lo[1] - o[1]) * inv[1], by = (n.hi[1] - o[1]) * inv[1];
+    const double t0 = std::max(std::max(0.0, std::min(ax, bx)), std::min(ay, by));
+    const double t1 = std::min(std::min(reach, std::max(ax, bx)), std::max(ay, by));
     return t0 <= t1 ? t0 : -1.0;
   };
   struct Entry {
@@ -150,11 +168,15 @@ void AabbTree::ray_cast(const Vec2& origin, const Vec2& direction, double reach,
       reach = visit(n.value, reach);
       continue;
     }
-    const Entry near{n.child[0], entry(nodes_[n.child[0]])};
-    const Entry far{n.child[1], entry(nodes_[n.child[1]])};
-    const bool swap = near.t >= 0.0 && far.t >= 0.0 && far.t < near.t;
-    for (const Entry& c : swap ? std::array{near, far} : std::array{far, near}) {  // nearer popped first
-      if (c.t >= 0.0) stack[top++] = c;
+    const Entry first{n.child[0], entry(nodes_[n.child[0]])};
+    const Entry second{n.child[1], entry(nodes_[n.child[1]])};
+    const bool in_first = first.t >= 0.0, in_second = second.t >= 0.0;
+    if (in_first && in_second) {  // the nearer one on top
+      const bool first_nearer = first.t <= second.t;
+      stack[top++] = first_nearer ? second : first;
+      stack[top++] = first_nearer ? first : second;
+    } else if (in_first || in_second) {
+      stack[top++] = in_first ? first : second;
     }
   }
 }
