@@ -2,6 +2,7 @@
 // run whose last frame agrees with an all-pairs check.
 #include "tools/run_command.h"
 #include "tools/scene.h"
+#include "world_reference.h"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +14,24 @@ namespace collide2d::tool {
 namespace {
 
 TEST(Scene, WrittenSceneReadsBackTheSame) {
+  // The level: 4 walls, a slope or a rock per 200 bodies, and 4 sensors, all static.
+  const auto level = [](int n) { return 4u + static_cast<std::size_t>(n / 200) + 4u; };
   const Scene scene = default_scene(60, 10, 3);
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
-  EXPECT_EQ(back.bodies.size(), 60u);
+  EXPECT_EQ(back.bodies.size(), 60u + level(60));
   // One bullet per 500 bodies, continuous, and read back so.
   const Scene big = default_scene(1000, 10, 3);
-  ASSERT_EQ(big.bodies.size(), 1002u);
+  ASSERT_EQ(big.bodies.size(), 1002u + level(1000));
   EXPECT_TRUE(big.bodies[1000].continuous && big.bodies[1001].continuous && !big.bodies[999].continuous);
   EXPECT_TRUE(parse_scene(write_scene(big)) == big);
+  std::size_t statics = 0, sensors = 0;
+  for (const SceneBody& b : big.bodies) {
+    statics += b.is_static;
+    sensors += b.sensor;
+  }
+  EXPECT_EQ(statics, level(1000));
+  EXPECT_EQ(sensors, 4u);
 }
 
 // A bullet crossing a wall within one frame (300 per second at 60 Hz: 5 per frame; the wall is 0.2
@@ -68,9 +78,11 @@ TEST(Scene, ExampleFileParses) {
   std::stringstream text;
   text << in.rdbuf();
   const Scene scene = parse_scene(text.str());
-  EXPECT_EQ(scene.bodies.size(), 8u);
+  EXPECT_EQ(scene.bodies.size(), 11u);
   EXPECT_EQ(scene.bodies[6].id, 42u);
   EXPECT_EQ(scene.bodies[5].id, 5u);
+  EXPECT_TRUE(scene.bodies[8].is_static && !scene.bodies[8].sensor);
+  EXPECT_TRUE(scene.bodies[10].is_static && scene.bodies[10].sensor);
 }
 
 std::string with_body(const std::string& body) {
@@ -110,6 +122,12 @@ TEST(Scene, BrokenFilesNameTheField) {
        "bodies[0].mask: expected a non-negative integer of 64 bits, got \"all\""},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "group": 3000000000})"),
        "bodies[0].group: expected an integer from -2147483648 to 2147483647, got 3000000000"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "static": true, "velocity": [1, 0]})"),
+       "bodies[0]: a static body does not move: remove its velocity and angular_velocity"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "static": true, "continuous": true})"),
+       "bodies[0]: a static body cannot be continuous"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "sensor": 1})"),
+       "bodies[0].sensor: expected true or false, got 1"},
   };
   for (const auto& [text, expected] : cases) {
     try {
@@ -121,26 +139,30 @@ TEST(Scene, BrokenFilesNameTheField) {
   }
 }
 
-// After the run, the World's overlapping pairs are exactly the pairs of final shapes that overlap
-// and that the filters let pair (the built-in scene's two layers never do).
+// After the run, the World's overlapping and sensor pairs are exactly those of the final shapes
+// under the World's rules (the built-in scene's two layers never pair; its static level never pairs
+// with itself), the summary lists each sensor's contents, and the picture draws every body, static
+// bodies and sensors in their own styles.
 TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   SceneRun run(default_scene(300, 30, 5));
   const RunSummary s = run.run(nullptr);
   EXPECT_EQ(s.frames, 30);
-  EXPECT_EQ(s.bodies, 300u);
+  EXPECT_EQ(s.bodies, 309u);
+  EXPECT_EQ(s.statics, 9u);
   const World& w = run.world();
-  std::vector<BodyPair> expected;
-  const auto ids = w.bodies();
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (should_pair(w.filter(ids[i]), w.filter(ids[j])) && overlaps(w.shape(ids[i]), w.shape(ids[j]))) {
-        expected.push_back({ids[i], ids[j]});
-      }
-    }
-  }
-  EXPECT_EQ(w.overlapping(), expected);
+  const reference::AllPairs expected = reference::all_pairs(w, 0.0);
+  EXPECT_EQ(w.overlapping(), expected.overlapping);
+  EXPECT_EQ(w.sensing(), expected.sensing);
   EXPECT_GT(s.overlapping_per_frame, 0.0);
   EXPECT_GT(s.filtered_per_frame, 0.0);
+  EXPECT_GT(s.sensor_began, 0u);
+  ASSERT_EQ(s.sensor_contents.size(), 4u);
+  std::size_t listed = 0;
+  for (const RunSummary::Sensor& sensor : s.sensor_contents) listed += sensor.visitors.size();
+  EXPECT_EQ(listed, expected.sensing.size());
+  std::ostringstream summary;
+  print_summary(s, summary);
+  EXPECT_NE(summary.str().find("sensor " + std::to_string(s.sensor_contents[0].id) + " at the last frame: "), std::string::npos);
   std::ostringstream svg;
   write_svg(run, svg);
   const std::string text = svg.str();
@@ -148,7 +170,9 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   for (const char* tag : {"<circle ", "<ellipse ", "<rect class"}) {
     for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) ++shapes;
   }
-  EXPECT_EQ(shapes, 300u);
+  EXPECT_EQ(shapes, 309u);
+  EXPECT_NE(text.find("class=\"sensor"), std::string::npos);
+  EXPECT_NE(text.find("class=\"static"), std::string::npos);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
 }
 

@@ -39,41 +39,18 @@ Shape random_shape(Rng& rng, double spread) {
   }
 }
 
-// Every pair tested directly with the narrow phase the World uses, under the World's rules: no pair
-// of two static bodies, none the filters refuse; a pair with one sensor goes to sensing() (sensors
-// sense no sensor). Overlaps, and the distance of the others against the margin
-// (expect_sample_matches_reference checks that narrow phase itself).
+// The World's pairs against a scan of every pair (reference::all_pairs); the proximity pairs' distances
+// are the narrow phase's (expect_sample_matches_reference checks that narrow phase itself).
 void expect_matches_all_pairs(const World& world, double margin, const std::string& what) {
-  const std::vector<BodyId> ids = world.bodies();
-  std::vector<BodyPair> overlapping;
-  std::vector<BodyPair> near;
-  std::vector<SensorPair> sensing;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      const BodyId x = ids[i], y = ids[j];
-      if ((world.is_static(x) && world.is_static(y)) || !should_pair(world.filter(x), world.filter(y))) continue;
-      const Shape& a = world.shape(x);
-      const Shape& b = world.shape(y);
-      if (world.is_sensor(x) || world.is_sensor(y)) {
-        if (world.is_sensor(x) != world.is_sensor(y) && overlaps(a, b)) {
-          sensing.push_back(world.is_sensor(x) ? SensorPair{x, y} : SensorPair{y, x});
-        }
-      } else if (overlaps(a, b)) {
-        overlapping.push_back({x, y});
-      } else if (margin > 0 && distance(a, b).distance <= margin) {
-        near.push_back({x, y});
-      }
-    }
-  }
-  ASSERT_EQ(world.overlapping(), overlapping) << what;
-  std::sort(sensing.begin(), sensing.end());
-  ASSERT_EQ(world.sensing(), sensing) << what;
+  const reference::AllPairs expected = reference::all_pairs(world, margin);
+  ASSERT_EQ(world.overlapping(), expected.overlapping) << what;
+  ASSERT_EQ(world.sensing(), expected.sensing) << what;
   std::vector<BodyPair> reported;
   for (const Proximity& p : world.proximity()) {
     reported.push_back({p.a, p.b});
     ASSERT_EQ(p.result.distance, distance(world.shape(p.a), world.shape(p.b)).distance);
   }
-  ASSERT_EQ(reported, near) << what;
+  ASSERT_EQ(reported, expected.near) << what;
 }
 
 // began and ended are what `now` gained and lost since `previous`.

@@ -32,24 +32,33 @@ void draw_progress(std::ostream& out, int done, int total) {
 SceneRun::SceneRun(Scene scene)
     : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
   for (const SceneBody& b : scene_.bodies) {
-    ids_.push_back(world_.add(b.shape, {.user_id = b.id, .filter = b.filter}));
+    ids_.push_back(world_.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
 }
 
-RunSummary SceneRun::run(std::ostream* progress) {
+RunSummary SceneRun::totals() const {
+  const auto count = [this](bool SceneBody::*flag) {
+    return static_cast<std::size_t>(std::count_if(scene_.bodies.begin(), scene_.bodies.end(), [flag](const SceneBody& b) { return b.*flag; }));
+  };
   RunSummary s;
   s.frames = scene_.frames;
   s.bodies = scene_.bodies.size();
-  s.continuous = static_cast<std::size_t>(std::count_if(scene_.bodies.begin(), scene_.bodies.end(),
-                                                        [](const SceneBody& b) { return b.continuous; }));
+  s.continuous = count(&SceneBody::continuous);
+  s.statics = count(&SceneBody::is_static);
+  s.sensors = count(&SceneBody::sensor);
+  return s;
+}
+
+RunSummary SceneRun::run(std::ostream* progress) {
+  RunSummary s = totals();
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
     step(scene_);
     for (std::size_t k = 0; k < ids_.size(); ++k) {
       const Shape& shape = scene_.bodies[k].shape;
-      world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
+      if (!scene_.bodies[k].is_static) world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
     }
     world_.update();
     const FrameStats& f = world_.last_frame();
@@ -62,6 +71,9 @@ RunSummary SceneRun::run(std::ostream* progress) {
     s.began += world_.began().size();
     s.ended += world_.ended().size();
     s.impacts += world_.impacts().size();
+    s.sensing_per_frame += static_cast<double>(f.sensing);
+    s.sensor_began += world_.sensor_began().size();
+    s.sensor_ended += world_.sensor_ended().size();
     if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames)) draw_progress(*progress, frame + 1, scene_.frames);
   }
   if (progress) *progress << '\n';
@@ -70,6 +82,15 @@ RunSummary SceneRun::run(std::ostream* progress) {
   s.filtered_per_frame /= n;
   s.overlapping_per_frame /= n;
   s.proximity_per_frame /= n;
+  s.sensing_per_frame /= n;
+  for (std::size_t k = 0; k < ids_.size(); ++k) {
+    if (scene_.bodies[k].sensor) s.sensor_contents.push_back({scene_.bodies[k].id, {}});
+  }
+  for (const SensorPair& p : world_.sensing()) {
+    const auto sensor = std::find_if(s.sensor_contents.begin(), s.sensor_contents.end(),
+                                     [&](const RunSummary::Sensor& x) { return x.id == world_.user_id(p.sensor); });
+    sensor->visitors.push_back(world_.user_id(p.visitor));
+  }
   s.broad_median_ms = percentile(broad, 0.5);
   s.broad_p95_ms = percentile(broad, 0.95);
   s.narrow_median_ms = percentile(narrow, 0.5);
@@ -86,19 +107,31 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << s.ended << " ended over the run\n"
       << "proximity pairs per frame   " << s.proximity_per_frame << '\n'
       << "continuous bodies           " << s.continuous << ", " << s.impacts << " impacts within frames over the run\n"
+      << "static bodies               " << s.statics << " (level geometry; sensors included)\n"
+      << "sensors                     " << s.sensors << ", " << s.sensing_per_frame << " bodies inside them per frame, "
+      << s.sensor_began << " entries and " << s.sensor_ended << " exits over the run\n"
       << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms << " ms\n"
       << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms << " ms\n";
+  for (const RunSummary::Sensor& sensor : s.sensor_contents) {
+    out << "sensor " << sensor.id << " at the last frame: " << sensor.visitors.size() << " bodies";
+    constexpr std::size_t kListed = 12;
+    for (std::size_t k = 0; k < std::min(kListed, sensor.visitors.size()); ++k) out << (k == 0 ? ": " : ", ") << sensor.visitors[k];
+    out << (sensor.visitors.size() > kListed ? ", ...\n" : "\n");
+  }
 }
 
 void write_svg(const SceneRun& run, std::ostream& out) {
   const Aabb& arena = run.scene().arena;
   const Vec2 size = arena.max - arena.min;
   const World& world = run.world();
-  std::set<BodyId> hit;
+  std::set<BodyId> hit, sensing;
   for (const BodyPair& p : world.overlapping()) hit.insert({p.a, p.b});
+  for (const SensorPair& p : world.sensing()) sensing.insert(p.sensor);
   std::ostringstream caption;
-  caption << world.size() << " bodies: " << world.overlapping().size() << " overlapping pairs (red), "
-          << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green segments)";
+  const RunSummary totals = run.totals();
+  caption << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors << " sensors, dashed): "
+          << world.overlapping().size() << " overlapping pairs (red), " << world.proximity().size() << " pairs within "
+          << run.scene().proximity_margin << " (green segments)";
   // The caption spans at most 98% of the width at 0.6 em a character, more than a sans-serif font's
   // average, and is 14 pixels high where that allows (the picture is 1000 pixels wide), in a strip
   // below the arena twice its height. Sized at 3% of the arena's height, it ran a quarter past the
@@ -109,13 +142,25 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << arena.min.x() << ' ' << -arena.max.y() << ' '
       << size.x() << ' ' << height << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * height / size.x()) << "\">\n"
       << "<style>.body{fill:#9db4cc;stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}"
-         ".hit{fill:#e74c3c;stroke:#7b241c;vector-effect:non-scaling-stroke;stroke-width:0.5}"
+         ".body.hit{fill:#e74c3c;stroke:#7b241c}"
+         ".static{fill:#5d6d7e;stroke:#1c2833;vector-effect:non-scaling-stroke;stroke-width:0.5}"
+         ".static.hit{fill:#943126}"
+         ".sensor{fill:none;stroke:#b9770e;vector-effect:non-scaling-stroke;stroke-width:1.5;stroke-dasharray:6 4}"
+         ".sensor.sensing{fill:#f8c471;fill-opacity:0.35}"
          ".near{stroke:#1e8449;vector-effect:non-scaling-stroke;stroke-width:1}"
          "text{font-family:sans-serif}</style>\n"
       << "<rect x=\"" << arena.min.x() << "\" y=\"" << -arena.max.y() << "\" width=\"" << size.x() << "\" height=\""
       << size.y() << "\" fill=\"#fbfcfc\" stroke=\"#566573\" vector-effect=\"non-scaling-stroke\"/>\n"
       << "<g transform=\"scale(1,-1)\">\n";
-  for (const BodyId id : world.bodies()) svg_shape(out, world.shape(id), hit.count(id) ? "hit" : "body");
+  // Sensors last, so that their outlines are not hidden.
+  for (const bool sensors : {false, true}) {
+    for (const BodyId id : world.bodies()) {
+      if (world.is_sensor(id) != sensors) continue;
+      const std::string css = sensors ? (sensing.count(id) ? "sensor sensing" : "sensor")
+                                      : std::string(world.is_static(id) ? "static" : "body") + (hit.count(id) ? " hit" : "");
+      svg_shape(out, world.shape(id), css.c_str());
+    }
+  }
   for (const Proximity& p : world.proximity()) {
     out << "<line class=\"near\" x1=\"" << p.result.point_a.x() << "\" y1=\"" << p.result.point_a.y() << "\" x2=\""
         << p.result.point_b.x() << "\" y2=\"" << p.result.point_b.y() << "\"/>\n";

@@ -5,6 +5,7 @@
 #include "engine/world.h"
 #include "tools/scene.h"
 
+#include <cstdint>
 #include <iosfwd>
 #include <vector>
 
@@ -21,6 +22,16 @@ struct RunSummary {
   std::size_t ended = 0;
   std::size_t continuous = 0;          // bullets
   std::size_t impacts = 0;             // their first contacts within a frame, over the run
+  std::size_t statics = 0;             // static bodies
+  std::size_t sensors = 0;
+  double sensing_per_frame = 0.0;      // sensor-visitor pairs, mean
+  std::size_t sensor_began = 0;        // entries into sensors over the run
+  std::size_t sensor_ended = 0;
+  struct Sensor {
+    std::uint64_t id = 0;
+    std::vector<std::uint64_t> visitors;  // scene ids, at the last frame
+  };
+  std::vector<Sensor> sensor_contents;
   double broad_median_ms = 0.0;
   double broad_p95_ms = 0.0;
   double narrow_median_ms = 0.0;
@@ -34,6 +45,8 @@ class SceneRun {
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
   // when it is not null.
   RunSummary run(std::ostream* progress);
+  // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
+  RunSummary totals() const;
 
   const World& world() const { return world_; }
   const Scene& scene() const { return scene_; }
@@ -46,8 +59,9 @@ class SceneRun {
 
 void print_summary(const RunSummary& s, std::ostream& out);
 
-// An SVG picture of the current frame: every body, overlapping ones highlighted, and a segment
-// between the closest points of each proximity pair.
+// An SVG picture of the current frame: every body, overlapping ones highlighted, static bodies in a
+// darker fill, sensors as dashed outlines (filled while they sense a body), and a segment between the
+// closest points of each proximity pair.
 void write_svg(const SceneRun& run, std::ostream& out);
 
 }  // namespace collide2d::tool

@@ -91,13 +91,20 @@ std::uint64_t bits(const json& object, const char* key, const std::string& field
   return it->get<std::uint64_t>();
 }
 
+bool flag(const json& object, const char* key, const std::string& field) {
+  const auto it = object.find(key);
+  if (it == object.end()) return false;
+  if (!it->is_boolean()) fail(child(field, key), "expected true or false, got " + it->dump());
+  return it->get<bool>();
+}
+
 SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = "bodies[" + std::to_string(index) + "]";
   if (!b.is_object()) fail(field, "expected an object");
   reject_unknown_keys(
       b,
       {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id", "continuous",
-       "category", "mask", "group"},
+       "category", "mask", "group", "static", "sensor"},
       field);
   SceneBody body;
   body.shape = parse_shape(b, field);
@@ -108,10 +115,13 @@ SceneBody parse_body(const json& b, std::size_t index) {
     if (!it->is_number_unsigned()) fail(field + ".id", "expected a non-negative integer, got " + it->dump());
     body.id = it->get<std::uint64_t>();
   }
-  if (const auto it = b.find("continuous"); it != b.end()) {
-    if (!it->is_boolean()) fail(field + ".continuous", "expected true or false, got " + it->dump());
-    body.continuous = it->get<bool>();
+  body.continuous = flag(b, "continuous", field);
+  body.is_static = flag(b, "static", field);
+  body.sensor = flag(b, "sensor", field);
+  if (body.is_static && (body.velocity != Vec2::Zero() || body.angular_velocity != 0.0)) {
+    fail(field, "a static body does not move: remove its velocity and angular_velocity");
   }
+  if (body.is_static && body.continuous) fail(field, "a static body cannot be continuous");
   body.filter.category = bits(b, "category", field, body.filter.category);
   body.filter.mask = bits(b, "mask", field, body.filter.mask);
   if (const auto it = b.find("group"); it != b.end()) {
@@ -163,7 +173,7 @@ bool same_shape(const Shape& a, const Shape& b) {
 
 bool SceneBody::operator==(const SceneBody& o) const {
   return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id &&
-         continuous == o.continuous && filter == o.filter;
+         continuous == o.continuous && filter == o.filter && is_static == o.is_static && sensor == o.sensor;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -210,6 +220,12 @@ std::string write_scene(const Scene& scene) {
     j["angular_velocity"] = b.angular_velocity;
     j["id"] = b.id;
     if (b.continuous) j["continuous"] = true;
+    if (b.is_static) {
+      j["static"] = true;
+      j.erase("velocity");
+      j.erase("angular_velocity");
+    }
+    if (b.sensor) j["sensor"] = true;
     const Filter pairs_with_all;
     if (b.filter.category != pairs_with_all.category) j["category"] = b.filter.category;
     if (b.filter.mask != pairs_with_all.mask) j["mask"] = b.filter.mask;
@@ -225,9 +241,42 @@ std::string write_scene(const Scene& scene) {
   return root.dump(1);
 }
 
+namespace {
+
 // The built-in scene's two layers, which pair within themselves and never with each other.
 constexpr Filter kFirstLayer{.category = 1, .mask = 1};
 constexpr Filter kSecondLayer{.category = 2, .mask = 2};
+
+// The built-in scene's level (on both layers): walls along the arena's sides, slopes and rocks,
+// and four sensors at the quarter points.
+template <class Uniform>
+void add_level(Scene& scene, int count, Uniform& uniform) {
+  const Filter both{.category = 3, .mask = 3};
+  const Vec2 size = scene.arena.max - scene.arena.min, mid = 0.5 * (scene.arena.min + scene.arena.max);
+  auto next_id = static_cast<std::uint64_t>(scene.bodies.size());
+  const auto add = [&](const Shape& shape, bool sensor) {
+    scene.bodies.push_back({.shape = shape, .id = next_id++, .filter = both, .is_static = true, .sensor = sensor});
+  };
+  for (int side = 0; side < 2; ++side) {
+    const double h = side == 0 ? scene.arena.min.y() + 0.5 : scene.arena.max.y() - 0.5;
+    const double v = side == 0 ? scene.arena.min.x() + 0.5 : scene.arena.max.x() - 0.5;
+    add(Rect{Vec2(mid.x(), h), Vec2(0.5 * size.x(), 0.5), 0.0}, false);
+    add(Rect{Vec2(v, mid.y()), Vec2(0.5, 0.5 * size.y()), 0.0}, false);
+  }
+  for (int k = 0; k < count / 200; ++k) {
+    const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8), uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));
+    if (k % 2 == 0) {
+      add(Rect{at, Vec2(uniform(6, 14), 0.8), uniform(-0.6, 0.6)}, false);
+    } else {
+      add(Ellipse{at, uniform(3, 7), uniform(1.5, 3), uniform(0, std::numbers::pi)}, false);
+    }
+  }
+  for (const Vec2& quarter : {Vec2(0.25, 0.25), Vec2(0.75, 0.25), Vec2(0.25, 0.75), Vec2(0.75, 0.75)}) {
+    add(Circle{scene.arena.min + Vec2(quarter.cwiseProduct(size)), size.x() / 24}, true);
+  }
+}
+
+}  // namespace
 
 Scene default_scene(int count, int frames, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -263,11 +312,13 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
                             .continuous = true,
                             .filter = kFirstLayer});
   }
+  add_level(scene, count, uniform);
   return scene;
 }
 
 void step(Scene& scene) {
   for (SceneBody& b : scene.bodies) {
+    if (b.is_static) continue;
     std::visit(
         [&](auto& s) {
           s.center += scene.dt * b.velocity;

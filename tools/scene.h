@@ -13,14 +13,19 @@
 //        "velocity": [2, -1], "angular_velocity": 0.5, "id": 7},
 //       {"shape": "rect",    "center": [50, 50], "half_extents": [2, 1], "angle": 0},
 //       {"shape": "circle",  "center": [5, 5], "radius": 0.1, "velocity": [300, 40], "continuous": true,
-//        "category": 2, "mask": 5, "group": -1}
+//        "category": 2, "mask": 5, "group": -1},
+//       {"shape": "rect",    "center": [50, 1], "half_extents": [50, 1], "static": true},
+//       {"shape": "circle",  "center": [80, 80], "radius": 8, "static": true, "sensor": true}
 //     ]
 //   }
 // velocity (default [0, 0]), angular_velocity (default 0), angle (default 0), id (default: the
 // body's index), continuous (default false: a bullet, whose impacts within each frame the World
-// finds) and the collision filter's category, mask and group (engine/world.h; defaults 1, every
-// bit, 0: the body pairs with every other) are optional. Bodies move in straight lines and bounce off the arena walls (the
-// velocity component towards a wall flips when the body's box crosses it); there is no physics.
+// finds), static (default false: level geometry, which never moves; it has no velocity and is not
+// continuous), sensor (default false: reports the bodies inside it and is otherwise not solid) and
+// the collision filter's category, mask and group (engine/world.h; defaults 1, every bit, 0: the
+// body pairs with every other) are optional. Moving bodies move in straight lines and bounce off the
+// arena walls (the velocity component towards a wall flips when the body's box crosses it); there is
+// no physics: they pass through static bodies, which only report the overlaps.
 //
 // Errors: parse_scene throws SceneError naming the field, e.g. `bodies[3].radius: must be positive
 // (got -1)`, `frames: missing`, `bodies[0]: unknown field 'radus'`.
@@ -49,6 +54,8 @@ struct SceneBody {
   std::uint64_t id = 0;
   bool continuous = false;
   Filter filter;
+  bool is_static = false;
+  bool sensor = false;
   bool operator==(const SceneBody&) const;
 };
 
@@ -69,7 +76,9 @@ std::string write_scene(const Scene& scene);  // JSON that parse_scene reads bac
 // 2, random velocities up to 6 per second, in an arena sized for about 8% coverage, and one bullet
 // per 500 of them (continuous circles of radius 0.1 at 300 per second: 25 radii a frame at 60 Hz);
 // seeded. Every fourth body is on a second layer (category 2, mask 2) that never pairs with the
-// first (category 1, mask 1; the bullets too).
+// first (category 1, mask 1; the bullets too). A static level on both layers: walls along the arena's
+// sides, and one slope (a tilted rectangle) and one rock (an ellipse) per 200 bodies; and four static
+// sensors (circles a twelfth of the arena across) at the quarter points, which sense both layers.
 Scene default_scene(int count = 4000, int frames = 600, std::uint64_t seed = 1);
 
 // One frame of kinematics: each body advances by dt and bounces off the walls.
