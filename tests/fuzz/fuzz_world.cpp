@@ -1,14 +1,17 @@
-// World fuzzer: a random sequence of add (with a filter), set_pose, set_filter, set_continuous,
-// remove, update and filtered queries from the bytes. Bad input (an unknown body or a handle kept
-// past its remove() among it) must throw and leave the World as it was; after every update the
-// overlapping pairs, the began/ended lists and the proximity pairs must equal an all-pairs check over
-// the pairs the filters let through, and the impacts must be those of time_of_impact on every such
+// World fuzzer: a random sequence of add (with a filter, static or moving, sensor or solid), set_pose,
+// set_filter, set_static, set_continuous, remove, update and filtered queries from the bytes. Bad
+// input (an unknown body, a handle kept past its remove(), a static body made continuous) must throw
+// and leave the World as it was; after every update the overlapping pairs, the began/ended lists,
+// the sensor pairs with their began/ended lists and the proximity pairs must equal an all-pairs check
+// over the pairs the World's rules let through (filters; no two static bodies; a sensor only with a
+// solid body), and the impacts must be those of time_of_impact on every such solid
 // pair with a continuous body, from the poses the fuzzer saw at the last update: all of them
 // where the boxes over the step meet, and none that time_of_impact does not find. (Where they do
 // not meet the shapes can still come within the tolerance, which grows with the coordinates: 5e3 at
 // 3e18; the World never pairs them, as with a proximity pair culled by its boxes.)
 #include "engine/world.h"
 #include "fuzz_input.h"
+#include "narrowphase/ray_cast.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,14 +48,37 @@ double box_gap(const Aabb& p, const Aabb& q) {
 // kernel's shortfall below the box gap is within the tolerance (a needle 1e38 long puts the
 // tolerance at 1e26). So is a pair the kernel calls touching although its boxes are apart, within
 // the same tolerance: it is neither overlapping nor apart.
-void compare_with_all_pairs(const World& w, double margin, const std::vector<BodyPair>& before) {
+// Whether the World pairs the two at all, and whether as a sensor pair.
+bool paired(const World& w, BodyId x, BodyId y) {
+  return should_pair(w.filter(x), w.filter(y)) && !(w.is_static(x) && w.is_static(y)) && !(w.is_sensor(x) && w.is_sensor(y));
+}
+bool sensor_pair(const World& w, BodyId x, BodyId y) { return w.is_sensor(x) || w.is_sensor(y); }
+
+template <class Pair>
+void check_changes(const std::vector<Pair>& before, const std::vector<Pair>& now, const std::vector<Pair>& began,
+                   const std::vector<Pair>& ended, const char* what) {
+  std::vector<Pair> gained, lost;
+  std::set_difference(now.begin(), now.end(), before.begin(), before.end(), std::back_inserter(gained));
+  std::set_difference(before.begin(), before.end(), now.begin(), now.end(), std::back_inserter(lost));
+  check(began == gained && ended == lost, what);
+}
+
+void compare_with_all_pairs(const World& w, double margin, const std::vector<BodyPair>& before,
+                            const std::vector<SensorPair>& sensed_before) {
   const std::vector<BodyId> ids = w.bodies();
   std::vector<BodyPair> hit, near, unresolved;
+  std::vector<SensorPair> sensed;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (!should_pair(w.filter(ids[i]), w.filter(ids[j]))) continue;
+      if (!paired(w, ids[i], ids[j])) continue;
       const Shape& a = w.shape(ids[i]);
       const Shape& b = w.shape(ids[j]);
+      if (sensor_pair(w, ids[i], ids[j])) {
+        if (intersects(aabb(a), aabb(b)) && overlaps(a, b)) {
+          sensed.push_back(w.is_sensor(ids[i]) ? SensorPair{ids[i], ids[j]} : SensorPair{ids[j], ids[i]});
+        }
+        continue;
+      }
       if (intersects(aabb(a), aabb(b)) && overlaps(a, b)) {
         hit.push_back({ids[i], ids[j]});
         continue;
@@ -77,14 +103,15 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
     }
   }
   check(w.overlapping() == hit, "overlapping pairs equal all pairs");
-  std::vector<BodyPair> reported, began, ended;
+  std::vector<BodyPair> reported;
   for (const Proximity& p : w.proximity()) {
     if (!std::binary_search(unresolved.begin(), unresolved.end(), BodyPair{p.a, p.b})) reported.push_back({p.a, p.b});
   }
   check(reported == near, "proximity pairs equal all pairs");
-  std::set_difference(hit.begin(), hit.end(), before.begin(), before.end(), std::back_inserter(began));
-  std::set_difference(before.begin(), before.end(), hit.begin(), hit.end(), std::back_inserter(ended));
-  check(w.began() == began && w.ended() == ended, "began and ended");
+  check_changes(before, hit, w.began(), w.ended(), "began and ended");
+  std::sort(sensed.begin(), sensed.end());
+  check(w.sensing() == sensed, "sensor pairs equal all pairs");
+  check_changes(sensed_before, sensed, w.sensor_began(), w.sensor_ended(), "sensor began and ended");
 }
 
 // Filters from three categories, every mask of them, and groups -2 … 2.
@@ -116,7 +143,7 @@ void check_impacts(const World& w, const Starts& starts) {
   std::vector<Impact> expected;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     for (std::size_t j = i + 1; j < ids.size(); ++j) {
-      if (!should_pair(w.filter(ids[i]), w.filter(ids[j]))) continue;
+      if (!paired(w, ids[i], ids[j]) || sensor_pair(w, ids[i], ids[j])) continue;
       const Shape* si = start_of(ids[i]);
       const Shape* sj = start_of(ids[j]);
       if (!si && !sj) continue;
@@ -168,6 +195,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const double margin = (in.byte() % 4) * 0.25;
   World world({.fat_margin = (in.byte() % 3) * 0.1, .proximity_margin = margin});
   std::vector<BodyPair> before;
+  std::vector<SensorPair> sensed_before;
   std::vector<BodyId> removed;  // stale handles: every call with one must be refused
   Starts starts;
   for (int op = 0; op < 64 && !in.empty(); ++op) {
@@ -184,11 +212,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
       switch (in.byte() % 8) {
         case 0:
-          if (world.size() < 24) world.add(in.shape(), {.filter = filter_from(in)});
+          if (world.size() < 24) {
+            const std::uint8_t kind = in.byte();
+            world.add(in.shape(), {.user_id = 0, .filter = filter_from(in), .is_static = kind % 3 == 0, .sensor = kind % 5 == 0});
+          }
           break;
         case 6: {
           const BodyId id = target();
-          world.set_filter(id, filter_from(in));
+          if (in.byte() % 2 == 0) {
+            world.set_filter(id, filter_from(in));
+          } else {
+            world.set_static(id, !world.is_static(id));
+            if (world.is_static(id)) std::erase_if(starts, [&](const auto& c) { return c.first == id; });
+          }
           check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
           break;
         }
@@ -219,10 +255,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         case 3:
           world.update();
-          compare_with_all_pairs(world, margin, before);
+          compare_with_all_pairs(world, margin, before, sensed_before);
           check_impacts(world, starts);
           for (auto& [id, start] : starts) start = world.shape(id);
           before = world.overlapping();
+          sensed_before = world.sensing();
           break;
         case 4: {
           std::vector<BodyId> expected;
@@ -231,7 +268,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const Shape probe = in.shape();
             const auto got = world.overlapping(probe, q);
             for (const BodyId id : world.bodies()) {
-              if (!lets_through(q, world.filter(id))) continue;
+              if (world.is_sensor(id) || !lets_through(q, world.filter(id))) continue;
               if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
             }
             check(got == expected, "overlapping(shape) equals brute force");
@@ -240,7 +277,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const Aabb box{corner, corner + in.point().cwiseAbs()};  // may have no width or height
             const auto got = world.overlapping(box, q);
             for (const BodyId id : world.bodies()) {
-              if (lets_through(q, world.filter(id)) && overlaps(world.shape(id), box)) expected.push_back(id);
+              if (!world.is_sensor(id) && lets_through(q, world.filter(id)) && overlaps(world.shape(id), box)) expected.push_back(id);
             }
             check(got == expected, "overlapping(box) equals brute force");
           }
@@ -251,6 +288,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           const Vec2 direction = in.point();
           const auto hit = world.ray_cast(origin, direction, 100.0);
           if (hit) check(std::isfinite(hit->distance) && hit->distance >= 0 && hit->point.allFinite(), "ray hit finite");
+          // Every solid body the ray meets, through the trees (moved bodies too, before the update
+          // refreshes them), as the kernel finds them one by one.
+          const std::vector<RayHit> all = world.ray_cast_all(origin, direction, 100.0);
+          std::vector<std::pair<double, BodyId>> expected;
+          for (const BodyId id : world.bodies()) {
+            if (world.is_sensor(id) || !lets_through(QueryFilter{}, world.filter(id))) continue;
+            const auto h = collide2d::ray_cast(world.shape(id), origin, Vec2(direction / direction.norm()), 100.0);
+            if (h) expected.emplace_back(h->distance, id);
+          }
+          std::sort(expected.begin(), expected.end(), [](const auto& p, const auto& q) {
+            return p.first < q.first || (p.first == q.first && p.second.index < q.second.index);
+          });
+          check(all.size() == expected.size(), "ray_cast_all finds every body the ray meets");
+          for (std::size_t k = 0; k < all.size(); ++k) {
+            check(all[k].body == expected[k].second && all[k].distance == expected[k].first, "ray_cast_all in order");
+          }
           break;
         }
       }
