@@ -1,6 +1,8 @@
-// Soak run: a World of moving bodies with churn (1% of the bodies removed and as many added every
-// frame). At every CHECK_EVERY-th frame, the World's overlapping pairs must equal a brute-force test
-// of every pair of bodies (no missed and no phantom pair), 100 sampled pairs must agree with the
+// Soak run: a World of moving bodies and static bodies (a quarter), 2% of either kind sensors, with
+// churn (1% of the moving bodies and one static body removed and as many of each added every frame).
+// At every CHECK_EVERY-th frame, the World's overlapping and sensor pairs must equal a brute-force
+// test of every pair of bodies under the World's rules (no two static bodies; a sensor only with a
+// solid body): no missed and no phantom pair; 100 sampled solid pairs must agree with the
 // 50-digit reference, and the heap is compared with its size after the first check (it must not
 // grow beyond the live set's). The brute force culls with exact boxes computed in 50 digits and
 // rounded outward, not with the aabb() the World uses; the sampled pairs check the overlaps() both
@@ -41,14 +43,24 @@ std::size_t heap_in_use() {
 // box tests. Also returns the pairs whose boxes meet, for sampling.
 struct BruteForce {
   std::vector<BodyPair> overlapping;
-  std::vector<BodyPair> boxes_meet;
+  std::vector<SensorPair> sensing;
+  std::vector<BodyPair> boxes_meet;  // the solid pairs the World pairs
 };
 
 BruteForce all_pairs(const World& world) {
-  BruteForce out{{}, reference::exact_box_pairs(world, 0.0)};
-  for (const BodyPair& p : out.boxes_meet) {
+  BruteForce out;
+  for (const BodyPair& p : reference::exact_box_pairs(world, 0.0)) {
+    if (world.is_static(p.a) && world.is_static(p.b)) continue;
+    const bool sa = world.is_sensor(p.a), sb = world.is_sensor(p.b);
+    if (sa && sb) continue;
+    if (sa || sb) {
+      if (overlaps(world.shape(p.a), world.shape(p.b))) out.sensing.push_back(sa ? SensorPair{p.a, p.b} : SensorPair{p.b, p.a});
+      continue;
+    }
+    out.boxes_meet.push_back(p);
     if (overlaps(world.shape(p.a), world.shape(p.b))) out.overlapping.push_back(p);
   }
+  std::sort(out.sensing.begin(), out.sensing.end());
   return out;
 }
 
@@ -92,19 +104,36 @@ int main(int argc, char** argv) {
   };
   World world({.fat_margin = 0.1});
   std::vector<Mover> movers;
-  const auto add = [&] { movers.push_back({world.add(fresh_shape()), Vec2(0.1 * (u(rng) - 0.5), 0.1 * (u(rng) - 0.5))}); };
-  for (int k = 0; k < bodies; ++k) add();
+  std::vector<BodyId> statics;
+  const auto add = [&](bool is_static) {
+    const BodyDef def{.user_id = 0, .filter = {}, .is_static = is_static, .sensor = u(rng) < 0.02};
+    const BodyId id = world.add(fresh_shape(), def);
+    if (is_static) {
+      statics.push_back(id);
+    } else {
+      movers.push_back({id, Vec2(0.1 * (u(rng) - 0.5), 0.1 * (u(rng) - 0.5))});
+    }
+  };
+  for (int k = 0; k < bodies; ++k) add(k % 4 == 3);
   std::size_t baseline = 0;
   const auto start = std::chrono::steady_clock::now();
   int failures = 0, checks = 0;
-  const int churn = std::max(1, bodies / 100);
+  const int churn = std::max(1, static_cast<int>(movers.size()) / 100);
+  const auto take = [&](auto& from) {  // a random element out of `from`, swapped with the last
+    const auto i = static_cast<std::size_t>(u(rng) * static_cast<double>(from.size()));
+    std::swap(from[i], from.back());
+    const auto taken = from.back();
+    from.pop_back();
+    return taken;
+  };
   for (int frame = 1; frame <= frames; ++frame) {
     for (int k = 0; k < churn; ++k) {
-      const std::size_t i = static_cast<std::size_t>(u(rng) * static_cast<double>(movers.size()));
-      world.remove(movers[i].id);
-      movers[i] = movers.back();
-      movers.pop_back();
-      add();
+      world.remove(take(movers).id);
+      add(false);
+    }
+    if (!statics.empty()) {
+      world.remove(take(statics));
+      add(true);
     }
     for (Mover& m : movers) {
       const Vec2 c = center_of(world.shape(m.id));
@@ -118,12 +147,14 @@ int main(int argc, char** argv) {
     ++checks;
     const BruteForce all = all_pairs(world);
     if (world.overlapping() != all.overlapping) ++failures;
+    if (world.sensing() != all.sensing) ++failures;
     failures += reference_disagreements(world, all, sample_rng, kReferenceSamples);
     const std::size_t heap = heap_in_use();
     if (baseline == 0) baseline = heap;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("frame %6d at %.0f s: %zu bodies, %zu overlapping pairs, heap %.1f MB (first check %.1f MB), %d failures\n",
-                frame, seconds, world.size(), world.overlapping().size(), heap / 1e6, baseline / 1e6, failures);
+    std::printf("frame %6d at %.0f s: %zu bodies (%zu static), %zu overlapping pairs, %zu sensor pairs, heap %.1f MB (first check %.1f MB), %d failures\n",
+                frame, seconds, world.size(), statics.size(), world.overlapping().size(), world.sensing().size(), heap / 1e6,
+                baseline / 1e6, failures);
     std::fflush(stdout);
     if (heap > baseline + baseline / 4 + (1u << 20)) {
       std::printf("heap grew beyond the live set\n");
