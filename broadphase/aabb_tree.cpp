@@ -30,6 +30,12 @@ float outward(double x, bool up) {
 }
 
 float perimeter(const float lo[2], const float hi[2]) { return (hi[0] - lo[0]) + (hi[1] - lo[1]); }
+// For inner_perimeter(): in double, and 0 for a box that reaches past float's range (an infinite
+// term would make the sum NaN for good).
+double counted_perimeter(const float lo[2], const float hi[2]) {
+  const double p = (static_cast<double>(hi[0]) - lo[0]) + (static_cast<double>(hi[1]) - lo[1]);
+  return std::isfinite(p) ? p : 0.0;
+}
 
 // The perimeter of the union of two nodes' boxes.
 template <class Node>
@@ -57,8 +63,14 @@ std::int32_t AabbTree::allocate() {
   return node;
 }
 
+// A free node's box is emptied (perimeter 0), so that refit() can account for the perimeter an inner
+// node had before, whatever the node was in an earlier life.
 void AabbTree::release(std::int32_t node) {
-  nodes_[node].height = -1;
+  Node& n = nodes_[node];
+  if (!n.leaf()) inner_perimeter_ -= counted_perimeter(n.lo, n.hi);
+  n.lo[0] = n.lo[1] = n.hi[0] = n.hi[1] = 0.0f;
+  n.child[0] = n.child[1] = -1;
+  n.height = -1;
   free_.push_back(node);
 }
 
@@ -87,23 +99,52 @@ void AabbTree::remove(Leaf leaf) {
   --leaves_;
 }
 
+void AabbTree::set_boxes(std::span<const std::pair<Leaf, Aabb>> boxes) {
+  if (boxes.size() * static_cast<std::size_t>(std::max(1, height())) < leaves_) {
+    for (const auto& [leaf, box] : boxes) set_box(leaf, box);
+    return;
+  }
+  for (const auto& [leaf, box] : boxes) store(box, nodes_[leaf].lo, nodes_[leaf].hi);
+  if (root_ >= 0) refit_below(root_);
+}
+
+void AabbTree::refit_below(std::int32_t node) {
+  if (nodes_[node].leaf()) return;
+  refit_below(nodes_[node].child[0]);
+  refit_below(nodes_[node].child[1]);
+  refit(node);
+}
+
 void AabbTree::clear() {
   nodes_.clear();
   free_.clear();
   root_ = -1;
   leaves_ = 0;
   inserted_ = 0;
+  inner_perimeter_ = 0.0;
 }
 
 void AabbTree::refit(std::int32_t node) {
   Node& n = nodes_[node];
   const Node& a = nodes_[n.child[0]];
   const Node& b = nodes_[n.child[1]];
+  inner_perimeter_ -= counted_perimeter(n.lo, n.hi);
   for (int k = 0; k < 2; ++k) {
     n.lo[k] = std::min(a.lo[k], b.lo[k]);
     n.hi[k] = std::max(a.hi[k], b.hi[k]);
   }
+  inner_perimeter_ += counted_perimeter(n.lo, n.hi);
   n.height = 1 + std::max(a.height, b.height);
+}
+
+void AabbTree::set_box(Leaf leaf, const Aabb& box) {
+  store(box, nodes_[leaf].lo, nodes_[leaf].hi);
+  for (std::int32_t at = nodes_[leaf].parent; at >= 0; at = nodes_[at].parent) {
+    const Node before = nodes_[at];
+    refit(at);
+    const Node& now = nodes_[at];
+    if (now.lo[0] == before.lo[0] && now.lo[1] == before.lo[1] && now.hi[0] == before.hi[0] && now.hi[1] == before.hi[1]) break;
+  }
 }
 
 void AabbTree::replace_child(std::int32_t parent, std::int32_t from, std::int32_t to) {
@@ -195,15 +236,6 @@ std::int32_t AabbTree::balance(std::int32_t node) {
   refit(node);
   refit(up);
   return up;
-}
-
-double AabbTree::refit() { return root_ < 0 ? 0.0 : refit_below(root_); }
-
-double AabbTree::refit_below(std::int32_t node) {
-  if (nodes_[node].leaf()) return 0.0;
-  const double below = refit_below(nodes_[node].child[0]) + refit_below(nodes_[node].child[1]);
-  refit(node);
-  return below + perimeter(nodes_[node].lo, nodes_[node].hi);
 }
 
 void AabbTree::rebuild() {

@@ -32,6 +32,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
@@ -45,14 +47,17 @@ class AabbTree {
   void remove(Leaf leaf);
   void rebuild();
   void clear();
-  // A new box for a leaf with the tree's shape kept: O(1), and the inner boxes are stale until
-  // refit(), which must come before the next query. For many leaves moving a little each frame,
-  // set_box on each and one refit() cost O(n) in all, less than re-inserting them one by one.
-  void set_box(Leaf leaf, const Aabb& box) { store(box, nodes_[leaf].lo, nodes_[leaf].hi); }
-  // Every inner box recomputed from its children; returns the sum of the inner boxes' perimeters
-  // (half perimeters: width plus height), which grows as the leaves drift from where a rebuild put
-  // them: a measure of when to rebuild.
-  double refit();
+  // A new box for a leaf with the tree's shape kept: its ancestors' boxes are refitted up to the
+  // first that does not change. Cheaper than move() (no search, no rotation) for leaves that moved
+  // a little; the tree gets worse as they drift from where insertion or rebuild() put them, which
+  // inner_perimeter() measures.
+  void set_box(Leaf leaf, const Aabb& box);
+  // set_box() for many leaves: when they are many enough that their walks up would refit more nodes
+  // than the tree has, the boxes are stored and every inner node refitted once, bottom up.
+  void set_boxes(std::span<const std::pair<Leaf, Aabb>> boxes);
+  // The sum of the inner boxes' half perimeters (width plus height), kept up to date: the cost of a
+  // query grows with it.
+  double inner_perimeter() const { return inner_perimeter_; }
 
   std::size_t size() const { return leaves_; }
   // Leaves inserted since the last rebuild() (moves do not count): how much of the tree is in the
@@ -77,7 +82,7 @@ class AabbTree {
     float hi[2];
     std::int32_t child[2];  // -1: a leaf
     std::int32_t parent;    // -1: the root
-    std::int32_t height;    // 0: a leaf, -1: free
+    std::int32_t height;    // 0: a leaf, -1: free (its box then empty: see release())
     std::uint32_t value;
     bool leaf() const { return child[0] < 0; }
   };
@@ -90,6 +95,7 @@ class AabbTree {
   std::int32_t root_ = -1;
   std::size_t leaves_ = 0;
   std::size_t inserted_ = 0;
+  double inner_perimeter_ = 0.0;
 
   std::int32_t allocate();
   void release(std::int32_t node);
@@ -100,7 +106,7 @@ class AabbTree {
   std::int32_t balance(std::int32_t node);
   void refit_up(std::int32_t node);
   std::int32_t build(std::int32_t* first, std::int32_t* last);
-  double refit_below(std::int32_t node);
+  void refit_below(std::int32_t node);
   static bool overlap(const Node& n, const float lo[2], const float hi[2]) {
     return n.lo[0] <= hi[0] && lo[0] <= n.hi[0] && n.lo[1] <= hi[1] && lo[1] <= n.hi[1];
   }

@@ -170,22 +170,26 @@ void World::place(std::uint32_t index) {
   }
 }
 
-// The trees catch up: each loose moving body's leaf takes its fat box and the inner boxes are
-// refitted; a tree is rebuilt when a quarter of it is new since its last rebuild, or (the moving
-// one) when refitting has grown its inner perimeters 1.5 times.
+// The trees catch up: each loose moving body's leaf takes its fat box (its ancestors refitted); a
+// tree is rebuilt when a quarter of it is new since its last rebuild, or (the moving one) when its
+// inner perimeters have grown 1.5 times since.
 void World::refresh_trees() {
+  std::vector<std::pair<AabbTree::Leaf, Aabb>> boxes;
+  boxes.reserve(loose_.size());
   for (const std::uint32_t index : loose_) {
     Body& b = bodies_[index];
-    moving_tree_.set_box(b.leaf, broad_.fat_box(b.proxy));
+    boxes.emplace_back(b.leaf, broad_.fat_box(b.proxy));
     b.loose = -1;
   }
+  moving_tree_.set_boxes(boxes);
   const bool moved = !loose_.empty();
   loose_.clear();
   const auto fresh = [](const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted_since_rebuild() >= tree.size(); };
   if (fresh(static_tree_)) static_tree_.rebuild();
-  if (fresh(moving_tree_) || (moved && moving_tree_.refit() > 1.5 * moving_perimeter_ && moving_tree_.size() >= 64)) {
+  const bool worn = moved && moving_tree_.size() >= 64 && moving_tree_.inner_perimeter() > 1.5 * moving_perimeter_;
+  if (fresh(moving_tree_) || worn) {
     moving_tree_.rebuild();
-    moving_perimeter_ = moving_tree_.refit();
+    moving_perimeter_ = moving_tree_.inner_perimeter();
   }
 }
 

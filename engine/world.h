@@ -32,9 +32,9 @@
 // rebuilt top-down at an update when a quarter or more of its bodies were added since the last
 // rebuild (a level loaded, a wave spawned): queries then cost 2 to 10 times less than on the tree
 // insertion builds (bench_queries). The moving bodies' tree is not re-shaped as they move: at each
-// update the leaves whose fat box changed take their new box and the inner boxes are refitted, O(n)
-// in all (re-inserting each moved leaf, as Box2D does, took 40% of a frame of 1,000 moving bodies),
-// and the tree is rebuilt once its inner perimeters have grown 1.5 times since the last rebuild.
+// update the leaves whose fat box changed take their new box and their ancestors are refitted
+// (re-inserting each moved leaf, as Box2D does, took 40% of a frame of 1,000 moving bodies), and
+// the tree is rebuilt once its inner perimeters have grown 1.5 times since the last rebuild.
 // Between set_pose() and update(), queries test the bodies moved out of their fat box one by one.
 //
 // Sensors (BodyDef::sensor) report the solid bodies that overlap them, in sensing() with began and

@@ -114,6 +114,15 @@ TEST(AabbTree, QueriesMatchAScanThroughChurn) {
       m.boxes.erase(it);
       m.insert(random_box(rng, side));
     }
+    // Small moves with the shape kept: a few leaves (each walks up) or most of them (one refit).
+    std::vector<std::pair<AabbTree::Leaf, Aabb>> moved;
+    for (auto& [value, entry] : m.boxes) {
+      if (rng() % (round % 2 == 0 ? 40 : 2) != 0) continue;
+      const Vec2 shift(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5));
+      entry.second = {entry.second.min + shift, entry.second.max + shift};
+      moved.emplace_back(entry.first, entry.second);
+    }
+    m.tree.set_boxes(moved);
     if (round % 15 == 14) m.tree.rebuild();
     ASSERT_EQ(m.tree.size(), m.boxes.size());
     for (int q = 0; q < 10; ++q) m.check_query(random_box(rng, side), 1e-4);
@@ -135,6 +144,29 @@ TEST(AabbTree, HeightStaysWithinTheBounds) {
   tree.insert(random_box(rng, 10), 4096);
   tree.rebuild();
   EXPECT_EQ(tree.height(), 13);
+}
+
+// inner_perimeter() kept through rebuild, set_box and removal: for unit boxes in a row, split at
+// the median, each inner node spans boxes i..j and has half perimeter 2 (j - i) + 2; a box moved
+// away and back restores the sum; with every leaf removed it is 0.
+TEST(AabbTree, InnerPerimeterIsKeptExactly) {
+  AabbTree tree;
+  std::vector<AabbTree::Leaf> leaves;
+  const auto box = [](int k, double up) { return Aabb{Vec2(2.0 * k, up), Vec2(2.0 * k + 1, up + 1)}; };
+  for (int k = 0; k < 64; ++k) leaves.push_back(tree.insert(box(k, 0.0), static_cast<std::uint32_t>(k)));
+  tree.rebuild();
+  const auto expected = [](auto&& self, int first, int count) -> double {  // float rounding of the boxes aside
+    if (count == 1) return 0.0;
+    return 2.0 * (count - 1) + 2.0 + self(self, first, count / 2) + self(self, first + count / 2, count - count / 2);
+  };
+  EXPECT_NEAR(tree.inner_perimeter(), expected(expected, 0, 64), 1e-3);
+  const double built = tree.inner_perimeter();
+  tree.set_box(leaves[5], box(5, 10.0));
+  EXPECT_GT(tree.inner_perimeter(), built + 10.0);
+  tree.set_box(leaves[5], box(5, 0.0));
+  EXPECT_EQ(tree.inner_perimeter(), built);
+  for (const AabbTree::Leaf leaf : leaves) tree.remove(leaf);
+  EXPECT_EQ(tree.inner_perimeter(), 0.0);
 }
 
 TEST(AabbTree, NearestHitPrunesFartherBoxes) {
