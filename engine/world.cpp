@@ -205,8 +205,8 @@ BodyId World::add(const Shape& shape, const BodyDef& def) {
   }
   Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
   b.shape = shape;
-  if (contacts_on_) b.orientation = Orientation::of(angle_of(shape));
-  b.box = aabb(shape);
+  b.orientation = Orientation::of(angle_of(shape));
+  b.box = aabb(shape, b.orientation);
   b.user_id = def.user_id;
   b.filter = def.filter;
   b.is_static = def.is_static;
@@ -226,8 +226,8 @@ void World::set_pose(BodyId id, const Vec2& center, double angle) {
   const Shape moved = posed(b.shape, center, angle);
   validate(moved);  // the range of the centre
   b.shape = moved;
-  if (contacts_on_) b.orientation = Orientation::of(angle_of(moved));  // only contacts use it
-  b.box = aabb(moved);
+  b.orientation = Orientation::of(angle_of(moved));
+  b.box = aabb(moved, b.orientation);
   place(id.index);
 }
 
@@ -365,14 +365,14 @@ void World::narrow(std::uint32_t a, std::uint32_t b, std::vector<BodyPair>& now,
   const Body& y = bodies_[b];
   const bool meet = intersects(x.box, y.box);
   if (x.sensor || y.sensor) {
-    if (!(x.sensor && y.sensor) && meet && overlaps(x.shape, y.shape)) {
+    if (!(x.sensor && y.sensor) && meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
       sensed.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
     }
     return;
   }
   const ContactOptions manifold{.margin = speculative_margin_};
   if (x.continuous || y.continuous) impact(a, b);
-  if (meet && overlaps(x.shape, y.shape)) {
+  if (meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
     now.push_back({id_of(a), id_of(b)});
     if (contacts_on_) contacts_.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
     return;

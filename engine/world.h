@@ -11,9 +11,9 @@
 //   for (const Proximity& p : world.proximity()) ...   // apart but within the margin, with points
 //   for (const BodyContact& c : world.contacts()) ...  // with contacts on: depth, normal, manifold
 //
-// With contacts on, each body keeps the cosine and sine of its angle from its last pose, and its
-// contacts skip them and the shapes' validation (done when posed); an overlap-only World does not
-// compute them. What is computed is what was asked: each candidate pair from the broad phase whose tight boxes
+// Each body keeps the cosine and sine of its angle from its last pose (as Box2D keeps b2Rot), and its
+// pairs' overlap tests and contacts use them and skip the shapes' validation (done when posed).
+// What is computed is what was asked: each candidate pair from the broad phase whose tight boxes
 // meet gets the overlap test only; a distance is computed only when a proximity margin is set, and
 // only for candidate pairs that do not overlap; a contact (narrowphase/contact.h) only when contacts
 // are switched on, for the overlapping pairs and, with a speculative margin, for the pairs whose
@@ -254,7 +254,7 @@ class World {
   struct Body {
     Shape shape;
     Aabb box;                 // aabb(shape), kept with the pose
-    Orientation orientation;  // with contacts on: of the shape's angle, kept with the pose
+    Orientation orientation;  // of the shape's angle, kept with the pose
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;

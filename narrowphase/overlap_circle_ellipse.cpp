@@ -19,8 +19,10 @@ Vec2 center_in_ellipse(const detail::Rotation<double>& rot, const Circle& c, con
 // The centre inside the ellipse, or the point–ellipse distance within r: the same decision as
 // distance_circle_ellipse, so the two always agree. The box around the ellipse rejects first, but only
 // when it clears r by more than the rounding of the distance (16 u of the lengths involved).
-bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) {
-  const Vec2 p = center_in_ellipse(detail::Rotation<double>::of(e.angle), c, e);
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) { return overlap_circle_ellipse(c, e, Orientation::of(e.angle)); }
+
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation& eo) {
+  const Vec2 p = center_in_ellipse({eo.c, eo.s}, c, e);
   const double u = p.x() / e.a;
   const double v = p.y() / e.b;
   if (u * u + v * v <= 1.0) return true;

@@ -11,6 +11,8 @@
 namespace collide2d {
 
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e);
+// The same, given the ellipse's Orientation::of(angle).
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation& e_orientation);
 DistanceResult distance_circle_ellipse(const Circle& c, const Ellipse& e);
 
 }  // namespace collide2d

@@ -13,8 +13,8 @@ struct CircleInRect {
   Vec2 nearest;  // rectangle point nearest to it
 };
 
-CircleInRect circle_in_rect(const Rect& r, const Circle& c) {
-  const auto rot = detail::Rotation<double>::of(r.angle);
+CircleInRect circle_in_rect(const Rect& r, const Orientation& ro, const Circle& c) {
+  const detail::Rotation<double> rot{ro.c, ro.s};
   const Vec2 p = rot.apply_inverse(Vec2(c.center - r.center));
   return {rot, p, detail::clamp_to_box(p, r.half_extents)};
 }
@@ -22,14 +22,16 @@ CircleInRect circle_in_rect(const Rect& r, const Circle& c) {
 }  // namespace
 
 // Near contact the verdict is distance_rect_circle's: apart when |centre - nearest| > r.
-bool overlap_rect_circle(const Rect& r, const Circle& c) {
-  const CircleInRect f = circle_in_rect(r, c);
+bool overlap_rect_circle(const Rect& r, const Circle& c) { return overlap_rect_circle(r, Orientation::of(r.angle), c); }
+
+bool overlap_rect_circle(const Rect& r, const Orientation& ro, const Circle& c) {
+  const CircleInRect f = circle_in_rect(r, ro, c);
   return detail::within_reach((f.center - f.nearest).squaredNorm(), c.radius,
                               [&](double n) { return n > c.radius; });
 }
 
 DistanceResult distance_rect_circle(const Rect& r, const Circle& c) {
-  const CircleInRect f = circle_in_rect(r, c);
+  const CircleInRect f = circle_in_rect(r, Orientation::of(r.angle), c);
   const auto to_world = [&](const Vec2& p) -> Vec2 { return r.center + f.rot.apply(p); };
   const Vec2 d = f.center - f.nearest;
   const double n = d.norm();

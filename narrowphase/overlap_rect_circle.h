@@ -9,6 +9,8 @@
 namespace collide2d {
 
 bool overlap_rect_circle(const Rect& r, const Circle& c);
+// The same, given the rectangle's Orientation::of(angle).
+bool overlap_rect_circle(const Rect& r, const Orientation& r_orientation, const Circle& c);
 DistanceResult distance_rect_circle(const Rect& r, const Circle& c);
 
 }  // namespace collide2d

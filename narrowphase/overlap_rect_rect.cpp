@@ -7,7 +7,11 @@
 namespace collide2d {
 
 bool overlap_rect_rect(const Rect& a, const Rect& b) {
-  const detail::RectPairFrame f(a, b);
+  return overlap_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle));
+}
+
+bool overlap_rect_rect(const Rect& a, const Orientation& ao, const Rect& b, const Orientation& bo) {
+  const detail::RectPairFrame f(a, {ao.c, ao.s}, b, {bo.c, bo.s});
   const double c = std::abs(f.b_rel.c);
   const double s = std::abs(f.b_rel.s);
   const Vec2& ha = a.half_extents;

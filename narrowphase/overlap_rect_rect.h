@@ -9,5 +9,7 @@
 namespace collide2d {
 
 bool overlap_rect_rect(const Rect& a, const Rect& b);
+// The same, given each one's Orientation::of(angle) (callers that keep them: the World).
+bool overlap_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b, const Orientation& b_orientation);
 
 }  // namespace collide2d

@@ -44,6 +44,14 @@ bool overlap_kernel(const Circle& a, const Ellipse& b, const OverlapOptions&) {
 }
 bool overlap_kernel(const Ellipse& a, const Ellipse& b, const OverlapOptions&) { return overlap_ellipse_ellipse(a, b); }
 
+using O = Orientation;
+bool posed_overlap(const Rect& a, const O& oa, const Rect& b, const O& ob) { return overlap_rect_rect(a, oa, b, ob); }
+bool posed_overlap(const Rect& a, const O& oa, const Circle& b, const O&) { return overlap_rect_circle(a, oa, b); }
+bool posed_overlap(const Rect& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_rect_ellipse(a, oa, b, ob); }
+bool posed_overlap(const Circle& a, const O&, const Circle& b, const O&) { return overlap_circle_circle(a, b); }
+bool posed_overlap(const Circle& a, const O&, const Ellipse& b, const O& ob) { return overlap_circle_ellipse(a, b, ob); }
+bool posed_overlap(const Ellipse& a, const O&, const Ellipse& b, const O&) { return overlap_ellipse_ellipse(a, b); }
+
 DistanceResult distance_kernel(const Rect& a, const Rect& b, const DistanceOptions&) { return distance_rect_rect(a, b); }
 DistanceResult distance_kernel(const Rect& a, const Circle& b, const DistanceOptions&) {
   return distance_rect_circle(a, b);
@@ -61,7 +69,6 @@ DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b, const Distanc
   return distance_ellipse_ellipse(a, b, o.ellipse).result;
 }
 
-using O = Orientation;
 Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, const ContactOptions& o) {
   return contact_rect_rect(a, oa, b, ob, o);
 }
@@ -147,6 +154,12 @@ bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
   validate(a);
   validate(b);
   return in_kernel_order(a, b, [&options](const auto& x, const auto& y, bool) { return overlap_kernel(x, y, options); });
+}
+
+bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation) {
+  return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
+    return swapped ? posed_overlap(x, b_orientation, y, a_orientation) : posed_overlap(x, a_orientation, y, b_orientation);
+  });
 }
 
 bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace collide2d {
 namespace {
@@ -114,21 +115,25 @@ const char* shape_name(const Shape& s) {
 Aabb aabb(const Circle& c) { return around(c.center, Vec2::Constant(c.radius)); }
 
 // The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
-Aabb aabb(const Ellipse& e) {
-  const Rot r = Rot::of(e.angle);
-  return around(e.center, Vec2(std::hypot(e.a * r.c, e.b * r.s), std::hypot(e.a * r.s, e.b * r.c)));
-}
+Aabb aabb(const Ellipse& e) { return aabb(Shape(e), Orientation::of(e.angle)); }
+Aabb aabb(const Rect& r) { return aabb(Shape(r), Orientation::of(r.angle)); }
+Aabb aabb(const Shape& s) { return aabb(s, Orientation::of(angle_of(s))); }
 
-Aabb aabb(const Rect& r) {
-  const Rot rot = Rot::of(r.angle);
-  const double c = std::abs(rot.c);
-  const double s = std::abs(rot.s);
-  const Vec2& h = r.half_extents;
-  return around(r.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
-}
-
-Aabb aabb(const Shape& s) {
-  return std::visit([](const auto& shape) { return aabb(shape); }, s);
+Aabb aabb(const Shape& s, const Orientation& o) {
+  return std::visit(
+      [&o](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, Circle>) {
+          return aabb(x);
+        } else if constexpr (std::is_same_v<T, Ellipse>) {  // the support half-widths sqrt((a c)^2 + (b s)^2)
+          return around(x.center, Vec2(std::hypot(x.a * o.c, x.b * o.s), std::hypot(x.a * o.s, x.b * o.c)));
+        } else {
+          const double c = std::abs(o.c), s = std::abs(o.s);
+          const Vec2& h = x.half_extents;
+          return around(x.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
+        }
+      },
+      s);
 }
 
 Vec2 support(const Circle& c, const Vec2& d) {

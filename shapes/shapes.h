@@ -97,6 +97,8 @@ Aabb aabb(const Circle& c);
 Aabb aabb(const Ellipse& e);
 Aabb aabb(const Rect& r);
 Aabb aabb(const Shape& s);
+// The same box, given Orientation::of(angle_of(s)) (callers that keep it: the World).
+Aabb aabb(const Shape& s, const Orientation& orientation);
 
 // A point of the shape farthest in direction d (d need not be unit length; d = 0 gives the centre
 // for circles and ellipses, and a corner for rectangles). On a rectangle edge facing d exactly, the

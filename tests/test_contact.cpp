@@ -255,9 +255,10 @@ TEST(ContactOrientations, KeptGiveTheSameContact) {
   EXPECT_GT(compared, 500);
 }
 
-// The same for the query over any pair (either order, shapes of one kind put in kernel order).
+// The same for the queries over any pair (either order, shapes of one kind put in kernel order):
+// the contact, and the overlap verdict (the World's narrow phase).
 TEST(ContactOrientations, KeptByTheCallerGiveTheSameQuery) {
-  int compared = 0;
+  int compared = 0, overlapping = 0;
   for (const ContactFamily& cf : contact_families()) {
     Family f = cf.family;
     f.cases = 6;
@@ -267,12 +268,17 @@ TEST(ContactOrientations, KeptByTheCallerGiveTheSameQuery) {
         const Shape& a = swap ? c.b : c.a;
         const Shape& b = swap ? c.a : c.b;
         expect_same_contact(contact(a, b), contact(a, swap ? ob : oa, b, swap ? oa : ob), describe(a) + " ; " + describe(b));
+        const bool overlap = overlaps(a, b);
+        EXPECT_EQ(overlaps(a, swap ? ob : oa, b, swap ? oa : ob), overlap) << describe(a) + " ; " + describe(b);
+        overlapping += overlap;
         ++compared;
       }
     }
   }
   EXPECT_GT(compared, 500);
-  std::printf("[contact] orientations kept: %d pairs compared\n", compared);
+  EXPECT_GT(overlapping, 100);
+  EXPECT_LT(overlapping, compared - 100);
+  std::printf("[contact] orientations kept: %d pairs compared, %d of them overlapping\n", compared, overlapping);
 }
 
 // Box2D's manifold on the cases it exists for: a box resting on a box (two points, the overlap of
