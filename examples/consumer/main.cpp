@@ -18,6 +18,9 @@ int main() {
   World world({.fat_margin = 0.1, .proximity_margin = 0.5, .contacts = true});
   const BodyId ship = world.add(Ellipse{Vec2(0, 0), 1.0, 0.3, 0.0}, {.user_id = 1});
   world.add(Circle{Vec2(3, 0), 1.0}, {.user_id = 2});
+  // Level geometry that never moves, and a trigger zone that only reports what enters it.
+  world.add(Rect{Vec2(0, -1.5), Vec2(10, 0.5), 0.0}, {.user_id = 3, .filter = {}, .is_static = true, .sensor = false});
+  world.add(Circle{Vec2(1.5, 0), 0.2}, {.user_id = 4, .filter = {}, .is_static = true, .sensor = true});
   for (int frame = 0; frame < 3; ++frame) {
     world.move_by(ship, Vec2(0.5, 0.0), 0.1);
     world.update();
@@ -26,6 +29,14 @@ int main() {
                   static_cast<unsigned long long>(world.user_id(p.b)));
     }
     for (const Proximity& p : world.proximity()) std::printf("frame %d: %g apart\n", frame, p.result.distance);
-    for (const BodyContact& b : world.contacts()) std::printf("frame %d: %g deep\n", frame, -b.contact.separation);
+    for (const BodyContact& b : world.contacts()) std::printf("frame %d: %g deep\n", frame, 0.0 - b.contact.separation);
+    for (const SensorPair& s : world.sensor_began()) {
+      std::printf("frame %d: body %llu entered zone %llu\n", frame, static_cast<unsigned long long>(world.user_id(s.visitor)),
+                  static_cast<unsigned long long>(world.user_id(s.sensor)));
+    }
+  }
+  // Queries go through the World's trees and test the exact shapes (sensors are not solid).
+  if (const auto hit = world.ray_cast(Vec2(3, 5), Vec2(0, -1), 10.0)) {
+    std::printf("ray hits body %llu at %g\n", static_cast<unsigned long long>(world.user_id(hit->body)), hit->distance);
   }
 }
