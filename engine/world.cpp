@@ -1,5 +1,6 @@
 #include "engine/world.h"
 
+#include "engine/thread_pool.h"
 #include "narrowphase/ray_cast.h"
 
 #include <algorithm>
@@ -75,7 +76,13 @@ World::World(const WorldOptions& options)
       speculative_margin_(options.contacts ? options.speculative_margin : 0.0) {
   require_margin(options.proximity_margin, "proximity margin");
   require_margin(options.speculative_margin, "speculative margin");
+  pool_ = std::make_unique<detail::ThreadPool>(options.threads > 0 ? options.threads
+                                                                   : std::max(1u, std::thread::hardware_concurrency()));
 }
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
 
 bool World::contains(BodyId id) const {
   return id.index < bodies_.size() && bodies_[id.index].alive && bodies_[id.index].generation == id.generation;
@@ -310,25 +317,62 @@ void World::find_candidates() {
   statics_changed_ = false;
 }
 
+void World::Found::clear() {
+  overlapping.clear();
+  sensing.clear();
+  proximity.clear();
+  contacts.clear();
+  impacts.clear();
+  filtered = 0;
+}
+
 void World::update() {
   const auto start = std::chrono::steady_clock::now();
   stats_ = {};
   find_candidates();
   stats_.broad_seconds = seconds_since(start);
   const auto narrow_start = std::chrono::steady_clock::now();
+  narrow_phase();
+  for (const std::uint32_t index : continuous_) {  // the next step begins here
+    bodies_[index].start = bodies_[index].shape;
+    place(index);
+  }
+  stats_.narrow_seconds = seconds_since(narrow_start);
+  stats_.candidates = candidates_.size();
+  stats_.overlapping = overlapping_.size();
+  stats_.proximity = proximity_.size();
+  stats_.contacts = contacts_.size();
+  stats_.impacts = impacts_.size();
+  stats_.sensing = sensing_.size();
+}
+
+// The candidate pairs in chunks, in order, on the pool (a few hundred pairs are not worth waking
+// it); then each result list joined in chunk order and sorted by pair, which makes it the same for
+// any thread count.
+void World::narrow_phase() {
+  constexpr std::size_t kPairsPerChunk = 256;
+  const std::size_t chunks = std::max<std::size_t>(1, (candidates_.size() + kPairsPerChunk - 1) / kPairsPerChunk);
+  if (chunks_.size() < chunks) chunks_.resize(chunks);
+  pool_->run(chunks, [this](std::size_t k) {
+    Found& out = chunks_[k];
+    out.clear();
+    const std::size_t end = std::min(candidates_.size(), (k + 1) * kPairsPerChunk);
+    for (std::size_t i = k * kPairsPerChunk; i < end; ++i) narrow(candidates_[i].first, candidates_[i].second, out);
+  });
   std::vector<BodyPair> now;
   std::vector<SensorPair> sensed;
   proximity_.clear();
   contacts_.clear();
   impacts_.clear();
-  for (const auto& [a, b] : candidates_) {
-    if (!passes(a, b)) {
-      ++stats_.filtered;
-      continue;
-    }
-    narrow(a, b, now, sensed);
+  for (std::size_t k = 0; k < chunks; ++k) {
+    const Found& f = chunks_[k];
+    now.insert(now.end(), f.overlapping.begin(), f.overlapping.end());
+    sensed.insert(sensed.end(), f.sensing.begin(), f.sensing.end());
+    proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
+    contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
+    impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
+    stats_.filtered += f.filtered;
   }
-  // The candidates come in no useful order: the results are sorted by pair.
   const auto by_pair = [](const auto& p, const auto& q) { return std::tie(p.a, p.b) < std::tie(q.a, q.b); };
   std::sort(now.begin(), now.end());
   std::sort(sensed.begin(), sensed.end());
@@ -345,58 +389,51 @@ void World::update() {
   std::set_difference(sensed.begin(), sensed.end(), sensing_.begin(), sensing_.end(), std::back_inserter(sensor_began_));
   std::set_difference(sensing_.begin(), sensing_.end(), sensed.begin(), sensed.end(), std::back_inserter(sensor_ended_));
   sensing_ = std::move(sensed);
-  for (const std::uint32_t index : continuous_) {  // the next step begins here
-    bodies_[index].start = bodies_[index].shape;
-    place(index);
-  }
-  stats_.narrow_seconds = seconds_since(narrow_start);
-  stats_.candidates = candidates_.size();
-  stats_.overlapping = overlapping_.size();
-  stats_.proximity = proximity_.size();
-  stats_.contacts = contacts_.size();
-  stats_.impacts = impacts_.size();
-  stats_.sensing = sensing_.size();
 }
 
-// One candidate pair that passed the filters: a sensor's overlap, or the solid pair's overlap,
+// One candidate pair: dropped by the filters, or a sensor's overlap, or the solid pair's overlap,
 // proximity, contact and time of impact, as far as they were asked for.
-void World::narrow(std::uint32_t a, std::uint32_t b, std::vector<BodyPair>& now, std::vector<SensorPair>& sensed) {
+void World::narrow(std::uint32_t a, std::uint32_t b, Found& out) const {
+  if (!passes(a, b)) {
+    ++out.filtered;
+    return;
+  }
   const Body& x = bodies_[a];
   const Body& y = bodies_[b];
   const bool meet = intersects(x.box, y.box);
   if (x.sensor || y.sensor) {
     if (!(x.sensor && y.sensor) && meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
-      sensed.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
+      out.sensing.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
     }
     return;
   }
   const ContactOptions manifold{.margin = speculative_margin_};
-  if (x.continuous || y.continuous) impact(a, b);
+  if (x.continuous || y.continuous) impact(a, b, out);
   if (meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
-    now.push_back({id_of(a), id_of(b)});
-    if (contacts_on_) contacts_.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
+    out.overlapping.push_back({id_of(a), id_of(b)});
+    if (contacts_on_) out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
     return;
   }
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);
-    if (!d.overlapping && d.distance <= proximity_margin_) proximity_.push_back({id_of(a), id_of(b), d});
+    if (!d.overlapping && d.distance <= proximity_margin_) out.proximity.push_back({id_of(a), id_of(b), d});
   }
   if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
     const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
-    if (c.separation <= speculative_margin_) contacts_.push_back({id_of(a), id_of(b), c});
+    if (c.separation <= speculative_margin_) out.contacts.push_back({id_of(a), id_of(b), c});
   }
 }
 
 // A pair with a continuous body, over the step: each continuous body from its start pose, any other
 // at rest where it is now. Pairs that start the step overlapping are the overlap test's.
-void World::impact(std::uint32_t a, std::uint32_t b) {
+void World::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
   const Body& x = bodies_[a];
   const Body& y = bodies_[b];
   const auto from = [](const Body& body) { return body.continuous ? body.start : body.shape; };
   const auto motion = [](const Body& body) { return body.continuous ? step_of(body.start, body.shape) : Motion{}; };
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
-    impacts_.push_back({id_of(a), id_of(b), r.t, r.normal, r.point});
+    out.impacts.push_back({id_of(a), id_of(b), r.t, r.normal, r.point});
   }
 }
 

@@ -74,11 +74,15 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 namespace collide2d {
+namespace detail {
+class ThreadPool;
+}
 
 // A body's handle: its slot in the World and the generation of that slot. remove() frees the slot
 // for a later add() and moves its generation on, so a handle kept past remove() is refused with an
@@ -137,6 +141,11 @@ struct WorldOptions {
   // With contacts: pairs apart by at most this get a contact too (speculative contacts, which let a
   // solver stop bodies before they meet); also the manifold margin of ContactOptions.
   double speculative_margin = 0.0;
+  // Threads for the narrow phase, the calling one included; 0: every hardware thread. The results
+  // are the same, in the same order, for any count (the candidate pairs are cut into chunks in
+  // order, each chunk's results kept apart, then joined and sorted). With more than one thread the
+  // pair predicate may be called from several threads at once.
+  unsigned threads = 0;
 };
 
 struct Proximity {
@@ -190,6 +199,9 @@ struct FrameStats {
 class World {
  public:
   explicit World(const WorldOptions& options = {});
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
 
   BodyId add(const Shape& shape, const BodyDef& def = {});
   // For a static body too, at the price the header comment gives.
@@ -310,8 +322,21 @@ class World {
   void unloose(std::uint32_t index);
   void refresh_trees();
   void find_candidates();
-  void narrow(std::uint32_t a, std::uint32_t b, std::vector<BodyPair>& now, std::vector<SensorPair>& sensed);
-  void impact(std::uint32_t a, std::uint32_t b);
+  // What the narrow phase found in one chunk of the candidate pairs.
+  struct Found {
+    std::vector<BodyPair> overlapping;
+    std::vector<SensorPair> sensing;
+    std::vector<Proximity> proximity;
+    std::vector<BodyContact> contacts;
+    std::vector<Impact> impacts;
+    std::size_t filtered = 0;
+    void clear();
+  };
+  std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing
+  std::unique_ptr<detail::ThreadPool> pool_;
+  void narrow_phase();
+  void narrow(std::uint32_t a, std::uint32_t b, Found& out) const;
+  void impact(std::uint32_t a, std::uint32_t b, Found& out) const;
   bool passes(std::uint32_t a, std::uint32_t b) const;
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, const QueryFilter& filter, Test test) const;

@@ -1,0 +1,58 @@
+#include "engine/thread_pool.h"
+
+namespace collide2d::detail {
+
+ThreadPool::ThreadPool(unsigned threads) {
+  for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this](std::stop_token stop) { work(stop); });
+}
+
+ThreadPool::~ThreadPool() {
+  for (std::jthread& w : workers_) w.request_stop();
+  {
+    const std::lock_guard lock(mutex_);  // no worker between its check of stop and its wait
+  }
+  wake_.notify_all();
+  workers_.clear();  // joined here, while the mutex and condition variables they use still exist
+}
+
+// Takes tasks until none is left.
+void ThreadPool::drain() {
+  for (std::size_t k = next_.fetch_add(1); k < count_; k = next_.fetch_add(1)) (*task_)(k);
+}
+
+void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& task) {
+  if (workers_.empty() || count <= 1) {
+    for (std::size_t k = 0; k < count; ++k) task(k);
+    return;
+  }
+  {
+    const std::lock_guard lock(mutex_);
+    task_ = &task;
+    count_ = count;
+    next_.store(0);
+    busy_ = workers_.size();
+    ++generation_;
+  }
+  wake_.notify_all();
+  drain();
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, [this] { return busy_ == 0; });
+  task_ = nullptr;
+}
+
+void ThreadPool::work(std::stop_token stop) {
+  std::uint64_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop.stop_requested() || generation_ != seen; });
+      if (stop.stop_requested()) return;
+      seen = generation_;
+    }
+    drain();
+    const std::lock_guard lock(mutex_);
+    if (--busy_ == 0) done_.notify_one();
+  }
+}
+
+}  // namespace collide2d::detail

@@ -1,0 +1,46 @@
+// A small pool of std::jthread workers for the World's per-frame work: run(count, task) calls
+// task(k) for every k in [0, count), spread over the workers and the calling thread, and returns when
+// all calls are done. Tasks are taken in order from an atomic counter, so a slow one does not hold
+// the others back. The workers sleep on a condition variable between runs. std::jthread rather than
+// oneTBB: the World needs one parallel loop per phase and nothing of TBB's scheduler, and the
+// library keeps linking only Eigen (and the standard library's threads).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace collide2d::detail {
+
+class ThreadPool {
+ public:
+  // threads >= 1 counts the calling thread: threads - 1 workers are started.
+  explicit ThreadPool(unsigned threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
+  void run(std::size_t count, const std::function<void(std::size_t)>& task);
+
+ private:
+  std::vector<std::jthread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable done_;
+  const std::function<void(std::size_t)>* task_ = nullptr;
+  std::size_t count_ = 0;
+  std::atomic<std::size_t> next_{0};
+  std::size_t busy_ = 0;            // workers still in the current run
+  std::uint64_t generation_ = 0;    // one per run, so that a worker joins each run once
+
+  void work(std::stop_token stop);
+  void drain();
+};
+
+}  // namespace collide2d::detail
