@@ -201,7 +201,7 @@ void SweepAndPrune::load(Strip& s, std::size_t i, std::uint32_t t) const {
 
 // Current coordinates for the strip's entries; entries of removed boxes, or of boxes that left the
 // strip, go.
-void SweepAndPrune::refresh(std::int64_t index, Strip& s) {
+void SweepAndPrune::refresh(std::int64_t index, Strip& s) const {
   std::size_t out = 0;
   for (std::size_t i = 0; i < s.tags.size(); ++i) {
     const ProxyId id = id_of(s.tags[i]);
@@ -210,7 +210,7 @@ void SweepAndPrune::refresh(std::int64_t index, Strip& s) {
   s.resize(out);
 }
 
-bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget) {
+bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget, std::size_t& swaps) const {
   for (std::size_t i = 1; i < s.keys.size(); ++i) {
     const double k = s.keys[i], lo = s.lo[i], hi = s.hi[i];
     const std::int64_t first = s.first[i];
@@ -223,21 +223,21 @@ bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget) {
       s.hi[j] = s.hi[j - 1];
       s.first[j] = s.first[j - 1];
       --j;
-      if (++stats_.swaps > budget) break;
+      if (++swaps > budget) break;
     }
     s.keys[j] = k;
     s.tags[j] = t;
     s.lo[j] = lo;
     s.hi[j] = hi;
     s.first[j] = first;
-    if (stats_.swaps > budget) return false;
+    if (swaps > budget) return false;
   }
   return true;
 }
 
 // LSD radix sort on (key, is_max): one pass on the max bit, then eight on the key's bytes; every
 // pass is stable, so equal keys keep mins first.
-void SweepAndPrune::radix_sort(Strip& s) {
+void SweepAndPrune::radix_sort(Strip& s) const {
   const std::size_t n = s.keys.size();
   std::vector<std::uint64_t> bits(n), bits_tmp(n);
   std::vector<std::uint32_t> tags_tmp(n);
@@ -262,7 +262,7 @@ void SweepAndPrune::radix_sort(Strip& s) {
 }
 
 // The endpoints of boxes that entered the strip, sorted among themselves, merged in.
-void SweepAndPrune::merge_incoming(Strip& s) {
+void SweepAndPrune::merge_incoming(Strip& s) const {
   if (s.incoming.empty()) return;
   Strip fresh;
   fresh.resize(s.incoming.size());
@@ -287,35 +287,54 @@ void SweepAndPrune::merge_incoming(Strip& s) {
 
 // The pairs of the strip: overlapping along the sweep axis (both in the active list) and across it,
 // reported only in the first strip both boxes reach.
-void SweepAndPrune::sweep(std::int64_t index, const Strip& s, std::vector<ProxyPair>& found) {
+void SweepAndPrune::sweep(StripWork& w) const {
   struct Active {
     ProxyId id;
     double lo;
     double hi;
     std::int64_t first;
   };
+  // A proxy's place in the active list, per thread: tasks on other threads sweep other strips.
+  thread_local std::vector<std::uint32_t> active_slot;
+  if (active_slot.size() < proxies_.size()) active_slot.resize(proxies_.size());
+  const Strip& s = *w.strip;
   std::vector<Active> active;
   for (std::size_t i = 0; i < s.tags.size(); ++i) {
     const ProxyId id = id_of(s.tags[i]);
     if (is_max(s.tags[i])) {
-      const std::uint32_t slot = active_slot_[id];
+      const std::uint32_t slot = active_slot[id];
       active[slot] = active.back();
-      active_slot_[active[slot].id] = slot;
+      active_slot[active[slot].id] = slot;
       active.pop_back();
       continue;
     }
-    stats_.axis_overlaps += active.size();
+    w.axis_overlaps += active.size();
     for (const Active& q : active) {
-      if (s.lo[i] <= q.hi && q.lo <= s.hi[i] && index == std::max(s.first[i], q.first)) {
-        found.push_back(id < q.id ? ProxyPair{id, q.id} : ProxyPair{q.id, id});
+      if (s.lo[i] <= q.hi && q.lo <= s.hi[i] && w.index == std::max(s.first[i], q.first)) {
+        w.found.push_back(id < q.id ? ProxyPair{id, q.id} : ProxyPair{q.id, id});
       }
     }
-    active_slot_[id] = static_cast<std::uint32_t>(active.size());
+    active_slot[id] = static_cast<std::uint32_t>(active.size());
     active.push_back({id, s.lo[i], s.hi[i], s.first[i]});
   }
 }
 
-void SweepAndPrune::update() {
+// One strip's frame: current coordinates, sorted again (by insertion while that is cheap: a budget
+// of swaps near the cost of the radix sort, beyond which the boxes did not move coherently), the
+// boxes that entered merged in, and its pairs.
+void SweepAndPrune::process(StripWork& w) const {
+  Strip& strip = *w.strip;
+  w.found.clear();
+  w.swaps = 0;
+  w.axis_overlaps = 0;
+  refresh(w.index, strip);
+  w.full_sort = !insertion_sort(strip, 8 * strip.keys.size() + 64, w.swaps);
+  if (w.full_sort) radix_sort(strip);
+  merge_incoming(strip);
+  sweep(w);
+}
+
+void SweepAndPrune::update(const ParallelFor& parallel) {
   stats_ = {};
   if (lay_out()) {
     strips_.clear();
@@ -323,27 +342,30 @@ void SweepAndPrune::update() {
     stats_.full_sort = true;
   }
   assign_strips();
-  active_slot_.resize(proxies_.size());
-  std::vector<ProxyPair> found;
-  for (auto it = strips_.begin(); it != strips_.end();) {
-    Strip& strip = it->second;
-    refresh(it->first, strip);
-    // A budget of swaps near the cost of the radix sort: beyond it the boxes did not move coherently.
-    if (!insertion_sort(strip, stats_.swaps + 8 * strip.keys.size() + 64)) {
-      stats_.full_sort = true;
-      radix_sort(strip);
-    }
-    merge_incoming(strip);
-    if (strip.tags.empty()) {
-      it = strips_.erase(it);
-      continue;
-    }
-    sweep(it->first, strip, found);
-    ++it;
+  work_.resize(strips_.size());
+  std::size_t n = 0;
+  for (auto& [index, strip] : strips_) {
+    work_[n].index = index;
+    work_[n++].strip = &strip;
   }
+  const auto task = [this](std::size_t k) { process(work_[k]); };
+  if (parallel) {
+    parallel(n, task);
+  } else {
+    for (std::size_t k = 0; k < n; ++k) task(k);
+  }
+  std::vector<ProxyPair> found;
+  for (std::size_t k = 0; k < n; ++k) {
+    const StripWork& w = work_[k];
+    stats_.swaps += w.swaps;
+    stats_.axis_overlaps += w.axis_overlaps;
+    stats_.full_sort = stats_.full_sort || w.full_sort;
+    found.insert(found.end(), w.found.begin(), w.found.end());
+    if (w.strip->tags.empty()) strips_.erase(w.index);
+  }
+  std::sort(found.begin(), found.end());
   stats_.axis = sweep_axis_;
   stats_.strips = strips_.size();
-  std::sort(found.begin(), found.end());
   finish_update(std::move(found));
 }
 

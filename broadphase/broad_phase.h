@@ -34,6 +34,7 @@
 #include "shapes/shapes.h"
 
 #include <compare>
+#include <functional>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -94,11 +95,17 @@ class BroadPhaseBase {
   void check(ProxyId id) const;
 };
 
+// Runs task(k) for every k in [0, count), possibly at once on several threads, and returns when all
+// are done (the World passes its thread pool's).
+using ParallelFor = std::function<void(std::size_t count, const std::function<void(std::size_t)>& task)>;
+
 class SweepAndPrune : public BroadPhaseBase {
  public:
   using BroadPhaseBase::BroadPhaseBase;
 
-  void update();
+  // The strips are independent once boxes are assigned to them: each one's sorting and sweep is a
+  // task for `parallel`; the pairs are the same, in the same order, however the tasks run.
+  void update(const ParallelFor& parallel = {});
 
   // What the last update did, for benchmarks and tests.
   struct UpdateStats {
@@ -125,23 +132,33 @@ class SweepAndPrune : public BroadPhaseBase {
     std::int64_t first = 0;
     std::int64_t last = -1;  // empty
   };
+  // What one strip's task did.
+  struct StripWork {
+    std::int64_t index = 0;
+    Strip* strip = nullptr;
+    std::vector<ProxyPair> found;
+    std::size_t swaps = 0;
+    std::size_t axis_overlaps = 0;
+    bool full_sort = false;
+  };
 
   int sweep_axis_ = 0;
   double strip_width_ = 0.0;  // 0: not laid out yet
   std::unordered_map<std::int64_t, Strip> strips_;
   std::vector<StripRange> range_;  // per proxy
-  std::vector<std::uint32_t> active_slot_;  // sweep scratch: a proxy's place in the active list
+  std::vector<StripWork> work_;    // per strip, kept from frame to frame
   UpdateStats stats_;
 
   bool lay_out();
   StripRange strips_of(const Aabb& box) const;
   void assign_strips();
   void load(Strip& s, std::size_t i, std::uint32_t tag) const;
-  void refresh(std::int64_t index, Strip& s);
-  bool insertion_sort(Strip& s, std::size_t budget);
-  void radix_sort(Strip& s);
-  void merge_incoming(Strip& s);
-  void sweep(std::int64_t index, const Strip& s, std::vector<ProxyPair>& found);
+  void refresh(std::int64_t index, Strip& s) const;
+  bool insertion_sort(Strip& s, std::size_t budget, std::size_t& swaps) const;
+  void radix_sort(Strip& s) const;
+  void merge_incoming(Strip& s) const;
+  void sweep(StripWork& w) const;
+  void process(StripWork& w) const;
 };
 
 class BruteForceBroadPhase : public BroadPhaseBase {

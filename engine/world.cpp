@@ -287,7 +287,7 @@ void World::set_proximity_margin(double margin) {
 // The pairs of moving bodies from the sweep and prune, and each moving body's pairs with the static
 // bodies it keeps, looked up again where its fat box or the statics changed.
 void World::find_candidates() {
-  broad_.update();
+  broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) { pool_->run(count, task); });
   refresh_trees();
   candidates_.clear();
   const auto ordered = [](std::uint32_t a, std::uint32_t b) { return a < b ? std::pair(a, b) : std::pair(b, a); };

@@ -1,6 +1,7 @@
 // Sweep and prune against brute force: after every update, the same pairs, began and ended lists,
 // on random, clustered, collinear, identical, zero-size and churning scenes.
 #include "broadphase/broad_phase.h"
+#include "engine/thread_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -18,43 +19,55 @@ double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distri
 
 Aabb box_at(const Vec2& c, const Vec2& half) { return {c - half, c + half}; }
 
-// The two broad phases driven by the same calls; ids agree because both allocate them alike.
+// The broad phases driven by the same calls; ids agree because all allocate them alike. The second
+// sweep and prune runs its strips on three threads and must do exactly what the first does.
 struct Twin {
   SweepAndPrune sap;
+  SweepAndPrune threaded;
   BruteForceBroadPhase brute;
+  detail::ThreadPool pool{3};
   std::vector<ProxyId> ids;
   int updates = 0;
 
-  explicit Twin(double margin) : sap(margin), brute(margin) {}
+  explicit Twin(double margin) : sap(margin), threaded(margin), brute(margin) {}
 
   void insert(const Aabb& b) {
     const ProxyId id = sap.insert(b);
     ASSERT_EQ(brute.insert(b), id);
+    ASSERT_EQ(threaded.insert(b), id);
     ids.push_back(id);
   }
   void insert_batch(const std::vector<Aabb>& boxes) {
     const auto a = sap.insert_batch(boxes);
     ASSERT_EQ(brute.insert_batch(boxes), a);
+    ASSERT_EQ(threaded.insert_batch(boxes), a);
     ids.insert(ids.end(), a.begin(), a.end());
   }
   void move(std::size_t k, const Aabb& b) {
     sap.move(ids[k], b);
+    threaded.move(ids[k], b);
     brute.move(ids[k], b);
   }
   void remove(std::size_t k) {
     sap.remove(ids[k]);
+    threaded.remove(ids[k]);
     brute.remove(ids[k]);
     ids[k] = ids.back();
     ids.pop_back();
   }
   void update_and_compare(const std::string& what) {
     sap.update();
+    threaded.update([this](std::size_t n, const std::function<void(std::size_t)>& task) { pool.run(n, task); });
     brute.update();
     ++updates;
     ASSERT_EQ(sap.pairs(), brute.pairs()) << what << " update " << updates;
     ASSERT_EQ(sap.began(), brute.began()) << what << " update " << updates;
     ASSERT_EQ(sap.ended(), brute.ended()) << what << " update " << updates;
     ASSERT_EQ(sap.size(), ids.size());
+    ASSERT_EQ(threaded.pairs(), sap.pairs()) << what << " update " << updates;
+    ASSERT_EQ(threaded.began(), sap.began()) << what << " update " << updates;
+    ASSERT_EQ(threaded.last_update().swaps, sap.last_update().swaps) << what << " update " << updates;
+    ASSERT_EQ(threaded.last_update().axis_overlaps, sap.last_update().axis_overlaps) << what << " update " << updates;
   }
 };
 
