@@ -177,22 +177,26 @@ void World::place(std::uint32_t index) {
   }
 }
 
-// The trees catch up: each loose moving body's leaf takes its fat box (its ancestors refitted); a
-// tree is rebuilt when a quarter of it is new since its last rebuild, or (the moving one) when its
-// inner perimeters have grown 1.5 times since.
-void World::refresh_trees() {
-  std::vector<std::pair<AabbTree::Leaf, Aabb>> boxes;
-  boxes.reserve(loose_.size());
+namespace {
+
+// A tree with a quarter or more of its leaves inserted since its last rebuild.
+bool fresh(const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted_since_rebuild() >= tree.size(); }
+
+}  // namespace
+
+// The moving bodies' tree catches up: each loose body's leaf takes its fat box (its ancestors
+// refitted), and the tree is rebuilt when a quarter of it is new since its last rebuild or its inner
+// perimeters have grown 1.5 times since. It runs alongside the narrow phase, which does not use it.
+void World::refresh_moving_tree() {
+  tree_boxes_.clear();
   for (const std::uint32_t index : loose_) {
     Body& b = bodies_[index];
-    boxes.emplace_back(b.leaf, broad_.fat_box(b.proxy));
+    tree_boxes_.emplace_back(b.leaf, broad_.fat_box(b.proxy));
     b.loose = -1;
   }
-  moving_tree_.set_boxes(boxes);
+  moving_tree_.set_boxes(tree_boxes_);
   const bool moved = !loose_.empty();
   loose_.clear();
-  const auto fresh = [](const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted_since_rebuild() >= tree.size(); };
-  if (fresh(static_tree_)) static_tree_.rebuild();
   const bool worn = moved && moving_tree_.size() >= 64 && moving_tree_.inner_perimeter() > 1.5 * moving_perimeter_;
   if (fresh(moving_tree_) || worn) {
     moving_tree_.rebuild();
@@ -287,12 +291,21 @@ void World::set_proximity_margin(double margin) {
 // The pairs of moving bodies from the sweep and prune, and each moving body's pairs with the static
 // bodies it keeps, looked up again where its fat box or the statics changed.
 void World::find_candidates() {
-  broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) { pool_->run(count, task); });
-  refresh_trees();
+  // A few thousand moving bodies sort and sweep in less time than waking the pool takes.
+  constexpr std::size_t kParallelBodies = 4096;
+  broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) {
+    if (broad_.size() < kParallelBodies) {
+      for (std::size_t k = 0; k < count; ++k) task(k);
+    } else {
+      pool_->run(count, task);
+    }
+  });
+  if (fresh(static_tree_)) static_tree_.rebuild();
   candidates_.clear();
   const auto ordered = [](std::uint32_t a, std::uint32_t b) { return a < b ? std::pair(a, b) : std::pair(b, a); };
   for (const ProxyPair& p : broad_.pairs()) candidates_.push_back(ordered(body_of_[p.a], body_of_[p.b]));
-  for (ProxyId proxy = 0; proxy < body_of_.size(); ++proxy) {
+  const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every body's list is empty
+  for (ProxyId proxy = 0; statics && proxy < body_of_.size(); ++proxy) {
     const std::uint32_t index = body_of_[proxy];
     if (index == kNoBody) continue;
     Body& b = bodies_[index];
@@ -346,19 +359,29 @@ void World::update() {
   stats_.sensing = sensing_.size();
 }
 
-// The candidate pairs in chunks, in order, on the pool (a few hundred pairs are not worth waking
-// it); then each result list joined in chunk order and sorted by pair, which makes it the same for
-// any thread count.
+// The candidate pairs in chunks, in order, on the pool with the moving tree's refresh beside them;
+// then each result list joined in chunk order and sorted by pair, which makes it the same for any
+// thread count.
 void World::narrow_phase() {
   constexpr std::size_t kPairsPerChunk = 256;
   const std::size_t chunks = std::max<std::size_t>(1, (candidates_.size() + kPairsPerChunk - 1) / kPairsPerChunk);
   if (chunks_.size() < chunks) chunks_.resize(chunks);
-  pool_->run(chunks, [this](std::size_t k) {
+  const auto task = [this](std::size_t task) {
+    if (task == 0) {  // the longest task, so first
+      refresh_moving_tree();
+      return;
+    }
+    const std::size_t k = task - 1;
     Found& out = chunks_[k];
     out.clear();
     const std::size_t end = std::min(candidates_.size(), (k + 1) * kPairsPerChunk);
     for (std::size_t i = k * kPairsPerChunk; i < end; ++i) narrow(candidates_[i].first, candidates_[i].second, out);
-  });
+  };
+  if (chunks < 4) {  // a thousand pairs take tens of microseconds: less than waking the pool
+    for (std::size_t k = 0; k <= chunks; ++k) task(k);
+  } else {
+    pool_->run(chunks + 1, task);
+  }
   std::vector<BodyPair> now;
   std::vector<SensorPair> sensed;
   proximity_.clear();

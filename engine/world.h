@@ -193,7 +193,7 @@ struct FrameStats {
   std::size_t sensing = 0;    // sensor pairs
   std::size_t requeried = 0;  // moving bodies whose static neighbours were looked up again
   double broad_seconds = 0.0;
-  double narrow_seconds = 0.0;
+  double narrow_seconds = 0.0;  // with the moving bodies' query tree, kept up to date alongside
 };
 
 class World {
@@ -292,6 +292,7 @@ class World {
   AabbTree moving_tree_;                // the moving bodies' fat boxes as of the last update
   double moving_perimeter_ = 0.0;       // its inner boxes' perimeters right after its last rebuild
   std::vector<std::uint32_t> loose_;    // moving bodies whose fat box changed since the last update
+  std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
   AabbTree static_tree_;                // the static bodies' broad-phase boxes
   bool statics_changed_ = false;
   double proximity_margin_;
@@ -320,7 +321,7 @@ class World {
   void leave(std::uint32_t index);
   void place(std::uint32_t index);
   void unloose(std::uint32_t index);
-  void refresh_trees();
+  void refresh_moving_tree();
   void find_candidates();
   // What the narrow phase found in one chunk of the candidate pairs.
   struct Found {
