@@ -115,15 +115,6 @@ void AabbTree::refit_below(std::int32_t node) {
   refit(node);
 }
 
-void AabbTree::clear() {
-  nodes_.clear();
-  free_.clear();
-  root_ = -1;
-  leaves_ = 0;
-  inserted_ = 0;
-  inner_perimeter_ = 0.0;
-}
-
 void AabbTree::refit(std::int32_t node) {
   Node& n = nodes_[node];
   const Node& a = nodes_[n.child[0]];

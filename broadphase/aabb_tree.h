@@ -46,7 +46,6 @@ class AabbTree {
   void move(Leaf leaf, const Aabb& box);
   void remove(Leaf leaf);
   void rebuild();
-  void clear();
   // A new box for a leaf with the tree's shape kept: its ancestors' boxes are refitted up to the
   // first that does not change. Cheaper than move() (no search, no rotation) for leaves that moved
   // a little; the tree gets worse as they drift from where insertion or rebuild() put them, which
