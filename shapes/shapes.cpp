@@ -6,7 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <type_traits>
 
 namespace collide2d {
 namespace {
@@ -114,27 +113,27 @@ const char* shape_name(const Shape& s) {
 
 Aabb aabb(const Circle& c) { return around(c.center, Vec2::Constant(c.radius)); }
 
-// The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
-Aabb aabb(const Ellipse& e) { return aabb(Shape(e), Orientation::of(e.angle)); }
-Aabb aabb(const Rect& r) { return aabb(Shape(r), Orientation::of(r.angle)); }
-Aabb aabb(const Shape& s) { return aabb(s, Orientation::of(angle_of(s))); }
+namespace {
 
-Aabb aabb(const Shape& s, const Orientation& o) {
-  return std::visit(
-      [&o](const auto& x) {
-        using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, Circle>) {
-          return aabb(x);
-        } else if constexpr (std::is_same_v<T, Ellipse>) {  // the support half-widths sqrt((a c)^2 + (b s)^2)
-          return around(x.center, Vec2(std::hypot(x.a * o.c, x.b * o.s), std::hypot(x.a * o.s, x.b * o.c)));
-        } else {
-          const double c = std::abs(o.c), s = std::abs(o.s);
-          const Vec2& h = x.half_extents;
-          return around(x.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
-        }
-      },
-      s);
+Aabb oriented_box(const Circle& c, const Orientation&) { return aabb(c); }
+
+// The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
+Aabb oriented_box(const Ellipse& e, const Orientation& o) {
+  return around(e.center, Vec2(std::hypot(e.a * o.c, e.b * o.s), std::hypot(e.a * o.s, e.b * o.c)));
 }
+
+Aabb oriented_box(const Rect& r, const Orientation& o) {
+  const double c = std::abs(o.c), s = std::abs(o.s);
+  const Vec2& h = r.half_extents;
+  return around(r.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
+}
+
+}  // namespace
+
+Aabb aabb(const Ellipse& e) { return oriented_box(e, Orientation::of(e.angle)); }
+Aabb aabb(const Rect& r) { return oriented_box(r, Orientation::of(r.angle)); }
+Aabb aabb(const Shape& s) { return std::visit([](const auto& x) { return aabb(x); }, s); }
+Aabb aabb(const Shape& s, const Orientation& o) { return std::visit([&o](const auto& x) { return oriented_box(x, o); }, s); }
 
 Vec2 support(const Circle& c, const Vec2& d) {
   const double n = d.norm();
