@@ -26,10 +26,6 @@ void validate_box(const Aabb& box) {
   }
 }
 
-bool inside(const Aabb& inner, const Aabb& outer) {
-  return (outer.min.array() <= inner.min.array()).all() && (inner.max.array() <= outer.max.array()).all();
-}
-
 // Endpoint tags: proxy id << 1, low bit set for a box's max end. At equal keys a min sorts first, so
 // touching boxes overlap.
 constexpr std::uint32_t tag(ProxyId id, bool is_max) { return id << 1 | static_cast<std::uint32_t>(is_max); }
@@ -96,7 +92,7 @@ bool BroadPhaseBase::move(ProxyId id, const Aabb& box) {
   check(id);
   validate_box(box);
   Aabb& fat = proxies_[id].fat;
-  if (inside(box, fat)) return false;
+  if (encloses(fat, box)) return false;
   const Vec2 grow = Vec2::Constant(margin_);
   fat = {box.min - grow, box.max + grow};
   return true;

@@ -62,6 +62,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
 
+// `pairs` becomes `now` (both sorted); began and ended get what it gained and lost.
+template <class Pair>
+void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>&& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
+  began.clear();
+  ended.clear();
+  std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));
+  std::set_difference(pairs.begin(), pairs.end(), now.begin(), now.end(), std::back_inserter(ended));
+  pairs = std::move(now);
+}
+
 }  // namespace
 
 bool should_pair(const Filter& a, const Filter& b) {
@@ -140,7 +150,7 @@ void World::enter(std::uint32_t index) {
   body_of_[b.proxy] = index;
   b.leaf = moving_tree_.insert(broad_.fat_box(b.proxy), index);
   b.loose = -1;
-  b.requery = true;
+  b.queried = kNowhere;
 }
 
 void World::leave(std::uint32_t index) {
@@ -310,8 +320,7 @@ void World::find_candidates() {
     if (index == kNoBody) continue;
     Body& b = bodies_[index];
     const Aabb& fat = broad_.fat_box(proxy);
-    const bool within = (b.queried.min.array() <= fat.min.array()).all() && (fat.max.array() <= b.queried.max.array()).all();
-    if (statics_changed_ || b.requery || !within) {
+    if (statics_changed_ || !encloses(b.queried, fat)) {
       // Looked up around the fat box, half its larger side further, so that the next few frames'
       // fat boxes stay within it and need no look-up (that halved the broad phase of bench_world's
       // level): the statics kept are a superset, and the test below keeps those the fat box meets.
@@ -320,7 +329,6 @@ void World::find_candidates() {
       static_tree_.query(b.queried, [&](std::uint32_t s) {
         if (intersects(broad_box(bodies_[s]), b.queried)) b.statics.push_back(s);
       });
-      b.requery = false;
       ++stats_.requeried;
     }
     for (const std::uint32_t s : b.statics) {
@@ -402,16 +410,8 @@ void World::narrow_phase() {
   std::sort(proximity_.begin(), proximity_.end(), by_pair);
   std::sort(contacts_.begin(), contacts_.end(), by_pair);
   std::sort(impacts_.begin(), impacts_.end(), by_pair);
-  began_.clear();
-  ended_.clear();
-  std::set_difference(now.begin(), now.end(), overlapping_.begin(), overlapping_.end(), std::back_inserter(began_));
-  std::set_difference(overlapping_.begin(), overlapping_.end(), now.begin(), now.end(), std::back_inserter(ended_));
-  overlapping_ = std::move(now);
-  sensor_began_.clear();
-  sensor_ended_.clear();
-  std::set_difference(sensed.begin(), sensed.end(), sensing_.begin(), sensing_.end(), std::back_inserter(sensor_began_));
-  std::set_difference(sensing_.begin(), sensing_.end(), sensed.begin(), sensed.end(), std::back_inserter(sensor_ended_));
-  sensing_ = std::move(sensed);
+  replace_pairs(overlapping_, std::move(now), began_, ended_);
+  replace_pairs(sensing_, std::move(sensed), sensor_began_, sensor_ended_);
 }
 
 // One candidate pair: dropped by the filters, or a sensor's overlap, or the solid pair's overlap,
@@ -423,16 +423,15 @@ void World::narrow(std::uint32_t a, std::uint32_t b, Found& out) const {
   }
   const Body& x = bodies_[a];
   const Body& y = bodies_[b];
-  const bool meet = intersects(x.box, y.box);
+  if (x.sensor && y.sensor) return;
+  const bool touching = intersects(x.box, y.box) && overlaps(x.shape, x.orientation, y.shape, y.orientation);
   if (x.sensor || y.sensor) {
-    if (!(x.sensor && y.sensor) && meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
-      out.sensing.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
-    }
+    if (touching) out.sensing.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
     return;
   }
   const ContactOptions manifold{.margin = speculative_margin_};
   if (x.continuous || y.continuous) impact(a, b, out);
-  if (meet && overlaps(x.shape, x.orientation, y.shape, y.orientation)) {
+  if (touching) {
     out.overlapping.push_back({id_of(a), id_of(b)});
     if (contacts_on_) out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
     return;

@@ -74,6 +74,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -277,12 +278,15 @@ class World {
     ProxyId proxy = 0;          // moving: its sweep-and-prune proxy
     AabbTree::Leaf leaf = -1;   // its leaf in the moving or the static tree
     std::int32_t loose = -1;    // moving: its place in loose_ while its tree leaf is out of date
-    Aabb queried;               // moving: the box its static neighbours were looked up in
-    bool requery = true;        // moving: look them up at the next update whatever the box
+    Aabb queried;               // moving: the box its static neighbours were looked up in (kNowhere: none yet)
     std::vector<std::uint32_t> statics;  // moving: those neighbours (body indices)
     Shape start;  // continuous: the pose at the last update, where the step begins
   };
   static constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
+  // An empty box, which encloses no fat box: a body entering the sweep and prune looks up its static
+  // neighbours at the next update.
+  static inline const Aabb kNowhere{Vec2::Constant(std::numeric_limits<double>::infinity()),
+                                    Vec2::Constant(-std::numeric_limits<double>::infinity())};
 
   std::vector<Body> bodies_;  // by BodyId::index
   std::vector<std::uint32_t> free_;

@@ -106,6 +106,10 @@ bool intersects(const Aabb& p, const Aabb& q) {
   return (p.min.array() <= q.max.array()).all() && (q.min.array() <= p.max.array()).all();
 }
 
+bool encloses(const Aabb& outer, const Aabb& inner) {
+  return (outer.min.array() <= inner.min.array()).all() && (inner.max.array() <= outer.max.array()).all();
+}
+
 const char* shape_name(const Shape& s) {
   constexpr const char* names[] = {"circle", "ellipse", "rect"};
   return names[s.index()];

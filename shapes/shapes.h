@@ -90,6 +90,8 @@ double reach_of(const Shape& s);
 
 // Whether two closed boxes share a point.
 bool intersects(const Aabb& p, const Aabb& q);
+// Whether the closed box `outer` holds all of `inner`.
+bool encloses(const Aabb& outer, const Aabb& inner);
 
 // The tightest axis-aligned box around the shape, grown by a few ulps of its coordinates so that
 // rounding never puts a point of the shape outside it.
