@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -106,11 +105,7 @@ void BroadPhaseBase::remove(ProxyId id) {
 }
 
 void BroadPhaseBase::finish_update(std::vector<ProxyPair>&& now) {
-  began_.clear();
-  ended_.clear();
-  std::set_difference(now.begin(), now.end(), pairs_.begin(), pairs_.end(), std::back_inserter(began_));
-  std::set_difference(pairs_.begin(), pairs_.end(), now.begin(), now.end(), std::back_inserter(ended_));
-  pairs_ = std::move(now);
+  replace_pairs(pairs_, std::move(now), began_, ended_);
   free_.insert(free_.end(), removed_.begin(), removed_.end());
   removed_.clear();
   inserted_.clear();

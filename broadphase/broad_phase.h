@@ -33,17 +33,31 @@
 
 #include "shapes/shapes.h"
 
+#include <algorithm>
 #include <compare>
 #include <functional>
+#include <iterator>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
 
 using ProxyId = std::uint32_t;
+
+// A sorted pair list becomes `now` (sorted too); began and ended get what it gained and lost. The
+// broad phases keep their pairs so, and the World its overlapping and sensor pairs.
+template <class Pair>
+void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>&& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
+  began.clear();
+  ended.clear();
+  std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));
+  std::set_difference(pairs.begin(), pairs.end(), now.begin(), now.end(), std::back_inserter(ended));
+  pairs = std::move(now);
+}
 
 struct ProxyPair {
   ProxyId a = 0;  // a < b

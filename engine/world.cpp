@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -61,16 +60,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
-
-// `pairs` becomes `now` (both sorted); began and ended get what it gained and lost.
-template <class Pair>
-void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>&& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
-  began.clear();
-  ended.clear();
-  std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));
-  std::set_difference(pairs.begin(), pairs.end(), now.begin(), now.end(), std::back_inserter(ended));
-  pairs = std::move(now);
-}
 
 }  // namespace
 
