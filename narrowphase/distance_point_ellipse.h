@@ -7,9 +7,9 @@
 // (Geometric Tools, 2013): reflect into the first quadrant, reduce the Lagrange conditions to one
 // root of the secular function g(t) = (r0 z0 / (t + r0 - 1))^2 + (z1 / t)^2 - 1 (Eberly's s + 1 as
 // the unknown t, which keeps its relative precision where the root is tiny: inside, near the major
-// axis), convex and strictly decreasing on the bracket [z1, |(r0 z0, z1)|]. Where Eberly bisects to the
-// last bit (60 to ~1100 halvings), this takes Newton steps inside the bracket and bisects only when
-// a step would leave it: the same guaranteed bracket, quadratic convergence near the root. The axis
+// axis). Where Eberly bisects to the last bit (60 to ~1100 halvings), this takes Newton steps on
+// (g + 1)^(-1/2) = 1, a concave function of t, from a lower bound: they climb to the root without
+// ever passing it (the .cpp says why). The axis
 // cases (a zero coordinate) are closed forms.
 //
 // Accuracy: the closest point and the distance are correct to a few ulps of max(a, b, |p|) for any
