@@ -232,13 +232,12 @@ std::int32_t AabbTree::balance(std::int32_t node) {
 void AabbTree::rebuild() {
   inserted_ = 0;
   if (leaves_ < 2) return;
-  std::vector<std::int32_t> leaves;
-  leaves.reserve(leaves_);
+  leaf_list_.clear();
   for (std::int32_t i = 0; i < static_cast<std::int32_t>(nodes_.size()); ++i) {
     if (nodes_[i].height > 0) release(i);
-    if (nodes_[i].height == 0) leaves.push_back(i);
+    if (nodes_[i].height == 0) leaf_list_.push_back(i);
   }
-  root_ = build(leaves.data(), leaves.data() + leaves.size());
+  root_ = build(leaf_list_.data(), leaf_list_.data() + leaf_list_.size());
   nodes_[root_].parent = -1;
 }
 

@@ -91,6 +91,7 @@ class AabbTree {
 
   std::vector<Node> nodes_;
   std::vector<std::int32_t> free_;
+  std::vector<std::int32_t> leaf_list_;  // rebuild()'s scratch, kept so that a rebuild allocates nothing
   std::int32_t root_ = -1;
   std::size_t leaves_ = 0;
   std::size_t inserted_ = 0;

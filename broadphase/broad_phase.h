@@ -49,14 +49,16 @@ namespace collide2d {
 using ProxyId = std::uint32_t;
 
 // A sorted pair list becomes `now` (sorted too); began and ended get what it gained and lost. The
-// broad phases keep their pairs so, and the World its overlapping and sensor pairs.
+// broad phases keep their pairs so, and the World its overlapping and sensor pairs. The lists trade
+// places: `now` is left holding the old pairs, whose storage the caller's next frame fills again, so
+// that a steady frame allocates nothing.
 template <class Pair>
-void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>&& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
+void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
   began.clear();
   ended.clear();
   std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));
   std::set_difference(pairs.begin(), pairs.end(), now.begin(), now.end(), std::back_inserter(ended));
-  pairs = std::move(now);
+  pairs.swap(now);
 }
 
 struct ProxyPair {
@@ -94,8 +96,9 @@ class BroadPhaseBase {
   std::vector<ProxyId> inserted_;  // since the last update
   std::vector<ProxyId> removed_;   // since the last update; their ids are reused after it
 
-  // Installs the new pair set (sorted) and derives began/ended; recycles removed ids.
-  void finish_update(std::vector<ProxyPair>&& now);
+  // Installs the new pair set (sorted) and derives began/ended; recycles removed ids. `now` is left
+  // holding the old pairs (replace_pairs).
+  void finish_update(std::vector<ProxyPair>& now);
 
  private:
   double margin_;
@@ -161,6 +164,7 @@ class SweepAndPrune : public BroadPhaseBase {
   std::unordered_map<std::int64_t, Strip> strips_;
   std::vector<StripRange> range_;  // per proxy
   std::vector<StripWork> work_;    // per strip, kept from frame to frame
+  std::vector<ProxyPair> found_;   // the strips' pairs joined; its storage is kept from frame to frame
   UpdateStats stats_;
 
   bool lay_out();

@@ -379,28 +379,28 @@ void World::narrow_phase() {
   } else {
     pool_->run(chunks + 1, task);
   }
-  std::vector<BodyPair> now;
-  std::vector<SensorPair> sensed;
+  now_.clear();
+  sensed_.clear();
   proximity_.clear();
   contacts_.clear();
   impacts_.clear();
   for (std::size_t k = 0; k < chunks; ++k) {
     const Found& f = chunks_[k];
-    now.insert(now.end(), f.overlapping.begin(), f.overlapping.end());
-    sensed.insert(sensed.end(), f.sensing.begin(), f.sensing.end());
+    now_.insert(now_.end(), f.overlapping.begin(), f.overlapping.end());
+    sensed_.insert(sensed_.end(), f.sensing.begin(), f.sensing.end());
     proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
     contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
     stats_.filtered += f.filtered;
   }
   const auto by_pair = [](const auto& p, const auto& q) { return std::tie(p.a, p.b) < std::tie(q.a, q.b); };
-  std::sort(now.begin(), now.end());
-  std::sort(sensed.begin(), sensed.end());
+  std::sort(now_.begin(), now_.end());
+  std::sort(sensed_.begin(), sensed_.end());
   std::sort(proximity_.begin(), proximity_.end(), by_pair);
   std::sort(contacts_.begin(), contacts_.end(), by_pair);
   std::sort(impacts_.begin(), impacts_.end(), by_pair);
-  replace_pairs(overlapping_, std::move(now), began_, ended_);
-  replace_pairs(sensing_, std::move(sensed), sensor_began_, sensor_ended_);
+  replace_pairs(overlapping_, now_, began_, ended_);
+  replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
 }
 
 // One candidate pair: dropped by the filters, or a sensor's overlap, or the solid pair's overlap,

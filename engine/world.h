@@ -312,6 +312,8 @@ class World {
   std::vector<SensorPair> sensing_;
   std::vector<SensorPair> sensor_began_;
   std::vector<SensorPair> sensor_ended_;
+  std::vector<BodyPair> now_;        // the narrow phase's pairs joined: storage kept between frames
+  std::vector<SensorPair> sensed_;
   std::vector<std::uint32_t> continuous_;  // the continuous bodies' indices
   std::function<bool(BodyId, BodyId)> pair_predicate_;
   FrameStats stats_;
