@@ -11,11 +11,16 @@
 //   level_moving:  with the n level bodies added as moving bodies that never move (a World without
 //                  static bodies)
 //
-// Counters: the frame's broad and narrow phase milliseconds (FrameStats), candidate pairs, and
-// overlapping pairs.
+// Counters: the frame's broad and narrow phase milliseconds (FrameStats), candidate pairs,
+// overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
+// operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include "engine/world.h"
 
+#include "tests/allocation_counter.h"
+
 #include <benchmark/benchmark.h>
+
+#include <malloc.h>
 
 #include <cmath>
 #include <random>
@@ -34,6 +39,12 @@ Shape random_shape(std::mt19937_64& rng, const Vec2& c) {
   }
 }
 
+// Heap in use, counting the large blocks malloc maps directly (hblkhd) as well as the arena.
+std::size_t heap_in_use() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;
+}
+
 enum class Level { none, static_bodies, static_apart, moving_bodies };
 
 template <Level level>
@@ -42,6 +53,7 @@ void frame(benchmark::State& state) {
   const int statics = level == Level::none ? 0 : static_cast<int>(state.range(0));
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::size_t heap_before = heap_in_use();
   World world({.fat_margin = 0.1, .threads = static_cast<unsigned>(state.range(1))});
   const double level_side = std::sqrt(28.0 * statics), side = std::sqrt(28.0 * moving);
   const Vec2 corner = Vec2::Constant(0.5 * (level_side - side));  // the moving bodies' square, mid-level
@@ -62,8 +74,9 @@ void frame(benchmark::State& state) {
     velocity.emplace_back(0.2 * (u(rng) - 0.5), 0.2 * (u(rng) - 0.5));
   }
   world.update();
-  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
-  for (auto _ : state) {
+  const std::size_t bench_lists = ids.capacity() * sizeof(BodyId) + velocity.capacity() * sizeof(Vec2);
+  state.counters["heap_B_per_body"] = static_cast<double>(heap_in_use() - heap_before - bench_lists) / (moving + statics);
+  const auto step = [&] {
     for (int k = 0; k < moving; ++k) {
       const Vec2 at = center_of(world.shape(ids[k])) - corner;
       for (int a = 0; a < 2; ++a) {
@@ -72,6 +85,13 @@ void frame(benchmark::State& state) {
       world.move_by(ids[k], velocity[k], 0.05 * (u(rng) - 0.5));
     }
     world.update();
+  };
+  // Steady state: the lists have grown to what the scene needs.
+  for (int k = 0; k < 20; ++k) step();
+  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
+  const long allocations_before = testing::allocation_count.load();
+  for (auto _ : state) {
+    step();
     const FrameStats& f = world.last_frame();
     broad += f.broad_seconds;
     narrow += f.narrow_seconds;
@@ -79,6 +99,7 @@ void frame(benchmark::State& state) {
     overlapping += static_cast<double>(f.overlapping);
   }
   const double frames = static_cast<double>(state.iterations());
+  state.counters["allocs_per_frame"] = static_cast<double>(testing::allocation_count.load() - allocations_before) / frames;
   state.counters["broad_ms"] = 1e3 * broad / frames;
   state.counters["narrow_ms"] = 1e3 * narrow / frames;
   state.counters["candidates"] = candidates / frames;
