@@ -8,9 +8,7 @@
 #include <malloc.h>
 
 #include <cmath>
-#include <cstdint>
 #include <random>
-#include <unordered_set>
 #include <vector>
 
 namespace collide2d {
@@ -48,47 +46,7 @@ struct MovingBoxes {
   }
 };
 
-// Box2D's dynamic-tree broad phase, driven the way b2World drives it: MoveProxy for every moved
-// box (Box2D fattens by b2_aabbMargin = 0.1, as our margin here), UpdatePairs to collect the new
-// pairs, and, as b2ContactManager::Collide does, a TestOverlap on every known pair to drop those
-// whose fat boxes parted. The result is the same current pair set SweepAndPrune keeps.
-class Box2dBroadPhase {
- public:
-  explicit Box2dBroadPhase(double) {}
-  std::vector<ProxyId> insert_batch(const std::vector<Aabb>& boxes) {
-    std::vector<ProxyId> ids;
-    for (const Aabb& box : boxes) {
-      ids.push_back(static_cast<ProxyId>(proxy_.size()));
-      proxy_.push_back(tree_.CreateProxy(baseline::to_box2d(box), reinterpret_cast<void*>(static_cast<std::uintptr_t>(ids.back()))));
-      centre_.push_back(0.5 * (box.min + box.max));
-    }
-    return ids;
-  }
-  void move(ProxyId id, const Aabb& box) {
-    const Vec2 centre = 0.5 * (box.min + box.max);
-    const Vec2 shift = centre - centre_[id];
-    centre_[id] = centre;
-    tree_.MoveProxy(proxy_[id], baseline::to_box2d(box), b2Vec2(static_cast<float>(shift.x()), static_cast<float>(shift.y())));
-  }
-  void update() {
-    tree_.UpdatePairs(this);
-    std::erase_if(pairs_, [this](std::uint64_t key) {
-      return !tree_.TestOverlap(proxy_[key >> 32], proxy_[key & 0xffffffffu]);
-    });
-  }
-  void AddPair(void* a, void* b) {  // called by b2BroadPhase::UpdatePairs
-    const auto p = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(a));
-    const auto q = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(b));
-    pairs_.insert(p < q ? p << 32 | q : q << 32 | p);
-  }
-  std::size_t pair_count() const { return pairs_.size(); }
-
- private:
-  b2BroadPhase tree_;
-  std::vector<int32> proxy_;
-  std::vector<Vec2> centre_;
-  std::unordered_set<std::uint64_t> pairs_;
-};
+using baseline::Box2dBroadPhase;
 
 std::size_t pair_count(const BroadPhaseBase& b) { return b.pairs().size(); }
 std::size_t pair_count(const Box2dBroadPhase& b) { return b.pair_count(); }

@@ -16,14 +16,19 @@
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include "engine/world.h"
 
+#include "bench/box2d_baseline.h"
 #include "tests/allocation_counter.h"
 
 #include <benchmark/benchmark.h>
 
 #include <malloc.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace collide2d {
@@ -38,6 +43,42 @@ Shape random_shape(std::mt19937_64& rng, const Vec2& c) {
     default: return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle};
   }
 }
+
+// The moving bodies: n shapes in a square of side sqrt(28 n) (8% covered) from `corner`, and each
+// frame their poses, moved up to 0.1 and turned up to 0.025 rad either way, bouncing off the sides.
+struct Movers {
+  std::vector<Shape> shapes;
+  std::vector<Vec2> centre;
+  std::vector<double> angle;
+  std::vector<Vec2> velocity;
+  double side;
+  Vec2 corner;
+
+  Movers(int n, const Vec2& from, std::mt19937_64& rng) : side(std::sqrt(28.0 * n)), corner(from) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int k = 0; k < n; ++k) {
+      shapes.push_back(random_shape(rng, corner + Vec2(u(rng) * side, u(rng) * side)));
+      centre.push_back(center_of(shapes.back()));
+      angle.push_back(angle_of(shapes.back()));
+      velocity.emplace_back(0.2 * (u(rng) - 0.5), 0.2 * (u(rng) - 0.5));
+    }
+  }
+  void step(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(-0.025, 0.025);
+    for (std::size_t k = 0; k < centre.size(); ++k) {
+      const Vec2 at = centre[k] - corner;
+      for (int a = 0; a < 2; ++a) {
+        if ((at[a] < 0 && velocity[k][a] < 0) || (at[a] > side && velocity[k][a] > 0)) velocity[k][a] *= -1;
+      }
+      centre[k] += velocity[k];
+      angle[k] += u(rng);
+    }
+  }
+  std::size_t heap() const {
+    return shapes.capacity() * sizeof(Shape) + centre.capacity() * sizeof(Vec2) + angle.capacity() * sizeof(double) +
+           velocity.capacity() * sizeof(Vec2);
+  }
+};
 
 // Heap in use, counting the large blocks malloc maps directly (hblkhd) as well as the arena.
 std::size_t heap_in_use() {
@@ -55,7 +96,7 @@ void frame(benchmark::State& state) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t heap_before = heap_in_use();
   World world({.fat_margin = 0.1, .threads = static_cast<unsigned>(state.range(1))});
-  const double level_side = std::sqrt(28.0 * statics), side = std::sqrt(28.0 * moving);
+  const double level_side = std::sqrt(28.0 * statics), side = std::sqrt(28.0 * moving);  // Movers' side
   const Vec2 corner = Vec2::Constant(0.5 * (level_side - side));  // the moving bodies' square, mid-level
   BodyDef def;
   def.is_static = level != Level::moving_bodies;
@@ -67,23 +108,15 @@ void frame(benchmark::State& state) {
     world.add(random_shape(rng, at), def);
     ++added;
   }
+  Movers movers(moving, corner, rng);
   std::vector<BodyId> ids;
-  std::vector<Vec2> velocity;
-  for (int k = 0; k < moving; ++k) {
-    ids.push_back(world.add(random_shape(rng, corner + Vec2(u(rng) * side, u(rng) * side))));
-    velocity.emplace_back(0.2 * (u(rng) - 0.5), 0.2 * (u(rng) - 0.5));
-  }
+  for (const Shape& shape : movers.shapes) ids.push_back(world.add(shape));
   world.update();
-  const std::size_t bench_lists = ids.capacity() * sizeof(BodyId) + velocity.capacity() * sizeof(Vec2);
+  const std::size_t bench_lists = movers.heap() + ids.capacity() * sizeof(BodyId);
   state.counters["heap_B_per_body"] = static_cast<double>(heap_in_use() - heap_before - bench_lists) / (moving + statics);
   const auto step = [&] {
-    for (int k = 0; k < moving; ++k) {
-      const Vec2 at = center_of(world.shape(ids[k])) - corner;
-      for (int a = 0; a < 2; ++a) {
-        if ((at[a] < 0 && velocity[k][a] < 0) || (at[a] > side && velocity[k][a] > 0)) velocity[k][a] *= -1;
-      }
-      world.move_by(ids[k], velocity[k], 0.05 * (u(rng) - 0.5));
-    }
+    movers.step(rng);
+    for (int k = 0; k < moving; ++k) world.set_pose(ids[k], movers.centre[k], movers.angle[k]);
     world.update();
   };
   // Steady state: the lists have grown to what the scene needs.
@@ -106,6 +139,93 @@ void frame(benchmark::State& state) {
   state.counters["overlapping"] = overlapping / frames;
 }
 
+// Box2D 2.4.1's pipeline on the same moving bodies, the rival: each body a Box2D shape in its own
+// frame (an ellipse its inscribed 8-gon, a rectangle its 4-gon, a circle exact) with a b2Transform.
+// A frame poses every body (its transform, b2Shape::ComputeAABB, MoveProxy: b2Body's
+// SynchronizeFixtures, with one box per pose where Box2D unites the step's two), updates the broad
+// phase (baseline::Box2dBroadPhase), then runs b2TestOverlap on every current pair, as
+// b2Contact::Update runs on every contact each step. Its pair set is a hash set where b2World keeps
+// a contact list in a block allocator, so its allocations are not reported.
+class Box2dWorld {
+ public:
+  explicit Box2dWorld(const std::vector<Shape>& shapes) {
+    std::vector<Aabb> boxes;
+    for (const Shape& shape : shapes) {
+      const Shape local = std::visit(
+          [](auto s) -> Shape {
+            s.center = Vec2::Zero();
+            if constexpr (!std::is_same_v<decltype(s), Circle>) s.angle = 0.0;
+            return s;
+          },
+          shape);
+      shapes_.push_back(baseline::to_box2d_shape(baseline::to_box2d(local, 8, baseline::Fit::inscribed, Vec2::Zero())));
+      transforms_.emplace_back();
+      boxes.push_back(aabb(shape));
+    }
+    broad_.insert_batch(boxes);
+  }
+  void set_pose(std::size_t k, const Vec2& centre, double angle) {
+    transforms_[k].Set(b2Vec2(static_cast<float>(centre.x()), static_cast<float>(centre.y())), static_cast<float>(angle));
+    b2AABB box;
+    shapes_[k].shape()->ComputeAABB(&box, transforms_[k], 0);
+    broad_.move(static_cast<std::uint32_t>(k), box);
+  }
+  void update_broad_phase() { broad_.update(); }
+  std::size_t narrow_phase() const {
+    std::size_t overlapping = 0;
+    for (const std::uint64_t key : broad_.pairs()) {
+      const std::size_t a = key >> 32, b = key & 0xffffffffu;
+      overlapping += b2TestOverlap(shapes_[a].shape(), 0, shapes_[b].shape(), 0, transforms_[a], transforms_[b]) ? 1 : 0;
+    }
+    return overlapping;
+  }
+  std::size_t candidates() const { return broad_.pair_count(); }
+
+ private:
+  std::vector<baseline::Box2dShape> shapes_;
+  std::vector<b2Transform> transforms_;
+  baseline::Box2dBroadPhase broad_;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The "alone" and "crowd" scenes of frame<> through Box2dWorld: the same bodies, the same motion.
+void box2d_frame(benchmark::State& state) {
+  const int moving = static_cast<int>(state.range(0));
+  std::mt19937_64 rng(11);
+  const std::size_t heap_before = heap_in_use();
+  Movers movers(moving, Vec2::Zero(), rng);
+  Box2dWorld world(movers.shapes);
+  const auto pose = [&] {
+    movers.step(rng);
+    for (std::size_t k = 0; k < movers.centre.size(); ++k) world.set_pose(k, movers.centre[k], movers.angle[k]);
+    world.update_broad_phase();
+  };
+  pose();
+  state.counters["heap_B_per_body"] = static_cast<double>(heap_in_use() - heap_before - movers.heap()) / moving;
+  for (int k = 0; k < 20; ++k) {
+    pose();
+    world.narrow_phase();
+  }
+  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    pose();
+    broad += seconds_since(start);
+    const auto narrow_start = std::chrono::steady_clock::now();
+    overlapping += static_cast<double>(world.narrow_phase());
+    narrow += seconds_since(narrow_start);
+    candidates += static_cast<double>(world.candidates());
+  }
+  const double frames = static_cast<double>(state.iterations());
+  state.counters["broad_ms"] = 1e3 * broad / frames;
+  state.counters["narrow_ms"] = 1e3 * narrow / frames;
+  state.counters["candidates"] = candidates / frames;
+  state.counters["overlapping"] = overlapping / frames;
+}
+
 // Args: the level's size (for "alone", the number of moving bodies), then the World's threads.
 BENCHMARK(frame<Level::none>)->Name("frame/alone")->Args({1000, 0})->Unit(benchmark::kMicrosecond);
 BENCHMARK(frame<Level::static_bodies>)->Name("frame/level")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
@@ -113,6 +233,8 @@ BENCHMARK(frame<Level::static_apart>)->Name("frame/level_apart")->Args({10000, 0
 BENCHMARK(frame<Level::moving_bodies>)->Name("frame/level_moving")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
 // The narrow phase on 1 and 2 threads: 100,000 moving bodies (their square 8% covered).
 BENCHMARK(frame<Level::none>)->Name("frame/crowd")->Args({100000, 1})->Args({100000, 2})->Unit(benchmark::kMillisecond);
+BENCHMARK(box2d_frame)->Name("box2d_frame/alone")->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(box2d_frame)->Name("box2d_frame/crowd")->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace collide2d

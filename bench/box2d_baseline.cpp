@@ -66,22 +66,20 @@ double box2d_distance(const Polygon& a, const Polygon& b) {
   return output.distance;
 }
 
-ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b) {
-  ShapePair pair;
-  const Polygon* polygons[2] = {&a, &b};
-  for (int i = 0; i < 2; ++i) {
-    const Polygon& p = *polygons[i];
-    pair.round[i] = p.vertices.size() == 1;
-    if (pair.round[i]) {
-      pair.circle[i].m_p = p.vertices[0];
-      pair.circle[i].m_radius = p.radius;
-    } else {
-      pair.polygon[i].Set(p.vertices.data(), static_cast<int32>(p.vertices.size()));
-      pair.polygon[i].m_radius = 0.0f;
-    }
+Box2dShape to_box2d_shape(const Polygon& p) {
+  Box2dShape out;
+  out.round = p.vertices.size() == 1;
+  if (out.round) {
+    out.circle.m_p = p.vertices[0];
+    out.circle.m_radius = p.radius;
+  } else {
+    out.polygon.Set(p.vertices.data(), static_cast<int32>(p.vertices.size()));
+    out.polygon.m_radius = 0.0f;
   }
-  return pair;
+  return out;
 }
+
+ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b) { return {{to_box2d_shape(a), to_box2d_shape(b)}}; }
 
 bool box2d_overlap(const ShapePair& pair) {
   b2Transform identity;
@@ -92,14 +90,16 @@ bool box2d_overlap(const ShapePair& pair) {
 void box2d_manifold(const ShapePair& pair, b2Manifold* manifold) {
   b2Transform identity;
   identity.SetIdentity();
-  if (pair.round[0] && pair.round[1]) {
-    b2CollideCircles(manifold, &pair.circle[0], identity, &pair.circle[1], identity);
-  } else if (pair.round[1]) {
-    b2CollidePolygonAndCircle(manifold, &pair.polygon[0], identity, &pair.circle[1], identity);
-  } else if (pair.round[0]) {
-    b2CollidePolygonAndCircle(manifold, &pair.polygon[1], identity, &pair.circle[0], identity);
+  const Box2dShape& a = pair.side[0];
+  const Box2dShape& b = pair.side[1];
+  if (a.round && b.round) {
+    b2CollideCircles(manifold, &a.circle, identity, &b.circle, identity);
+  } else if (b.round) {
+    b2CollidePolygonAndCircle(manifold, &a.polygon, identity, &b.circle, identity);
+  } else if (a.round) {
+    b2CollidePolygonAndCircle(manifold, &b.polygon, identity, &a.circle, identity);
   } else {
-    b2CollidePolygons(manifold, &pair.polygon[0], identity, &pair.polygon[1], identity);
+    b2CollidePolygons(manifold, &a.polygon, identity, &b.polygon, identity);
   }
 }
 
@@ -107,7 +107,7 @@ std::optional<Box2dContact> box2d_contact(const ShapePair& pair) {
   b2Manifold manifold;
   box2d_manifold(pair, &manifold);
   if (manifold.pointCount == 0) return std::nullopt;
-  const bool swapped = pair.round[0] && !pair.round[1];
+  const bool swapped = pair.side[0].round && !pair.side[1].round;
   const int first = swapped ? 1 : 0;
   b2Transform identity;
   identity.SetIdentity();
@@ -159,6 +159,34 @@ void box2d_time_of_impact(const ToiPair& pair, b2TOIOutput* out) {
   input.sweepB = pair.sweep_b;
   input.tMax = 1.0f;
   b2TimeOfImpact(out, &input);
+}
+
+std::vector<std::uint32_t> Box2dBroadPhase::insert_batch(const std::vector<Aabb>& boxes) {
+  std::vector<std::uint32_t> ids;
+  for (const Aabb& box : boxes) {
+    ids.push_back(static_cast<std::uint32_t>(proxy_.size()));
+    const b2AABB b = to_box2d(box);
+    proxy_.push_back(tree_.CreateProxy(b, reinterpret_cast<void*>(static_cast<std::uintptr_t>(ids.back()))));
+    centre_.push_back(b.GetCenter());
+  }
+  return ids;
+}
+
+void Box2dBroadPhase::move(std::uint32_t id, const b2AABB& box) {
+  const b2Vec2 centre = box.GetCenter();
+  tree_.MoveProxy(proxy_[id], box, centre - centre_[id]);
+  centre_[id] = centre;
+}
+
+void Box2dBroadPhase::update() {
+  tree_.UpdatePairs(this);
+  std::erase_if(pairs_, [this](std::uint64_t key) { return !tree_.TestOverlap(proxy_[key >> 32], proxy_[key & 0xffffffffu]); });
+}
+
+void Box2dBroadPhase::AddPair(void* a, void* b) {
+  const auto p = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(a));
+  const auto q = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(b));
+  pairs_.insert(p < q ? p << 32 | q : q << 32 | p);
 }
 
 }  // namespace collide2d::baseline

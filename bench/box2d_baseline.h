@@ -20,7 +20,9 @@
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_time_of_impact.h>
 
+#include <cstdint>
 #include <optional>
+#include <unordered_set>
 #include <vector>
 
 namespace collide2d::baseline {
@@ -42,13 +44,20 @@ Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
 // b2Distance between the two polygons (their radii included), in double.
 double box2d_distance(const Polygon& a, const Polygon& b);
 
-// The same pair as b2PolygonShapes with radius 0 (at most b2_maxPolygonVertices = 8 vertices each;
-// circles as b2CircleShape), and b2TestOverlap on them.
+// One shape as a b2PolygonShape with radius 0 (at most b2_maxPolygonVertices = 8 vertices), or a
+// circle as a b2CircleShape.
+struct Box2dShape {
+  b2PolygonShape polygon;
+  b2CircleShape circle;
+  bool round = false;
+  const b2Shape* shape() const { return round ? static_cast<const b2Shape*>(&circle) : &polygon; }
+};
+Box2dShape to_box2d_shape(const Polygon& p);
+
+// The same pair as Box2dShapes, and b2TestOverlap on them.
 struct ShapePair {
-  b2PolygonShape polygon[2];
-  b2CircleShape circle[2];
-  bool round[2] = {false, false};
-  const b2Shape* shape(int i) const { return round[i] ? static_cast<const b2Shape*>(&circle[i]) : &polygon[i]; }
+  Box2dShape side[2];
+  const b2Shape* shape(int i) const { return side[i].shape(); }
 };
 ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b);
 bool box2d_overlap(const ShapePair& pair);
@@ -78,5 +87,29 @@ struct ToiPair {
 ToiPair to_box2d_toi(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, int sides, Fit fit);
 // b2TimeOfImpact on the pair (tMax 1; the proxies are set per call, a few stores); out->t is in [0, 1].
 void box2d_time_of_impact(const ToiPair& pair, b2TOIOutput* out);
+
+// Box2D's dynamic-tree broad phase, driven the way b2World drives it: MoveProxy for every moved
+// box (Box2D fattens by b2_aabbMargin = 0.1, and predicts along the displacement), UpdatePairs to
+// collect the new pairs, and, as b2ContactManager::Collide does, a TestOverlap on every known pair
+// to drop those whose fat boxes parted. The result is the current pair set the sweep and prune
+// keeps. Boxes are numbered 0, 1, ... in insertion order.
+class Box2dBroadPhase {
+ public:
+  explicit Box2dBroadPhase(double = 0.0) {}
+  std::vector<std::uint32_t> insert_batch(const std::vector<Aabb>& boxes);
+  void move(std::uint32_t id, const Aabb& box) { move(id, to_box2d(box)); }
+  void move(std::uint32_t id, const b2AABB& box);
+  void update();
+  void AddPair(void* a, void* b);  // called by b2BroadPhase::UpdatePairs
+  std::size_t pair_count() const { return pairs_.size(); }
+  // Each pair as first << 32 | second, first < second, in no order.
+  const std::unordered_set<std::uint64_t>& pairs() const { return pairs_; }
+
+ private:
+  b2BroadPhase tree_;
+  std::vector<int32> proxy_;
+  std::vector<b2Vec2> centre_;
+  std::unordered_set<std::uint64_t> pairs_;
+};
 
 }  // namespace collide2d::baseline
