@@ -1,5 +1,8 @@
 // Narrow-phase kernels on fixed, seeded workloads (pre-generated, cycled so that no input stays in a
-// register).
+// register). Each benchmark runs twice, named by its first argument: candidates:0 on random pairs
+// (centres in a 4 x 4 square, most of them far apart: the kernels' first early-out answers them),
+// candidates:1 on candidate pairs (the same generator, only the pairs whose boxes overlap: what a
+// broad phase hands over, and where a World spends its narrow phase; bench/workload.h).
 #include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
@@ -24,12 +27,17 @@ namespace {
 
 using bench::kPairs;
 using bench::Workload;
-using bench::workload;
+
+// The benchmark's workload, by its first argument: random pairs (0) or candidate pairs (1).
+template <class A, class B>
+const Workload<A, B>& pairs(const benchmark::State& state) {
+  return state.range(0) == 0 ? bench::workload<A, B>() : bench::candidate_workload<A, B>();
+}
 
 // Times one typed kernel; kernels live in the library, so the call is out of line either way.
 template <class A, class B, class Result>
 void kernel(benchmark::State& state, Result (*fn)(const A&, const B&)) {
-  const Workload<A, B>& w = workload<A, B>();
+  const Workload<A, B>& w = pairs<A, B>(state);
   bench::time_queries(state, [&](std::size_t k) { return fn(w.a[k], w.b[k]); });
 }
 
@@ -74,70 +82,82 @@ void boundary_ellipse_ellipse_nested(benchmark::State& state) {
 }
 BENCHMARK(boundary_ellipse_ellipse_nested);
 
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski);
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features);
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features);
-BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse);
-BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect);
-BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect);
-BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse);
-BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse);
-BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch);
-BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>);
+#define BOTH_WORKLOADS ArgName("candidates")->Arg(0)->Arg(1)
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->BOTH_WORKLOADS;
 
-// Box2D on the same pairs, converted beforehand (the conversion is not timed): b2TestOverlap on
-// radius-0 b2PolygonShapes (the rectangle, and the ellipse as its inscribed 8-gon), and b2Distance
-// on inscribed N-gons.
-Vec2 centre_of(const Rect& r) { return r.center; }
-Vec2 centre_of(const Ellipse& e) { return e.center; }
-
+// Box2D on the same pairs, converted beforehand (the conversion is not timed, and each pair's
+// transforms are the identity: its coordinates are taken from A's centre): b2TestOverlap on
+// radius-0 b2PolygonShapes (a rectangle its 4-gon, an ellipse its inscribed 8-gon, a circle a
+// b2CircleShape), and b2Distance on inscribed N-gons.
 template <class A, class B>
-std::vector<baseline::Polygon> polygons(int sides, bool first) {
-  const Workload<A, B>& w = workload<A, B>();
+std::vector<baseline::Polygon> polygons(const Workload<A, B>& w, int sides, bool first) {
   std::vector<baseline::Polygon> out;
   for (std::size_t k = 0; k < kPairs; ++k) {
-    const Vec2 origin = centre_of(w.a[k]);
+    const Vec2 origin = center_of(w.a[k]);
     out.push_back(first ? baseline::to_box2d(w.a[k], sides, baseline::Fit::inscribed, origin)
                         : baseline::to_box2d(w.b[k], sides, baseline::Fit::inscribed, origin));
   }
   return out;
 }
 
-void box2d_overlap_rect_ellipse_8gon(benchmark::State& state) {
-  const auto a = polygons<Rect, Ellipse>(8, true);
-  const auto b = polygons<Rect, Ellipse>(8, false);
-  std::vector<baseline::ShapePair> pairs;
-  for (std::size_t k = 0; k < kPairs; ++k) pairs.push_back(baseline::to_box2d_shapes(a[k], b[k]));
-  bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_overlap(pairs[k]); });
+template <class A, class B>
+void box2d_overlap(benchmark::State& state) {
+  const Workload<A, B>& w = pairs<A, B>(state);
+  const auto a = polygons(w, 8, true);
+  const auto b = polygons(w, 8, false);
+  std::vector<baseline::ShapePair> shapes;
+  for (std::size_t k = 0; k < kPairs; ++k) shapes.push_back(baseline::to_box2d_shapes(a[k], b[k]));
+  bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_overlap(shapes[k]); });
 }
 
 void box2d_distance_ellipse_ellipse(benchmark::State& state) {
-  const int sides = static_cast<int>(state.range(0));
-  const auto a = polygons<Ellipse, Ellipse>(sides, true);
-  const auto b = polygons<Ellipse, Ellipse>(sides, false);
+  const Workload<Ellipse, Ellipse>& w = pairs<Ellipse, Ellipse>(state);
+  const int sides = static_cast<int>(state.range(1));
+  const auto a = polygons(w, sides, true);
+  const auto b = polygons(w, sides, false);
   bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_distance(a[k], b[k]); });
 }
 
-// The Minkowski test with each shape's orientation kept, as Box2D keeps its polygons' transforms.
-void overlap_rect_ellipse_minkowski_oriented(benchmark::State& state) {
-  const Workload<Rect, Ellipse>& w = workload<Rect, Ellipse>();
-  std::vector<Orientation> ro, eo;
+// The World's overlap test: each shape's orientation kept (as Box2D keeps its polygons'
+// transforms), no validation.
+template <class A, class B>
+void posed_overlap(benchmark::State& state) {
+  const Workload<A, B>& w = pairs<A, B>(state);
+  std::vector<Shape> a(w.a.begin(), w.a.end()), b(w.b.begin(), w.b.end());
+  std::vector<Orientation> oa, ob;
   for (std::size_t k = 0; k < kPairs; ++k) {
-    ro.push_back(Orientation::of(w.a[k].angle));
-    eo.push_back(Orientation::of(w.b[k].angle));
+    oa.push_back(Orientation::of(angle_of(a[k])));
+    ob.push_back(Orientation::of(angle_of(b[k])));
   }
-  bench::time_queries(state, [&](std::size_t k) { return overlap_rect_ellipse(w.a[k], ro[k], w.b[k], eo[k]); });
+  bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
-BENCHMARK(overlap_rect_ellipse_minkowski_oriented);
-BENCHMARK(box2d_overlap_rect_ellipse_8gon);
-BENCHMARK(box2d_distance_ellipse_ellipse)->RangeMultiplier(2)->Range(8, 256);
+BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->BOTH_WORKLOADS;
+BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->BOTH_WORKLOADS;
+BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->BOTH_WORKLOADS;
+BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->BOTH_WORKLOADS;
+BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->BOTH_WORKLOADS;
+BENCHMARK(box2d_distance_ellipse_ellipse)
+    ->ArgNames({"candidates", "sides"})
+    ->ArgsProduct({{0, 1}, benchmark::CreateRange(8, 256, 2)});
 
 }  // namespace
 }  // namespace collide2d

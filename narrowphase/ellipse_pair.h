@@ -32,6 +32,9 @@ struct EllipsePair : SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real
   static EllipsePair of(const Ellipse& a, const Ellipse& b) {
     return {SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, b)};
   }
+  static EllipsePair of(const Ellipse& a, const Rotation<Real>& ra, const Ellipse& b, const Rotation<Real>& rb) {
+    return {SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, ra, b, rb)};
+  }
 };
 
 // Root of f on [lo, hi] for f(lo) > 0 >= f(hi) (f returns {value, derivative}; `cur` is f(lo)):

@@ -103,6 +103,13 @@ bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
   return detail::ellipse_contact(a, b, pair).overlap;
 }
 
+bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation) {
+  std::optional<detail::EllipsePair<double>> pair =
+      detail::EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  return detail::ellipse_contact(a, b, pair).overlap;
+}
+
 FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
   std::optional<detail::EllipsePair<double>> pair;
   FilterVerdict verdict = FilterVerdict::uncertain;

@@ -27,6 +27,11 @@
 namespace collide2d {
 
 bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+// The same answer, bit for bit, given each ellipse's Orientation::of(angle), for callers that keep
+// orientations between queries: the double pass evaluates no sine or cosine (the long-double
+// fallback still takes its own from the angles).
+bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation);
 
 // The double pass alone (for tests and benchmarks of the fallback rate).
 FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b);

@@ -50,7 +50,7 @@ bool posed_overlap(const Rect& a, const O& oa, const Circle& b, const O&) { retu
 bool posed_overlap(const Rect& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_rect_ellipse(a, oa, b, ob); }
 bool posed_overlap(const Circle& a, const O&, const Circle& b, const O&) { return overlap_circle_circle(a, b); }
 bool posed_overlap(const Circle& a, const O&, const Ellipse& b, const O& ob) { return overlap_circle_ellipse(a, b, ob); }
-bool posed_overlap(const Ellipse& a, const O&, const Ellipse& b, const O&) { return overlap_ellipse_ellipse(a, b); }
+bool posed_overlap(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_ellipse_ellipse(a, oa, b, ob); }
 
 DistanceResult distance_kernel(const Rect& a, const Rect& b, const DistanceOptions&) { return distance_rect_rect(a, b); }
 DistanceResult distance_kernel(const Rect& a, const Circle& b, const DistanceOptions&) {

@@ -57,8 +57,8 @@ class UnsupportedPair : public std::logic_error {
 bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options = {});
 // The same verdict, bit for bit, with the default options, for callers that validated both shapes
 // when they posed them and keep each one's Orientation::of(angle_of(shape)) (the World): no
-// validation, and no cosines and sines except in the ellipse pair's frame, which is built from the
-// angles.
+// validation, and no cosines and sines (but in the ellipse pair's long-double fallback, a pair
+// within about 1e-14 of touching, which takes them from the angles).
 bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation);
 // Whether the solid shape meets the closed axis-aligned box, which may have no width or height (a
 // segment or a point): the part of the box within the shape's own box, as a rectangle of angle 0,
