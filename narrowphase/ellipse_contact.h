@@ -19,8 +19,9 @@ struct EllipseContact {
 // With `double_verdict`, stops after the double pass and stores its verdict there (`uncertain` when
 // it could not decide; the returned contact is then only a guess). `pair` is EllipsePair::of(a, b),
 // built here unless the bounding circles already decide (it costs two sines and cosines), and kept
-// for callers that go on to a distance.
+// for callers that go on to a distance. With `verdict_only` the witness and direction are not
+// wanted, and a certain overlap found on the segment between the centres ends the test there.
 EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
-                               FilterVerdict* double_verdict = nullptr);
+                               FilterVerdict* double_verdict = nullptr, bool verdict_only = false);
 
 }  // namespace collide2d::detail
