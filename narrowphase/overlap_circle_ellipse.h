@@ -1,8 +1,10 @@
 // Circle–ellipse overlap and distance through the exact point–ellipse distance
 // (distance_point_ellipse.h), not a general ellipse–ellipse solver: the circle overlaps the ellipse
 // iff its centre is within r of the solid ellipse.
-// Overlap answers without the root finder when the centre is inside the ellipse, or farther than r
-// from the ellipse's bounding box in the ellipse frame. Overlap witness: the circle centre when it
+// Overlap answers without the root finder when the centre is inside the ellipse, farther than r
+// from the ellipse's bounding box in the ellipse frame, within r of the boundary point on the ray
+// from the ellipse's centre through the circle's, or beyond r of the tangent line there (each by
+// more than the rounding of the distance). Overlap witness: the circle centre when it
 // is inside the ellipse, else the nearest ellipse point. Accuracy: that of distance_point_ellipse.
 #pragma once
 
