@@ -35,11 +35,33 @@ FilterVerdict corner_piece(const RectEllipseFrame<double>& f, double s0, double 
   return FilterVerdict::uncertain;
 }
 
+// Whether the rectangle and the ellipse certainly share a point of the segment between their
+// centres: the rectangle holds it from its centre up to s_R = 1 / max_i(|x_i| / e_i), the ellipse
+// back from its centre up to s_E = 1 / |(u_0 / a, u_1 / b)| (u the rectangle's centre in the
+// ellipse's axes), and s_R + s_E > 1, written without division. Both shapes are first shrunk so
+// that the coordinates' rounding (err) cannot move a point of the smaller shapes out of the true
+// ones: the rectangle's half extents by 2 err, the ellipse about its centre by 2 err / min(a, b)
+// (which erodes it by at least 2 err; shrinking its semi-axes by 2 err would not), and the last
+// comparison keeps 16 u for its own rounding. It decides 2,061 of bench_narrowphase's 2,651
+// overlapping candidate pairs, which the corner pieces below would all four have to see.
+bool centre_segment_shared(const RectEllipseFrame<double>& f, double err) {
+  const double e0 = f.e[0] - 2 * err, e1 = f.e[1] - 2 * err;
+  const double shrink = 1.0 - 2 * err / std::min(f.a, f.b);
+  if (!(e0 > 0 && e1 > 0 && shrink > 0)) return false;
+  const double a = shrink * f.a, b = shrink * f.b;
+  const V2<double> u = f.to_ellipse_axes(V2<double>(0, 0));
+  const double rect = std::max(std::abs(f.x[0]) * e1, std::abs(f.x[1]) * e0);  // e0 e1 / s_R
+  const double ellipse = std::sqrt(b * u[0] * b * u[0] + a * u[1] * a * u[1]);  // a b / s_E
+  return rect * (a * b) + ellipse * (e0 * e1) > rect * ellipse * (1 + 16 * kUnitRoundoff);
+}
+
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
   const double err = 16.0 * kUnitRoundoff * f.scale();
-  // The ellipse's bounding circle first: most pairs of a scene are that far apart.
+  // The ellipse's bounding circle first: most pairs of a scene are that far apart; then the
+  // certain overlap most pairs a broad phase hands over show.
   const double radius = std::max(f.a, f.b) + err;
   if (std::abs(f.x[0]) - f.e[0] > radius || std::abs(f.x[1]) - f.e[1] > radius) return FilterVerdict::separated;
+  if (centre_segment_shared(f, err)) return FilterVerdict::overlap;
   const double l_squared[2] = {f.l0_squared(), f.l1_squared()};
   bool unsure = false;
   for (int i = 0; i < 2; ++i) {
