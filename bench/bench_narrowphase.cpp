@@ -155,6 +155,18 @@ BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->BOTH_WORK
 BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->BOTH_WORKLOADS;
 BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->BOTH_WORKLOADS;
 BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->BOTH_WORKLOADS;
+// The robust ellipse distance with the orientations kept, against b2Distance with its transforms
+// prepared (box2d_distance_ellipse_ellipse).
+void posed_distance_ellipse_ellipse(benchmark::State& state) {
+  const Workload<Ellipse, Ellipse>& w = pairs<Ellipse, Ellipse>(state);
+  std::vector<Orientation> oa, ob;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    oa.push_back(Orientation::of(w.a[k].angle));
+    ob.push_back(Orientation::of(w.b[k].angle));
+  }
+  bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
+}
+BENCHMARK(posed_distance_ellipse_ellipse)->BOTH_WORKLOADS;
 BENCHMARK(box2d_distance_ellipse_ellipse)
     ->ArgNames({"candidates", "sides"})
     ->ArgsProduct({{0, 1}, benchmark::CreateRange(8, 256, 2)});

@@ -286,10 +286,9 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
   return {r, iterations, true};
 }
 
-}  // namespace
-
-SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
-  std::optional<EllipsePair<double>> pair;
+// `pair` holds the pair's frame when the caller kept the orientations, else is built on demand.
+SolverReport distance_of(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
+                         EllipseDistanceMethod method) {
   const detail::EllipseContact contact = detail::ellipse_contact(a, b, pair);
   if (contact.overlap) return {DistanceResult::touching(contact.witness), contact.iterations, true};
   switch (method) {
@@ -299,6 +298,20 @@ SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, Ellips
   }
   if (!pair) pair.emplace(EllipsePair<double>::of(a, b));
   return separated(a, b, *pair, contact);
+}
+
+}  // namespace
+
+SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
+  std::optional<EllipsePair<double>> pair;
+  return distance_of(a, b, pair, method);
+}
+
+SolverReport distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                      const Orientation& b_orientation) {
+  std::optional<EllipsePair<double>> pair =
+      EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  return distance_of(a, b, pair, EllipseDistanceMethod::robust);
 }
 
 SolverReport boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {

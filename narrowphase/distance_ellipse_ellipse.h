@@ -56,6 +56,10 @@ struct SolverReport {
 
 SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b,
                                       EllipseDistanceMethod method = EllipseDistanceMethod::robust);
+// `robust`, given each ellipse's Orientation::of(angle), for callers that keep orientations between
+// queries: the same answer, bit for bit, with no sine or cosine in the double computation.
+SolverReport distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                      const Orientation& b_orientation);
 
 // The distance between the boundary curves. `overlapping` means the curves share a point; the
 // points lie on the curves.

@@ -541,7 +541,13 @@ FamilyStats run_family(const Family& f) {
     if (is_ellipse(c.a) && is_ellipse(c.b)) {
       const Ellipse& ea = std::get<Ellipse>(c.a);
       const Ellipse& eb = std::get<Ellipse>(c.b);
-      stats.robust_iterations.push_back(distance_ellipse_ellipse(ea, eb).iterations);
+      const SolverReport robust = distance_ellipse_ellipse(ea, eb);
+      stats.robust_iterations.push_back(robust.iterations);
+      // With the orientations kept: the same answer, bit for bit.
+      const SolverReport posed = distance_ellipse_ellipse(ea, Orientation::of(ea.angle), eb, Orientation::of(eb.angle));
+      EXPECT_EQ(posed.result.distance, robust.result.distance) << what << " posed distance";
+      EXPECT_EQ(posed.result.point_a, robust.result.point_a) << what << " posed point a";
+      EXPECT_EQ(posed.result.point_b, robust.result.point_b) << what << " posed point b";
       measure_seed_methods(ea, eb, ref, scale, stats);
     }
   }
