@@ -81,5 +81,36 @@ TEST(PointEllipse, DistanceInsideNearTheAxisMatchesReference) {
   std::printf("[point-ellipse] 2,000 points near the cusp and at random: worst error %.2e of the scale\n", worst);
 }
 
+// Points a subnormal height off the major axis, inside, where the secular root t ~ z1 lies below
+// 1e-308 and 1 / t overflows (the fuzzer's circle-ellipse contact came out infinite: a circle 0.25
+// from the centre of a near-circular ellipse 1.08e16 across, turned by 2e-314 rad), and heights
+// whose ratio to the axis underflows to 0: finite, and within 4 u of the scale of the 50-digit
+// curve distance of the point on the axis below (the distance moves by at most the height, and the
+// 50-digit reference's own Newton, started at -b^2 + b y1, loses a height below 1e-50 of the size).
+TEST(PointEllipse, SubnormalHeightsOffTheAxisMatchReference) {
+  int checked = 0;
+  for (const double a : {1.0, 1.0843961455776390e16}) {
+    for (const double aspect : {1.0 + 1e-11, 2.0, 1e3}) {
+      const double b = a / aspect;
+      for (const double along : {0.0, 0.25, 0.5 * (a * a - b * b) / a, 0.999 * a}) {
+        for (const double height : {1e-300, 1e-310, 5.2896e-315, 1e-322}) {
+          const Vec2 p(along, height);
+          const PointEllipseResult r = distance_point_ellipse(a, b, p);
+          ASSERT_TRUE(std::isfinite(r.distance) && r.closest.allFinite()) << a << " " << b << " " << p.transpose();
+          const Ellipse e{Vec2::Zero(), a, b, 0.0};
+          const double ref = static_cast<double>(reference::curve_distance(e, reference::to_mp(Vec2(along, 0.0))));
+          EXPECT_LE(std::abs(r.distance - ref), 4 * std::numeric_limits<double>::epsilon() * std::max(a, p.norm()) + height)
+              << "a " << a << " b " << b << " p " << p.transpose();
+          // The same point seen from the other axis (the ellipse turned a quarter).
+          const PointEllipseResult q = distance_point_ellipse(b, a, Vec2(height, along));
+          EXPECT_EQ(q.distance, r.distance) << "a " << a << " b " << b << " p " << p.transpose();
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 96);
+}
+
 }  // namespace
 }  // namespace collide2d::testing
