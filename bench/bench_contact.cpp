@@ -1,5 +1,6 @@
-// Contact kernels against Box2D 2.4.1's manifold functions on candidate pairs (boxes overlap, as a
-// broad phase hands them over; bench/workload.h): b2CollidePolygons on the rectangles' 4-gons and on
+// Contact kernels against Box2D 2.4.1's manifold functions on two workloads, named by the argument:
+// candidates:1, candidate pairs (boxes overlap, as a broad phase hands them over), and
+// candidates:0, the random pairs of bench_narrowphase (most far apart; bench/workload.h): b2CollidePolygons on the rectangles' 4-gons and on
 // the ellipses' inscribed 8-gons, b2CollidePolygonAndCircle, b2CollideCircles. Debian's Box2D caps
 // polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt
 // with a cap of 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with
@@ -42,15 +43,21 @@ Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const 
   return contact_ellipse_ellipse(a, oa, b, ob);
 }
 
+// The benchmark's workload, by its argument: random pairs (0) or candidate pairs (1).
+template <class A, class B>
+const bench::Workload<A, B>& pairs(const benchmark::State& state) {
+  return state.range(0) == 0 ? bench::workload<A, B>() : bench::candidate_workload<A, B>();
+}
+
 template <class A, class B>
 void ours(benchmark::State& state) {
-  const auto& w = bench::candidate_workload<A, B>();
+  const auto& w = pairs<A, B>(state);
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], w.b[k]); });
 }
 
 template <class A, class B>
 void ours_oriented(benchmark::State& state) {
-  const auto& w = bench::candidate_workload<A, B>();
+  const auto& w = pairs<A, B>(state);
   std::vector<Orientation> oa, ob;
   for (std::size_t k = 0; k < kPairs; ++k) {
     oa.push_back(Orientation::of(angle_of(w.a[k])));
@@ -61,7 +68,7 @@ void ours_oriented(benchmark::State& state) {
 
 template <class A, class B, int Sides = 8>
 void box2d(benchmark::State& state) {
-  const auto& w = bench::candidate_workload<A, B>();
+  const auto& w = pairs<A, B>(state);
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
     const Vec2 origin = w.a[k].center;
@@ -76,27 +83,28 @@ void box2d(benchmark::State& state) {
   });
 }
 
-BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect");
-BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented");
-BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons");
-BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle");
-BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented");
-BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle");
-BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle");
-BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle");
-BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse");
-BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented");
-BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon");
-BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse");
-BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented");
-BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon");
-BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse");
-BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented");
-BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons");
+#define BOTH_WORKLOADS ArgName("candidates")->Arg(0)->Arg(1)
+BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->BOTH_WORKLOADS;
+BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->BOTH_WORKLOADS;
+BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->BOTH_WORKLOADS;
+BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->BOTH_WORKLOADS;
+BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->BOTH_WORKLOADS;
+BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->BOTH_WORKLOADS;
+BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->BOTH_WORKLOADS;
+BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->BOTH_WORKLOADS;
+BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->BOTH_WORKLOADS;
 #if b2_maxPolygonVertices >= 16
-BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon");
-BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon");
-BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons");
+BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->BOTH_WORKLOADS;
 #endif
 
 }  // namespace
