@@ -43,21 +43,16 @@ Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const 
   return contact_ellipse_ellipse(a, oa, b, ob);
 }
 
-// The benchmark's workload, by its argument: random pairs (0) or candidate pairs (1).
-template <class A, class B>
-const bench::Workload<A, B>& pairs(const benchmark::State& state) {
-  return state.range(0) == 0 ? bench::workload<A, B>() : bench::candidate_workload<A, B>();
-}
 
 template <class A, class B>
 void ours(benchmark::State& state) {
-  const auto& w = pairs<A, B>(state);
+  const auto& w = bench::pairs<A, B>(state);
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], w.b[k]); });
 }
 
 template <class A, class B>
 void ours_oriented(benchmark::State& state) {
-  const auto& w = pairs<A, B>(state);
+  const auto& w = bench::pairs<A, B>(state);
   std::vector<Orientation> oa, ob;
   for (std::size_t k = 0; k < kPairs; ++k) {
     oa.push_back(Orientation::of(angle_of(w.a[k])));
@@ -68,7 +63,7 @@ void ours_oriented(benchmark::State& state) {
 
 template <class A, class B, int Sides = 8>
 void box2d(benchmark::State& state) {
-  const auto& w = pairs<A, B>(state);
+  const auto& w = bench::pairs<A, B>(state);
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
     const Vec2 origin = w.a[k].center;
@@ -83,28 +78,27 @@ void box2d(benchmark::State& state) {
   });
 }
 
-#define BOTH_WORKLOADS ArgName("candidates")->Arg(0)->Arg(1)
-BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->BOTH_WORKLOADS;
-BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->BOTH_WORKLOADS;
-BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->BOTH_WORKLOADS;
-BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->BOTH_WORKLOADS;
-BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->BOTH_WORKLOADS;
-BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->BOTH_WORKLOADS;
-BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->BOTH_WORKLOADS;
-BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->BOTH_WORKLOADS;
+BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::both_workloads);
+BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::both_workloads);
+BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::both_workloads);
+BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::both_workloads);
+BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::both_workloads);
+BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::both_workloads);
+BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->Apply(bench::both_workloads);
+BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
 #if b2_maxPolygonVertices >= 16
-BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->BOTH_WORKLOADS;
-BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->BOTH_WORKLOADS;
+BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::both_workloads);
 #endif
 
 }  // namespace

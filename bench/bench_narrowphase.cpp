@@ -28,16 +28,11 @@ namespace {
 using bench::kPairs;
 using bench::Workload;
 
-// The benchmark's workload, by its first argument: random pairs (0) or candidate pairs (1).
-template <class A, class B>
-const Workload<A, B>& pairs(const benchmark::State& state) {
-  return state.range(0) == 0 ? bench::workload<A, B>() : bench::candidate_workload<A, B>();
-}
 
 // Times one typed kernel; kernels live in the library, so the call is out of line either way.
 template <class A, class B, class Result>
 void kernel(benchmark::State& state, Result (*fn)(const A&, const B&)) {
-  const Workload<A, B>& w = pairs<A, B>(state);
+  const Workload<A, B>& w = bench::pairs<A, B>(state);
   bench::time_queries(state, [&](std::size_t k) { return fn(w.a[k], w.b[k]); });
 }
 
@@ -82,23 +77,22 @@ void boundary_ellipse_ellipse_nested(benchmark::State& state) {
 }
 BENCHMARK(boundary_ellipse_ellipse_nested);
 
-#define BOTH_WORKLOADS ArgName("candidates")->Arg(0)->Arg(1)
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->BOTH_WORKLOADS;
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->BOTH_WORKLOADS;
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->Apply(bench::both_workloads);
 
 // Box2D on the same pairs, converted beforehand (the conversion is not timed, and each pair's
 // transforms are the identity: its coordinates are taken from A's centre): b2TestOverlap on
@@ -117,7 +111,7 @@ std::vector<baseline::Polygon> polygons(const Workload<A, B>& w, int sides, bool
 
 template <class A, class B>
 void box2d_overlap(benchmark::State& state) {
-  const Workload<A, B>& w = pairs<A, B>(state);
+  const Workload<A, B>& w = bench::pairs<A, B>(state);
   const auto a = polygons(w, 8, true);
   const auto b = polygons(w, 8, false);
   std::vector<baseline::ShapePair> shapes;
@@ -126,7 +120,7 @@ void box2d_overlap(benchmark::State& state) {
 }
 
 void box2d_distance_ellipse_ellipse(benchmark::State& state) {
-  const Workload<Ellipse, Ellipse>& w = pairs<Ellipse, Ellipse>(state);
+  const Workload<Ellipse, Ellipse>& w = bench::pairs<Ellipse, Ellipse>(state);
   const int sides = static_cast<int>(state.range(1));
   const auto a = polygons(w, sides, true);
   const auto b = polygons(w, sides, false);
@@ -137,7 +131,7 @@ void box2d_distance_ellipse_ellipse(benchmark::State& state) {
 // transforms), no validation.
 template <class A, class B>
 void posed_overlap(benchmark::State& state) {
-  const Workload<A, B>& w = pairs<A, B>(state);
+  const Workload<A, B>& w = bench::pairs<A, B>(state);
   std::vector<Shape> a(w.a.begin(), w.a.end()), b(w.b.begin(), w.b.end());
   std::vector<Orientation> oa, ob;
   for (std::size_t k = 0; k < kPairs; ++k) {
@@ -147,18 +141,18 @@ void posed_overlap(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
-BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->BOTH_WORKLOADS;
-BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->BOTH_WORKLOADS;
-BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->BOTH_WORKLOADS;
-BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->BOTH_WORKLOADS;
-BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->BOTH_WORKLOADS;
-BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->BOTH_WORKLOADS;
+BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::both_workloads);
+BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
+BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::both_workloads);
+BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::both_workloads);
+BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::both_workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {
-  const Workload<Ellipse, Ellipse>& w = pairs<Ellipse, Ellipse>(state);
+  const Workload<Ellipse, Ellipse>& w = bench::pairs<Ellipse, Ellipse>(state);
   std::vector<Orientation> oa, ob;
   for (std::size_t k = 0; k < kPairs; ++k) {
     oa.push_back(Orientation::of(w.a[k].angle));
@@ -166,7 +160,7 @@ void posed_distance_ellipse_ellipse(benchmark::State& state) {
   }
   bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
 }
-BENCHMARK(posed_distance_ellipse_ellipse)->BOTH_WORKLOADS;
+BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::both_workloads);
 BENCHMARK(box2d_distance_ellipse_ellipse)
     ->ArgNames({"candidates", "sides"})
     ->ArgsProduct({{0, 1}, benchmark::CreateRange(8, 256, 2)});

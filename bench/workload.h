@@ -81,4 +81,13 @@ const Workload<A, B>& candidate_workload() {
   return w;
 }
 
+// The benchmark's workload, by its first argument: random pairs (0) or candidate pairs (1).
+template <class A, class B>
+const Workload<A, B>& pairs(const benchmark::State& state) {
+  return state.range(0) == 0 ? workload<A, B>() : candidate_workload<A, B>();
+}
+
+// Registers a benchmark on both workloads, named candidates:0 and candidates:1 (->Apply(...)).
+inline void both_workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1); }
+
 }  // namespace collide2d::bench
