@@ -142,9 +142,10 @@ struct WorldOptions {
   // With contacts: pairs apart by at most this get a contact too (speculative contacts, which let a
   // solver stop bodies before they meet); also the manifold margin of ContactOptions.
   double speculative_margin = 0.0;
-  // Threads for the narrow phase, the calling one included; 0: every hardware thread. The results
-  // are the same, in the same order, for any count (the candidate pairs are cut into chunks in
-  // order, each chunk's results kept apart, then joined and sorted). With more than one thread the
+  // Threads for update(), the calling one included; 0: every hardware thread. The sweep and prune's
+  // strips and the narrow phase's chunks of candidate pairs run on them. The results are the same,
+  // in the same order, for any count (the chunks are cut in order, each chunk's results kept apart,
+  // then joined and sorted). With more than one thread the
   // pair predicate may be called from several threads at once.
   unsigned threads = 0;
 };

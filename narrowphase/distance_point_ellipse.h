@@ -9,8 +9,8 @@
 // the unknown t, which keeps its relative precision where the root is tiny: inside, near the major
 // axis). Where Eberly bisects to the last bit (60 to ~1100 halvings), this takes Newton steps on
 // (g + 1)^(-1/2) = 1, a concave function of t, from a lower bound: they climb to the root without
-// ever passing it (the .cpp says why). The axis
-// cases (a zero coordinate) are closed forms.
+// ever passing it (the .cpp says why). The axis cases (a zero coordinate, or one within 1e-50 of
+// the semi-axis across) are closed forms.
 //
 // Accuracy: the closest point and the distance are correct to a few ulps of max(a, b, |p|) for any
 // aspect ratio (tested to 1e6) and for points on, near, inside and far from the curve; the
