@@ -381,11 +381,15 @@ TEST(ContactSearch, SharpPeakBesideAFarRectangle) {
 }
 
 // Centres 1e-160 apart: their difference squares to a denormal, and a normal from norm() came out
-// 1.00004 long (the fuzzer). The circle pairs, nearly concentric (a rectangle's corner, at least
+// 1.00004 long (the fuzzer); centres a denormal or two apart gave normals 0.94 to 1.41 long. The circle pairs, nearly concentric (a rectangle's corner, at least
 // 1e-50 from its centre, keeps differences beside it far above the denormals).
 TEST(ContactNormal, UnitWhenTheCentresNearlyCoincide) {
   const Vec2 tiny(0, 1.1436311670790528e-160);
   const Shape pairs[][2] = {{Circle{{7.9375, 0}, 8}, Circle{Vec2(7.9375, 0) + tiny, 6.125}},
+                            // a difference of one and two denormals: its rounded length, divided
+                            // into it, gave a normal 1.118 long (the fuzzer)
+                            {Circle{{0, 0}, 8}, Circle{{4.9406564584124654e-324, -9.8813129168249309e-324}, 6.125}},
+                            {Circle{{0, 0}, 8}, Circle{{9.8813129168249309e-324, 9.8813129168249309e-324}, 6.125}},
                             {Circle{{0, 0}, 1}, Ellipse{tiny, 2, 1, 0}},
                             // the climb's start direction (the fuzzer: 1e-9 off unit length)
                             {Ellipse{{2.5278101602652375e-158, -8}, 8, 8, 5.5322820227311624e-222},
