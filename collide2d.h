@@ -4,6 +4,7 @@
 
 #include "broadphase/broad_phase.h"
 #include "engine/world.h"
+#include "narrowphase/overlap_batch.h"
 #include "narrowphase/query.h"
 #include "narrowphase/ray_cast.h"
 #include "narrowphase/time_of_impact.h"

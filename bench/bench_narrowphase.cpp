@@ -6,6 +6,7 @@
 #include "narrowphase/distance_ellipse_ellipse.h"
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
+#include "narrowphase/overlap_batch.h"
 #include "narrowphase/overlap_circle_ellipse.h"
 #include "narrowphase/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap_rect_ellipse.h"
@@ -129,19 +130,39 @@ void box2d_distance_ellipse_ellipse(benchmark::State& state) {
 
 // The World's overlap test: each shape's orientation kept (as Box2D keeps its polygons'
 // transforms), no validation.
+template <class S>
+std::vector<Orientation> orientations(const std::vector<S>& shapes) {
+  std::vector<Orientation> out;
+  for (const S& s : shapes) out.push_back(Orientation::of(angle_of(s)));
+  return out;
+}
+
 template <class A, class B>
 void posed_overlap(benchmark::State& state) {
   const Workload<A, B>& w = bench::pairs<A, B>(state);
-  std::vector<Shape> a(w.a.begin(), w.a.end()), b(w.b.begin(), w.b.end());
-  std::vector<Orientation> oa, ob;
-  for (std::size_t k = 0; k < kPairs; ++k) {
-    oa.push_back(Orientation::of(angle_of(a[k])));
-    ob.push_back(Orientation::of(angle_of(b[k])));
-  }
+  const std::vector<Shape> a(w.a.begin(), w.a.end()), b(w.b.begin(), w.b.end());
+  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
+// The batched test (overlap_batch.h) on the whole workload per iteration; per_pair is its time
+// divided by the pairs, to set beside the one-off tests' times.
+void batch_overlap_rect_ellipse(benchmark::State& state) {
+  const Workload<Rect, Ellipse>& w = bench::pairs<Rect, Ellipse>(state);
+  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
+  std::vector<std::uint8_t> out(kPairs);
+  for (auto _ : state) {
+    overlap_rect_ellipse(w.a, oa, w.b, ob, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kPairs);
+  state.counters["per_pair"] = benchmark::Counter(static_cast<double>(kPairs),
+                                                  benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(batch_overlap_rect_ellipse)->Name("batch_overlap/rect_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
@@ -153,11 +174,7 @@ BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8g
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {
   const Workload<Ellipse, Ellipse>& w = bench::pairs<Ellipse, Ellipse>(state);
-  std::vector<Orientation> oa, ob;
-  for (std::size_t k = 0; k < kPairs; ++k) {
-    oa.push_back(Orientation::of(w.a[k].angle));
-    ob.push_back(Orientation::of(w.b[k].angle));
-  }
+  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
 }
 BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::both_workloads);

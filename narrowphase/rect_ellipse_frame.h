@@ -128,5 +128,7 @@ bool closest_features_overlap(const RectEllipseFrame<Real>& f) {
 // The default rect–ellipse overlap test (filter, then long-double fallback) on a frame the caller has
 // already built from r and e; the fallback rebuilds it in long double from the raw shapes.
 bool minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r, const Ellipse& e);
+// The fallback alone: the verdict for a pair the filter left uncertain.
+bool minkowski_fallback(const Rect& r, const Ellipse& e);
 
 }  // namespace collide2d::detail
