@@ -1,6 +1,7 @@
 #include "engine/world.h"
 
 #include "engine/thread_pool.h"
+#include "narrowphase/overlap_batch.h"
 #include "narrowphase/ray_cast.h"
 
 #include <algorithm>
@@ -334,6 +335,12 @@ void World::Found::clear() {
   contacts.clear();
   impacts.clear();
   filtered = 0;
+  verdicts.clear();
+  batched.clear();
+  rects.clear();
+  rect_orientations.clear();
+  ellipses.clear();
+  ellipse_orientations.clear();
 }
 
 void World::update() {
@@ -369,10 +376,7 @@ void World::narrow_phase() {
       return;
     }
     const std::size_t k = task - 1;
-    Found& out = chunks_[k];
-    out.clear();
-    const std::size_t end = std::min(candidates_.size(), (k + 1) * kPairsPerChunk);
-    for (std::size_t i = k * kPairsPerChunk; i < end; ++i) narrow(candidates_[i].first, candidates_[i].second, out);
+    narrow_chunk(k * kPairsPerChunk, std::min(candidates_.size(), (k + 1) * kPairsPerChunk), chunks_[k]);
   };
   if (chunks < 4) {  // a thousand pairs take tens of microseconds: less than waking the pool
     for (std::size_t k = 0; k <= chunks; ++k) task(k);
@@ -403,17 +407,53 @@ void World::narrow_phase() {
   replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
 }
 
-// One candidate pair: dropped by the filters, or a sensor's overlap, or the solid pair's overlap,
-// proximity, contact and time of impact, as far as they were asked for.
-void World::narrow(std::uint32_t a, std::uint32_t b, Found& out) const {
+// The candidate pairs [begin, end): first every overlap test, the chunk's rectangle–ellipse pairs
+// in one batch (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results
+// in order.
+void World::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
+  out.clear();
+  for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
+  out.batch_verdicts.resize(out.batched.size());
+  overlap_rect_ellipse(out.rects, out.rect_orientations, out.ellipses, out.ellipse_orientations, out.batch_verdicts);
+  for (std::size_t j = 0; j < out.batched.size(); ++j) {
+    out.verdicts[out.batched[j]] = out.batch_verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
+  }
+  for (std::size_t i = begin; i < end; ++i) {
+    const Verdict v = out.verdicts[i - begin];
+    if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
+  }
+}
+
+// A pair dropped by the filters or made of two sensors is skipped; a rectangle–ellipse pair whose
+// boxes meet joins the chunk's batch; any other pair is tested now.
+World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
   if (!passes(a, b)) {
     ++out.filtered;
-    return;
+    return Verdict::skipped;
   }
   const Body& x = bodies_[a];
   const Body& y = bodies_[b];
-  if (x.sensor && y.sensor) return;
-  const bool touching = intersects(x.box, y.box) && overlaps(x.shape, x.orientation, y.shape, y.orientation);
+  if (x.sensor && y.sensor) return Verdict::skipped;
+  if (!intersects(x.box, y.box)) return Verdict::apart;
+  const bool rect_first = std::holds_alternative<Rect>(x.shape) && std::holds_alternative<Ellipse>(y.shape);
+  if (rect_first || (std::holds_alternative<Ellipse>(x.shape) && std::holds_alternative<Rect>(y.shape))) {
+    const Body& r = rect_first ? x : y;
+    const Body& e = rect_first ? y : x;
+    out.batched.push_back(static_cast<std::uint32_t>(out.verdicts.size()));
+    out.rects.push_back(std::get<Rect>(r.shape));
+    out.rect_orientations.push_back(r.orientation);
+    out.ellipses.push_back(std::get<Ellipse>(e.shape));
+    out.ellipse_orientations.push_back(e.orientation);
+    return Verdict::batched;
+  }
+  return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
+}
+
+// One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
+// solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
+void World::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
+  const Body& x = bodies_[a];
+  const Body& y = bodies_[b];
   if (x.sensor || y.sensor) {
     if (touching) out.sensing.push_back(x.sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
     return;

@@ -330,7 +330,10 @@ class World {
   void unloose(std::uint32_t index);
   void refresh_moving_tree();
   void find_candidates();
-  // What the narrow phase found in one chunk of the candidate pairs.
+  // A candidate pair's overlap test, decided at once or left for the chunk's batch.
+  enum class Verdict : std::uint8_t { skipped, apart, touching, batched };
+  // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
+  // verdict, and its rectangle–ellipse pairs gathered for the batched test (overlap_batch.h).
   struct Found {
     std::vector<BodyPair> overlapping;
     std::vector<SensorPair> sensing;
@@ -338,12 +341,21 @@ class World {
     std::vector<BodyContact> contacts;
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
+    std::vector<Verdict> verdicts;
+    std::vector<std::uint32_t> batched;  // the batch's pairs, as places in the chunk
+    std::vector<Rect> rects;
+    std::vector<Orientation> rect_orientations;
+    std::vector<Ellipse> ellipses;
+    std::vector<Orientation> ellipse_orientations;
+    std::vector<std::uint8_t> batch_verdicts;
     void clear();
   };
   std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing
   std::unique_ptr<detail::ThreadPool> pool_;
   void narrow_phase();
-  void narrow(std::uint32_t a, std::uint32_t b, Found& out) const;
+  void narrow_chunk(std::size_t begin, std::size_t end, Found& out) const;
+  Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const;
+  void narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
   void impact(std::uint32_t a, std::uint32_t b, Found& out) const;
   bool passes(std::uint32_t a, std::uint32_t b) const;
   template <class Test>
