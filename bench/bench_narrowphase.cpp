@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace collide2d {
@@ -145,14 +146,19 @@ void posed_overlap(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
-// The batched test (overlap_batch.h) on the whole workload per iteration; per_pair is its time
+// The batched tests (overlap_batch.h) on the whole workload per iteration; per_pair is the time
 // divided by the pairs, to set beside the one-off tests' times.
-void batch_overlap_rect_ellipse(benchmark::State& state) {
-  const Workload<Rect, Ellipse>& w = bench::pairs<Rect, Ellipse>(state);
+template <class A, class B>
+void batch_overlap(benchmark::State& state) {
+  const Workload<A, B>& w = bench::pairs<A, B>(state);
   const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
   std::vector<std::uint8_t> out(kPairs);
   for (auto _ : state) {
-    overlap_rect_ellipse(w.a, oa, w.b, ob, out);
+    if constexpr (std::is_same_v<B, Ellipse>) {
+      overlap_rect_ellipse(w.a, oa, w.b, ob, out);
+    } else {
+      overlap_rect_rect(w.a, oa, w.b, ob, out);
+    }
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
@@ -162,11 +168,12 @@ void batch_overlap_rect_ellipse(benchmark::State& state) {
 }
 
 BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(batch_overlap_rect_ellipse)->Name("batch_overlap/rect_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(batch_overlap<Rect, Ellipse>)->Name("batch_overlap/rect_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::both_workloads);
+BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::both_workloads);

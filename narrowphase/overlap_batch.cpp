@@ -2,16 +2,18 @@
 // filters once per SIMD target and picks the best the CPU offers at the first call; a plain build
 // then runs on any x86-64 (and on ARM) without -march flags. Highway rather than xsimd: its runtime
 // dispatch is built in (xsimd 8 leaves it to the caller), and its operations are plain functions on
-// vector types, so the filter's template reads the same on one pair and on a vector of them
-// (scalar_lane.h).
+// vector types, so each kernel's template reads the same on one pair and on a vector of them
+// (lanes.h).
 //
 // Work goes in chunks of 256 pairs: the scalar code builds each pair's frame (the same rounding as
-// the one-off kernel), the vector filter decides the chunk, and the uncertain pairs go to the
+// the one-off kernel), the vector kernel decides the chunk, and the uncertain pairs go to the
 // exact fallback one by one.
 #include "narrowphase/overlap_batch.h"
 
+#include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/rect_ellipse_frame.h"
+#include "narrowphase/rect_pair_frame.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -19,6 +21,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "narrowphase/overlap_batch.cpp"
@@ -34,10 +37,11 @@ inline constexpr std::size_t kChunk = 256;
 inline constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
 static_assert(kChunk % kMaxLanes == 0);
 
-// A chunk of rectangle–ellipse pairs in the rectangle's frame, one array per field, and the
-// filter's verdict (a FilterVerdict) for each.
-struct RectEllipseChunk {
-  double x0[kChunk], x1[kChunk], e0[kChunk], e1[kChunk], c[kChunk], s[kChunk], a[kChunk], b[kChunk];
+// A chunk of pairs, one array per field of the kernel's lanes (lanes.h), and the verdict (a
+// FilterVerdict) of each pair.
+template <std::size_t kFields>
+struct Chunk {
+  double field[kFields][kChunk];
   std::uint8_t verdict[kChunk];
 };
 
@@ -48,22 +52,34 @@ HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
 #include "narrowphase/rect_ellipse_filter-inl.h"
+#include "narrowphase/rect_rect_overlap-inl.h"
 
-// The filter on the chunk's first `count` pairs (a multiple of every target's lane count).
-void rect_ellipse_filter(detail::RectEllipseChunk& chunk, std::size_t count) {
-  namespace hn = hwy::HWY_NAMESPACE;
-  using D = hn::ScalableTag<double>;
-  const D d;
-  const std::size_t lanes = hn::Lanes(d);
+namespace hn = hwy::HWY_NAMESPACE;
+using D = hn::ScalableTag<double>;
+using V = hn::Vec<D>;
+using M = hn::Mask<D>;
+
+template <class Lanes, std::size_t... I>
+Lanes load(const double (&field)[sizeof...(I)][detail::kChunk], std::size_t i, std::index_sequence<I...>) {
+  return Lanes{hn::LoadU(D(), field[I] + i)...};
+}
+
+detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return RectEllipseFilter<D>(D(), f).run(); }
+detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) {
+  const M hit = rect_rect_overlap(f);
+  return {hn::Not(hit), hit};
+}
+
+// The kernel on the chunk's first `count` pairs (a multiple of every target's lane count).
+template <template <class> class Lanes>
+void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t count) {
+  constexpr std::size_t kFields = Lanes<double>::kFields;
+  const std::size_t lanes = hn::Lanes(D());
   for (std::size_t i = 0; i < count; i += lanes) {
-    const RectEllipseLanes<hn::Vec<D>> f{hn::LoadU(d, chunk.x0 + i), hn::LoadU(d, chunk.x1 + i),
-                                         hn::LoadU(d, chunk.e0 + i), hn::LoadU(d, chunk.e1 + i),
-                                         hn::LoadU(d, chunk.c + i),  hn::LoadU(d, chunk.s + i),
-                                         hn::LoadU(d, chunk.a + i),  hn::LoadU(d, chunk.b + i)};
-    const auto v = RectEllipseFilter<D>(d, f).run();
+    const auto v = decide(load<Lanes<V>>(chunk.field, i, std::make_index_sequence<kFields>()));
     std::uint8_t separated[detail::kMaxLanes / 8 + 1] = {}, overlap[detail::kMaxLanes / 8 + 1] = {};
-    hn::StoreMaskBits(d, v.separated, separated);
-    hn::StoreMaskBits(d, v.overlap, overlap);
+    hn::StoreMaskBits(D(), v.separated, separated);
+    hn::StoreMaskBits(D(), v.overlap, overlap);
     for (std::size_t j = 0; j < lanes; ++j) {
       const auto bit = [j](const std::uint8_t* bits) { return (bits[j / 8] >> (j % 8) & 1) != 0; };
       const FilterVerdict verdict =
@@ -73,6 +89,9 @@ void rect_ellipse_filter(detail::RectEllipseChunk& chunk, std::size_t count) {
   }
 }
 
+void rect_ellipse_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectEllipseLanes>(chunk, count); }
+void rect_rect_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectRectLanes>(chunk, count); }
+
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -80,7 +99,8 @@ HWY_AFTER_NAMESPACE();
 namespace collide2d {
 namespace {
 
-HWY_EXPORT(rect_ellipse_filter);
+HWY_EXPORT(rect_ellipse_chunk);
+HWY_EXPORT(rect_rect_chunk);
 
 void check_lengths(const char* what, std::size_t first, std::size_t second, std::size_t third, std::size_t fourth,
                    std::size_t out) {
@@ -90,6 +110,27 @@ void check_lengths(const char* what, std::size_t first, std::size_t second, std:
                               " pairs in, " + std::to_string(out) + " verdicts out)");
 }
 
+// The batch in chunks: lanes_of(k) gives pair k's kernel inputs (scalar code, the one-off kernel's
+// rounding), decide_chunk the chunk's verdicts, and exact(k) the verdict of a pair left uncertain.
+template <std::size_t kFields, class LanesOf, class DecideChunk, class Exact>
+void run_batch(std::span<std::uint8_t> overlapping, LanesOf lanes_of, DecideChunk decide_chunk, Exact exact) {
+  detail::Chunk<kFields> chunk;
+  for (std::size_t start = 0; start < overlapping.size(); start += detail::kChunk) {
+    const std::size_t count = std::min(detail::kChunk, overlapping.size() - start);
+    const std::size_t padded = (count + detail::kMaxLanes - 1) / detail::kMaxLanes * detail::kMaxLanes;
+    for (std::size_t i = 0; i < padded; ++i) {
+      const auto fields = lanes_of(start + std::min(i, count - 1)).fields();  // the padding repeats the last pair
+      for (std::size_t f = 0; f < kFields; ++f) chunk.field[f][i] = fields[f];
+    }
+    decide_chunk(chunk, padded);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
+      const bool hit = verdict == FilterVerdict::uncertain ? exact(start + i) : verdict == FilterVerdict::overlap;
+      overlapping[start + i] = hit ? 1 : 0;
+    }
+  }
+}
+
 }  // namespace
 
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
@@ -97,33 +138,25 @@ void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientati
                           std::span<std::uint8_t> overlapping) {
   check_lengths("overlap_rect_ellipse", rects.size(), rect_orientations.size(), ellipses.size(),
                 ellipse_orientations.size(), overlapping.size());
-  detail::RectEllipseChunk chunk;
-  for (std::size_t start = 0; start < rects.size(); start += detail::kChunk) {
-    const std::size_t count = std::min(detail::kChunk, rects.size() - start);
-    const std::size_t padded = (count + detail::kMaxLanes - 1) / detail::kMaxLanes * detail::kMaxLanes;
-    for (std::size_t i = 0; i < padded; ++i) {
-      const std::size_t k = start + std::min(i, count - 1);  // the padding repeats the last pair
-      const Orientation& ro = rect_orientations[k];
-      const Orientation& eo = ellipse_orientations[k];
-      const detail::RectEllipseFrame<double> f =
-          detail::rect_ellipse_frame<double>(rects[k], {ro.c, ro.s}, ellipses[k], {eo.c, eo.s});
-      chunk.x0[i] = f.x[0];
-      chunk.x1[i] = f.x[1];
-      chunk.e0[i] = f.e[0];
-      chunk.e1[i] = f.e[1];
-      chunk.c[i] = f.c;
-      chunk.s[i] = f.s;
-      chunk.a[i] = f.a;
-      chunk.b[i] = f.b;
-    }
-    HWY_DYNAMIC_DISPATCH(rect_ellipse_filter)(chunk, padded);
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
-      const bool hit = verdict == FilterVerdict::uncertain ? detail::minkowski_fallback(rects[start + i], ellipses[start + i])
-                                                           : verdict == FilterVerdict::overlap;
-      overlapping[start + i] = hit ? 1 : 0;
-    }
-  }
+  const auto lanes_of = [&](std::size_t k) {
+    const Orientation& ro = rect_orientations[k];
+    const Orientation& eo = ellipse_orientations[k];
+    return detail::rect_ellipse_lanes(detail::rect_ellipse_frame<double>(rects[k], {ro.c, ro.s}, ellipses[k], {eo.c, eo.s}));
+  };
+  const auto exact = [&](std::size_t k) { return detail::minkowski_fallback(rects[k], ellipses[k]); };
+  run_batch<detail::RectEllipseLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk), exact);
+}
+
+void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
+                       std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  check_lengths("overlap_rect_rect", a.size(), a_orientations.size(), b.size(), b_orientations.size(),
+                overlapping.size());
+  const auto lanes_of = [&](std::size_t k) {
+    return detail::key(b[k]) < detail::key(a[k]) ? detail::rect_rect_lanes(b[k], b_orientations[k], a[k], a_orientations[k])
+                                                 : detail::rect_rect_lanes(a[k], a_orientations[k], b[k], b_orientations[k]);
+  };
+  const auto exact = [](std::size_t) -> bool { throw std::logic_error("the rectangle test is never uncertain"); };
+  run_batch<detail::RectRectLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_rect_chunk), exact);
 }
 
 }  // namespace collide2d

@@ -2,8 +2,9 @@
 // game's candidate list): pair i is (the i-th shape of the first list, the i-th of the second), and
 // overlapping[i] is set to 1 when the solids share a point, to 0 otherwise.
 //
-// Each verdict is bit for bit the one-off kernel's given the same kept orientations (the posed
-// overlap_rect_ellipse in overlap_rect_ellipse.h). The certain cases are decided 2 to 8 pairs at a
+// Each verdict is bit for bit overlaps(a, a_orientation, b, b_orientation)'s (query.h): the typed
+// kernel's, with two rectangles first put in the fixed order that makes the verdict the same
+// either way round (a rectangle 1e35 from a small one can otherwise round to the other verdict). The certain cases are decided 2 to 8 pairs at a
 // time with SIMD instructions (Google Highway, chosen at run time for the CPU: SSE4, AVX2, AVX-512,
 // NEON, ...); the few pairs whose margins lie within their rounding bounds are finished one by one
 // by the exact fallback.
@@ -24,5 +25,7 @@ namespace collide2d {
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping);
+void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
+                       std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping);
 
 }  // namespace collide2d

@@ -1,7 +1,7 @@
 #include "narrowphase/overlap_rect_ellipse.h"
 
 #include "narrowphase/rect_ellipse_frame.h"
-#include "narrowphase/scalar_lane.h"
+#include "narrowphase/lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +19,7 @@ using detail::V2;
 // The filter on a single pair (rect_ellipse_filter-inl.h, shared with the batch).
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
   using detail::Scalar;
-  const detail::RectEllipseLanes<double> lanes{f.x[0], f.x[1], f.e[0], f.e[1], f.c, f.s, f.a, f.b};
-  const detail::LaneVerdicts<bool> v = detail::RectEllipseFilter<Scalar>(Scalar{}, lanes).run();
+  const detail::LaneVerdicts<bool> v = detail::RectEllipseFilter<Scalar>(Scalar{}, detail::rect_ellipse_lanes(f)).run();
   return v.separated ? FilterVerdict::separated : v.overlap ? FilterVerdict::overlap : FilterVerdict::uncertain;
 }
 

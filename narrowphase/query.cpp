@@ -3,6 +3,7 @@
 #include "narrowphase/contact.h"
 #include "narrowphase/distance_rect_ellipse.h"
 #include "narrowphase/distance_rect_rect.h"
+#include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap_circle_circle.h"
 #include "narrowphase/overlap_circle_ellipse.h"
 #include "narrowphase/overlap_ellipse_ellipse.h"
@@ -25,13 +26,7 @@ constexpr int rank() {
   return 2;
 }
 
-// A total order on shapes of one kind. Same-kind pairs are put in this order before the kernel runs,
-// so that swapping A and B swaps the result exactly, bit for bit, whatever frame the kernel uses.
-std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
-std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }
-std::array<double, 5> key(const Rect& r) {
-  return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
-}
+using detail::key;  // same-kind pairs in a fixed order (kernel_order.h)
 
 bool overlap_kernel(const Rect& a, const Rect& b, const OverlapOptions&) { return overlap_rect_rect(a, b); }
 bool overlap_kernel(const Rect& a, const Circle& b, const OverlapOptions&) { return overlap_rect_circle(a, b); }

@@ -1,6 +1,6 @@
 // Private: the rectangle–ellipse Minkowski filter (overlap_rect_ellipse.h says what it decides and
 // why each bound holds), written once over lanes. The one-off kernel runs it on one pair
-// (scalar_lane.h: double values, bool masks); the batched kernel (overlap_batch.cpp) runs the same
+// (lanes.h: double values, bool masks); the batched kernel (overlap_batch.cpp) runs the same
 // template on Highway vectors of 2 to 8 pairs. Every lane evaluates the same IEEE operations in the
 // same order as the scalar instance, so the batch decides exactly what the one-off kernel decides;
 // where the scalar code returned early, the lanes record the verdict of the first stage that
@@ -16,31 +16,15 @@
 #define COLLIDE2D_RECT_ELLIPSE_FILTER_INL_H_
 #endif
 
-// The pair in the rectangle's frame (RectEllipseFrame's fields, one per lane).
-template <class V>
-struct RectEllipseLanes {
-  V x0, x1;  // ellipse centre
-  V e0, e1;  // rectangle half extents
-  V c, s;    // ellipse a-axis direction
-  V a, b;    // ellipse semi-axes
-};
-
-// Per lane: certainly separated, certainly overlapping, or neither (uncertain: the exact fallback).
-template <class M>
-struct LaneVerdicts {
-  M separated;
-  M overlap;
-};
-
 template <class D>
 class RectEllipseFilter {
  public:
   using V = decltype(Set(D(), 0.0));
   using M = decltype(V() < V());
 
-  RectEllipseFilter(D d, const RectEllipseLanes<V>& f) : d_(d), f_(f) {}
+  RectEllipseFilter(D d, const detail::RectEllipseLanes<V>& f) : d_(d), f_(f) {}
 
-  LaneVerdicts<M> run() {
+  detail::LaneVerdicts<M> run() {
     const V two = k(2.0);
     err_ = k(16.0 * kU) * (Abs(f_.x0) + Abs(f_.x1) + f_.e0 + f_.e1 + f_.a + f_.b);
     // The ellipse's bounding circle first: most pairs of a scene are that far apart; then the
@@ -143,9 +127,9 @@ class RectEllipseFilter {
   }
 
   D d_;
-  RectEllipseLanes<V> f_;
+  detail::RectEllipseLanes<V> f_;
   V err_;
-  LaneVerdicts<M> out_{k(0.0) < k(0.0), k(0.0) < k(0.0)};
+  detail::LaneVerdicts<M> out_{k(0.0) < k(0.0), k(0.0) < k(0.0)};
   M unsure_ = k(0.0) < k(0.0);
 };
 

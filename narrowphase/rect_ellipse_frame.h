@@ -8,6 +8,7 @@
 // and p^T M p cancels to ~1/a^2, losing twelve digits; the projected form is a sum of squares.
 #pragma once
 
+#include "narrowphase/lanes.h"
 #include "shapes/rotation.h"
 #include "shapes/shapes.h"
 
@@ -123,6 +124,11 @@ MetricClosest<Real> closest_in_ellipse_metric(const RectEllipseFrame<Real>& f) {
 template <class Real>
 bool closest_features_overlap(const RectEllipseFrame<Real>& f) {
   return closest_in_ellipse_metric(f).q <= Real(1);
+}
+
+// The Minkowski filter's inputs (rect_ellipse_filter-inl.h).
+inline RectEllipseLanes<double> rect_ellipse_lanes(const RectEllipseFrame<double>& f) {
+  return {f.x[0], f.x[1], f.e[0], f.e[1], f.c, f.s, f.a, f.b};
 }
 
 // The default rect–ellipse overlap test (filter, then long-double fallback) on a frame the caller has

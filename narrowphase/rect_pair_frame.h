@@ -1,6 +1,7 @@
 // Private: rectangle B seen from rectangle A's frame.
 #pragma once
 
+#include "narrowphase/lanes.h"
 #include "shapes/rotation.h"
 #include "shapes/shapes.h"
 
@@ -17,5 +18,12 @@ struct RectPairFrame {
   RectPairFrame(const Rect& a, const Rotation<double>& ra, const Rect& b, const Rotation<double>& rb)
       : a_rot(ra), b_rel(rb.relative_to(ra)), b_center(ra.apply_inverse(Vec2(b.center - a.center))) {}
 };
+
+// The overlap test's inputs (rect_rect_overlap-inl.h) for one pair.
+inline RectRectLanes<double> rect_rect_lanes(const Rect& a, const Orientation& ao, const Rect& b, const Orientation& bo) {
+  const RectPairFrame f(a, {ao.c, ao.s}, b, {bo.c, bo.s});
+  return {f.b_center.x(), f.b_center.y(), f.b_rel.c,          f.b_rel.s,
+          a.half_extents.x(), a.half_extents.y(), b.half_extents.x(), b.half_extents.y()};
+}
 
 }  // namespace collide2d::detail

@@ -1,11 +1,14 @@
-// The batched overlap tests (overlap_batch.h) against the one-off kernels, verdict for verdict, on
+// The batched overlap tests (overlap_batch.h) against the one-off tests, verdict for verdict, on
 // every SIMD target Highway compiled that this CPU runs: the hard-case families (rounding-level
-// gaps included, where the batch must hand pairs to the fallback), two million random candidate
-// pairs in batches of ragged lengths, and lists of different lengths refused.
+// gaps included, where the rectangle–ellipse batch must hand pairs to the fallback), two million
+// random rectangle–ellipse and a million rectangle–rectangle candidate pairs in batches of ragged
+// lengths, and lists of different lengths refused.
 #include "hard_cases.h"
 
 #include "narrowphase/overlap_batch.h"
 #include "narrowphase/overlap_rect_ellipse.h"
+#include "narrowphase/overlap_rect_rect.h"
+#include "narrowphase/query.h"
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
@@ -20,37 +23,65 @@
 namespace collide2d::testing {
 namespace {
 
-struct RectEllipsePairs {
-  std::vector<Rect> rects;
-  std::vector<Orientation> rect_orientations;
-  std::vector<Ellipse> ellipses;
-  std::vector<Orientation> ellipse_orientations;
+template <class A, class B>
+struct Pairs {
+  std::vector<A> a;
+  std::vector<Orientation> a_orientations;
+  std::vector<B> b;
+  std::vector<Orientation> b_orientations;
 
-  void add(const Rect& r, const Ellipse& e) {
-    rects.push_back(r);
-    rect_orientations.push_back(Orientation::of(r.angle));
-    ellipses.push_back(e);
-    ellipse_orientations.push_back(Orientation::of(e.angle));
+  void add(const A& x, const B& y) {
+    a.push_back(x);
+    a_orientations.push_back(Orientation::of(x.angle));
+    b.push_back(y);
+    b_orientations.push_back(Orientation::of(y.angle));
   }
-  std::size_t size() const { return rects.size(); }
+  std::size_t size() const { return a.size(); }
 };
+
+// The batched test, and the one-off test with orientations kept (query.h), for each pair kind.
+void batch(const Pairs<Rect, Ellipse>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
+  overlap_rect_ellipse(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
+                       std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
+}
+void batch(const Pairs<Rect, Rect>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
+  overlap_rect_rect(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
+                    std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
+}
+template <class A, class B>
+bool one_off(const Pairs<A, B>& p, std::size_t k) {
+  return overlaps(p.a[k], p.a_orientations[k], p.b[k], p.b_orientations[k]);
+}
 
 // Runs the batch on [start, start + count) and compares each verdict with the one-off kernel's;
 // returns the number of mismatches (each also reported).
-int mismatches(const RectEllipsePairs& p, std::size_t start, std::size_t count, const char* target) {
+template <class A, class B>
+int mismatches(const Pairs<A, B>& p, std::size_t start, std::size_t count, const char* target) {
   std::vector<std::uint8_t> out(count, 7);
-  overlap_rect_ellipse(std::span(p.rects).subspan(start, count), std::span(p.rect_orientations).subspan(start, count),
-                       std::span(p.ellipses).subspan(start, count),
-                       std::span(p.ellipse_orientations).subspan(start, count), out);
+  batch(p, start, count, out);
   int wrong = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t k = start + i;
-    const bool one = overlap_rect_ellipse(p.rects[k], p.rect_orientations[k], p.ellipses[k], p.ellipse_orientations[k]);
+    const bool one = one_off(p, k);
     if (out[i] == (one ? 1 : 0)) continue;
     if (++wrong <= 5) {
       ADD_FAILURE() << target << ": pair " << k << " batch " << int(out[i]) << ", one-off " << one << ": "
-                    << describe(p.rects[k]) << " ; " << describe(p.ellipses[k]);
+                    << describe(p.a[k]) << " ; " << describe(p.b[k]);
     }
+  }
+  return wrong;
+}
+
+// The same in batches of 1 to 600 pairs, so that chunks end everywhere in a vector and the padding
+// is exercised.
+template <class A, class B>
+int mismatches_in_ragged_batches(const Pairs<A, B>& p, const char* target) {
+  std::mt19937_64 lengths(5);
+  int wrong = 0;
+  for (std::size_t start = 0; start < p.size();) {
+    const std::size_t count = std::min<std::size_t>(1 + lengths() % 600, p.size() - start);
+    wrong += mismatches(p, start, count, target);
+    start += count;
   }
   return wrong;
 }
@@ -78,7 +109,7 @@ TEST(OverlapBatch, HardCaseFamiliesMatchTheOneOffKernel) {
     rounding.deltas = {0.0, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16, -1e-16};
     families.push_back(rounding);
   }
-  RectEllipsePairs p;
+  Pairs<Rect, Ellipse> p;
   for (const Family& f : families) {
     for (const Case& c : family_cases(f)) {
       const bool rect_first = std::holds_alternative<Rect>(c.a);
@@ -87,63 +118,94 @@ TEST(OverlapBatch, HardCaseFamiliesMatchTheOneOffKernel) {
   }
   int uncertain = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    uncertain += overlap_rect_ellipse_filter(p.rects[k], p.ellipses[k]) == FilterVerdict::uncertain;
+    uncertain += overlap_rect_ellipse_filter(p.a[k], p.b[k]) == FilterVerdict::uncertain;
   }
   std::printf("%zu hard-case pairs, %d of them uncertain for the filter\n", p.size(), uncertain);
   EXPECT_GT(uncertain, 500) << "the families must send pairs to the fallback";
   on_every_target([&](const char* target) { EXPECT_EQ(mismatches(p, 0, p.size(), target), 0) << target; });
 }
 
+// Rectangle pairs of the hard-case families (touching at gaps down to 1e-12 of the size, inside,
+// identical, mirrored), each also with B turned by a few ulps.
+TEST(OverlapBatch, HardCaseRectanglePairsMatchTheOneOffKernel) {
+  Pairs<Rect, Rect> p;
+  for (const Family& f : standard_families(Kind::rect, Kind::rect)) {
+    for (const Case& c : family_cases(f)) {
+      Rect b = std::get<Rect>(c.b);
+      p.add(std::get<Rect>(c.a), b);
+      b.angle = std::nextafter(std::nextafter(b.angle, 10.0), 10.0);
+      p.add(std::get<Rect>(c.a), b);
+    }
+  }
+  // The fuzzer's pair: a rectangle 2.4e35 wide whose corner rounds onto a small one's; the verdict
+  // depends on whose frame the test runs in, so the batch must take the dispatcher's order, either
+  // way round.
+  const Rect huge{{2.4173705217460969e+35, 2.4173705217460969e+35}, {2.4173705217460969e+35, 2.4173705217460969e+35}, 0};
+  const Rect small{{-8, -8}, {8, 8}, -8};
+  ASSERT_NE(overlap_rect_rect(huge, small), overlap_rect_rect(small, huge)) << "the pair no longer tells the orders apart";
+  p.add(huge, small);
+  p.add(small, huge);
+  std::printf("%zu hard-case rectangle pairs\n", p.size());
+  on_every_target([&](const char* target) { EXPECT_EQ(mismatches(p, 0, p.size(), target), 0) << target; });
+}
+
 // Candidate pairs as a broad phase hands them over, half of them placed at a small gap (either
-// sign) along a random direction, needles to aspect 1e6; batches of 1 to 600 pairs, so that chunks
-// end everywhere in a vector and the padding is exercised.
+// sign) along a random direction, needles to aspect 1e6, in batches of ragged lengths.
 TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  RectEllipsePairs p;
-  while (p.size() < 2'000'000) {
+  Pairs<Rect, Ellipse> with_ellipses;
+  Pairs<Rect, Rect> rects;
+  while (with_ellipses.size() < 2'000'000) {
     const double aspect = std::pow(10.0, 6 * u(rng));
     const Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.05 + u(rng), 0.05 + u(rng)), 7 * u(rng)};
     Ellipse e{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng), 0, 7 * u(rng)};
     e.b = e.a / aspect;
-    if (p.size() % 2 == 1) {
+    Rect s{e.center, Vec2(e.a, e.b), e.angle};
+    if (with_ellipses.size() % 2 == 1) {
       const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
       const double gap = (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng));
       e.center = support(r, n) + gap * n - support(e, Vec2(-n));
+      s.center = support(r, n) + gap * n - support(s, Vec2(-n));
     }
-    if (intersects(aabb(r), aabb(e))) p.add(r, e);
+    if (intersects(aabb(r), aabb(e))) with_ellipses.add(r, e);
+    if (rects.size() < 1'000'000 && intersects(aabb(r), aabb(s))) rects.add(r, s);
   }
   on_every_target([&](const char* target) {
-    std::mt19937_64 lengths(5);
-    int wrong = 0;
-    for (std::size_t start = 0; start < p.size();) {
-      const std::size_t count = std::min<std::size_t>(1 + lengths() % 600, p.size() - start);
-      wrong += mismatches(p, start, count, target);
-      start += count;
-    }
-    EXPECT_EQ(wrong, 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(with_ellipses, target), 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(rects, target), 0) << target;
   });
 }
 
 TEST(OverlapBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {
-  RectEllipsePairs p;
+  Pairs<Rect, Ellipse> p;
   p.add(Rect{{0, 0}, {1, 1}, 0}, Ellipse{{1.5, 0}, 1, 0.5, 0});
   p.add(Rect{{0, 0}, {1, 1}, 0}, Ellipse{{5, 0}, 1, 0.5, 0});
   std::vector<std::uint8_t> out(3, 7);
   try {
-    overlap_rect_ellipse(p.rects, p.rect_orientations, p.ellipses, p.ellipse_orientations, out);
+    overlap_rect_ellipse(p.a, p.a_orientations, p.b, p.b_orientations, out);
     ADD_FAILURE() << "three verdicts for two pairs were accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "overlap_rect_ellipse: the lists differ in length (2, 2, 2, 2 pairs in, 3 verdicts out)");
   }
   EXPECT_EQ(out, std::vector<std::uint8_t>(3, 7));
-  EXPECT_THROW(overlap_rect_ellipse(p.rects, std::span(p.rect_orientations).first(1), p.ellipses,
-                                    p.ellipse_orientations, std::span(out).first(2)),
-               std::invalid_argument);
+  const std::vector<Rect> rects{Rect{{0, 0}, {1, 1}, 0}, Rect{{2.5, 0}, {1, 1}, 0}};
+  try {
+    overlap_rect_rect(rects, std::span(p.a_orientations).first(1), rects, p.b_orientations, std::span(out).first(2));
+    ADD_FAILURE() << "one orientation for two rectangles was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "overlap_rect_rect: the lists differ in length (2, 1, 2, 2 pairs in, 2 verdicts out)");
+  }
+  EXPECT_EQ(out, std::vector<std::uint8_t>(3, 7));
   out.resize(2);
-  overlap_rect_ellipse(p.rects, p.rect_orientations, p.ellipses, p.ellipse_orientations, out);
+  overlap_rect_ellipse(p.a, p.a_orientations, p.b, p.b_orientations, out);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{1, 0}));
+  // Rectangles 2.5 apart with half widths 1: the first pair is one rectangle twice, the second apart.
+  const std::vector<Rect> firsts{rects[0], rects[0]};
+  overlap_rect_rect(firsts, p.a_orientations, rects, p.b_orientations, out);
   EXPECT_EQ(out, (std::vector<std::uint8_t>{1, 0}));
   overlap_rect_ellipse({}, {}, {}, {}, {});  // nothing to do, and nothing touched
+  overlap_rect_rect({}, {}, {}, {}, {});
 }
 
 }  // namespace

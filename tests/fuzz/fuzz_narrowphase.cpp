@@ -1,12 +1,12 @@
 // Narrow-phase fuzzer, built once per kernel family (tests/fuzz/CMakeLists.txt): COLLIDE2D_FUZZ_FIRST
 // and COLLIDE2D_FUZZ_SECOND name the kinds of the two shapes, `any` letting the bytes choose.
 // Invalid shapes must be refused with InvalidShape; for valid ones the answers must be finite, the
-// overlap verdict must match the distance (0 exactly when overlapping) and, for a rectangle and an
-// ellipse, the batched test's verdict; swapping A and B must swap the result exactly, and moving
-// both shapes by one rigid motion must keep the distance (to 1e-9 of the scale). The contact must
-// be finite with a unit normal, its separation the distance when apart and at most 0 when
-// overlapping (to 1e-9 of the scale), the same both ways with the normal reversed, and its search
-// certified within its cap of support evaluations.
+// overlap verdict must match the distance (0 exactly when overlapping) and, for a rectangle with an
+// ellipse or a rectangle, the batched test's verdict; swapping A and B must swap the result
+// exactly, and moving both shapes by one rigid motion must keep the distance (to 1e-9 of the
+// scale). The contact must be finite with a unit normal, its separation the distance when apart
+// and at most 0 when overlapping (to 1e-9 of the scale), the same both ways with the normal
+// reversed, and its search certified within its cap of support evaluations.
 #include "fuzz_input.h"
 #include "narrowphase/overlap_batch.h"
 #include "narrowphase/query.h"
@@ -59,11 +59,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(d.point_a.allFinite() && d.point_b.allFinite(), "closest points finite");
   check(d.overlapping == hit && (d.distance == 0) == hit, "distance 0 exactly when overlapping");
   check(hit == overlaps(b, a), "overlap symmetric");
-  if (std::holds_alternative<Rect>(a) && std::holds_alternative<Ellipse>(b)) {
-    const Orientation ro = Orientation::of(angle_of(a)), eo = Orientation::of(angle_of(b));
+  if (std::holds_alternative<Rect>(a) && !std::holds_alternative<Circle>(b)) {
+    const Orientation oa = Orientation::of(angle_of(a)), ob = Orientation::of(angle_of(b));
     std::uint8_t batch = 2;
-    overlap_rect_ellipse(std::span(&std::get<Rect>(a), 1), std::span(&ro, 1), std::span(&std::get<Ellipse>(b), 1),
-                         std::span(&eo, 1), std::span(&batch, 1));
+    const auto one = [](const auto& shape) { return std::span(&shape, 1); };
+    if (const Ellipse* e = std::get_if<Ellipse>(&b)) {
+      overlap_rect_ellipse(one(std::get<Rect>(a)), one(oa), one(*e), one(ob), std::span(&batch, 1));
+    } else {
+      overlap_rect_rect(one(std::get<Rect>(a)), one(oa), one(std::get<Rect>(b)), one(ob), std::span(&batch, 1));
+    }
     check(batch == (hit ? 1 : 0), "batched overlap the one-off verdict");
   }
   const DistanceResult back = distance(b, a);
