@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace collide2d {
@@ -336,11 +337,37 @@ void World::Found::clear() {
   impacts.clear();
   filtered = 0;
   verdicts.clear();
-  batched.clear();
-  rects.clear();
-  rect_orientations.clear();
-  ellipses.clear();
-  ellipse_orientations.clear();
+  rect_ellipse.clear();
+  rect_rect.clear();
+}
+
+template <class A, class B>
+void World::Batch<A, B>::add(std::uint32_t place, const Body& x, const Body& y) {
+  places.push_back(place);
+  a.push_back(std::get<A>(x.shape));
+  a_orientations.push_back(x.orientation);
+  b.push_back(std::get<B>(y.shape));
+  b_orientations.push_back(y.orientation);
+}
+
+template <class A, class B>
+void World::Batch<A, B>::run(std::vector<Verdict>& chunk_verdicts) {
+  verdicts.resize(places.size());
+  if constexpr (std::is_same_v<B, Ellipse>) {
+    overlap_rect_ellipse(a, a_orientations, b, b_orientations, verdicts);
+  } else {
+    overlap_rect_rect(a, a_orientations, b, b_orientations, verdicts);
+  }
+  for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
+}
+
+template <class A, class B>
+void World::Batch<A, B>::clear() {
+  places.clear();
+  a.clear();
+  a_orientations.clear();
+  b.clear();
+  b_orientations.clear();
 }
 
 void World::update() {
@@ -407,25 +434,22 @@ void World::narrow_phase() {
   replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
 }
 
-// The candidate pairs [begin, end): first every overlap test, the chunk's rectangle–ellipse pairs
-// in one batch (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results
-// in order.
+// The candidate pairs [begin, end): first every overlap test, the chunk's rectangle–ellipse and
+// rectangle pairs in batches (the same verdicts as one by one, 2 to 8 pairs at a time), then each
+// pair's results in order.
 void World::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
   out.clear();
   for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  out.batch_verdicts.resize(out.batched.size());
-  overlap_rect_ellipse(out.rects, out.rect_orientations, out.ellipses, out.ellipse_orientations, out.batch_verdicts);
-  for (std::size_t j = 0; j < out.batched.size(); ++j) {
-    out.verdicts[out.batched[j]] = out.batch_verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
-  }
+  out.rect_ellipse.run(out.verdicts);
+  out.rect_rect.run(out.verdicts);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
   }
 }
 
-// A pair dropped by the filters or made of two sensors is skipped; a rectangle–ellipse pair whose
-// boxes meet joins the chunk's batch; any other pair is tested now.
+// A pair dropped by the filters or made of two sensors is skipped; a rectangle–ellipse or rectangle
+// pair whose boxes meet joins its batch; any other pair is tested now.
 World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
   if (!passes(a, b)) {
     ++out.filtered;
@@ -435,15 +459,14 @@ World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& o
   const Body& y = bodies_[b];
   if (x.sensor && y.sensor) return Verdict::skipped;
   if (!intersects(x.box, y.box)) return Verdict::apart;
-  const bool rect_first = std::holds_alternative<Rect>(x.shape) && std::holds_alternative<Ellipse>(y.shape);
-  if (rect_first || (std::holds_alternative<Ellipse>(x.shape) && std::holds_alternative<Rect>(y.shape))) {
-    const Body& r = rect_first ? x : y;
-    const Body& e = rect_first ? y : x;
-    out.batched.push_back(static_cast<std::uint32_t>(out.verdicts.size()));
-    out.rects.push_back(std::get<Rect>(r.shape));
-    out.rect_orientations.push_back(r.orientation);
-    out.ellipses.push_back(std::get<Ellipse>(e.shape));
-    out.ellipse_orientations.push_back(e.orientation);
+  const auto place = static_cast<std::uint32_t>(out.verdicts.size());
+  const bool x_rect = std::holds_alternative<Rect>(x.shape), y_rect = std::holds_alternative<Rect>(y.shape);
+  if (x_rect && y_rect) {
+    out.rect_rect.add(place, x, y);
+    return Verdict::batched;
+  }
+  if (x_rect != y_rect && (std::holds_alternative<Ellipse>(x.shape) || std::holds_alternative<Ellipse>(y.shape))) {
+    out.rect_ellipse.add(place, x_rect ? x : y, x_rect ? y : x);
     return Verdict::batched;
   }
   return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;

@@ -332,8 +332,21 @@ class World {
   void find_candidates();
   // A candidate pair's overlap test, decided at once or left for the chunk's batch.
   enum class Verdict : std::uint8_t { skipped, apart, touching, batched };
+  // The pairs of one kind in a chunk, gathered for the batched overlap test (overlap_batch.h).
+  template <class A, class B>
+  struct Batch {
+    std::vector<std::uint32_t> places;  // in the chunk
+    std::vector<A> a;
+    std::vector<Orientation> a_orientations;
+    std::vector<B> b;
+    std::vector<Orientation> b_orientations;
+    std::vector<std::uint8_t> verdicts;
+    void add(std::uint32_t place, const Body& x, const Body& y);
+    void run(std::vector<Verdict>& chunk_verdicts);
+    void clear();
+  };
   // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
-  // verdict, and its rectangle–ellipse pairs gathered for the batched test (overlap_batch.h).
+  // verdict, and the batches.
   struct Found {
     std::vector<BodyPair> overlapping;
     std::vector<SensorPair> sensing;
@@ -342,12 +355,8 @@ class World {
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
-    std::vector<std::uint32_t> batched;  // the batch's pairs, as places in the chunk
-    std::vector<Rect> rects;
-    std::vector<Orientation> rect_orientations;
-    std::vector<Ellipse> ellipses;
-    std::vector<Orientation> ellipse_orientations;
-    std::vector<std::uint8_t> batch_verdicts;
+    Batch<Rect, Ellipse> rect_ellipse;
+    Batch<Rect, Rect> rect_rect;
     void clear();
   };
   std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing
