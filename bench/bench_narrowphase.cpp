@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <type_traits>
 #include <vector>
 
 namespace collide2d {
@@ -154,11 +153,7 @@ void batch_overlap(benchmark::State& state) {
   const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
   std::vector<std::uint8_t> out(kPairs);
   for (auto _ : state) {
-    if constexpr (std::is_same_v<B, Ellipse>) {
-      overlap_rect_ellipse(w.a, oa, w.b, ob, out);
-    } else {
-      overlap_rect_rect(w.a, oa, w.b, ob, out);
-    }
+    overlap_batch<A, B>(w.a, oa, w.b, ob, out);
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
@@ -176,6 +171,7 @@ BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(ben
 BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(batch_overlap<Circle, Ellipse>)->Name("batch_overlap/circle_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::both_workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).

@@ -1,6 +1,7 @@
 #include "engine/world.h"
 
 #include "engine/thread_pool.h"
+#include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap_batch.h"
 #include "narrowphase/ray_cast.h"
 
@@ -337,8 +338,7 @@ void World::Found::clear() {
   impacts.clear();
   filtered = 0;
   verdicts.clear();
-  rect_ellipse.clear();
-  rect_rect.clear();
+  std::apply([](auto&... batch) { (batch.clear(), ...); }, batches);
 }
 
 template <class A, class B>
@@ -353,11 +353,7 @@ void World::Batch<A, B>::add(std::uint32_t place, const Body& x, const Body& y) 
 template <class A, class B>
 void World::Batch<A, B>::run(std::vector<Verdict>& chunk_verdicts) {
   verdicts.resize(places.size());
-  if constexpr (std::is_same_v<B, Ellipse>) {
-    overlap_rect_ellipse(a, a_orientations, b, b_orientations, verdicts);
-  } else {
-    overlap_rect_rect(a, a_orientations, b, b_orientations, verdicts);
-  }
+  overlap_batch<A, B>(a, a_orientations, b, b_orientations, verdicts);
   for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
 }
 
@@ -434,22 +430,20 @@ void World::narrow_phase() {
   replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
 }
 
-// The candidate pairs [begin, end): first every overlap test, the chunk's rectangle–ellipse and
-// rectangle pairs in batches (the same verdicts as one by one, 2 to 8 pairs at a time), then each
-// pair's results in order.
+// The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
+// (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results in order.
 void World::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
   out.clear();
   for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  out.rect_ellipse.run(out.verdicts);
-  out.rect_rect.run(out.verdicts);
+  std::apply([&out](auto&... batch) { (batch.run(out.verdicts), ...); }, out.batches);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
   }
 }
 
-// A pair dropped by the filters or made of two sensors is skipped; a rectangle–ellipse or rectangle
-// pair whose boxes meet joins its batch; any other pair is tested now.
+// A pair dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
+// batch of its kind, in kernel order, but for two ellipses, which are tested now.
 World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
   if (!passes(a, b)) {
     ++out.filtered;
@@ -460,16 +454,21 @@ World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& o
   if (x.sensor && y.sensor) return Verdict::skipped;
   if (!intersects(x.box, y.box)) return Verdict::apart;
   const auto place = static_cast<std::uint32_t>(out.verdicts.size());
-  const bool x_rect = std::holds_alternative<Rect>(x.shape), y_rect = std::holds_alternative<Rect>(y.shape);
-  if (x_rect && y_rect) {
-    out.rect_rect.add(place, x, y);
-    return Verdict::batched;
-  }
-  if (x_rect != y_rect && (std::holds_alternative<Ellipse>(x.shape) || std::holds_alternative<Ellipse>(y.shape))) {
-    out.rect_ellipse.add(place, x_rect ? x : y, x_rect ? y : x);
-    return Verdict::batched;
-  }
-  return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
+  return std::visit(
+      [&](const auto& xs, const auto& ys) {
+        using X = std::decay_t<decltype(xs)>;
+        using Y = std::decay_t<decltype(ys)>;
+        if constexpr (std::is_same_v<X, Ellipse> && std::is_same_v<Y, Ellipse>) {
+          return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
+        } else if constexpr (detail::rank<X>() <= detail::rank<Y>()) {
+          std::get<Batch<X, Y>>(out.batches).add(place, x, y);
+          return Verdict::batched;
+        } else {
+          std::get<Batch<Y, X>>(out.batches).add(place, y, x);
+          return Verdict::batched;
+        }
+      },
+      x.shape, y.shape);
 }
 
 // One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the

@@ -77,6 +77,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -355,8 +356,8 @@ class World {
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
-    Batch<Rect, Ellipse> rect_ellipse;
-    Batch<Rect, Rect> rect_rect;
+    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>, Batch<Circle, Ellipse>>
+        batches;  // every pair kind but ellipse–ellipse, in kernel order
     void clear();
   };
   std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing

@@ -6,6 +6,9 @@
 // each kernel, one field per lane, are plain structs here, shared by both.
 #pragma once
 
+#include "shapes/rotation.h"
+#include "shapes/shapes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -56,5 +59,54 @@ struct RectRectLanes {
   static constexpr std::size_t kFields = 8;
   std::array<V, kFields> fields() const { return {tx, ty, c, s, ax, ay, bx, by}; }  // in declaration order
 };
+
+// Two circles: B's centre less A's, and the radii.
+template <class V>
+struct CircleCircleLanes {
+  V dx, dy;
+  V ra, rb;
+
+  static constexpr std::size_t kFields = 4;
+  std::array<V, kFields> fields() const { return {dx, dy, ra, rb}; }
+};
+
+// A rectangle and a circle: the circle's centre in the rectangle's frame, the rectangle's half
+// extents, the radius.
+template <class V>
+struct RectCircleLanes {
+  V px, py;
+  V hx, hy;
+  V r;
+
+  static constexpr std::size_t kFields = 5;
+  std::array<V, kFields> fields() const { return {px, py, hx, hy, r}; }
+};
+
+// A circle and an ellipse: the circle's centre in the ellipse's frame, the semi-axes, the radius.
+template <class V>
+struct CircleEllipseLanes {
+  V px, py;
+  V a, b;
+  V r;
+
+  static constexpr std::size_t kFields = 5;
+  std::array<V, kFields> fields() const { return {px, py, a, b, r}; }
+};
+
+inline CircleCircleLanes<double> circle_circle_lanes(const Circle& a, const Circle& b) {
+  const Vec2 d = b.center - a.center;
+  return {d.x(), d.y(), a.radius, b.radius};
+}
+inline RectCircleLanes<double> rect_circle_lanes(const Rect& r, const Orientation& ro, const Circle& c) {
+  const Vec2 p = Rotation<double>{ro.c, ro.s}.apply_inverse(Vec2(c.center - r.center));
+  return {p.x(), p.y(), r.half_extents.x(), r.half_extents.y(), c.radius};
+}
+inline CircleEllipseLanes<double> circle_ellipse_lanes(const Circle& c, const Ellipse& e, const Orientation& eo) {
+  const Vec2 p = Rotation<double>{eo.c, eo.s}.apply_inverse(Vec2(c.center - e.center));
+  return {p.x(), p.y(), e.a, e.b, c.radius};
+}
+// The verdict for a circle–ellipse lane the filter left uncertain: the point–ellipse root
+// (overlap_circle_ellipse.cpp).
+bool circle_ellipse_exact(const CircleEllipseLanes<double>& f);
 
 }  // namespace collide2d::detail

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,7 @@ struct Chunk {
 HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
+#include "narrowphase/circle_overlap-inl.h"
 #include "narrowphase/rect_ellipse_filter-inl.h"
 #include "narrowphase/rect_rect_overlap-inl.h"
 
@@ -65,10 +67,12 @@ Lanes load(const double (&field)[sizeof...(I)][detail::kChunk], std::size_t i, s
 }
 
 detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return RectEllipseFilter<D>(D(), f).run(); }
-detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) {
-  const M hit = rect_rect_overlap(f);
-  return {hn::Not(hit), hit};
-}
+// The kernels that decide every lane.
+detail::LaneVerdicts<M> all_decided(const M& hit) { return {hn::Not(hit), hit}; }
+detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) { return all_decided(rect_rect_overlap(f)); }
+detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) { return all_decided(circle_circle_overlap(D(), f)); }
+detail::LaneVerdicts<M> decide(const detail::RectCircleLanes<V>& f) { return all_decided(rect_circle_overlap(D(), f)); }
+detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) { return CircleEllipseFilter<D, V>(D(), f).run(); }
 
 // The kernel on the chunk's first `count` pairs (a multiple of every target's lane count).
 template <template <class> class Lanes>
@@ -91,6 +95,9 @@ void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t coun
 
 void rect_ellipse_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectEllipseLanes>(chunk, count); }
 void rect_rect_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectRectLanes>(chunk, count); }
+void circle_circle_chunk(detail::Chunk<4>& chunk, std::size_t count) { decide_chunk<detail::CircleCircleLanes>(chunk, count); }
+void rect_circle_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::RectCircleLanes>(chunk, count); }
+void circle_ellipse_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::CircleEllipseLanes>(chunk, count); }
 
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -101,14 +108,20 @@ namespace {
 
 HWY_EXPORT(rect_ellipse_chunk);
 HWY_EXPORT(rect_rect_chunk);
+HWY_EXPORT(circle_circle_chunk);
+HWY_EXPORT(rect_circle_chunk);
+HWY_EXPORT(circle_ellipse_chunk);
 
-void check_lengths(const char* what, std::size_t first, std::size_t second, std::size_t third, std::size_t fourth,
-                   std::size_t out) {
-  if (first == second && first == third && first == fourth && first == out) return;
-  throw std::invalid_argument(std::string(what) + ": the lists differ in length (" + std::to_string(first) + ", " +
-                              std::to_string(second) + ", " + std::to_string(third) + ", " + std::to_string(fourth) +
-                              " pairs in, " + std::to_string(out) + " verdicts out)");
+void check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out) {
+  if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
+  std::string lengths;
+  for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
+  lengths.resize(lengths.size() - 2);
+  throw std::invalid_argument(std::string(what) + ": the lists differ in length (" + lengths + " pairs in, " +
+                              std::to_string(out) + " verdicts out)");
 }
+
+bool never_uncertain(std::size_t) { throw std::logic_error("a kernel that decides every pair left one uncertain"); }
 
 // The batch in chunks: lanes_of(k) gives pair k's kernel inputs (scalar code, the one-off kernel's
 // rounding), decide_chunk the chunk's verdicts, and exact(k) the verdict of a pair left uncertain.
@@ -136,8 +149,8 @@ void run_batch(std::span<std::uint8_t> overlapping, LanesOf lanes_of, DecideChun
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_rect_ellipse", rects.size(), rect_orientations.size(), ellipses.size(),
-                ellipse_orientations.size(), overlapping.size());
+  check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+                overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     const Orientation& ro = rect_orientations[k];
     const Orientation& eo = ellipse_orientations[k];
@@ -149,14 +162,41 @@ void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientati
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_rect_rect", a.size(), a_orientations.size(), b.size(), b_orientations.size(),
-                overlapping.size());
+  check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     return detail::key(b[k]) < detail::key(a[k]) ? detail::rect_rect_lanes(b[k], b_orientations[k], a[k], a_orientations[k])
                                                  : detail::rect_rect_lanes(a[k], a_orientations[k], b[k], b_orientations[k]);
   };
-  const auto exact = [](std::size_t) -> bool { throw std::logic_error("the rectangle test is never uncertain"); };
-  run_batch<detail::RectRectLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_rect_chunk), exact);
+  run_batch<detail::RectRectLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_rect_chunk), never_uncertain);
+}
+
+void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
+  check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
+  const auto lanes_of = [&](std::size_t k) {
+    return detail::key(b[k]) < detail::key(a[k]) ? detail::circle_circle_lanes(b[k], a[k]) : detail::circle_circle_lanes(a[k], b[k]);
+  };
+  run_batch<detail::CircleCircleLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(circle_circle_chunk),
+                                                        never_uncertain);
+}
+
+void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
+                         std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
+  check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
+  const auto lanes_of = [&](std::size_t k) { return detail::rect_circle_lanes(rects[k], rect_orientations[k], circles[k]); };
+  run_batch<detail::RectCircleLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_circle_chunk),
+                                                      never_uncertain);
+}
+
+void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
+                            std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
+  check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
+                overlapping.size());
+  const auto lanes_of = [&](std::size_t k) {
+    return detail::circle_ellipse_lanes(circles[k], ellipses[k], ellipse_orientations[k]);
+  };
+  const auto exact = [&](std::size_t k) { return detail::circle_ellipse_exact(lanes_of(k)); };
+  run_batch<detail::CircleEllipseLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk),
+                                                         exact);
 }
 
 }  // namespace collide2d

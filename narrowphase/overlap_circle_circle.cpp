@@ -1,15 +1,20 @@
 #include "narrowphase/overlap_circle_circle.h"
 
-#include "narrowphase/within_reach.h"
+#include "narrowphase/lanes.h"
+
+#include <algorithm>
+#include <limits>
 
 #include <algorithm>
 
 namespace collide2d {
+namespace detail {
+#include "narrowphase/circle_overlap-inl.h"
+}  // namespace detail
 
-// Near contact the verdict is distance_circle_circle's: apart when n - ra - rb > 0.
+// Near contact the verdict is distance_circle_circle's (circle_overlap-inl.h).
 bool overlap_circle_circle(const Circle& a, const Circle& b) {
-  return detail::within_reach((b.center - a.center).squaredNorm(), a.radius + b.radius,
-                              [&](double n) { return n - a.radius - b.radius > 0.0; });
+  return detail::circle_circle_overlap(detail::Scalar{}, detail::circle_circle_lanes(a, b));
 }
 
 DistanceResult distance_circle_circle(const Circle& a, const Circle& b) {

@@ -1,10 +1,15 @@
 #include "narrowphase/overlap_rect_circle.h"
 
 #include "narrowphase/box_local.h"
-#include "narrowphase/within_reach.h"
+#include "narrowphase/lanes.h"
 #include "shapes/rotation.h"
 
+#include <limits>
+
 namespace collide2d {
+namespace detail {
+#include "narrowphase/circle_overlap-inl.h"
+}  // namespace detail
 namespace {
 
 struct CircleInRect {
@@ -21,13 +26,11 @@ CircleInRect circle_in_rect(const Rect& r, const Orientation& ro, const Circle& 
 
 }  // namespace
 
-// Near contact the verdict is distance_rect_circle's: apart when |centre - nearest| > r.
+// Near contact the verdict is distance_rect_circle's (circle_overlap-inl.h).
 bool overlap_rect_circle(const Rect& r, const Circle& c) { return overlap_rect_circle(r, Orientation::of(r.angle), c); }
 
 bool overlap_rect_circle(const Rect& r, const Orientation& ro, const Circle& c) {
-  const CircleInRect f = circle_in_rect(r, ro, c);
-  return detail::within_reach((f.center - f.nearest).squaredNorm(), c.radius,
-                              [&](double n) { return n > c.radius; });
+  return detail::rect_circle_overlap(detail::Scalar{}, detail::rect_circle_lanes(r, ro, c));
 }
 
 DistanceResult distance_rect_circle(const Rect& r, const Circle& c) {

@@ -18,15 +18,8 @@
 namespace collide2d {
 namespace {
 
-// The order in which kernels take their shapes.
-template <class T>
-constexpr int rank() {
-  if constexpr (std::is_same_v<T, Rect>) return 0;
-  if constexpr (std::is_same_v<T, Circle>) return 1;
-  return 2;
-}
-
-using detail::key;  // same-kind pairs in a fixed order (kernel_order.h)
+using detail::key;  // the order in which kernels take their shapes (kernel_order.h)
+using detail::rank;
 
 bool overlap_kernel(const Rect& a, const Rect& b, const OverlapOptions&) { return overlap_rect_rect(a, b); }
 bool overlap_kernel(const Rect& a, const Circle& b, const OverlapOptions&) { return overlap_rect_circle(a, b); }

@@ -1,11 +1,12 @@
 // The batched overlap tests (overlap_batch.h) against the one-off tests, verdict for verdict, on
 // every SIMD target Highway compiled that this CPU runs: the hard-case families (rounding-level
 // gaps included, where the rectangle–ellipse batch must hand pairs to the fallback), two million
-// random rectangle–ellipse and a million rectangle–rectangle candidate pairs in batches of ragged
-// lengths, and lists of different lengths refused.
+// random rectangle–ellipse, a million rectangle–rectangle and half a million of each circle pair's
+// candidate pairs in batches of ragged lengths, and lists of different lengths refused.
 #include "hard_cases.h"
 
 #include "narrowphase/overlap_batch.h"
+#include "narrowphase/overlap_circle_circle.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/overlap_rect_rect.h"
 #include "narrowphase/query.h"
@@ -32,21 +33,26 @@ struct Pairs {
 
   void add(const A& x, const B& y) {
     a.push_back(x);
-    a_orientations.push_back(Orientation::of(x.angle));
+    a_orientations.push_back(Orientation::of(angle_of(x)));
     b.push_back(y);
-    b_orientations.push_back(Orientation::of(y.angle));
+    b_orientations.push_back(Orientation::of(angle_of(y)));
+  }
+  // A hard case's pair, either way round in the family, as (A, B).
+  void add(const Case& c) {
+    if (std::holds_alternative<A>(c.a) && std::holds_alternative<B>(c.b)) {
+      add(std::get<A>(c.a), std::get<B>(c.b));
+    } else {
+      add(std::get<A>(c.b), std::get<B>(c.a));
+    }
   }
   std::size_t size() const { return a.size(); }
 };
 
 // The batched test, and the one-off test with orientations kept (query.h), for each pair kind.
-void batch(const Pairs<Rect, Ellipse>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
-  overlap_rect_ellipse(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
-                       std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
-}
-void batch(const Pairs<Rect, Rect>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
-  overlap_rect_rect(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
-                    std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
+template <class A, class B>
+void batch(const Pairs<A, B>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
+  overlap_batch<A, B>(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
+                      std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
 }
 template <class A, class B>
 bool one_off(const Pairs<A, B>& p, std::size_t k) {
@@ -111,10 +117,7 @@ TEST(OverlapBatch, HardCaseFamiliesMatchTheOneOffKernel) {
   }
   Pairs<Rect, Ellipse> p;
   for (const Family& f : families) {
-    for (const Case& c : family_cases(f)) {
-      const bool rect_first = std::holds_alternative<Rect>(c.a);
-      p.add(std::get<Rect>(rect_first ? c.a : c.b), std::get<Ellipse>(rect_first ? c.b : c.a));
-    }
+    for (const Case& c : family_cases(f)) p.add(c);
   }
   int uncertain = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
@@ -149,6 +152,32 @@ TEST(OverlapBatch, HardCaseRectanglePairsMatchTheOneOffKernel) {
   on_every_target([&](const char* target) { EXPECT_EQ(mismatches(p, 0, p.size(), target), 0) << target; });
 }
 
+// The hard cases of the circle pairs: touching at gaps down to 1e-12 of the size (where the
+// circle–ellipse test leaves pairs to the root), nested, concentric, at the evolute's cusps.
+template <class A, class B>
+void check_hard_cases(Kind a, Kind b) {
+  Pairs<A, B> p;
+  for (const Family& f : standard_families(a, b)) {
+    for (const Case& c : family_cases(f)) p.add(c);
+  }
+  std::printf("%zu hard-case pairs\n", p.size());
+  on_every_target([&](const char* target) { EXPECT_EQ(mismatches(p, 0, p.size(), target), 0) << target; });
+}
+
+TEST(OverlapBatch, HardCaseCirclePairsMatchTheOneOffKernel) {
+  // Two circles at the rounding level of touching, where (n - ra) - rb and (n - rb) - ra round to
+  // opposite signs: the batch must take the dispatcher's order, either way round.
+  const Circle big{{0, 0}, 43.430986838512901}, small{{43.433120300761729, 0}, 0.0021334622488282024};
+  ASSERT_NE(overlap_circle_circle(big, small), overlap_circle_circle(small, big)) << "the pair no longer tells the orders apart";
+  Pairs<Circle, Circle> both_ways;
+  both_ways.add(big, small);
+  both_ways.add(small, big);
+  on_every_target([&](const char* target) { EXPECT_EQ(mismatches(both_ways, 0, 2, target), 0) << target; });
+  check_hard_cases<Circle, Circle>(Kind::circle, Kind::circle);
+  check_hard_cases<Rect, Circle>(Kind::rect, Kind::circle);
+  check_hard_cases<Circle, Ellipse>(Kind::circle, Kind::ellipse);
+}
+
 // Candidate pairs as a broad phase hands them over, half of them placed at a small gap (either
 // sign) along a random direction, needles to aspect 1e6, in batches of ragged lengths.
 TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
@@ -156,24 +185,36 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Pairs<Rect, Ellipse> with_ellipses;
   Pairs<Rect, Rect> rects;
+  Pairs<Circle, Circle> circles;
+  Pairs<Rect, Circle> rect_circles;
+  Pairs<Circle, Ellipse> circle_ellipses;
   while (with_ellipses.size() < 2'000'000) {
     const double aspect = std::pow(10.0, 6 * u(rng));
     const Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.05 + u(rng), 0.05 + u(rng)), 7 * u(rng)};
     Ellipse e{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng), 0, 7 * u(rng)};
     e.b = e.a / aspect;
     Rect s{e.center, Vec2(e.a, e.b), e.angle};
+    Circle c{e.center, e.a}, d{r.center, 0.05 + u(rng)};
     if (with_ellipses.size() % 2 == 1) {
       const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
       const double gap = (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng));
       e.center = support(r, n) + gap * n - support(e, Vec2(-n));
       s.center = support(r, n) + gap * n - support(s, Vec2(-n));
+      c.center = support(r, n) + gap * n - support(c, Vec2(-n));
+      d.center = support(e, n) + gap * n - support(d, Vec2(-n));
     }
     if (intersects(aabb(r), aabb(e))) with_ellipses.add(r, e);
     if (rects.size() < 1'000'000 && intersects(aabb(r), aabb(s))) rects.add(r, s);
+    if (rect_circles.size() < 500'000 && intersects(aabb(r), aabb(c))) rect_circles.add(r, c);
+    if (circles.size() < 500'000 && intersects(aabb(d), aabb(c))) circles.add(d, c);
+    if (circle_ellipses.size() < 500'000 && intersects(aabb(d), aabb(e))) circle_ellipses.add(d, e);
   }
   on_every_target([&](const char* target) {
     EXPECT_EQ(mismatches_in_ragged_batches(with_ellipses, target), 0) << target;
     EXPECT_EQ(mismatches_in_ragged_batches(rects, target), 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(circles, target), 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(rect_circles, target), 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(circle_ellipses, target), 0) << target;
   });
 }
 
@@ -206,6 +247,10 @@ TEST(OverlapBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {
   EXPECT_EQ(out, (std::vector<std::uint8_t>{1, 0}));
   overlap_rect_ellipse({}, {}, {}, {}, {});  // nothing to do, and nothing touched
   overlap_rect_rect({}, {}, {}, {}, {});
+  const std::vector<Circle> discs{Circle{{0, 0}, 1}, Circle{{3, 0}, 1}};
+  EXPECT_THROW(overlap_circle_circle(discs, std::span(discs).first(1), std::span(out).first(2)), std::invalid_argument);
+  overlap_circle_circle(discs, std::vector<Circle>{Circle{{1.5, 0}, 1}, Circle{{0, 0}, 1}}, out);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{1, 0}));
 }
 
 }  // namespace
