@@ -45,12 +45,18 @@ auto circle_circle_overlap(D d, const detail::CircleCircleLanes<V>& f) {
   return within_reach(d, f.dx * f.dx + f.dy * f.dy, f.ra + f.rb, CirclesApart<V>{f.ra, f.rb, Set(d, 0.0)});
 }
 
+// The squared distance from p to the box [-hx, hx] x [-hy, hy] (box_local.h's clamp, over lanes).
+template <class V>
+V squared_distance_to_box(const V& px, const V& py, const V& hx, const V& hy) {
+  const V gx = px - Min(Max(px, Neg(hx)), hx);
+  const V gy = py - Min(Max(py, Neg(hy)), hy);
+  return gx * gx + gy * gy;
+}
+
 // In the rectangle's frame the nearest rectangle point to the centre p is p clamped to the box.
 template <class D, class V>
 auto rect_circle_overlap(D d, const detail::RectCircleLanes<V>& f) {
-  const V gx = f.px - Min(Max(f.px, Neg(f.hx)), f.hx);
-  const V gy = f.py - Min(Max(f.py, Neg(f.hy)), f.hy);
-  return within_reach(d, gx * gx + gy * gy, f.r, BeyondRadius<V>{f.r});
+  return within_reach(d, squared_distance_to_box(f.px, f.py, f.hx, f.hy), f.r, BeyondRadius<V>{f.r});
 }
 
 // The centre p in the ellipse's frame. Certain cases first, each only when it clears r by more than
@@ -73,9 +79,7 @@ class CircleEllipseFilter {
     if (decide(out_.overlap, w2 <= k(1.0))) return out_;
     const V margin = k(16 * std::numeric_limits<double>::epsilon()) * (Sqrt(f_.px * f_.px + f_.py * f_.py) + f_.a + f_.b + f_.r);
     const V clear = f_.r + margin;
-    const V bx = f_.px - Min(Max(f_.px, Neg(f_.a)), f_.a);
-    const V by = f_.py - Min(Max(f_.py, Neg(f_.b)), f_.b);
-    if (decide(out_.separated, bx * bx + by * by > clear * clear)) return out_;
+    if (decide(out_.separated, squared_distance_to_box(f_.px, f_.py, f_.a, f_.b) > clear * clear)) return out_;
     const V root = Sqrt(w2);
     const V qx = f_.px / root, qy = f_.py / root;
     const V ex = f_.px - qx, ey = f_.py - qy;

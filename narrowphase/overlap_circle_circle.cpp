@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <limits>
 
-#include <algorithm>
-
 namespace collide2d {
 namespace detail {
 #include "narrowphase/circle_overlap-inl.h"

@@ -19,9 +19,9 @@ struct CircleInRect {
 };
 
 CircleInRect circle_in_rect(const Rect& r, const Orientation& ro, const Circle& c) {
-  const detail::Rotation<double> rot{ro.c, ro.s};
-  const Vec2 p = rot.apply_inverse(Vec2(c.center - r.center));
-  return {rot, p, detail::clamp_to_box(p, r.half_extents)};
+  const detail::RectCircleLanes<double> f = detail::rect_circle_lanes(r, ro, c);
+  const Vec2 p(f.px, f.py);
+  return {{ro.c, ro.s}, p, detail::clamp_to_box(p, r.half_extents)};
 }
 
 }  // namespace
