@@ -53,12 +53,16 @@ void ours(benchmark::State& state) {
 template <class A, class B>
 void ours_oriented(benchmark::State& state) {
   const auto& w = bench::pairs<A, B>(state);
-  std::vector<Orientation> oa, ob;
-  for (std::size_t k = 0; k < kPairs; ++k) {
-    oa.push_back(Orientation::of(angle_of(w.a[k])));
-    ob.push_back(Orientation::of(angle_of(w.b[k])));
-  }
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], oa[k], w.b[k], ob[k]); });
+}
+
+// The batched circle–ellipse contact (orientations kept) on the whole workload per iteration.
+void batch_circle_ellipse(benchmark::State& state) {
+  const auto& w = bench::pairs<Circle, Ellipse>(state);
+  const std::vector<Orientation> ob = bench::orientations(w.b);
+  std::vector<Contact> out(kPairs);
+  bench::time_batches(state, [&] { contact_circle_ellipse(w.a, w.b, ob, out); });
 }
 
 template <class A, class B, int Sides = 8>
@@ -91,6 +95,7 @@ BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->App
 BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::both_workloads);
 BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::both_workloads);
+BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->Apply(bench::both_workloads);
 BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::both_workloads);

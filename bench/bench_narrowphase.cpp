@@ -128,38 +128,22 @@ void box2d_distance_ellipse_ellipse(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_distance(a[k], b[k]); });
 }
 
-// The World's overlap test: each shape's orientation kept (as Box2D keeps its polygons'
-// transforms), no validation.
-template <class S>
-std::vector<Orientation> orientations(const std::vector<S>& shapes) {
-  std::vector<Orientation> out;
-  for (const S& s : shapes) out.push_back(Orientation::of(angle_of(s)));
-  return out;
-}
-
+// The World's overlap test: each shape's orientation kept, no validation.
 template <class A, class B>
 void posed_overlap(benchmark::State& state) {
   const Workload<A, B>& w = bench::pairs<A, B>(state);
   const std::vector<Shape> a(w.a.begin(), w.a.end()), b(w.b.begin(), w.b.end());
-  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
-// The batched tests (overlap_batch.h) on the whole workload per iteration; per_pair is the time
-// divided by the pairs, to set beside the one-off tests' times.
+// The batched tests (overlap_batch.h) on the whole workload per iteration.
 template <class A, class B>
 void batch_overlap(benchmark::State& state) {
   const Workload<A, B>& w = bench::pairs<A, B>(state);
-  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   std::vector<std::uint8_t> out(kPairs);
-  for (auto _ : state) {
-    overlap_batch<A, B>(w.a, oa, w.b, ob, out);
-    benchmark::DoNotOptimize(out.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * kPairs);
-  state.counters["per_pair"] = benchmark::Counter(static_cast<double>(kPairs),
-                                                  benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  bench::time_batches(state, [&] { overlap_batch<A, B>(w.a, oa, w.b, ob, out); });
 }
 
 BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::both_workloads);
@@ -177,7 +161,7 @@ BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8g
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {
   const Workload<Ellipse, Ellipse>& w = bench::pairs<Ellipse, Ellipse>(state);
-  const std::vector<Orientation> oa = orientations(w.a), ob = orientations(w.b);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
 }
 BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::both_workloads);

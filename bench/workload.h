@@ -31,6 +31,27 @@ void time_queries(benchmark::State& state, Query query) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Runs batch() over all the pairs once per benchmark iteration; per_pair is the time divided by the
+// pairs, to set beside the one-off kernels' times.
+template <class Batch>
+void time_batches(benchmark::State& state, Batch batch) {
+  for (auto _ : state) {
+    batch();
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kPairs);
+  state.counters["per_pair"] = benchmark::Counter(static_cast<double>(kPairs),
+                                                  benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+// Each shape's orientation, kept as the World keeps it (and Box2D its polygons' transforms).
+template <class S>
+std::vector<Orientation> orientations(const std::vector<S>& shapes) {
+  std::vector<Orientation> out;
+  for (const S& s : shapes) out.push_back(Orientation::of(angle_of(s)));
+  return out;
+}
+
 // Random centres in a 4 x 4 square, sizes log-uniform in [0.05, 1], ellipse aspect up to `aspect`.
 struct Generator {
   std::mt19937_64 rng{2024};

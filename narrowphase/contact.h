@@ -102,6 +102,15 @@ Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, co
                              const Orientation& b_orientation, const ContactOptions& options = {});
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation);
+// Batched, for callers with their own pair lists: contacts[i] is bit for bit
+// contact_circle_ellipse(circles[i], ellipses[i], ellipse_orientations[i]). The point–ellipse roots
+// of 2 to 8 pairs run side by side in SIMD lanes (Google Highway, chosen at run time for the CPU),
+// each lane stopping where the one-off root stops; the axis cases go one by one to their closed
+// forms. Like the posed one-off kernels it neither validates the shapes nor takes sines and
+// cosines (overlap_batch.h says the same). Lists of different lengths throw std::invalid_argument,
+// naming the lengths, before anything is written.
+void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
+                            std::span<const Orientation> ellipse_orientations, std::span<Contact> contacts);
 Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                                 const Orientation& b_orientation, const ContactOptions& options = {});

@@ -9,8 +9,10 @@
 // the unknown t, which keeps its relative precision where the root is tiny: inside, near the major
 // axis). Where Eberly bisects to the last bit (60 to ~1100 halvings), this takes Newton steps on
 // (g + 1)^(-1/2) = 1, a concave function of t, from a lower bound: they climb to the root without
-// ever passing it (the .cpp says why). The axis cases (a zero coordinate, or one within 1e-50 of
-// the semi-axis across) are closed forms.
+// ever passing it, and stop once the next step would round away (point_ellipse-inl.h says why). The
+// distance is |t - 1| times the length of the gradient there, not the difference of two nearby
+// points. The axis cases (a zero coordinate, or one within 1e-50 of the semi-axis across) are
+// closed forms.
 //
 // Accuracy: the closest point and the distance are correct to a few ulps of max(a, b, |p|) for any
 // aspect ratio (tested to 1e6) and for points on, near, inside and far from the curve; the
@@ -24,6 +26,7 @@ namespace collide2d {
 struct PointEllipseResult {
   double distance = 0.0;          // from the point to the nearest point of the curve
   Vec2 closest = Vec2::Zero();    // that nearest point, in the ellipse frame
+  Vec2 normal = Vec2::UnitX();    // the curve's outward unit normal at `closest`, in the ellipse frame
   bool inside = false;            // the point lies in the closed solid ellipse
 };
 

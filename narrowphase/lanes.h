@@ -6,6 +6,8 @@
 // each kernel, one field per lane, are plain structs here, shared by both.
 #pragma once
 
+#include "narrowphase/contact.h"
+#include "narrowphase/distance_point_ellipse.h"
 #include "shapes/rotation.h"
 #include "shapes/shapes.h"
 
@@ -26,7 +28,10 @@ inline double Neg(double x) { return -x; }
 inline bool And(bool x, bool y) { return x && y; }
 inline bool Or(bool x, bool y) { return x || y; }
 inline bool AndNot(bool not_x, bool y) { return !not_x && y; }
+inline double CopySign(double magnitude, double sign) { return std::copysign(magnitude, sign); }
+inline double IfThenElse(bool m, double yes, double no) { return m ? yes : no; }
 inline bool AllTrue(Scalar, bool m) { return m; }
+inline bool AllFalse(Scalar, bool m) { return !m; }
 inline bool Not(bool m) { return !m; }
 
 // Per lane: certainly separated, certainly overlapping, or neither (uncertain: the exact fallback).
@@ -35,6 +40,20 @@ struct LaneVerdicts {
   M separated;
   M overlap;
 };
+
+// The nearest point of an ellipse's curve to a point (point_ellipse-inl.h), in the ellipse's frame.
+template <class V, class M>
+struct NearestOnEllipse {
+  V distance;  // from the point to the curve
+  V qx, qy;    // the nearest point
+  V nx, ny;    // the curve's outward unit normal there
+  M inside;    // the point lies in the closed solid
+  M general;   // false: an axis case, which the caller's closed forms decide instead
+};
+
+inline PointEllipseResult point_ellipse_result(const NearestOnEllipse<double, bool>& n) {
+  return {n.distance, Vec2(n.qx, n.qy), Vec2(n.nx, n.ny), n.inside};
+}
 
 // A rectangle–ellipse pair in the rectangle's frame (RectEllipseFrame's fields).
 template <class V>
@@ -108,5 +127,8 @@ inline CircleEllipseLanes<double> circle_ellipse_lanes(const Circle& c, const El
 // The verdict for a circle–ellipse lane the filter left uncertain: the point–ellipse root
 // (overlap_circle_ellipse.cpp).
 bool circle_ellipse_exact(const CircleEllipseLanes<double>& f);
+// The circle–ellipse contact from the point–ellipse result of the circle's centre (f.px, f.py)
+// (contact_ellipse_ellipse.cpp).
+Contact circle_ellipse_contact(const Circle& c, const Ellipse& e, const Orientation& eo, const PointEllipseResult& r);
 
 }  // namespace collide2d::detail

@@ -5,11 +5,11 @@
 // vector types, so each kernel's template reads the same on one pair and on a vector of them
 // (lanes.h).
 //
-// Work goes in chunks of 256 pairs: the scalar code builds each pair's frame (the same rounding as
-// the one-off kernel), the vector kernel decides the chunk, and the uncertain pairs go to the
-// exact fallback one by one.
+// Work goes in chunks (batch_chunk.h): the vector kernel decides the chunk, and the uncertain pairs
+// go to the exact fallback one by one.
 #include "narrowphase/overlap_batch.h"
 
+#include "narrowphase/batch_chunk.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/rect_ellipse_frame.h"
@@ -29,26 +29,6 @@
 #include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
 #include "hwy/highway.h"
 
-#ifndef COLLIDE2D_OVERLAP_BATCH_CHUNK
-#define COLLIDE2D_OVERLAP_BATCH_CHUNK
-namespace collide2d::detail {
-
-inline constexpr std::size_t kChunk = 256;
-// The widest vector of doubles any target has: chunks are padded to a multiple of it.
-inline constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
-static_assert(kChunk % kMaxLanes == 0);
-
-// A chunk of pairs, one array per field of the kernel's lanes (lanes.h), and the verdict (a
-// FilterVerdict) of each pair.
-template <std::size_t kFields>
-struct Chunk {
-  double field[kFields][kChunk];
-  std::uint8_t verdict[kChunk];
-};
-
-}  // namespace collide2d::detail
-#endif
-
 HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
@@ -56,15 +36,7 @@ namespace collide2d::HWY_NAMESPACE {
 #include "narrowphase/rect_ellipse_filter-inl.h"
 #include "narrowphase/rect_rect_overlap-inl.h"
 
-namespace hn = hwy::HWY_NAMESPACE;
-using D = hn::ScalableTag<double>;
-using V = hn::Vec<D>;
-using M = hn::Mask<D>;
-
-template <class Lanes, std::size_t... I>
-Lanes load(const double (&field)[sizeof...(I)][detail::kChunk], std::size_t i, std::index_sequence<I...>) {
-  return Lanes{hn::LoadU(D(), field[I] + i)...};
-}
+#include "narrowphase/batch_load-inl.h"
 
 detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return RectEllipseFilter<D>(D(), f).run(); }
 // The kernels that decide every lane.
@@ -74,7 +46,7 @@ detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) { return a
 detail::LaneVerdicts<M> decide(const detail::RectCircleLanes<V>& f) { return all_decided(rect_circle_overlap(D(), f)); }
 detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) { return CircleEllipseFilter<D, V>(D(), f).run(); }
 
-// The kernel on the chunk's first `count` pairs (a multiple of every target's lane count).
+// The kernel on the chunk's first `count` pairs, in whole vectors.
 template <template <class> class Lanes>
 void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t count) {
   constexpr std::size_t kFields = Lanes<double>::kFields;
@@ -104,6 +76,16 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace collide2d {
+
+void detail::check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out, const char* results) {
+  if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
+  std::string lengths;
+  for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
+  lengths.resize(lengths.size() - 2);
+  throw std::invalid_argument(std::string(what) + ": the lists differ in length (" + lengths + " pairs in, " +
+                              std::to_string(out) + " " + results + " out)");
+}
+
 namespace {
 
 HWY_EXPORT(rect_ellipse_chunk);
@@ -111,15 +93,6 @@ HWY_EXPORT(rect_rect_chunk);
 HWY_EXPORT(circle_circle_chunk);
 HWY_EXPORT(rect_circle_chunk);
 HWY_EXPORT(circle_ellipse_chunk);
-
-void check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out) {
-  if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
-  std::string lengths;
-  for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
-  lengths.resize(lengths.size() - 2);
-  throw std::invalid_argument(std::string(what) + ": the lists differ in length (" + lengths + " pairs in, " +
-                              std::to_string(out) + " verdicts out)");
-}
 
 bool never_uncertain(std::size_t) { throw std::logic_error("a kernel that decides every pair left one uncertain"); }
 
@@ -130,12 +103,8 @@ void run_batch(std::span<std::uint8_t> overlapping, LanesOf lanes_of, DecideChun
   detail::Chunk<kFields> chunk;
   for (std::size_t start = 0; start < overlapping.size(); start += detail::kChunk) {
     const std::size_t count = std::min(detail::kChunk, overlapping.size() - start);
-    const std::size_t padded = (count + detail::kMaxLanes - 1) / detail::kMaxLanes * detail::kMaxLanes;
-    for (std::size_t i = 0; i < padded; ++i) {
-      const auto fields = lanes_of(start + std::min(i, count - 1)).fields();  // the padding repeats the last pair
-      for (std::size_t f = 0; f < kFields; ++f) chunk.field[f][i] = fields[f];
-    }
-    decide_chunk(chunk, padded);
+    detail::fill_chunk(chunk, start, count, lanes_of);
+    decide_chunk(chunk, count);
     for (std::size_t i = 0; i < count; ++i) {
       const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
       const bool hit = verdict == FilterVerdict::uncertain ? exact(start + i) : verdict == FilterVerdict::overlap;
@@ -149,7 +118,7 @@ void run_batch(std::span<std::uint8_t> overlapping, LanesOf lanes_of, DecideChun
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+  detail::check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
                 overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     const Orientation& ro = rect_orientations[k];
@@ -162,7 +131,7 @@ void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientati
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
+  detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     return detail::key(b[k]) < detail::key(a[k]) ? detail::rect_rect_lanes(b[k], b_orientations[k], a[k], a_orientations[k])
                                                  : detail::rect_rect_lanes(a[k], a_orientations[k], b[k], b_orientations[k]);
@@ -171,7 +140,7 @@ void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_o
 }
 
 void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
+  detail::check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     return detail::key(b[k]) < detail::key(a[k]) ? detail::circle_circle_lanes(b[k], a[k]) : detail::circle_circle_lanes(a[k], b[k]);
   };
@@ -181,7 +150,7 @@ void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b,
 
 void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
+  detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
   const auto lanes_of = [&](std::size_t k) { return detail::rect_circle_lanes(rects[k], rect_orientations[k], circles[k]); };
   run_batch<detail::RectCircleLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_circle_chunk),
                                                       never_uncertain);
@@ -189,7 +158,7 @@ void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientatio
 
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
-  check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
+  detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
                 overlapping.size());
   const auto lanes_of = [&](std::size_t k) {
     return detail::circle_ellipse_lanes(circles[k], ellipses[k], ellipse_orientations[k]);

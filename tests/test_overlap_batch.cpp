@@ -3,6 +3,7 @@
 // gaps included, where the rectangle–ellipse batch must hand pairs to the fallback), two million
 // random rectangle–ellipse, a million rectangle–rectangle and half a million of each circle pair's
 // candidate pairs in batches of ragged lengths, and lists of different lengths refused.
+#include "batch_testing.h"
 #include "hard_cases.h"
 
 #include "narrowphase/overlap_batch.h"
@@ -12,7 +13,6 @@
 #include "narrowphase/query.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <cmath>
 #include <cstdint>
@@ -23,30 +23,6 @@
 
 namespace collide2d::testing {
 namespace {
-
-template <class A, class B>
-struct Pairs {
-  std::vector<A> a;
-  std::vector<Orientation> a_orientations;
-  std::vector<B> b;
-  std::vector<Orientation> b_orientations;
-
-  void add(const A& x, const B& y) {
-    a.push_back(x);
-    a_orientations.push_back(Orientation::of(angle_of(x)));
-    b.push_back(y);
-    b_orientations.push_back(Orientation::of(angle_of(y)));
-  }
-  // A hard case's pair, either way round in the family, as (A, B).
-  void add(const Case& c) {
-    if (std::holds_alternative<A>(c.a) && std::holds_alternative<B>(c.b)) {
-      add(std::get<A>(c.a), std::get<B>(c.b));
-    } else {
-      add(std::get<A>(c.b), std::get<B>(c.a));
-    }
-  }
-  std::size_t size() const { return a.size(); }
-};
 
 // The batched test, and the one-off test with orientations kept (query.h), for each pair kind.
 template <class A, class B>
@@ -90,20 +66,6 @@ int mismatches_in_ragged_batches(const Pairs<A, B>& p, const char* target) {
     start += count;
   }
   return wrong;
-}
-
-// Runs check() once on every target Highway compiled that this CPU supports, then restores the
-// normal choice.
-template <class Check>
-void on_every_target(Check check) {
-  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_FALSE(targets.empty());
-  for (const std::int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
-    std::printf("target %s\n", hwy::TargetName(target));
-    check(hwy::TargetName(target));
-  }
-  hwy::SetSupportedTargetsForTest(0);
 }
 
 TEST(OverlapBatch, HardCaseFamiliesMatchTheOneOffKernel) {

@@ -1,0 +1,122 @@
+// Private: the nearest point of an ellipse's curve to a point, written once over lanes (lanes.h):
+// distance_point_ellipse runs it on a double, the batched circle–ellipse contact on vectors, with
+// the same IEEE operations in the same order, so both give the same bits. The method and its
+// accuracy are in distance_point_ellipse.h; the lanes it leaves (`general` false) go to the closed
+// forms of the axis cases there.
+//
+// Included inside a namespace, once per Highway target (no #pragma once).
+#if defined(COLLIDE2D_POINT_ELLIPSE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef COLLIDE2D_POINT_ELLIPSE_INL_H_
+#undef COLLIDE2D_POINT_ELLIPSE_INL_H_
+#else
+#define COLLIDE2D_POINT_ELLIPSE_INL_H_
+#endif
+
+// The root of g for z0, z1 > 0 and r0 = (e0/e1)^2 >= 1, in t = s + 1 rather than Eberly's s:
+// g(t) = (r0 z0 / (t + r0 - 1))^2 + (z1 / t)^2 - 1. For a point inside near the major axis the root
+// sits at t ~ z1 / sqrt(1 - x^2), far below 1: as s = t - 1 it kept only the absolute precision of
+// s, and the closest point's y1 / (s + 1) came out wrong (a point 1e-17 off the axis near the
+// evolute's cusp got a distance off by 1.3e-2; the contact tests' rigid motions found it).
+//
+// Newton runs on q(t) = (g(t) + 1)^(-1/2) = 1 rather than on g = 0. q is a weighted power mean of
+// order -2 of t + r0 - 1 and t, hence concave and increasing (and exactly linear for a circle), so
+// Newton started left of the root never steps past it and climbs monotonically: no bracket and no
+// bisection. t <= r0 z0 + z1 bounds the root, and stops a step that rounding could carry past it.
+//
+// A lane ends when a step no longer climbs, or as soon as a step d is so short that the next one
+// would round away. Why that holds: with A_k = sum of w_i x_i^(-k) (x_i = t, t + r0 - 1, all >= t),
+// q''/q' = -3 (A2 A4 - A3^2) / (A2 A3), so |q''| <= 3 q' / t; q' falls as t grows, so the root
+// after a step from t to t + d lies within 1.5 (r - t)^2 / t, about 1.5 d^2 / t, of the new t:
+// below 2^-53 t once d <= 2^-27 t. From the bound max(z1, r0 z0 - (r0 - 1)) that takes 3.4
+// evaluations of q on average on bench_contact's candidate circle–ellipse pairs; checking instead
+// that one more step fails to climb took 4.4, and safeguarded Newton on g from the middle of its
+// bracket 7.8. Lanes that have ended keep their t while the others go on.
+template <class D, class V>
+class SecularRoot {
+ public:
+  using M = decltype(V() < V());
+
+  SecularRoot(D d, const V& r0, const V& z0, const V& z1)
+      : d_(d), n0_(r0 * z0), z1_(z1), shift_(r0 - Set(d, 1.0)), hi_(n0_ + z1), t_(Max(z1, n0_ - shift_)), running_(t_ == t_) {}
+
+  // One Newton step in every lane still running; false once none is.
+  bool step() {
+    const V one = Set(d_, 1.0);
+    // t >= z1 > 1e-50 (the axis cases go to the closed forms), so neither reciprocal overflows.
+    const V u = one / (t_ + shift_);
+    const V v = one / t_;
+    const V a = n0_ * u;
+    const V b = z1_ * v;
+    const V sum = a * a + b * b;
+    const V next = t_ + sum * (Sqrt(sum) - one) / (a * a * u + b * b * v);
+    const M climbs = And(running_, And(next > t_, next < hi_));
+    running_ = AndNot(next - t_ <= Set(d_, 0x1p-27) * t_, climbs);
+    t_ = IfThenElse(climbs, next, t_);
+    return !AllFalse(d_, running_);
+  }
+  const V& t() const { return t_; }
+
+ private:
+  D d_;
+  V n0_, z1_, shift_, hi_, t_;
+  M running_;
+};
+
+// The point p = (px, py) in the ellipse's frame (semi-axes a along x, b along y), reflected into
+// the first quadrant of the frame whose x axis is the major one: e0 >= e1, y = |p|, z = y / e.
+template <class V, class M>
+struct Quadrant {
+  M swap;
+  V e0, e1, y0, y1, z0, z1, r0;
+
+  template <class D>
+  static Quadrant of(D, const V& px, const V& py, const V& a, const V& b) {
+    Quadrant q;
+    q.swap = b > a;
+    q.e0 = IfThenElse(q.swap, b, a);
+    q.e1 = IfThenElse(q.swap, a, b);
+    q.y0 = Abs(IfThenElse(q.swap, py, px));
+    q.y1 = Abs(IfThenElse(q.swap, px, py));
+    q.z0 = q.y0 / q.e0;
+    q.z1 = q.y1 / q.e1;
+    const V ratio = q.e0 / q.e1;
+    q.r0 = ratio * ratio;
+    return q;
+  }
+};
+
+// The nearest point at the root t: (e0 a_, e1 b_) with a_ = r0 z0 / (t + r0 - 1) and b_ = z1 / t
+// on the unit circle, and y minus it is (t - 1) (e1^2 / e0 a_, e1 b_): the distance is |t - 1| e1 |g|
+// with g = (a_ e1 / e0, b_) the outward normal's direction, no difference of nearby points taken.
+// |g| >= 1e-100 (a_^2 + b_^2 = 1 and e1 / e0 >= 1e-100 for valid sizes), so its square is normal.
+template <class D, class V, class M>
+detail::NearestOnEllipse<V, M> nearest_at_root(D d, const Quadrant<V, M>& q, const V& t, const V& px, const V& py) {
+  const V one = Set(d, 1.0);
+  const V a_ = q.r0 * q.z0 / (t + (q.r0 - one));
+  const V b_ = q.z1 / t;
+  const V g0 = a_ * (q.e1 / q.e0), g1 = b_;
+  const V g = Sqrt(g0 * g0 + g1 * g1);
+  const V n0 = g0 / g, n1 = g1 / g;
+  const V q0 = q.e0 * a_, q1 = q.e1 * b_;
+  const V rho2 = q.z0 * q.z0 + q.z1 * q.z1;
+  detail::NearestOnEllipse<V, M> out;
+  out.distance = Abs(t - one) * (q.e1 * g);
+  out.qx = CopySign(IfThenElse(q.swap, q1, q0), px);
+  out.qy = CopySign(IfThenElse(q.swap, q0, q1), py);
+  out.nx = CopySign(IfThenElse(q.swap, n1, n0), px);
+  out.ny = CopySign(IfThenElse(q.swap, n0, n1), py);
+  out.inside = rho2 <= one;
+  out.general = And(q.z1 > Set(d, 1e-50), And(q.y0 > Set(d, 0.0), rho2 != one));
+  return out;
+}
+
+template <class D, class V>
+auto nearest_on_ellipse(D d, const V& px, const V& py, const V& a, const V& b) {
+  const auto q = Quadrant<V, decltype(V() < V())>::of(d, px, py, a, b);
+  SecularRoot<D, V> root(d, q.r0, q.z0, q.z1);
+  while (root.step()) {
+  }
+  return nearest_at_root(d, q, root.t(), px, py);
+}
+
+#endif  // COLLIDE2D_POINT_ELLIPSE_INL_H_
