@@ -24,14 +24,4 @@ Contact Contact::swapped() const {
   return out;
 }
 
-Contact Contact::of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b, std::uint32_t id) {
-  Contact c;
-  c.separation = separation;
-  c.normal = normal;
-  c.point_a = point_a;
-  c.point_b = point_b;
-  c.manifold[0] = {point_a, point_b, separation, id};
-  return c;
-}
-
 }  // namespace collide2d

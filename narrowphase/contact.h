@@ -77,6 +77,19 @@ struct Contact {
                     std::uint32_t id = 0);
 };
 
+// Inline: a batch writes thousands of contacts, and each call out of line built the contact and
+// copied it again.
+inline Contact Contact::of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
+                           std::uint32_t id) {
+  Contact c;
+  c.separation = separation;
+  c.normal = normal;
+  c.point_a = point_a;
+  c.point_b = point_b;
+  c.manifold[0] = {point_a, point_b, separation, id};
+  return c;
+}
+
 struct ContactOptions {
   // Rectangle manifolds keep, beside the deepest point, the points whose separation is at most
   // max(deepest, 0) + margin: 0 keeps the points touching or overlapping as deep; a speculative

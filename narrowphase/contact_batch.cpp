@@ -21,24 +21,26 @@ namespace collide2d::HWY_NAMESPACE {
 #include "narrowphase/batch_load-inl.h"
 #include "narrowphase/point_ellipse-inl.h"
 
-using Lanes = detail::CircleEllipseLanes<V>;
+using In = detail::CirclePosedEllipseLanes<V>;
+using Out = detail::ContactLanes<V>;
 
-void store(const detail::NearestOnEllipse<V, M>& n, detail::Chunk<7>& out, std::size_t i) {
+// The contacts of the chunk's first `count` pairs, in whole vectors, into `out`, and in its
+// verdict bytes whether the lane's root holds (general) or the pair is an axis case. (Two or four
+// vectors stepping together gained nothing: the dividers, which the square root shares, are the
+// bottleneck already.)
+void contact_chunk(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFields>& out, std::size_t count) {
   const D d;
-  const V one = hn::Set(d, 1.0);
-  const V fields[7] = {n.distance, n.qx, n.qy, n.nx, n.ny, hn::IfThenElseZero(n.inside, one), hn::IfThenElseZero(n.general, one)};
-  for (std::size_t k = 0; k < 7; ++k) hn::StoreU(fields[k], d, out.field[k] + i);
-}
-
-// The nearest ellipse points of the chunk's first `count` circle centres, in whole vectors, into
-// `out`: distance, the point, the normal, inside and general (1 or 0). (Two or four vectors
-// stepping together gained nothing: the dividers, which the square root shares, are already the
-// bottleneck.)
-void nearest_chunk(const detail::Chunk<Lanes::kFields>& in, detail::Chunk<7>& out, std::size_t count) {
-  const D d;
-  for (std::size_t i = 0; i < count; i += hn::Lanes(d)) {
-    const Lanes f = load<Lanes>(in.field, i, std::make_index_sequence<Lanes::kFields>());
-    store(nearest_on_ellipse(d, f.px, f.py, f.a, f.b), out, i);
+  const std::size_t n = hn::Lanes(d);
+  for (std::size_t i = 0; i < count; i += n) {
+    const In f = load<In>(in.field, i, std::make_index_sequence<In::kFields>());
+    V px, py;
+    circle_centre_in_ellipse_frame(f, px, py);
+    const auto nearest = nearest_on_ellipse(d, px, py, f.a, f.b);
+    const auto fields = circle_ellipse_contact(f, nearest).fields();
+    for (std::size_t k = 0; k < Out::kFields; ++k) hn::StoreU(fields[k], d, out.field[k] + i);
+    std::uint8_t general[detail::kMaxLanes / 8 + 1] = {};
+    hn::StoreMaskBits(d, nearest.general, general);
+    for (std::size_t j = 0; j < n; ++j) out.verdict[i + j] = general[j / 8] >> (j % 8) & 1;
   }
 }
 
@@ -49,7 +51,7 @@ HWY_AFTER_NAMESPACE();
 namespace collide2d {
 namespace {
 
-HWY_EXPORT(nearest_chunk);
+HWY_EXPORT(contact_chunk);
 
 }  // namespace
 
@@ -58,22 +60,19 @@ void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ell
   detail::check_lengths("contact_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
                         contacts.size(), "contacts");
   const auto lanes_of = [&](std::size_t k) {
-    return detail::circle_ellipse_lanes(circles[k], ellipses[k], ellipse_orientations[k]);
+    return detail::circle_posed_ellipse_lanes(circles[k], ellipses[k], ellipse_orientations[k]);
   };
-  detail::Chunk<detail::CircleEllipseLanes<double>::kFields> in;
-  detail::Chunk<7> out;
+  detail::Chunk<detail::CirclePosedEllipseLanes<double>::kFields> in;
+  detail::Chunk<detail::ContactLanes<double>::kFields> out;
   for (std::size_t start = 0; start < contacts.size(); start += detail::kChunk) {
     const std::size_t count = std::min(detail::kChunk, contacts.size() - start);
     detail::fill_chunk(in, start, count, lanes_of);
-    HWY_DYNAMIC_DISPATCH(nearest_chunk)(in, out, count);
+    HWY_DYNAMIC_DISPATCH(contact_chunk)(in, out, count);
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t k = start + i;
       const auto lane = [&](std::size_t field) { return out.field[field][i]; };
-      const Ellipse& e = ellipses[k];
-      const PointEllipseResult r =
-          lane(6) != 0 ? detail::point_ellipse_result({lane(0), lane(1), lane(2), lane(3), lane(4), lane(5) != 0, true})
-                       : distance_point_ellipse(e.a, e.b, Vec2(in.field[0][i], in.field[1][i]));
-      contacts[k] = detail::circle_ellipse_contact(circles[k], e, ellipse_orientations[k], r);
+      contacts[k] = out.verdict[i] ? detail::ContactLanes<double>{lane(0), lane(1), lane(2), lane(3), lane(4), lane(5), lane(6)}.contact()
+                                   : contact_circle_ellipse(circles[k], ellipses[k], ellipse_orientations[k]);
     }
   }
 }

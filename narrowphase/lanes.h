@@ -54,6 +54,36 @@ struct NearestOnEllipse {
 inline PointEllipseResult point_ellipse_result(const NearestOnEllipse<double, bool>& n) {
   return {n.distance, Vec2(n.qx, n.qy), Vec2(n.nx, n.ny), n.inside};
 }
+inline NearestOnEllipse<double, bool> nearest_on_ellipse(const PointEllipseResult& r) {
+  return {r.distance, r.closest.x(), r.closest.y(), r.normal.x(), r.normal.y(), r.inside, true};
+}
+
+// A circle and a posed ellipse as the contact takes them: both centres, the ellipse's orientation
+// and semi-axes, the radius.
+template <class V>
+struct CirclePosedEllipseLanes {
+  V cx, cy;  // circle centre
+  V ex, ey;  // ellipse centre
+  V c, s;    // ellipse orientation
+  V a, b;    // semi-axes
+  V r;       // radius
+
+  static constexpr std::size_t kFields = 9;
+  std::array<V, kFields> fields() const { return {cx, cy, ex, ey, c, s, a, b, r}; }  // in declaration order
+};
+
+// A single-point contact (Contact's separation, normal, point_a, point_b).
+template <class V>
+struct ContactLanes {
+  V separation;
+  V nx, ny;
+  V ax, ay;
+  V bx, by;
+
+  static constexpr std::size_t kFields = 7;
+  std::array<V, kFields> fields() const { return {separation, nx, ny, ax, ay, bx, by}; }  // in declaration order
+  Contact contact() const { return Contact::of(separation, Vec2(nx, ny), Vec2(ax, ay), Vec2(bx, by)); }
+};
 
 // A rectangle–ellipse pair in the rectangle's frame (RectEllipseFrame's fields).
 template <class V>
@@ -127,8 +157,8 @@ inline CircleEllipseLanes<double> circle_ellipse_lanes(const Circle& c, const El
 // The verdict for a circle–ellipse lane the filter left uncertain: the point–ellipse root
 // (overlap_circle_ellipse.cpp).
 bool circle_ellipse_exact(const CircleEllipseLanes<double>& f);
-// The circle–ellipse contact from the point–ellipse result of the circle's centre (f.px, f.py)
-// (contact_ellipse_ellipse.cpp).
-Contact circle_ellipse_contact(const Circle& c, const Ellipse& e, const Orientation& eo, const PointEllipseResult& r);
+inline CirclePosedEllipseLanes<double> circle_posed_ellipse_lanes(const Circle& c, const Ellipse& e, const Orientation& eo) {
+  return {c.center.x(), c.center.y(), e.center.x(), e.center.y(), eo.c, eo.s, e.a, e.b, c.radius};
+}
 
 }  // namespace collide2d::detail
