@@ -56,7 +56,7 @@ void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFiel
                   std::index_sequence<K...>) {
   const std::size_t n = hn::Lanes(D());
   Vectors v[] = {Vectors(in, i + K * n)...};
-  while ((v[K].root.step() | ...)) {
+  while ((static_cast<int>(v[K].root.step()) | ...)) {  // |, not ||: every vector steps each time
   }
   (v[K].store(out, i + K * n), ...);
 }

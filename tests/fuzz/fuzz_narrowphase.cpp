@@ -8,6 +8,7 @@
 // overlapping (to 1e-9 of the scale), the same both ways with the normal reversed, and its search
 // certified within its cap of support evaluations.
 #include "fuzz_input.h"
+#include "narrowphase/contact.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap_batch.h"
 #include "narrowphase/query.h"
@@ -66,6 +67,21 @@ std::optional<bool> batched(const Shape& a, const Shape& b) {
       a, b);
 }
 
+// The batched circle–ellipse contact of a circle and an ellipse as a list of one: the one-off
+// contact's numbers.
+void check_batched_contact(const Shape& a, const Shape& b) {
+  const Circle* circle = std::get_if<Circle>(&a);
+  const Ellipse* ellipse = std::get_if<Ellipse>(&b);
+  if (circle == nullptr || ellipse == nullptr) return;
+  const Orientation o = Orientation::of(ellipse->angle);
+  Contact batch;
+  contact_circle_ellipse(std::span(circle, 1), std::span(ellipse, 1), std::span(&o, 1), std::span(&batch, 1));
+  const Contact one = contact_circle_ellipse(*circle, *ellipse, o);
+  check(batch.separation == one.separation && batch.normal == one.normal && batch.point_a == one.point_a &&
+            batch.point_b == one.point_b,
+        "batched contact the one-off contact");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -99,6 +115,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(c_back.separation == c.separation && (c_back.normal == -c.normal || center_of(a) == center_of(b)),
         "contact symmetric");
   check(c.evaluations < 4096, "contact search certified within its cap");
+  check_batched_contact(a, b);
+  check_batched_contact(b, a);
   if (!std::holds_alternative<Rect>(a) && !std::holds_alternative<Rect>(b)) {
     const DistanceResult g = boundary_distance(a, b);
     check(std::isfinite(g.distance) && g.distance >= 0 && g.point_a.allFinite(), "boundary distance finite");
