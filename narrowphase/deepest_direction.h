@@ -152,22 +152,25 @@ void starting_directions(const SupportPair<Real, SA, SB>& p, V2<Real> (&ends)[5]
 }
 
 // An upper bound of s over every direction, from a direction m and the separation there. An
-// ellipse's radius of curvature is nowhere below b^2 / a, so it contains the disc of that radius
-// tangent at any of its boundary points (Blaschke's rolling theorem); with each ellipse replaced by
-// that disc at its support point for m, s can only grow in every direction, and its maximum is
+// ellipse contains the largest disc tangent at its support point for m (EllipseSupport::
+// inscribed_radius: b^2 / h(m), from b^2 / a at the ends of the major axis to b on the flat sides);
+// with each ellipse replaced by that disc, s can only grow in every direction, and its maximum is
 // then the signed distance of two discs, or of a disc and the rectangle (whose support function is
 // exact and cheap, so it stays whole). The bound equals s(m) when m is a maximum and the depth is
-// below those radii (for a rectangle: while the disc's centre is nearest to the same face).
+// below those radii (for a rectangle: while the disc's centre is nearest to the same face). The
+// disc of the least radius of curvature, b^2 / a, which Blaschke's rolling theorem puts at every
+// boundary point, served before: on the flat side of an ellipse of aspect 10 it is ten times
+// smaller, and the bound certified the climb in fewer pairs.
 template <class Real, class SA, class SB>
 Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Separation<Real>& e) {
   if constexpr (std::is_same_v<SA, RectSupport<Real>>) {
-    const Real r = p.B.rho_min();
+    const Real r = p.B.inscribed_radius(e.offset_b, m);
     return p.A.signed_distance(V2<Real>(p.delta - e.offset_b + r * m)) - r;
   } else if constexpr (std::is_same_v<SB, RectSupport<Real>>) {
-    const Real r = p.A.rho_min();
+    const Real r = p.A.inscribed_radius(e.offset_a, m);
     return p.B.signed_distance(V2<Real>(e.offset_a - r * m - p.delta)) - r;
   } else {
-    const Real r = p.A.rho_min() + p.B.rho_min();
+    const Real r = p.A.inscribed_radius(e.offset_a, m) + p.B.inscribed_radius(e.offset_b, m);
     return V2<Real>(e.gap + r * m).norm() - r;
   }
 }

@@ -75,6 +75,15 @@ struct EllipseSupport {
   }
   // The least radius of curvature, at the ends of the major axis.
   Real rho_min() const { return std::min(a, b) * std::min(a, b) / std::max(a, b); }
+  // The radius of the largest disc inside the ellipse tangent at its support point `offset` for the
+  // unit direction n. Its centre is where the inward normal there meets the major axis (the
+  // medial axis: that point's two nearest boundary points are this one and its mirror image), at
+  // distance b^2 / h(n) for semi-axes a >= b and h(n) = n.offset: b^2 / a at the ends of the major
+  // axis, b on the flat sides. Shrunk by 16 u, so that rounding cannot make it larger than it is.
+  Real inscribed_radius(const V2<Real>& offset, const V2<Real>& n) const {
+    const Real minor = std::min(a, b);
+    return minor * minor / n.dot(offset) * (1 - 16 * std::numeric_limits<Real>::epsilon());
+  }
 };
 
 // A rectangle's support point is the corner on the side of `side`, a direction in the same quarter
