@@ -63,6 +63,12 @@ struct EllipseSupport {
   }
   // The curve is smooth: no side to choose.
   Support<Real> at(const V2<Real>& n, const V2<Real>&) const { return at(n); }
+  // The support value h(n) alone, without the point.
+  Real extent(const V2<Real>& n) const {
+    using std::sqrt;
+    const V2<Real> l = rot.apply_inverse(n);
+    return sqrt(a * a * l[0] * l[0] + b * b * l[1] * l[1]);
+  }
   // The least radius of curvature over the directions from x to y (less than a half turn), given
   // its values there: rho = (ab)^2 / h^3 falls as h grows towards the major axis, so it is least at
   // an end unless the arc holds the major axis' direction, where it is b^2 / a.
@@ -101,6 +107,12 @@ struct RectSupport {
     return {offset, n.dot(offset), Real(0)};
   }
   Real rho_floor(const V2<Real>&, const V2<Real>&, Real, Real) const { return 0; }
+  // The support value h(n) alone.
+  Real extent(const V2<Real>& n) const {
+    using std::abs;
+    const V2<Real> l = rot.apply_inverse(n);
+    return abs(l[0]) * hx + abs(l[1]) * hy;
+  }
   // The signed distance from q (relative to the centre) to the solid rectangle.
   Real signed_distance(const V2<Real>& q) const {
     using std::abs;
