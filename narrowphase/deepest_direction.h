@@ -175,21 +175,24 @@ Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Sep
   }
 }
 
-// Of the line of centres n and the two shapes' axes (each turned towards B), the direction where s
-// is largest, from support values alone (no points, no divisions): on bench_contact's candidate
+// Of the line of centres n and the two ellipses' axes (each turned towards B), the direction where
+// s is largest, from support values alone (no points, no divisions): on bench_contact's candidate
 // ellipse pairs the climb from the line of centres was certified in 49% of them, from this one in
 // 83%, and the mean support evaluations fell from 9.28 to 7.38. Thin ellipses side by side are
 // separated across their axes, seldom along the line of centres.
-template <class Real, class SA, class SB>
-V2<Real> best_of_axes(const SupportPair<Real, SA, SB>& p, V2<Real> n) {
-  const auto s = [&](const V2<Real>& f) { return p.delta.dot(f) - p.A.extent(f) - p.B.extent(f); };
-  Real best = s(n);
-  for (const V2<Real>& axis : {V2<Real>(p.A.rot.c, p.A.rot.s), V2<Real>(-p.A.rot.s, p.A.rot.c), V2<Real>(p.B.rot.c, p.B.rot.s),
-                               V2<Real>(-p.B.rot.s, p.B.rot.c)}) {
+// Along its own axes an ellipse's support value is its semi-axis: one square root per axis.
+template <class Real>
+V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>& p, V2<Real> n) {
+  Real best = p.delta.dot(n) - p.A.extent(n) - p.B.extent(n);
+  const auto consider = [&](const V2<Real>& axis, Real own, const EllipseSupport<Real>& other) {
     const V2<Real> f = p.delta.dot(axis) >= 0 ? axis : V2<Real>(-axis);
-    const Real at = s(f);
+    const Real at = p.delta.dot(f) - own - other.extent(f);
     if (at > best) best = at, n = f;
-  }
+  };
+  consider(V2<Real>(p.A.rot.c, p.A.rot.s), p.A.a, p.B);
+  consider(V2<Real>(-p.A.rot.s, p.A.rot.c), p.A.b, p.B);
+  consider(V2<Real>(p.B.rot.c, p.B.rot.s), p.B.a, p.A);
+  consider(V2<Real>(-p.B.rot.s, p.B.rot.c), p.B.b, p.A);
   return n;
 }
 
@@ -248,7 +251,9 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
       from_face(face);
     }
   } else {
-    if (start == V2<Real>::Zero()) n = best_of_axes(p, n);
+    if constexpr (std::is_same_v<SA, EllipseSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
+      if (start == V2<Real>::Zero()) n = best_of_axes(p, n);
+    }
     e = p.separation(n);
   }
   evaluations = 1;
