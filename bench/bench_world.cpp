@@ -10,6 +10,7 @@
 //                  level costs when it is not touched
 //   level_moving:  with the n level bodies added as moving bodies that never move (a World without
 //                  static bodies)
+//   alone_contacts: the moving bodies alone (1,000 or 10,000) with contacts on, one thread
 //
 // Counters: the frame's broad and narrow phase milliseconds (FrameStats), candidate pairs,
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
@@ -88,14 +89,14 @@ std::size_t heap_in_use() {
 
 enum class Level { none, static_bodies, static_apart, moving_bodies };
 
-template <Level level>
+template <Level level, bool contacts = false>
 void frame(benchmark::State& state) {
   const int moving = level == Level::none ? static_cast<int>(state.range(0)) : 1000;
   const int statics = level == Level::none ? 0 : static_cast<int>(state.range(0));
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t heap_before = heap_in_use();
-  World world({.fat_margin = 0.1, .threads = static_cast<unsigned>(state.range(1))});
+  World world({.fat_margin = 0.1, .contacts = contacts, .threads = static_cast<unsigned>(state.range(1))});
   const double level_side = std::sqrt(28.0 * statics), side = std::sqrt(28.0 * moving);  // Movers' side
   const Vec2 corner = Vec2::Constant(0.5 * (level_side - side));  // the moving bodies' square, mid-level
   BodyDef def;
@@ -228,6 +229,7 @@ void box2d_frame(benchmark::State& state) {
 
 // Args: the level's size (for "alone", the number of moving bodies), then the World's threads.
 BENCHMARK(frame<Level::none>)->Name("frame/alone")->Args({1000, 0})->Unit(benchmark::kMicrosecond);
+BENCHMARK(frame<Level::none, true>)->Name("frame/alone_contacts")->Args({1000, 1})->Args({10000, 1})->Unit(benchmark::kMicrosecond);
 BENCHMARK(frame<Level::static_bodies>)->Name("frame/level")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
 BENCHMARK(frame<Level::static_apart>)->Name("frame/level_apart")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
 BENCHMARK(frame<Level::moving_bodies>)->Name("frame/level_moving")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
