@@ -2,7 +2,7 @@
 
 #include "engine/thread_pool.h"
 #include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap_batch.h"
+#include "narrowphase/overlap_pairs.h"
 #include "narrowphase/ray_cast.h"
 
 #include <algorithm>
@@ -342,18 +342,33 @@ void World::Found::clear() {
 }
 
 template <class A, class B>
-void World::Batch<A, B>::add(std::uint32_t place, const Body& x, const Body& y) {
+void World::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_body, std::uint32_t b_body) {
+  if (places.capacity() < kPairsPerChunk) {
+    places.reserve(kPairsPerChunk);
+    a.reserve(kPairsPerChunk);
+    b.reserve(kPairsPerChunk);
+    verdicts.reserve(kPairsPerChunk);
+  }
   places.push_back(place);
-  a.push_back(std::get<A>(x.shape));
-  a_orientations.push_back(x.orientation);
-  b.push_back(std::get<B>(y.shape));
-  b_orientations.push_back(y.orientation);
+  a.push_back(a_body);
+  b.push_back(b_body);
 }
 
 template <class A, class B>
-void World::Batch<A, B>::run(std::vector<Verdict>& chunk_verdicts) {
+void World::Batch<A, B>::run(const std::vector<Body>& bodies, std::vector<Verdict>& chunk_verdicts) {
+  struct Source {
+    const Batch& batch;
+    const std::vector<Body>& bodies;
+    static detail::PairRef<A, B> pair(const void* context, std::size_t k) {
+      const Source& s = *static_cast<const Source*>(context);
+      const Body& x = s.bodies[s.batch.a[k]];
+      const Body& y = s.bodies[s.batch.b[k]];
+      return {std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
+    }
+  };
+  const Source source{*this, bodies};
   verdicts.resize(places.size());
-  overlap_batch<A, B>(a, a_orientations, b, b_orientations, verdicts);
+  detail::overlap_pairs<A, B>({&source, &Source::pair}, verdicts);
   for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
 }
 
@@ -361,9 +376,7 @@ template <class A, class B>
 void World::Batch<A, B>::clear() {
   places.clear();
   a.clear();
-  a_orientations.clear();
   b.clear();
-  b_orientations.clear();
 }
 
 void World::update() {
@@ -390,7 +403,6 @@ void World::update() {
 // then each result list joined in chunk order and sorted by pair, which makes it the same for any
 // thread count.
 void World::narrow_phase() {
-  constexpr std::size_t kPairsPerChunk = 256;
   const std::size_t chunks = std::max<std::size_t>(1, (candidates_.size() + kPairsPerChunk - 1) / kPairsPerChunk);
   if (chunks_.size() < chunks) chunks_.resize(chunks);
   const auto task = [this](std::size_t task) {
@@ -435,7 +447,7 @@ void World::narrow_phase() {
 void World::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
   out.clear();
   for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  std::apply([&out](auto&... batch) { (batch.run(out.verdicts), ...); }, out.batches);
+  std::apply([&](auto&... batch) { (batch.run(bodies_, out.verdicts), ...); }, out.batches);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
@@ -461,10 +473,10 @@ World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& o
         if constexpr (std::is_same_v<X, Ellipse> && std::is_same_v<Y, Ellipse>) {
           return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
         } else if constexpr (detail::rank<X>() <= detail::rank<Y>()) {
-          std::get<Batch<X, Y>>(out.batches).add(place, x, y);
+          std::get<Batch<X, Y>>(out.batches).add(place, a, b);
           return Verdict::batched;
         } else {
-          std::get<Batch<Y, X>>(out.batches).add(place, y, x);
+          std::get<Batch<Y, X>>(out.batches).add(place, b, a);
           return Verdict::batched;
         }
       },

@@ -8,6 +8,7 @@
 // Work goes in chunks (batch_chunk.h): the vector kernel decides the chunk, and the uncertain pairs
 // go to the exact fallback one by one.
 #include "narrowphase/overlap_batch.h"
+#include "narrowphase/overlap_pairs.h"
 
 #include "narrowphase/batch_chunk.h"
 #include "narrowphase/kernel_order.h"
@@ -94,78 +95,127 @@ HWY_EXPORT(circle_circle_chunk);
 HWY_EXPORT(rect_circle_chunk);
 HWY_EXPORT(circle_ellipse_chunk);
 
-bool never_uncertain(std::size_t) { throw std::logic_error("a kernel that decides every pair left one uncertain"); }
+// Pair k's lanes (the one-off kernel's inputs and rounding), two shapes of one kind in the
+// dispatcher's key order.
+detail::RectEllipseLanes<double> lanes_of(const detail::PairRef<Rect, Ellipse>& p) {
+  const Orientation &ro = p.a_orientation, &eo = p.b_orientation;
+  return detail::rect_ellipse_lanes(detail::rect_ellipse_frame<double>(p.a, {ro.c, ro.s}, p.b, {eo.c, eo.s}));
+}
+detail::RectRectLanes<double> lanes_of(const detail::PairRef<Rect, Rect>& p) {
+  return detail::key(p.b) < detail::key(p.a) ? detail::rect_rect_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
+                                             : detail::rect_rect_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+}
+detail::CircleCircleLanes<double> lanes_of(const detail::PairRef<Circle, Circle>& p) {
+  return detail::key(p.b) < detail::key(p.a) ? detail::circle_circle_lanes(p.b, p.a) : detail::circle_circle_lanes(p.a, p.b);
+}
+detail::RectCircleLanes<double> lanes_of(const detail::PairRef<Rect, Circle>& p) {
+  return detail::rect_circle_lanes(p.a, p.a_orientation, p.b);
+}
+detail::CircleEllipseLanes<double> lanes_of(const detail::PairRef<Circle, Ellipse>& p) {
+  return detail::circle_ellipse_lanes(p.a, p.b, p.b_orientation);
+}
 
-// The batch in chunks: lanes_of(k) gives pair k's kernel inputs (scalar code, the one-off kernel's
-// rounding), decide_chunk the chunk's verdicts, and exact(k) the verdict of a pair left uncertain.
-template <std::size_t kFields, class LanesOf, class DecideChunk, class Exact>
-void run_batch(std::span<std::uint8_t> overlapping, LanesOf lanes_of, DecideChunk decide_chunk, Exact exact) {
-  detail::Chunk<kFields> chunk;
+// The verdict of a pair the vector kernel left uncertain.
+bool exact(const detail::PairRef<Rect, Ellipse>& p) { return detail::minkowski_fallback(p.a, p.b); }
+bool exact(const detail::PairRef<Circle, Ellipse>& p) { return detail::circle_ellipse_exact(lanes_of(p)); }
+template <class A, class B>
+bool exact(const detail::PairRef<A, B>&) {
+  throw std::logic_error("a kernel that decides every pair left one uncertain");
+}
+
+// The vector kernel of a pair kind on the chunk's first `count` pairs.
+template <class A, class B>
+struct Kinds {};
+void decide(detail::Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk)(chunk, count);
+}
+void decide(detail::Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) {
+  HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count);
+}
+void decide(detail::Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
+  HWY_DYNAMIC_DISPATCH(circle_circle_chunk)(chunk, count);
+}
+void decide(detail::Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
+  HWY_DYNAMIC_DISPATCH(rect_circle_chunk)(chunk, count);
+}
+void decide(detail::Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk)(chunk, count);
+}
+
+// The public functions' lists as a pair source; a circle's orientations may be left empty.
+template <class A, class B>
+struct Lists {
+  std::span<const A> a;
+  std::span<const Orientation> a_orientations;
+  std::span<const B> b;
+  std::span<const Orientation> b_orientations;
+
+  static detail::PairRef<A, B> pair(const void* context, std::size_t k) {
+    static const Orientation unturned;
+    const Lists& l = *static_cast<const Lists*>(context);
+    return {l.a[k], l.a_orientations.empty() ? unturned : l.a_orientations[k], l.b[k],
+            l.b_orientations.empty() ? unturned : l.b_orientations[k]};
+  }
+  void run(std::span<std::uint8_t> overlapping) const { detail::overlap_pairs<A, B>({this, &Lists::pair}, overlapping); }
+};
+
+}  // namespace
+
+// The batch in chunks: each pair's lanes from scalar code (the one-off kernel's rounding), the
+// chunk's verdicts from the vector kernel, and each pair it left uncertain from the exact fallback.
+template <class A, class B>
+void detail::overlap_pairs(const PairSource<A, B>& pairs, std::span<std::uint8_t> overlapping) {
+  using Lanes = decltype(lanes_of(std::declval<PairRef<A, B>>()));
+  const auto pair = [&](std::size_t k) { return pairs.pair(pairs.context, k); };
+  detail::Chunk<Lanes::kFields> chunk;
   for (std::size_t start = 0; start < overlapping.size(); start += detail::kChunk) {
     const std::size_t count = std::min(detail::kChunk, overlapping.size() - start);
-    detail::fill_chunk(chunk, start, count, lanes_of);
-    decide_chunk(chunk, count);
+    detail::fill_chunk(chunk, start, count, [&](std::size_t k) { return lanes_of(pair(k)); });
+    decide(chunk, count, Kinds<A, B>());
     for (std::size_t i = 0; i < count; ++i) {
       const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
-      const bool hit = verdict == FilterVerdict::uncertain ? exact(start + i) : verdict == FilterVerdict::overlap;
+      const bool hit = verdict == FilterVerdict::uncertain ? exact(pair(start + i)) : verdict == FilterVerdict::overlap;
       overlapping[start + i] = hit ? 1 : 0;
     }
   }
 }
 
-}  // namespace
+template void detail::overlap_pairs<Rect, Ellipse>(const PairSource<Rect, Ellipse>&, std::span<std::uint8_t>);
+template void detail::overlap_pairs<Rect, Rect>(const PairSource<Rect, Rect>&, std::span<std::uint8_t>);
+template void detail::overlap_pairs<Circle, Circle>(const PairSource<Circle, Circle>&, std::span<std::uint8_t>);
+template void detail::overlap_pairs<Rect, Circle>(const PairSource<Rect, Circle>&, std::span<std::uint8_t>);
+template void detail::overlap_pairs<Circle, Ellipse>(const PairSource<Circle, Ellipse>&, std::span<std::uint8_t>);
 
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
-                overlapping.size());
-  const auto lanes_of = [&](std::size_t k) {
-    const Orientation& ro = rect_orientations[k];
-    const Orientation& eo = ellipse_orientations[k];
-    return detail::rect_ellipse_lanes(detail::rect_ellipse_frame<double>(rects[k], {ro.c, ro.s}, ellipses[k], {eo.c, eo.s}));
-  };
-  const auto exact = [&](std::size_t k) { return detail::minkowski_fallback(rects[k], ellipses[k]); };
-  run_batch<detail::RectEllipseLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk), exact);
+                        overlapping.size());
+  Lists<Rect, Ellipse>{rects, rect_orientations, ellipses, ellipse_orientations}.run(overlapping);
 }
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
-  const auto lanes_of = [&](std::size_t k) {
-    return detail::key(b[k]) < detail::key(a[k]) ? detail::rect_rect_lanes(b[k], b_orientations[k], a[k], a_orientations[k])
-                                                 : detail::rect_rect_lanes(a[k], a_orientations[k], b[k], b_orientations[k]);
-  };
-  run_batch<detail::RectRectLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_rect_chunk), never_uncertain);
+  Lists<Rect, Rect>{a, a_orientations, b, b_orientations}.run(overlapping);
 }
 
 void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
-  const auto lanes_of = [&](std::size_t k) {
-    return detail::key(b[k]) < detail::key(a[k]) ? detail::circle_circle_lanes(b[k], a[k]) : detail::circle_circle_lanes(a[k], b[k]);
-  };
-  run_batch<detail::CircleCircleLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(circle_circle_chunk),
-                                                        never_uncertain);
+  Lists<Circle, Circle>{a, {}, b, {}}.run(overlapping);
 }
 
 void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
-  const auto lanes_of = [&](std::size_t k) { return detail::rect_circle_lanes(rects[k], rect_orientations[k], circles[k]); };
-  run_batch<detail::RectCircleLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(rect_circle_chunk),
-                                                      never_uncertain);
+  Lists<Rect, Circle>{rects, rect_orientations, circles, {}}.run(overlapping);
 }
 
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
-                overlapping.size());
-  const auto lanes_of = [&](std::size_t k) {
-    return detail::circle_ellipse_lanes(circles[k], ellipses[k], ellipse_orientations[k]);
-  };
-  const auto exact = [&](std::size_t k) { return detail::circle_ellipse_exact(lanes_of(k)); };
-  run_batch<detail::CircleEllipseLanes<double>::kFields>(overlapping, lanes_of, HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk),
-                                                         exact);
+                        overlapping.size());
+  Lists<Circle, Ellipse>{circles, {}, ellipses, ellipse_orientations}.run(overlapping);
 }
 
 }  // namespace collide2d
