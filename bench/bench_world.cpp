@@ -16,6 +16,8 @@
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include "engine/world.h"
+#include "tools/run_command.h"
+#include "tools/scene.h"
 
 #include "bench/box2d_baseline.h"
 #include "tests/allocation_counter.h"
@@ -87,6 +89,25 @@ std::size_t heap_in_use() {
   return m.uordblks + m.hblkhd;
 }
 
+// Per-frame means, as counters, of what a frame benchmark adds up: phase times in seconds, pairs.
+struct FrameTotals {
+  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
+
+  void add(const FrameStats& f) {
+    broad += f.broad_seconds;
+    narrow += f.narrow_seconds;
+    candidates += static_cast<double>(f.candidates);
+    overlapping += static_cast<double>(f.overlapping);
+  }
+  void report(benchmark::State& state) const {
+    const double frames = static_cast<double>(state.iterations());
+    state.counters["broad_ms"] = 1e3 * broad / frames;
+    state.counters["narrow_ms"] = 1e3 * narrow / frames;
+    state.counters["candidates"] = candidates / frames;
+    state.counters["overlapping"] = overlapping / frames;
+  }
+};
+
 enum class Level { none, static_bodies, static_apart, moving_bodies };
 
 template <Level level, bool contacts = false>
@@ -122,22 +143,15 @@ void frame(benchmark::State& state) {
   };
   // Steady state: the lists have grown to what the scene needs.
   for (int k = 0; k < 20; ++k) step();
-  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
+  FrameTotals totals;
   const long allocations_before = testing::allocation_count.load();
   for (auto _ : state) {
     step();
-    const FrameStats& f = world.last_frame();
-    broad += f.broad_seconds;
-    narrow += f.narrow_seconds;
-    candidates += static_cast<double>(f.candidates);
-    overlapping += static_cast<double>(f.overlapping);
+    totals.add(world.last_frame());
   }
   const double frames = static_cast<double>(state.iterations());
   state.counters["allocs_per_frame"] = static_cast<double>(testing::allocation_count.load() - allocations_before) / frames;
-  state.counters["broad_ms"] = 1e3 * broad / frames;
-  state.counters["narrow_ms"] = 1e3 * narrow / frames;
-  state.counters["candidates"] = candidates / frames;
-  state.counters["overlapping"] = overlapping / frames;
+  totals.report(state);
 }
 
 // Box2D 2.4.1's pipeline on the same moving bodies, the rival: each body a Box2D shape in its own
@@ -149,7 +163,9 @@ void frame(benchmark::State& state) {
 // a contact list in a block allocator, so its allocations are not reported.
 class Box2dWorld {
  public:
-  explicit Box2dWorld(const std::vector<Shape>& shapes) {
+  // With filters, a pair passes them (should_pair, Box2D's b2ContactFilter rule) before its test,
+  // as b2ContactManager::AddPair asks ShouldCollide before it makes a contact.
+  explicit Box2dWorld(const std::vector<Shape>& shapes, std::vector<Filter> filters = {}) : filters_(std::move(filters)) {
     std::vector<Aabb> boxes;
     for (const Shape& shape : shapes) {
       const Shape local = std::visit(
@@ -176,6 +192,7 @@ class Box2dWorld {
     std::size_t overlapping = 0;
     for (const std::uint64_t key : broad_.pairs()) {
       const std::size_t a = key >> 32, b = key & 0xffffffffu;
+      if (!filters_.empty() && !should_pair(filters_[a], filters_[b])) continue;
       overlapping += b2TestOverlap(shapes_[a].shape(), 0, shapes_[b].shape(), 0, transforms_[a], transforms_[b]) ? 1 : 0;
     }
     return overlapping;
@@ -185,11 +202,33 @@ class Box2dWorld {
  private:
   std::vector<baseline::Box2dShape> shapes_;
   std::vector<b2Transform> transforms_;
+  std::vector<Filter> filters_;
   baseline::Box2dBroadPhase broad_;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Box2dWorld's frames after 20 of warm-up: pose() moves the bodies and updates the broad phase
+// (timed as its broad phase), then every pair is tested.
+template <class Pose>
+void time_box2d_frames(benchmark::State& state, Box2dWorld& world, Pose pose) {
+  for (int k = 0; k < 20; ++k) {
+    pose();
+    world.narrow_phase();
+  }
+  FrameTotals totals;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    pose();
+    totals.broad += seconds_since(start);
+    const auto narrow_start = std::chrono::steady_clock::now();
+    totals.overlapping += static_cast<double>(world.narrow_phase());
+    totals.narrow += seconds_since(narrow_start);
+    totals.candidates += static_cast<double>(world.candidates());
+  }
+  totals.report(state);
 }
 
 // The "alone" and "crowd" scenes of frame<> through Box2dWorld: the same bodies, the same motion.
@@ -206,25 +245,44 @@ void box2d_frame(benchmark::State& state) {
   };
   pose();
   state.counters["heap_B_per_body"] = static_cast<double>(heap_in_use() - heap_before - movers.heap()) / moving;
-  for (int k = 0; k < 20; ++k) {
-    pose();
-    world.narrow_phase();
-  }
-  double broad = 0.0, narrow = 0.0, candidates = 0.0, overlapping = 0.0;
+  time_box2d_frames(state, world, pose);
+}
+
+// The built-in scene of `collide2d run` (tool::default_scene: n mixed bodies, a quarter of them on a
+// second layer, one bullet per 500, a static level and four sensors), one frame per iteration: its
+// kinematics, the poses and update(), on every hardware thread, as the command runs it.
+void scene_frame(benchmark::State& state) {
+  tool::SceneRun run(tool::default_scene(static_cast<int>(state.range(0)), 1));
+  for (int k = 0; k < 20; ++k) run.frame();
+  FrameTotals totals;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    pose();
-    broad += seconds_since(start);
-    const auto narrow_start = std::chrono::steady_clock::now();
-    overlapping += static_cast<double>(world.narrow_phase());
-    narrow += seconds_since(narrow_start);
-    candidates += static_cast<double>(world.candidates());
+    run.frame();
+    totals.add(run.world().last_frame());
   }
-  const double frames = static_cast<double>(state.iterations());
-  state.counters["broad_ms"] = 1e3 * broad / frames;
-  state.counters["narrow_ms"] = 1e3 * narrow / frames;
-  state.counters["candidates"] = candidates / frames;
-  state.counters["overlapping"] = overlapping / frames;
+  totals.report(state);
+}
+
+// The built-in scene through Box2dWorld: every body (the static ones never posed, so that, as in
+// Box2D, they pair only with bodies that move), the same kinematics, the layers' filters. Its
+// bullets are tested for overlap only, where the World also finds their first contacts in the frame.
+void box2d_scene_frame(benchmark::State& state) {
+  tool::Scene scene = tool::default_scene(static_cast<int>(state.range(0)), 1);
+  std::vector<Shape> shapes;
+  std::vector<Filter> filters;
+  for (const tool::SceneBody& b : scene.bodies) {
+    shapes.push_back(b.shape);
+    filters.push_back(b.filter);
+  }
+  Box2dWorld world(shapes, filters);
+  const auto pose = [&] {
+    tool::step(scene);
+    for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+      const Shape& shape = scene.bodies[k].shape;
+      if (!scene.bodies[k].is_static) world.set_pose(k, center_of(shape), angle_of(shape));
+    }
+    world.update_broad_phase();
+  };
+  time_box2d_frames(state, world, pose);
 }
 
 // Args: the level's size (for "alone", the number of moving bodies), then the World's threads.
@@ -237,6 +295,8 @@ BENCHMARK(frame<Level::moving_bodies>)->Name("frame/level_moving")->Args({10000,
 BENCHMARK(frame<Level::none>)->Name("frame/crowd")->Args({100000, 1})->Args({100000, 2})->Unit(benchmark::kMillisecond);
 BENCHMARK(box2d_frame)->Name("box2d_frame/alone")->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(box2d_frame)->Name("box2d_frame/crowd")->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(scene_frame)->Name("frame/scene")->Arg(4000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(box2d_scene_frame)->Name("box2d_frame/scene")->Arg(4000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace collide2d

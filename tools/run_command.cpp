@@ -50,17 +50,21 @@ RunSummary SceneRun::totals() const {
   return s;
 }
 
+void SceneRun::frame() {
+  step(scene_);
+  for (std::size_t k = 0; k < ids_.size(); ++k) {
+    const Shape& shape = scene_.bodies[k].shape;
+    if (!scene_.bodies[k].is_static) world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
+  }
+  world_.update();
+}
+
 RunSummary SceneRun::run(std::ostream* progress) {
   RunSummary s = totals();
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
-    step(scene_);
-    for (std::size_t k = 0; k < ids_.size(); ++k) {
-      const Shape& shape = scene_.bodies[k].shape;
-      if (!scene_.bodies[k].is_static) world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
-    }
-    world_.update();
+    this->frame();
     const FrameStats& f = world_.last_frame();
     broad.push_back(1e3 * f.broad_seconds);
     narrow.push_back(1e3 * f.narrow_seconds);

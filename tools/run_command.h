@@ -45,6 +45,8 @@ class SceneRun {
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
   // when it is not null.
   RunSummary run(std::ostream* progress);
+  // One frame of it (bench_world times this).
+  void frame();
   // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
   RunSummary totals() const;
 
