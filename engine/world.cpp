@@ -356,19 +356,14 @@ void World::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_body, std::uin
 
 template <class A, class B>
 void World::Batch<A, B>::run(const std::vector<Body>& bodies, std::vector<Verdict>& chunk_verdicts) {
-  struct Source {
-    const Batch& batch;
-    const std::vector<Body>& bodies;
-    static detail::PairRef<A, B> pair(const void* context, std::size_t k) {
-      const Source& s = *static_cast<const Source*>(context);
-      const Body& x = s.bodies[s.batch.a[k]];
-      const Body& y = s.bodies[s.batch.b[k]];
-      return {std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
-    }
-  };
-  const Source source{*this, bodies};
   verdicts.resize(places.size());
-  detail::overlap_pairs<A, B>({&source, &Source::pair}, verdicts);
+  detail::overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        const Body& x = bodies[a[k]];
+        const Body& y = bodies[b[k]];
+        return detail::PairRef<A, B>{std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
+      },
+      verdicts);
   for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
 }
 

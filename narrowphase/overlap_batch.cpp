@@ -23,6 +23,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #undef HWY_TARGET_INCLUDE
@@ -95,127 +96,78 @@ HWY_EXPORT(circle_circle_chunk);
 HWY_EXPORT(rect_circle_chunk);
 HWY_EXPORT(circle_ellipse_chunk);
 
-// Pair k's lanes (the one-off kernel's inputs and rounding), two shapes of one kind in the
-// dispatcher's key order.
-detail::RectEllipseLanes<double> lanes_of(const detail::PairRef<Rect, Ellipse>& p) {
-  const Orientation &ro = p.a_orientation, &eo = p.b_orientation;
-  return detail::rect_ellipse_lanes(detail::rect_ellipse_frame<double>(p.a, {ro.c, ro.s}, p.b, {eo.c, eo.s}));
-}
-detail::RectRectLanes<double> lanes_of(const detail::PairRef<Rect, Rect>& p) {
-  return detail::key(p.b) < detail::key(p.a) ? detail::rect_rect_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
-                                             : detail::rect_rect_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
-}
-detail::CircleCircleLanes<double> lanes_of(const detail::PairRef<Circle, Circle>& p) {
-  return detail::key(p.b) < detail::key(p.a) ? detail::circle_circle_lanes(p.b, p.a) : detail::circle_circle_lanes(p.a, p.b);
-}
-detail::RectCircleLanes<double> lanes_of(const detail::PairRef<Rect, Circle>& p) {
-  return detail::rect_circle_lanes(p.a, p.a_orientation, p.b);
-}
-detail::CircleEllipseLanes<double> lanes_of(const detail::PairRef<Circle, Ellipse>& p) {
-  return detail::circle_ellipse_lanes(p.a, p.b, p.b_orientation);
-}
+}  // namespace
 
-// The verdict of a pair the vector kernel left uncertain.
-bool exact(const detail::PairRef<Rect, Ellipse>& p) { return detail::minkowski_fallback(p.a, p.b); }
-bool exact(const detail::PairRef<Circle, Ellipse>& p) { return detail::circle_ellipse_exact(lanes_of(p)); }
-template <class A, class B>
-bool exact(const detail::PairRef<A, B>&) {
-  throw std::logic_error("a kernel that decides every pair left one uncertain");
-}
-
-// The vector kernel of a pair kind on the chunk's first `count` pairs.
-template <class A, class B>
-struct Kinds {};
-void decide(detail::Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
+void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
   HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk)(chunk, count);
 }
-void decide(detail::Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) {
-  HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count);
-}
-void decide(detail::Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
+void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) { HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count); }
+void detail::decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
   HWY_DYNAMIC_DISPATCH(circle_circle_chunk)(chunk, count);
 }
-void decide(detail::Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
+void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
   HWY_DYNAMIC_DISPATCH(rect_circle_chunk)(chunk, count);
 }
-void decide(detail::Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
+void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
   HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk)(chunk, count);
 }
 
-// The public functions' lists as a pair source; a circle's orientations may be left empty.
-template <class A, class B>
-struct Lists {
-  std::span<const A> a;
-  std::span<const Orientation> a_orientations;
-  std::span<const B> b;
-  std::span<const Orientation> b_orientations;
+namespace {
 
-  static detail::PairRef<A, B> pair(const void* context, std::size_t k) {
-    static const Orientation unturned;
-    const Lists& l = *static_cast<const Lists*>(context);
-    return {l.a[k], l.a_orientations.empty() ? unturned : l.a_orientations[k], l.b[k],
-            l.b_orientations.empty() ? unturned : l.b_orientations[k]};
-  }
-  void run(std::span<std::uint8_t> overlapping) const { detail::overlap_pairs<A, B>({this, &Lists::pair}, overlapping); }
-};
-
-}  // namespace
-
-// The batch in chunks: each pair's lanes from scalar code (the one-off kernel's rounding), the
-// chunk's verdicts from the vector kernel, and each pair it left uncertain from the exact fallback.
-template <class A, class B>
-void detail::overlap_pairs(const PairSource<A, B>& pairs, std::span<std::uint8_t> overlapping) {
-  using Lanes = decltype(lanes_of(std::declval<PairRef<A, B>>()));
-  const auto pair = [&](std::size_t k) { return pairs.pair(pairs.context, k); };
-  detail::Chunk<Lanes::kFields> chunk;
-  for (std::size_t start = 0; start < overlapping.size(); start += detail::kChunk) {
-    const std::size_t count = std::min(detail::kChunk, overlapping.size() - start);
-    detail::fill_chunk(chunk, start, count, [&](std::size_t k) { return lanes_of(pair(k)); });
-    decide(chunk, count, Kinds<A, B>());
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
-      const bool hit = verdict == FilterVerdict::uncertain ? exact(pair(start + i)) : verdict == FilterVerdict::overlap;
-      overlapping[start + i] = hit ? 1 : 0;
-    }
+// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
+template <class S>
+const Orientation& orientation(std::span<const Orientation> list, std::size_t k) {
+  static const Orientation unturned;
+  if constexpr (std::is_same_v<S, Circle>) {
+    return unturned;
+  } else {
+    return list[k];
   }
 }
 
-template void detail::overlap_pairs<Rect, Ellipse>(const PairSource<Rect, Ellipse>&, std::span<std::uint8_t>);
-template void detail::overlap_pairs<Rect, Rect>(const PairSource<Rect, Rect>&, std::span<std::uint8_t>);
-template void detail::overlap_pairs<Circle, Circle>(const PairSource<Circle, Circle>&, std::span<std::uint8_t>);
-template void detail::overlap_pairs<Rect, Circle>(const PairSource<Rect, Circle>&, std::span<std::uint8_t>);
-template void detail::overlap_pairs<Circle, Ellipse>(const PairSource<Circle, Ellipse>&, std::span<std::uint8_t>);
+// The public functions' lists as pairs.
+template <class A, class B>
+void overlap_lists(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
+                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  detail::overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        return detail::PairRef<A, B>{a[k], orientation<A>(a_orientations, k), b[k], orientation<B>(b_orientations, k)};
+      },
+      overlapping);
+}
+
+}  // namespace
 
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
                         overlapping.size());
-  Lists<Rect, Ellipse>{rects, rect_orientations, ellipses, ellipse_orientations}.run(overlapping);
+  overlap_lists<Rect, Ellipse>(rects, rect_orientations, ellipses, ellipse_orientations, overlapping);
 }
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
-  Lists<Rect, Rect>{a, a_orientations, b, b_orientations}.run(overlapping);
+  overlap_lists<Rect, Rect>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
-  Lists<Circle, Circle>{a, {}, b, {}}.run(overlapping);
+  overlap_lists<Circle, Circle>(a, {}, b, {}, overlapping);
 }
 
 void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
-  Lists<Rect, Circle>{rects, rect_orientations, circles, {}}.run(overlapping);
+  overlap_lists<Rect, Circle>(rects, rect_orientations, circles, {}, overlapping);
 }
 
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
   detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
                         overlapping.size());
-  Lists<Circle, Ellipse>{circles, {}, ellipses, ellipse_orientations}.run(overlapping);
+  overlap_lists<Circle, Ellipse>(circles, {}, ellipses, ellipse_orientations, overlapping);
 }
 
 }  // namespace collide2d
