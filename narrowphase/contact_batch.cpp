@@ -44,7 +44,7 @@ struct Vectors {
     const auto fields = circle_ellipse_contact(f, nearest).fields();
     for (std::size_t k = 0; k < Out::kFields; ++k) hn::StoreU(fields[k], d, out.field[k] + i);
     std::uint8_t general[detail::kMaxLanes / 8 + 1] = {};
-    hn::StoreMaskBits(d, nearest.general, general);
+    hn::StoreMaskBits(d, q.general, general);
     for (std::size_t j = 0; j < hn::Lanes(d); ++j) out.verdict[i + j] = general[j / 8] >> (j % 8) & 1;
   }
 };

@@ -179,8 +179,8 @@ Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Sep
 // s is largest, from support values alone (no points, no divisions): on bench_contact's candidate
 // ellipse pairs the climb from the line of centres was certified in 49% of them, from this one in
 // 83%, and the mean support evaluations fell from 9.28 to 7.38. Thin ellipses side by side are
-// separated across their axes, seldom along the line of centres.
-// Along its own axes an ellipse's support value is its semi-axis: one square root per axis.
+// separated across their axes, seldom along the line of centres. Along its own axes an ellipse's
+// support value is its semi-axis: one square root per axis.
 template <class Real>
 V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>& p, V2<Real> n) {
   Real best = p.delta.dot(n) - p.A.extent(n) - p.B.extent(n);
@@ -201,8 +201,8 @@ V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSuppo
 // direction (zero: the one where s is largest), where s has a kink and the maximum of a face
 // contact sits, Newton climbs s' while s is concave, and the maximum it reaches is kept when
 // disc_bound certifies it. Pairs apart, and overlaps shallower than the radii, end here after two
-// or three evaluations; nullopt hands the
-// rest (a step leaving its quarter turn, a convex stretch, a bound too loose) to the search;
+// or three evaluations; nullopt hands the rest (a step leaving its quarter turn, a convex stretch,
+// a bound too loose) to the search;
 // `evaluations` counts the support evaluations either way. A caller that needs only a lower bound
 // of s near its maximum (a time of impact's step far from contact) passes `rough` > 0: the climb
 // then stops, uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is
@@ -323,8 +323,9 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   Deepest<Real> best;
   std::optional<Direction<Real>> reached;
   if (const auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &reached)) return *quick;
-  // Not seeded with the climb's best: a point short of its maximum by less than the rounding of s
-  // would be kept over the polished one.
+  // The best value is not seeded from a climb that stopped short (a point short of its maximum by
+  // less than the rounding of s would be kept over the polished one); a polished maximum it
+  // reached joins the arc ends below.
   best.at.s = -std::numeric_limits<Real>::infinity();
   thread_local std::vector<ArcEnd<Real>> ends;
   thread_local std::vector<Arc<Real>> arcs;

@@ -32,21 +32,16 @@ Vec2 closest_on_axis(double e0, double e1, double y0, double y1) {
   return {e0, 0.0};
 }
 
-PointEllipseResult axis_case(double a, double b, const Vec2& p) {
-  const bool swap_axes = b > a;
-  const double e0 = swap_axes ? b : a;
-  const double e1 = swap_axes ? a : b;
-  const double y0 = std::abs(swap_axes ? p.y() : p.x());
-  const double y1 = std::abs(swap_axes ? p.x() : p.y());
-  const Vec2 q = closest_on_axis(e0, e1, y0, y1);
-  const Vec2 g = Vec2(q.x() / e0 * (e1 / e0), q.y() / e1).normalized();
+PointEllipseResult axis_case(const detail::Quadrant<double, bool>& q, const Vec2& p) {
+  const Vec2 c = closest_on_axis(q.e0, q.e1, q.y0, q.y1);
+  const Vec2 g = Vec2(c.x() / q.e0 * (q.e1 / q.e0), c.y() / q.e1).normalized();
   const auto unswap = [&](const Vec2& v) {
-    return Vec2(std::copysign(swap_axes ? v.y() : v.x(), p.x()), std::copysign(swap_axes ? v.x() : v.y(), p.y()));
+    return Vec2(std::copysign(q.swap ? v.y() : v.x(), p.x()), std::copysign(q.swap ? v.x() : v.y(), p.y()));
   };
   PointEllipseResult result;
-  result.inside = (y0 / e0) * (y0 / e0) + (y1 / e1) * (y1 / e1) <= 1.0;
-  result.distance = std::hypot(q.x() - y0, q.y() - y1);
-  result.closest = unswap(q);
+  result.inside = q.inside;
+  result.distance = std::hypot(c.x() - q.y0, c.y() - q.y1);
+  result.closest = unswap(c);
   result.normal = unswap(g);
   return result;
 }
@@ -54,8 +49,13 @@ PointEllipseResult axis_case(double a, double b, const Vec2& p) {
 }  // namespace
 
 PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p) {
-  const detail::NearestOnEllipse<double, bool> n = detail::nearest_on_ellipse(detail::Scalar{}, p.x(), p.y(), a, b);
-  return n.general ? detail::point_ellipse_result(n) : axis_case(a, b, p);
+  const detail::Scalar d;
+  const auto q = detail::Quadrant<double, bool>::of(d, p.x(), p.y(), a, b);
+  if (!q.general) return axis_case(q, p);
+  detail::SecularRoot<detail::Scalar, double> root(d, q.r0, q.z0, q.z1);
+  while (root.step()) {
+  }
+  return detail::point_ellipse_result(detail::nearest_at_root(d, q, root.t(), p.x(), p.y()));
 }
 
 }  // namespace collide2d

@@ -48,14 +48,13 @@ struct NearestOnEllipse {
   V qx, qy;    // the nearest point
   V nx, ny;    // the curve's outward unit normal there
   M inside;    // the point lies in the closed solid
-  M general;   // false: an axis case, which the caller's closed forms decide instead
 };
 
 inline PointEllipseResult point_ellipse_result(const NearestOnEllipse<double, bool>& n) {
   return {n.distance, Vec2(n.qx, n.qy), Vec2(n.nx, n.ny), n.inside};
 }
 inline NearestOnEllipse<double, bool> nearest_on_ellipse(const PointEllipseResult& r) {
-  return {r.distance, r.closest.x(), r.closest.y(), r.normal.x(), r.normal.y(), r.inside, true};
+  return {r.distance, r.closest.x(), r.closest.y(), r.normal.x(), r.normal.y(), r.inside};
 }
 
 // A circle and a posed ellipse as the contact takes them: both centres, the ellipse's orientation

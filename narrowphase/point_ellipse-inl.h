@@ -1,8 +1,8 @@
 // Private: the nearest point of an ellipse's curve to a point, written once over lanes (lanes.h):
 // distance_point_ellipse runs it on a double, the batched circle–ellipse contact on vectors, with
 // the same IEEE operations in the same order, so both give the same bits. The method and its
-// accuracy are in distance_point_ellipse.h; the lanes it leaves (`general` false) go to the closed
-// forms of the axis cases there.
+// accuracy are in distance_point_ellipse.h; the lanes it leaves (Quadrant::general false) go to
+// the closed forms of the axis cases there.
 //
 // Included inside a namespace, once per Highway target (no #pragma once).
 #if defined(COLLIDE2D_POINT_ELLIPSE_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -66,14 +66,17 @@ class SecularRoot {
 };
 
 // The point p = (px, py) in the ellipse's frame (semi-axes a along x, b along y), reflected into
-// the first quadrant of the frame whose x axis is the major one: e0 >= e1, y = |p|, z = y / e.
+// the first quadrant of the frame whose x axis is the major one: e0 >= e1, y = |p|, z = y / e;
+// whether it lies in the solid, and whether the root serves it (`general`; else an axis case, which
+// distance_point_ellipse's closed forms decide).
 template <class V, class M>
 struct Quadrant {
   M swap;
   V e0, e1, y0, y1, z0, z1, r0;
+  M inside, general;
 
   template <class D>
-  static Quadrant of(D, const V& px, const V& py, const V& a, const V& b) {
+  static Quadrant of(D d, const V& px, const V& py, const V& a, const V& b) {
     Quadrant q;
     q.swap = b > a;
     q.e0 = IfThenElse(q.swap, b, a);
@@ -84,6 +87,9 @@ struct Quadrant {
     q.z1 = q.y1 / q.e1;
     const V ratio = q.e0 / q.e1;
     q.r0 = ratio * ratio;
+    const V rho2 = q.z0 * q.z0 + q.z1 * q.z1;
+    q.inside = rho2 <= Set(d, 1.0);
+    q.general = And(q.z1 > Set(d, 1e-50), And(q.y0 > Set(d, 0.0), rho2 != Set(d, 1.0)));
     return q;
   }
 };
@@ -101,25 +107,14 @@ detail::NearestOnEllipse<V, M> nearest_at_root(D d, const Quadrant<V, M>& q, con
   const V g = Sqrt(g0 * g0 + g1 * g1);
   const V n0 = g0 / g, n1 = g1 / g;
   const V q0 = q.e0 * a_, q1 = q.e1 * b_;
-  const V rho2 = q.z0 * q.z0 + q.z1 * q.z1;
   detail::NearestOnEllipse<V, M> out;
   out.distance = Abs(t - one) * (q.e1 * g);
   out.qx = CopySign(IfThenElse(q.swap, q1, q0), px);
   out.qy = CopySign(IfThenElse(q.swap, q0, q1), py);
   out.nx = CopySign(IfThenElse(q.swap, n1, n0), px);
   out.ny = CopySign(IfThenElse(q.swap, n0, n1), py);
-  out.inside = rho2 <= one;
-  out.general = And(q.z1 > Set(d, 1e-50), And(q.y0 > Set(d, 0.0), rho2 != one));
+  out.inside = q.inside;
   return out;
-}
-
-template <class D, class V>
-auto nearest_on_ellipse(D d, const V& px, const V& py, const V& a, const V& b) {
-  const auto q = Quadrant<V, decltype(V() < V())>::of(d, px, py, a, b);
-  SecularRoot<D, V> root(d, q.r0, q.z0, q.z1);
-  while (root.step()) {
-  }
-  return nearest_at_root(d, q, root.t(), px, py);
 }
 
 // The circle's centre in the ellipse's frame (Rotation::apply_inverse of the centres' difference).
