@@ -204,6 +204,14 @@ struct SupportPair {
     const Support<Real> b2 = std::is_same_v<SB, RectSupport<Real>> ? B.at(n, after) : b;
     return {combine(n, a, b), combine(n, a2, b2)};
   }
+  // s along -n, from e along n: both shapes are centrally symmetric, so their support points (a
+  // rectangle's corner on the opposite side) are those for n negated, bit for bit, and no support
+  // is evaluated.
+  Separation<Real> opposite(const V2<Real>& n, const Separation<Real>& e) const {
+    const V2<Real> gap = delta + e.offset_a + e.offset_b;
+    const Real s = -n.dot(gap);
+    return {s, -perp(n).dot(gap), s + e.rho_a + e.rho_b, gap, -e.offset_a, -e.offset_b, e.rho_a, e.rho_b};
+  }
 
  private:
   Separation<Real> combine(const V2<Real>& n, const Support<Real>& sa, const Support<Real>& sb) const {
