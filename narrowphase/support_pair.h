@@ -42,6 +42,7 @@ struct Support {
   V2<Real> offset;  // support point minus centre
   Real h = 0;       // support function value
   Real rho = 0;     // radius of curvature of the boundary at the support point
+  Real rho_slope = 0;  // d rho / d phi for n turning counter-clockwise
 };
 
 template <class Real>
@@ -59,7 +60,10 @@ struct EllipseSupport {
     const Real h = sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
     const Real inv = 1 / h;
     const Real k = a * b * inv;  // at most max(a, b): (ab)^2 / h^3 without overflow
-    return {rot.apply(V2<Real>(a * u * inv, b * v * inv)), h, k * k * inv};
+    const Real rho = k * k * inv;
+    // rho = (ab)^2 / h^3, so rho' = -3 rho h' / h, and h' = perp(n).offset = (b^2 - a^2) l0 l1 / h.
+    const Real turn = (b - a) * (b + a) * inv * l[0] * l[1];
+    return {rot.apply(V2<Real>(a * u * inv, b * v * inv)), h, rho, -3 * rho * inv * turn};
   }
   // The curve is smooth: no side to choose.
   Support<Real> at(const V2<Real>& n, const V2<Real>&) const { return at(n); }
@@ -136,6 +140,7 @@ struct Separation {
   V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
   Real rho_a = 0;
   Real rho_b = 0;
+  Real rho_slope = 0;  // d(rho_A + rho_B) / d phi, so that d3s/dphi3 = -(slope + rho_slope)
 };
 
 template <class Real>
@@ -210,14 +215,14 @@ struct SupportPair {
   Separation<Real> opposite(const V2<Real>& n, const Separation<Real>& e) const {
     const V2<Real> gap = delta + e.offset_a + e.offset_b;
     const Real s = -n.dot(gap);
-    return {s, -perp(n).dot(gap), s + e.rho_a + e.rho_b, gap, -e.offset_a, -e.offset_b, e.rho_a, e.rho_b};
+    return {s, -perp(n).dot(gap), s + e.rho_a + e.rho_b, gap, -e.offset_a, -e.offset_b, e.rho_a, e.rho_b, e.rho_slope};
   }
 
  private:
   Separation<Real> combine(const V2<Real>& n, const Support<Real>& sa, const Support<Real>& sb) const {
     const V2<Real> gap = delta - sa.offset - sb.offset;
     const Real s = n.dot(gap);
-    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset, sa.rho, sb.rho};
+    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset, sa.rho, sb.rho, sa.rho_slope + sb.rho_slope};
   }
 };
 
