@@ -240,6 +240,51 @@ struct ClimbTrail {
   std::optional<std::array<Separation<Real>, 2>> at_face;
 };
 
+// The rectangle's axis (x or y) whose face normal, turned towards B, has the largest s,
+// |delta.f| - h_A(f) - h_B(f), from two support values of each shape (no points): on
+// bench_contact's candidate rectangle–ellipse pairs the climb from the face normal nearest the line
+// of centres was certified in 54% of them, from this one in 72%, and the mean support evaluations
+// fell from 4.76 to 4.06.
+template <class Real, class SA, class SB>
+V2<Real> best_face(const SupportPair<Real, SA, SB>& p) {
+  using std::abs;
+  const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
+  const V2<Real> x(rot.c, rot.s), y = perp(x);
+  const auto at_face = [&](const V2<Real>& f) { return abs(p.delta.dot(f)) - p.A.extent(f) - p.B.extent(f); };
+  return at_face(x) >= at_face(y) ? x : y;
+}
+
+// For a rectangle A and an ellipse B, the face contact the climb starts from, without its
+// generality: s at the best face normal f, with the ellipse's support point and the middle of the
+// face as the support points, is a maximum (a kink of s) when the ellipse's support point lies
+// over the face, and disc_bound certifies it. This settles 59% of bench_contact's candidate pairs
+// after one ellipse support, in 48 ns a pair instead of the 107 ns the climb took to reach the same
+// answer (the same pairs; separations within 4.7e-16, the same normals). Otherwise whether the face
+// normal was a kink all the same: a maximum the climb would reach again and fail to certify again.
+template <class Real>
+struct FaceStart {
+  std::optional<Deepest<Real>> certified;
+  bool kink = false;
+  int evaluations = 0;
+};
+
+template <class Real, class SA, class SB>
+FaceStart<Real> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin) {
+  if constexpr (std::is_same_v<SA, RectSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
+    const V2<Real> axis = best_face(p);
+    const V2<Real> f = p.delta.dot(axis) >= 0 ? axis : V2<Real>(-axis);
+    const Support<Real> b = p.B.at(f);
+    const V2<Real> middle = p.A.extent(f) * f;
+    const V2<Real> gap = p.delta - middle - b.offset;
+    const Real s = f.dot(gap), slope = perp(f).dot(gap);
+    const Separation<Real> e{s, slope, s + b.rho, gap, middle, b.offset, Real(0), b.rho, b.rho_slope};
+    if (!(std::abs(slope) <= p.A.extent(perp(f)) + margin / 2)) return {std::nullopt, false, 1};
+    if (!(disc_bound(p, f, e) <= s + margin)) return {std::nullopt, true, 1};
+    return {Deepest<Real>{{f, e}, 1}, true, 1};
+  }
+  return {};
+}
+
 // The quick way, tried before the search: from `start` (a direction near the expected normal, such
 // as the last step's; zero: best_of_axes), or with a rectangle from its face normal nearest that
 // direction (zero: the one where s is largest), where s has a kink and the maximum of a face
@@ -265,7 +310,10 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
   // denormal, and the direction divided by that norm came out 1e-9 off unit length (the fuzzer).
   // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
-  V2<Real> n = V2<Real>(toward / toward.cwiseAbs().maxCoeff()).normalized();
+  // Without a guess a rectangle's face normal starts the climb, and takes only its sign from the
+  // line of centres, which is then left as it is.
+  const bool unit = !sided || start != V2<Real>::Zero();
+  V2<Real> n = unit ? V2<Real>(V2<Real>(toward / toward.cwiseAbs().maxCoeff()).normalized()) : toward;
   V2<Real> face = n;  // with a rectangle: the face normal the climb starts from, and the corners'
   V2<Real> side = n;  // side, which keeps the climb in one quarter turn from it
   Separation<Real> e;
@@ -283,13 +331,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   if constexpr (sided) {
     const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
     const V2<Real> x(rot.c, rot.s), y = perp(x);
-    // Without a guess, from the face normal where s is largest, |delta.f| - h_A(f) - h_B(f) (two
-    // support values, no points): on bench_contact's candidate rectangle–ellipse pairs the climb
-    // from the face normal nearest the line of centres was certified in 54% of them, from this one
-    // in 72%, and the mean support evaluations fell from 4.76 to 4.06.
-    const auto at_face = [&](const V2<Real>& f) { return abs(p.delta.dot(f)) - p.A.extent(f) - p.B.extent(f); };
-    const V2<Real> axis = start == V2<Real>::Zero() ? (at_face(x) >= at_face(y) ? x : y)
-                                                    : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
+    const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
     face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
     if (start != V2<Real>::Zero() && abs(cross(face, n)) > Real(1e-2)) {
       // A guess clear of the face normals (a contact at a corner): the climb starts there.
@@ -367,8 +409,16 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const Real margin = climb_margin(p);
   Deepest<Real> best;
+  const FaceStart<Real> face = face_maximum(p, margin);
+  if (face.certified) return *face.certified;
   ClimbTrail<Real> trail;
-  if (const auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &trail)) return *quick;
+  if (!face.kink) {
+    if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &trail)) {
+      quick->evaluations += face.evaluations;
+      return *quick;
+    }
+  }
+  best.evaluations += face.evaluations;
   // The best value is not seeded from a climb that stopped short (a point short of its maximum by
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
@@ -388,7 +438,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   // Smooth shapes see one value per direction; a rectangle's corner depends on the arc, so each
   // start has a value for the arc before it and one for the arc after (one curved support for both).
   V2<Real> sides[4];
-  for (int k = 0; k < 4; ++k) sides[k] = (axes[k] + axes[k + 1]).normalized();
+  for (int k = 0; k < 4; ++k) sides[k] = axes[k] + axes[k + 1];  // a side needs no unit length
   // The last two axes are the first two negated, where s follows from the same support points,
   // and the climb's last face normal is one of the four (its corners' sides are those of the arcs
   // beside it): at most two supports are evaluated.
