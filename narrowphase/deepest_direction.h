@@ -67,6 +67,7 @@ struct Arc {
   int y;
   V2<Real> side;  // a direction inside, which picks a rectangle's corner
   Real bound;     // no s on the arc exceeds it
+  int quarter;    // the starting quarter turn that holds it
 };
 
 // The candidates are tested for lying inside the arc before they are normalised (the test is
@@ -151,22 +152,25 @@ Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, 
   return {mid, p.separation(mid, side)};
 }
 
-// For a rectangle and an ellipse, s on the quarter turn from x to y, where the rectangle's support
-// point is its corner c, is n.(delta - c) - h_B(n): the separation of the point c and the ellipse,
-// whose maximum over every direction is their signed distance, found exactly by
-// distance_point_ellipse (a root of the secular equation, point_ellipse-inl.h). When its direction
-// lies in the arc it is the arc's maximum, however deep the overlap and however many local maxima
-// s has elsewhere, and the arc needs no search: bisecting towards it cost the search seven to ten
-// support evaluations in deep overlaps, where s is convex near the face normals. Elsewhere nullopt.
+// For a rectangle and an ellipse, s on the quarter turn where the rectangle's support point is its
+// corner c (the side of `side`) is f(n) = n.(delta - c) - h_B(n): the separation of the point c and
+// the ellipse, whose maximum over every direction is their signed distance, found exactly by
+// distance_point_ellipse (a root of the secular equation, point_ellipse-inl.h); this returns its
+// direction. When it lies in the quarter it is the quarter's maximum, however deep the overlap and
+// however many local maxima s has elsewhere: bisecting towards it cost the search seven to ten
+// support evaluations in deep overlaps, where s is convex near the face normals. When it does not,
+// it still settles the quarter once the search polishes a maximum inside: f has a critical point
+// for each normal of the ellipse through c, at most four (a quartic), maxima and minima in turn
+// around the circle, so at most two maxima; with the global one outside, the maximum found is the
+// only one inside, and no direction of the quarter beats it or the quarter's ends. Elsewhere
+// (other pairs) nullopt.
 template <class Real, class SA, class SB>
-std::optional<Direction<Real>> corner_maximum(const SupportPair<Real, SA, SB>& p, const V2<Real>& x,
-                                              const V2<Real>& y, const V2<Real>& side) {
+std::optional<V2<Real>> corner_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& side) {
   if constexpr (std::is_same_v<Real, double> && std::is_same_v<SA, RectSupport<double>> &&
                 std::is_same_v<SB, EllipseSupport<double>>) {
     const V2<double> corner = p.A.at(side, side).offset - p.delta;  // from the ellipse's centre
     const PointEllipseResult r = distance_point_ellipse(p.B.a, p.B.b, p.B.rot.apply_inverse(corner));
-    const V2<double> n = -p.B.rot.apply(r.normal);
-    if (cross(x, n) >= 0 && cross(n, y) >= 0) return Direction<double>{n, p.separation(n, side)};
+    return V2<double>(-p.B.rot.apply(r.normal));
   }
   return std::nullopt;
 }
@@ -260,12 +264,15 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p) {
 // over the face, and disc_bound certifies it. This settles 59% of bench_contact's candidate pairs
 // after one ellipse support, in 48 ns a pair instead of the 107 ns the climb took to reach the same
 // answer (the same pairs; separations within 4.7e-16, the same normals). Otherwise whether the face
-// normal was a kink all the same: a maximum the climb would reach again and fail to certify again.
+// normal was a kink all the same (a maximum the climb would reach again and fail to certify
+// again), and s on both sides of it, where the climb or the search starts.
 template <class Real>
 struct FaceStart {
   std::optional<Deepest<Real>> certified;
   bool kink = false;
   int evaluations = 0;
+  V2<Real> face = V2<Real>::Zero();
+  std::optional<std::array<Separation<Real>, 2>> at_face;
 };
 
 template <class Real, class SA, class SB>
@@ -278,9 +285,9 @@ FaceStart<Real> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin) {
     const V2<Real> gap = p.delta - middle - b.offset;
     const Real s = f.dot(gap), slope = perp(f).dot(gap);
     const Separation<Real> e{s, slope, s + b.rho, gap, middle, b.offset, Real(0), b.rho, b.rho_slope};
-    if (!(std::abs(slope) <= p.A.extent(perp(f)) + margin / 2)) return {std::nullopt, false, 1};
-    if (!(disc_bound(p, f, e) <= s + margin)) return {std::nullopt, true, 1};
-    return {Deepest<Real>{{f, e}, 1}, true, 1};
+    const bool kink = std::abs(slope) <= p.A.extent(perp(f)) + margin / 2;
+    if (kink && disc_bound(p, f, e) <= s + margin) return {Deepest<Real>{{f, e}, 1}, true, 1, f, std::nullopt};
+    return {std::nullopt, kink, 1, f, p.separations(f, V2<Real>(f - perp(f)), V2<Real>(f + perp(f)), b)};
   }
   return {};
 }
@@ -305,6 +312,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
+  evaluations = 0;
   if (toward == V2<Real>::Zero()) return std::nullopt;
   const Real flat = margin / 2;
   // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
@@ -322,7 +330,9 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   // after it (a face contact's maximum), else the climb goes on into the quarter on the rising side.
   const auto from_face = [&](const V2<Real>& f) {
     const V2<Real> before = f - perp(f), after = f + perp(f);
-    const std::array<Separation<Real>, 2> at = p.separations(f, before, after);
+    const bool known = trail != nullptr && trail->at_face && trail->face == f;
+    const std::array<Separation<Real>, 2> at = known ? *trail->at_face : p.separations(f, before, after);
+    evaluations += known ? 0 : 1;
     kink = at[0].slope >= -flat && at[1].slope <= flat;
     const bool rising = at[1].slope > flat;
     face = f, n = f, e = at[rising ? 1 : 0], side = rising ? after : before;
@@ -337,6 +347,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
       // A guess clear of the face normals (a contact at a corner): the climb starts there.
       side = n;
       e = p.separation(n, side);
+      ++evaluations;
     } else {
       from_face(face);
     }
@@ -345,8 +356,8 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
       if (start == V2<Real>::Zero()) n = best_of_axes(p, n);
     }
     e = p.separation(n);
+    ++evaluations;
   }
-  evaluations = 1;
   const auto in_quarter = [&](const V2<Real>& v) { return !sided || (cross(face, v) * cross(face, side) > 0 && v.dot(face) > 0); };
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
   // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
@@ -373,7 +384,6 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
         if (!apart) return std::nullopt;
         const V2<Real> across = cross(face, side) > 0 ? perp(face) : V2<Real>(-perp(face));
         from_face(cross(face, next) * cross(face, side) > 0 ? across : face);
-        ++evaluations;
         break;
       }
       const Separation<Real> en = p.separation(next, sided ? side : next);
@@ -406,12 +416,15 @@ Real climb_margin(const SupportPair<Real, SA, SB>& p) {
 // live in buffers kept per thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, int cap = 4096) {
+  using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const Real margin = climb_margin(p);
   Deepest<Real> best;
   const FaceStart<Real> face = face_maximum(p, margin);
   if (face.certified) return *face.certified;
   ClimbTrail<Real> trail;
+  trail.face = face.face;
+  trail.at_face = face.at_face;
   if (!face.kink) {
     if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &trail)) {
       quick->evaluations += face.evaluations;
@@ -463,17 +476,31 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     before[k] = add(axes[k], e[k][0]);
     after[k] = sided ? add(axes[k], e[k][1]) : before[k];
   }
+  // Per quarter, the direction of its corner's signed distance when it lies outside (corner_direction).
+  // (Not std::optional: zeroing an array of them took 7% of a search that ends at its start.)
+  V2<Real> beyond[4];
+  bool outside[4] = {};
+  bool settled[4] = {};
+  const auto inside = [&](int k, const V2<Real>& n) { return cross(axes[k], n) >= 0 && cross(n, axes[k + 1]) >= 0; };
+  // A polished maximum m in quarter k, apart from the corner's: the quarter's only other one.
+  const auto settles = [&](int k, const V2<Real>& m, const Separation<Real>& e) {
+    return outside[k] && abs(e.slope) <= margin / 2 && e.bend > 0 && !(m.dot(beyond[k]) > 1 - Real(1e-12));
+  };
   for (int k = 0; k < 4; ++k) {
     const int x = after[k], y = before[(k + 1) % 4];
     const Real bound = arc_bound(p, end(x), end(y));
     if (bound > best.at.s + margin) {
-      if (const std::optional<Direction<Real>> m = corner_maximum(p, end(x).n, end(y).n, sides[k])) {
-        add(m->n, m->at);
-        best.evaluations += 2;  // the point's root counted as one
-        continue;
+      if (const std::optional<V2<Real>> n = corner_direction(p, sides[k])) {
+        ++best.evaluations;  // the point's root counted as one evaluation
+        if (inside(k, *n)) {
+          add(*n, p.separation(*n, sides[k]));
+          ++best.evaluations;
+          continue;
+        }
+        beyond[k] = *n, outside[k] = true;
       }
     }
-    arcs.push_back({x, y, sides[k], bound});
+    arcs.push_back({x, y, sides[k], bound, k});
   }
   // The climb's maximum, polished (s' = 0 to rounding) but not certified, splits its arc as an end:
   // the search need not find it again, and the arcs beside it start flat there. The search used to
@@ -485,8 +512,9 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
       if (!(cross(end(arc.x).n, reached->n) > 0 && cross(reached->n, end(arc.y).n) > 0)) continue;
       const Arc<Real> whole = arc;
       const int mi = add(reached->n, reached->at);
-      arc = {whole.x, mi, whole.side, arc_bound(p, end(whole.x), end(mi))};
-      arcs.push_back({mi, whole.y, whole.side, arc_bound(p, end(mi), end(whole.y))});
+      settled[whole.quarter] = settles(whole.quarter, reached->n, reached->at);
+      arc = {whole.x, mi, whole.side, arc_bound(p, end(whole.x), end(mi)), whole.quarter};
+      arcs.push_back({mi, whole.y, whole.side, arc_bound(p, end(mi), end(whole.y)), whole.quarter});
       break;
     }
   }
@@ -498,12 +526,14 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     const Arc<Real> arc = *top;
     *top = arcs.back();
     arcs.pop_back();
+    if (settled[arc.quarter]) continue;
     const Direction<Real> m = split(p, end(arc.x), end(arc.y), arc.side, margin / 2, best.evaluations);
     if (m.n == end(arc.x).n) continue;  // no direction between the ends: they bound the arc
     const int mi = add(m.n, m.at);
+    if ((settled[arc.quarter] = settles(arc.quarter, m.n, m.at))) continue;
     for (const auto& [x, y] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
       const Real bound = arc_bound(p, end(x), end(y));
-      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound});
+      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound, arc.quarter});
     }
   }
   return best;

@@ -209,6 +209,15 @@ struct SupportPair {
     const Support<Real> b2 = std::is_same_v<SB, RectSupport<Real>> ? B.at(n, after) : b;
     return {combine(n, a, b), combine(n, a2, b2)};
   }
+  // The same for a rectangle and a curve whose support at n is known.
+  std::array<Separation<Real>, 2> separations(const V2<Real>& n, const V2<Real>& before, const V2<Real>& after,
+                                              const Support<Real>& curved) const {
+    if constexpr (std::is_same_v<SA, RectSupport<Real>>) {
+      return {combine(n, A.at(n, before), curved), combine(n, A.at(n, after), curved)};
+    } else {
+      return {combine(n, curved, B.at(n, before)), combine(n, curved, B.at(n, after))};
+    }
+  }
   // s along -n, from e along n: both shapes are centrally symmetric, so their support points (a
   // rectangle's corner on the opposite side) are those for n negated, bit for bit, and no support
   // is evaluated.
