@@ -107,18 +107,6 @@ struct Deepest : Direction<Real> {
   int evaluations = 0;
 };
 
-// Halley's correction to a Newton step on s' in tau = tan(angle / 2), at tau from the step's origin:
-// the step slope / s'' is divided by it. With s''' = -(slope + rho_slope) (support_pair.h), the
-// iteration converges with the cube of the error instead of its square. In tau,
-// d2(s')/dtau2 = phi_tau^2 (bend tau - slope - rho_slope) with phi_tau = 2 / (1 + tau^2), hence the
-// factor below. Where it leaves [1/2, 2] (far from the root, the cubic model no better than the
-// quadratic), 1: the Newton step.
-template <class Real>
-Real halley(const Separation<Real>& e, Real tau) {
-  const Real d = 1 + e.slope * (e.slope + e.rho_slope - e.bend * tau) / (2 * e.bend * e.bend);
-  return d >= Real(0.5) && d <= Real(2) ? d : Real(1);
-}
-
 // The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
 // Newton when the slopes at the ends show one beyond their rounding, `flat`), or the bisector,
 // with s there; x itself when no double lies between the ends. A slope within `flat` of 0 counts
