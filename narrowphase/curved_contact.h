@@ -31,13 +31,16 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   const Separation<double>& e = d.at;
   const Vec2 normal = p.to_world(d.n);
   const Vec2 off_a = p.to_world(e.offset_a), off_b = p.to_world(e.offset_b);
-  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
   Vec2 pa = ca + off_a, pb = cb - off_b;
+  // The rounding of s' (three square roots, left to the pairs that need it).
+  const auto rounding = [&] {
+    return 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
+  };
   if (on_face_normal(p.A, d.n)) {
     pa = pb - e.s * normal;
   } else if (on_face_normal(p.B, d.n)) {
     pb = pa + e.s * normal;
-  } else if (!(std::abs(e.slope) <= rounding)) {
+  } else if (!(std::abs(e.slope) <= rounding())) {
     const V2<double> hair = 1e-6 * perp(d.n);
     const V2<double> before = (d.n - hair).normalized(), after = (d.n + hair).normalized();
     const Separation<double> x = p.separation(before, before), y = p.separation(after, after);

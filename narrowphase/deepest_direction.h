@@ -232,14 +232,16 @@ V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSuppo
   return n;
 }
 
-// What a climb that was not certified leaves the search: the maximum it reached off the face
-// normals, and s on both sides of the last rectangle face normal it evaluated (one of the search's
-// starting directions, or its opposite).
+// What a face start (face_maximum) or a climb that was not certified leaves the search: the
+// maximum the climb reached off the face normals, and s on both sides of the last rectangle face
+// normal evaluated (one of the search's starting directions, or its opposite), with whether it was
+// a kink of s.
 template <class Real>
 struct ClimbTrail {
   std::optional<Direction<Real>> reached;
   V2<Real> face = V2<Real>::Zero();
   std::optional<std::array<Separation<Real>, 2>> at_face;
+  bool kink = false;
 };
 
 // The rectangle's axis (x or y) whose face normal, turned towards B, has the largest s,
@@ -261,20 +263,11 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p) {
 // face as the support points, is a maximum (a kink of s) when the ellipse's support point lies
 // over the face, and disc_bound certifies it. This settles 59% of bench_contact's candidate pairs
 // after one ellipse support, in 48 ns a pair instead of the 107 ns the climb took to reach the same
-// answer (the same pairs; separations within 4.7e-16, the same normals). Otherwise whether the face
-// normal was a kink all the same (a maximum the climb would reach again and fail to certify
-// again), and s on both sides of it, where the climb or the search starts.
-template <class Real>
-struct FaceStart {
-  std::optional<Deepest<Real>> certified;
-  bool kink = false;
-  int evaluations = 0;
-  V2<Real> face = V2<Real>::Zero();
-  std::optional<std::array<Separation<Real>, 2>> at_face;
-};
-
+// answer (the same pairs; separations within 4.7e-16, the same normals). Otherwise the trail holds
+// s on both sides of that face normal, where the climb or the search starts, and whether it was a
+// kink all the same (a maximum the climb would reach again and fail to certify again).
 template <class Real, class SA, class SB>
-FaceStart<Real> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin) {
+std::optional<Deepest<Real>> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin, ClimbTrail<Real>& trail) {
   if constexpr (std::is_same_v<SA, RectSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
     const V2<Real> axis = best_face(p);
     const V2<Real> f = p.delta.dot(axis) >= 0 ? axis : V2<Real>(-axis);
@@ -284,10 +277,11 @@ FaceStart<Real> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin) {
     const Real s = f.dot(gap), slope = perp(f).dot(gap);
     const Separation<Real> e{s, slope, s + b.rho, gap, middle, b.offset, Real(0), b.rho, b.rho_slope};
     const bool kink = std::abs(slope) <= p.A.extent(perp(f)) + margin / 2;
-    if (kink && disc_bound(p, f, e) <= s + margin) return {Deepest<Real>{{f, e}, 1}, true, 1, f, std::nullopt};
-    return {std::nullopt, kink, 1, f, p.separations(f, V2<Real>(f - perp(f)), V2<Real>(f + perp(f)), b)};
+    if (kink && disc_bound(p, f, e) <= s + margin) return Deepest<Real>{{f, e}, 1};
+    trail.face = f, trail.kink = kink;
+    trail.at_face = p.separations(f, V2<Real>(f - perp(f)), V2<Real>(f + perp(f)), b);
   }
-  return {};
+  return std::nullopt;
 }
 
 // The quick way, tried before the search: from `start` (a direction near the expected normal, such
@@ -418,18 +412,16 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const Real margin = climb_margin(p);
   Deepest<Real> best;
-  const FaceStart<Real> face = face_maximum(p, margin);
-  if (face.certified) return *face.certified;
   ClimbTrail<Real> trail;
-  trail.face = face.face;
-  trail.at_face = face.at_face;
-  if (!face.kink) {
+  if (auto face = face_maximum(p, margin, trail)) return *face;
+  const int face_evaluations = trail.at_face ? 1 : 0;
+  if (!trail.kink) {
     if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &trail)) {
-      quick->evaluations += face.evaluations;
+      quick->evaluations += face_evaluations;
       return *quick;
     }
   }
-  best.evaluations += face.evaluations;
+  best.evaluations += face_evaluations;
   // The best value is not seeded from a climb that stopped short (a point short of its maximum by
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
