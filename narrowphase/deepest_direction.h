@@ -27,8 +27,9 @@
 // below the radii r, and every arc ending at m drops at once: the maximum certifies itself. Deeper
 // (thin shapes), arcs near m are halved until the excess falls below the rounding. An arc whose
 // ends' slopes show a maximum inside (rising, then falling) is split at the root of s' found by
-// safeguarded Newton in tau = tan(angle / 2), any other arc at its bisector; the arc with the
-// highest bound goes first.
+// safeguarded Halley steps in tau = tan(angle / 2) (halley, ellipse_pair.h), any other arc at its
+// bisector; the arc with the highest bound goes first. For a rectangle and an ellipse a quarter turn
+// can also be settled by its corner's signed distance to the ellipse (corner_direction).
 //
 // The arcs start as the four quarter turns between a rectangle's axes (its face normals, where its
 // support point jumps from corner to corner and s has its kinks), or between the frame's axes, so
@@ -118,9 +119,10 @@ bool level(const Separation<Real>& e, Real flat) {
 }
 
 // The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
-// Newton when the slopes at the ends show one beyond their rounding, `flat`), or the bisector,
-// with s there; x itself when no double lies between the ends. A slope within `flat` of 0 counts
-// as 0: the iteration stops there instead of bisecting its bracket down to the last bit.
+// Halley steps when the slopes at the ends show one beyond their rounding, `flat`), or the
+// bisector, with s there; x itself when no double lies between the ends. A slope level to rounding
+// (level, above) counts as 0: the iteration stops there instead of bisecting its bracket down to
+// the last bit.
 template <class Real, class P>
 Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, Real flat,
                       int& evaluations) {
@@ -287,7 +289,7 @@ std::optional<Deepest<Real>> face_maximum(const SupportPair<Real, SA, SB>& p, Re
 // The quick way, tried before the search: from `start` (a direction near the expected normal, such
 // as the last step's; zero: best_of_axes), or with a rectangle from its face normal nearest that
 // direction (zero: the one where s is largest), where s has a kink and the maximum of a face
-// contact sits, Newton climbs s' while s is concave, and the maximum it reaches is kept when
+// contact sits, Halley steps climb s' while s is concave, and the maximum reached is kept when
 // disc_bound certifies it. Pairs apart, and overlaps shallower than the radii, end here after two
 // or three evaluations; nullopt hands the rest (a step leaving its quarter turn, a convex stretch,
 // a bound too loose) to the search;

@@ -107,8 +107,8 @@ Real halley(const Separation<Real>& e, Real tau) {
 // The direction maximising s near n0. On the arc of separating directions, and wherever
 // s > -(rho_A + rho_B), s is concave in the angle t (s'' = -(s + rho_A + rho_B)); the arc is
 // shorter than pi. Turning from n0 towards increasing s, the maximiser is the first sign change of
-// s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Newton on s'
-// with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
+// s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Halley steps
+// on s' with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
 // the global maximum, the distance.
 // Whether n is at the maximum of s to rounding: the gap between the support points has no component
 // across n beyond the rounding of the gap itself (`tolerance`, the pair's margin). The closest
