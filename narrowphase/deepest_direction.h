@@ -335,8 +335,12 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   if constexpr (sided) {
     const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
     const V2<Real> x(rot.c, rot.s), y = perp(x);
-    const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
-    face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
+    if (start == V2<Real>::Zero() && trail != nullptr && trail->at_face) {
+      face = trail->face;  // face_maximum's: the best face normal turned towards B, evaluated there
+    } else {
+      const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
+      face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
+    }
     if (start != V2<Real>::Zero() && abs(cross(face, n)) > Real(1e-2)) {
       // A guess clear of the face normals (a contact at a corner): the climb starts there.
       side = n;
