@@ -21,6 +21,8 @@
 
 #include "shapes/shapes.h"
 
+#include <optional>
+
 namespace collide2d {
 
 struct PointEllipseResult {
@@ -31,5 +33,23 @@ struct PointEllipseResult {
 };
 
 PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p);
+
+// A point of the curve where the distance from p has a local minimum along the curve, the curve's
+// outward unit normal there, and the signed distance (p - point).normal (negative: p lies on the
+// inner side of the tangent).
+struct CurveFoot {
+  Vec2 point = Vec2::Zero();
+  Vec2 normal = Vec2::UnitX();
+  double signed_distance = 0.0;
+};
+
+// The other local minimum of the distance from p along the curve, beside the nearest point, if
+// there is one. The normals through p meet the curve where the secular function has its roots, at
+// most four (a quartic); around the curve the distance's critical points alternate between minima
+// and maxima, so there are at most two minima, and the second exists only when p lies inside the
+// evolute (the astroid (a x)^(2/3) + (b y)^(2/3) = (a^2 - b^2)^(2/3) for a >= b), where the four
+// normals are. It lies on the far side of the major axis from p. Found by Newton's method as the
+// nearest point is (distance_point_ellipse.cpp says how); nullopt where there is none.
+std::optional<CurveFoot> other_local_nearest(double a, double b, const Vec2& p);
 
 }  // namespace collide2d
