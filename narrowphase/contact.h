@@ -5,10 +5,11 @@
 //   separation = max over unit u of  u.(c_B - c_A) - h_A(u) - h_B(-u)      (h the support function)
 // for pairs apart and overlapping alike: apart, the distance; overlapping, minus the penetration
 // depth (the length of the shortest translation of B that leaves the solids only touching); 0 when
-// they touch. It is continuous through contact. The maximiser is the normal. Curved pairs find the
+// they touch. It is continuous through contact. The maximiser is the normal. Two ellipses find the
 // global maximum by a climb that a bound over every direction certifies, else by branch and bound
 // over arcs of directions (narrowphase/deepest_direction.h says why no local maximum can pass for
-// it); rectangle pairs by their face normals.
+// it); a rectangle and an ellipse by settling each quarter turn between the rectangle's face normals
+// in closed form (narrowphase/contact_rect_ellipse.cpp); rectangle pairs by their face normals.
 //
 // Where the maximiser is not unique (concentric shapes, symmetric crossings, a rectangle's face
 // against a parallel face) any maximiser is a correct normal, and the separation is exact all the
@@ -96,8 +97,9 @@ struct ContactOptions {
   // solver passes its margin.
   double margin = 0.0;
   // A direction near the normal expected (the last frame's, or the last step's of a time of
-  // impact): the search of a pair with an ellipse starts its climb there instead of on the line of
-  // centres, and ends sooner. Any direction gives the same answer up to rounding; zero: none.
+  // impact): the search of two ellipses starts its climb there instead of on the line of centres,
+  // and ends sooner. Any direction gives the same answer up to rounding; zero: none. Other pairs
+  // need no start and ignore it.
   Vec2 guess = Vec2::Zero();
 };
 

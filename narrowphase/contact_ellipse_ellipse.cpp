@@ -15,7 +15,7 @@ Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientati
                                 const Orientation& b_orientation, const ContactOptions& options) {
   using Pair = detail::SupportPair<double, detail::EllipseSupport<double>, detail::EllipseSupport<double>>;
   const Pair p = Pair::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  return detail::curved_contact(p, a.center, b.center, options.guess);
+  return detail::curved_contact(p, a.center, b.center, detail::deepest_direction(p, p.from_world(options.guess)));
 }
 
 // The signed distance of the circle's centre to the ellipse (Eberly's secular equation, inside and

@@ -26,8 +26,7 @@ inline bool on_face_normal(const EllipseSupport<double>&, const V2<double>&) { r
 // barely moves: the steadier point is kept, and its partner is that point moved by the separation
 // along the normal.
 template <class SA, class SB>
-Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb, const Vec2& guess) {
-  const Deepest<double> d = deepest_direction(p, p.from_world(guess));
+Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb, const Deepest<double>& d) {
   const Separation<double>& e = d.at;
   const Vec2 normal = p.to_world(d.n);
   const Vec2 off_a = p.to_world(e.offset_a), off_b = p.to_world(e.offset_b);

@@ -28,12 +28,12 @@
 // (thin shapes), arcs near m are halved until the excess falls below the rounding. An arc whose
 // ends' slopes show a maximum inside (rising, then falling) is split at the root of s' found by
 // safeguarded Halley steps in tau = tan(angle / 2) (halley, ellipse_pair.h), any other arc at its
-// bisector; the arc with the highest bound goes first. For a rectangle and an ellipse a quarter turn
-// can also be settled by its corner's signed distance to the ellipse (corner_direction).
+// bisector; the arc with the highest bound goes first. The arcs start as the four quarter turns
+// between the frame's axes.
 //
-// The arcs start as the four quarter turns between a rectangle's axes (its face normals, where its
-// support point jumps from corner to corner and s has its kinks), or between the frame's axes, so
-// that within an arc every support point moves smoothly and s' exists.
+// The search serves two ellipses. A rectangle and an ellipse need none of it: each quarter turn
+// between the rectangle's face normals is settled in closed form (contact_rect_ellipse.cpp). The
+// climb also serves pairs with a rectangle, for the time of impact's steps.
 #pragma once
 
 #include "narrowphase/distance_point_ellipse.h"
@@ -64,11 +64,9 @@ struct ArcEnd {
 
 template <class Real>
 struct Arc {
-  int x;          // from ends[x] counter-clockwise to ends[y], less than a half turn
+  int x;       // from ends[x] counter-clockwise to ends[y], less than a half turn
   int y;
-  V2<Real> side;  // a direction inside, which picks a rectangle's corner
-  Real bound;     // no s on the arc exceeds it
-  int quarter;    // the starting quarter turn that holds it
+  Real bound;  // no s on the arc exceeds it
 };
 
 // The candidates are tested for lying inside the arc before they are normalised (the test is
@@ -124,8 +122,7 @@ bool level(const Separation<Real>& e, Real flat) {
 // (level, above) counts as 0: the iteration stops there instead of bisecting its bracket down to
 // the last bit.
 template <class Real, class P>
-Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, const V2<Real>& side, Real flat,
-                      int& evaluations) {
+Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, Real flat, int& evaluations) {
   using std::abs;
   const auto inside = [&](const V2<Real>& n) { return cross(x.n, n) > 0 && cross(n, y.n) > 0; };
   if (x.slope > flat && y.slope < -flat) {
@@ -133,7 +130,7 @@ Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, 
     Direction<Real> last;
     Real last_tau = -1;
     const auto f = [&](Real tau) {
-      last = {turned(x.n, Real(1), tau), p.separation(turned(x.n, Real(1), tau), side)};
+      last = {turned(x.n, Real(1), tau), p.separation(turned(x.n, Real(1), tau))};
       last_tau = tau;
       const Real dslope = -last.at.bend * 2 / (1 + tau * tau) * halley(last.at, tau);
       return std::pair<Real, Real>(level(last.at, flat) ? Real(0) : last.at.slope, dslope);
@@ -149,44 +146,7 @@ Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, 
   const V2<Real> mid = (x.n + y.n).normalized();
   if (!inside(mid)) return {x.n, Separation<Real>{}};
   ++evaluations;
-  return {mid, p.separation(mid, side)};
-}
-
-// For a rectangle and an ellipse, s on the quarter turn where the rectangle's support point is its
-// corner c (the side of `side`) is f(n) = n.(delta - c) - h_B(n): the separation of the point c and
-// the ellipse, whose maximum over every direction is their signed distance, found exactly by
-// distance_point_ellipse (a root of the secular equation, point_ellipse-inl.h); this returns its
-// direction. When it lies in the quarter it is the quarter's maximum, however deep the overlap and
-// however many local maxima s has elsewhere: bisecting towards it cost the search seven to ten
-// support evaluations in deep overlaps, where s is convex near the face normals. When it does not,
-// it still settles the quarter once the search polishes a maximum inside: f has a critical point
-// for each normal of the ellipse through c, at most four (a quartic), maxima and minima in turn
-// around the circle, so at most two maxima; with the global one outside, the maximum found is the
-// only one inside, and no direction of the quarter beats it or the quarter's ends. Elsewhere
-// (other pairs) nullopt.
-template <class Real, class SA, class SB>
-std::optional<V2<Real>> corner_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& side) {
-  if constexpr (std::is_same_v<Real, double> && std::is_same_v<SA, RectSupport<double>> &&
-                std::is_same_v<SB, EllipseSupport<double>>) {
-    const V2<double> corner = p.A.at(side, side).offset - p.delta;  // from the ellipse's centre
-    const PointEllipseResult r = distance_point_ellipse(p.B.a, p.B.b, p.B.rot.apply_inverse(corner));
-    return V2<double>(-p.B.rot.apply(r.normal));
-  }
-  return std::nullopt;
-}
-
-// The four starting directions: the axes of the rectangle if there is one (its face normals, where
-// its corner changes), else of the pair's frame; the first repeated at the end.
-template <class Real, class SA, class SB>
-void starting_directions(const SupportPair<Real, SA, SB>& p, V2<Real> (&ends)[5]) {
-  V2<Real> axis(1, 0);
-  if constexpr (std::is_same_v<SA, RectSupport<Real>>) axis = V2<Real>(p.A.rot.c, p.A.rot.s);
-  if constexpr (std::is_same_v<SB, RectSupport<Real>>) axis = V2<Real>(p.B.rot.c, p.B.rot.s);
-  ends[0] = axis;
-  ends[1] = perp(axis);
-  ends[2] = -axis;
-  ends[3] = -perp(axis);
-  ends[4] = axis;
+  return {mid, p.separation(mid)};
 }
 
 // An upper bound of s over every direction, from a direction m and the separation there. An
@@ -234,18 +194,6 @@ V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSuppo
   return n;
 }
 
-// What a face start (face_maximum) or a climb that was not certified leaves the search: the
-// maximum the climb reached off the face normals, and s on both sides of the last rectangle face
-// normal evaluated (one of the search's starting directions, or its opposite), with whether it was
-// a kink of s.
-template <class Real>
-struct ClimbTrail {
-  std::optional<Direction<Real>> reached;
-  V2<Real> face = V2<Real>::Zero();
-  std::optional<std::array<Separation<Real>, 2>> at_face;
-  bool kink = false;
-};
-
 // The rectangle's axis (x or y) whose face normal, turned towards B, has the largest s,
 // |delta.f| - h_A(f) - h_B(f), from two support values of each shape (no points): on
 // bench_contact's candidate rectangle–ellipse pairs the climb from the face normal nearest the line
@@ -260,32 +208,6 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p) {
   return at_face(x) >= at_face(y) ? x : y;
 }
 
-// For a rectangle A and an ellipse B, the face contact the climb starts from, without its
-// generality: s at the best face normal f, with the ellipse's support point and the middle of the
-// face as the support points, is a maximum (a kink of s) when the ellipse's support point lies
-// over the face, and disc_bound certifies it. This settles 59% of bench_contact's candidate pairs
-// after one ellipse support, in 48 ns a pair instead of the 107 ns the climb took to reach the same
-// answer (the same pairs; separations within 4.7e-16, the same normals). Otherwise the trail holds
-// s on both sides of that face normal, where the climb or the search starts, and whether it was a
-// kink all the same (a maximum the climb would reach again and fail to certify again).
-template <class Real, class SA, class SB>
-std::optional<Deepest<Real>> face_maximum(const SupportPair<Real, SA, SB>& p, Real margin, ClimbTrail<Real>& trail) {
-  if constexpr (std::is_same_v<SA, RectSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
-    const V2<Real> axis = best_face(p);
-    const V2<Real> f = p.delta.dot(axis) >= 0 ? axis : V2<Real>(-axis);
-    const Support<Real> b = p.B.at(f);
-    const V2<Real> middle = p.A.extent(f) * f;
-    const V2<Real> gap = p.delta - middle - b.offset;
-    const Real s = f.dot(gap), slope = perp(f).dot(gap);
-    const Separation<Real> e{s, slope, s + b.rho, gap, middle, b.offset, Real(0), b.rho, b.rho_slope};
-    const bool kink = std::abs(slope) <= p.A.extent(perp(f)) + margin / 2;
-    if (kink && disc_bound(p, f, e) <= s + margin) return Deepest<Real>{{f, e}, 1};
-    trail.face = f, trail.kink = kink;
-    trail.at_face = p.separations(f, V2<Real>(f - perp(f)), V2<Real>(f + perp(f)), b);
-  }
-  return std::nullopt;
-}
-
 // The quick way, tried before the search: from `start` (a direction near the expected normal, such
 // as the last step's; zero: best_of_axes), or with a rectangle from its face normal nearest that
 // direction (zero: the one where s is largest), where s has a kink and the maximum of a face
@@ -297,12 +219,11 @@ std::optional<Deepest<Real>> face_maximum(const SupportPair<Real, SA, SB>& p, Re
 // of s near its maximum (a time of impact's step far from contact) passes `rough` > 0: the climb
 // then stops, uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is
 // below rough * s. Where the climb reaches a maximum off the face normals that the bound cannot
-// certify (an overlap deeper than the discs), it is left in the trail for the search, with the
-// last face normal's values.
+// certify (an overlap deeper than the discs), it is left in `reached` for the search.
 template <class Real, class SA, class SB>
 std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin,
                                              int& evaluations, Real rough = 0,
-                                             ClimbTrail<Real>* trail = nullptr) {
+                                             std::optional<Direction<Real>>* reached = nullptr) {
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
@@ -324,23 +245,17 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   // after it (a face contact's maximum), else the climb goes on into the quarter on the rising side.
   const auto from_face = [&](const V2<Real>& f) {
     const V2<Real> before = f - perp(f), after = f + perp(f);
-    const bool known = trail != nullptr && trail->at_face && trail->face == f;
-    const std::array<Separation<Real>, 2> at = known ? *trail->at_face : p.separations(f, before, after);
-    evaluations += known ? 0 : 1;
+    const std::array<Separation<Real>, 2> at = p.separations(f, before, after);
+    ++evaluations;
     kink = at[0].slope >= -flat && at[1].slope <= flat;
     const bool rising = at[1].slope > flat;
     face = f, n = f, e = at[rising ? 1 : 0], side = rising ? after : before;
-    if (trail != nullptr) trail->face = f, trail->at_face = at;
   };
   if constexpr (sided) {
     const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
     const V2<Real> x(rot.c, rot.s), y = perp(x);
-    if (start == V2<Real>::Zero() && trail != nullptr && trail->at_face) {
-      face = trail->face;  // face_maximum's: the best face normal turned towards B, evaluated there
-    } else {
-      const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
-      face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
-    }
+    const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
+    face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
     if (start != V2<Real>::Zero() && abs(cross(face, n)) > Real(1e-2)) {
       // A guess clear of the face normals (a contact at a corner): the climb starts there.
       side = n;
@@ -395,7 +310,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
     }
   }
   if (!near_enough() && !(disc_bound(p, n, e) <= e.s + margin)) {
-    if (trail != nullptr && !kink) trail->reached = Direction<Real>{n, e};
+    if (reached != nullptr && !kink) *reached = Direction<Real>{n, e};
     return std::nullopt;
   }
   return Deepest<Real>{{n, e}, evaluations};
@@ -414,20 +329,12 @@ Real climb_margin(const SupportPair<Real, SA, SB>& p) {
 // live in buffers kept per thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, int cap = 4096) {
-  using std::abs;
-  constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
+  static_assert(!std::is_same_v<SA, RectSupport<Real>> && !std::is_same_v<SB, RectSupport<Real>>,
+                "a rectangle's quarter turns are settled in closed form (contact_rect_ellipse.cpp)");
   const Real margin = climb_margin(p);
   Deepest<Real> best;
-  ClimbTrail<Real> trail;
-  if (auto face = face_maximum(p, margin, trail)) return *face;
-  const int face_evaluations = trail.at_face ? 1 : 0;
-  if (!trail.kink) {
-    if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &trail)) {
-      quick->evaluations += face_evaluations;
-      return *quick;
-    }
-  }
-  best.evaluations += face_evaluations;
+  std::optional<Direction<Real>> reached;
+  if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &reached)) return *quick;
   // The best value is not seeded from a climb that stopped short (a point short of its maximum by
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
@@ -442,75 +349,24 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     return static_cast<int>(ends.size()) - 1;
   };
   const auto end = [&](int i) -> const ArcEnd<Real>& { return ends[static_cast<std::size_t>(i)]; };
-  V2<Real> axes[5];
-  starting_directions(p, axes);
-  // Smooth shapes see one value per direction; a rectangle's corner depends on the arc, so each
-  // start has a value for the arc before it and one for the arc after (one curved support for both).
-  V2<Real> sides[4];
-  for (int k = 0; k < 4; ++k) sides[k] = axes[k] + axes[k + 1];  // a side needs no unit length
-  // The last two axes are the first two negated, where s follows from the same support points,
-  // and the climb's last face normal is one of the four (its corners' sides are those of the arcs
-  // beside it): at most two supports are evaluated.
-  int before[4], after[4];  // the ends at axes[k] as seen from the arcs k - 1 and k
-  std::array<Separation<Real>, 2> e[4];
-  const auto opposite = [&](int k) { return std::array{p.opposite(axes[k], e[k][0]), p.opposite(axes[k], e[k][1])}; };
-  for (int k = 0; k < 2; ++k) {
-    if (trail.at_face && trail.face == axes[k + 2]) {
-      e[k + 2] = *trail.at_face;
-      e[k] = opposite(k + 2);
-      continue;
-    }
-    if (trail.at_face && trail.face == axes[k]) {
-      e[k] = *trail.at_face;
-    } else {
-      e[k] = p.separations(axes[k], sides[(k + 3) % 4], sides[k]);
-      ++best.evaluations;
-    }
-    e[k + 2] = opposite(k);
-  }
-  for (int k = 0; k < 4; ++k) {
-    before[k] = add(axes[k], e[k][0]);
-    after[k] = sided ? add(axes[k], e[k][1]) : before[k];
-  }
-  // Per quarter, the direction of its corner's signed distance when it lies outside (corner_direction).
-  // (Not std::optional: zeroing an array of them took 7% of a search that ends at its start.)
-  V2<Real> beyond[4];
-  bool outside[4] = {};
-  bool settled[4] = {};
-  const auto inside = [&](int k, const V2<Real>& n) { return cross(axes[k], n) >= 0 && cross(n, axes[k + 1]) >= 0; };
-  // A polished maximum m in quarter k, apart from the corner's: the quarter's only other one.
-  const auto settles = [&](int k, const V2<Real>& m, const Separation<Real>& e) {
-    return outside[k] && level(e, margin / 2) && e.bend > 0 && !(m.dot(beyond[k]) > 1 - Real(1e-12));
-  };
-  for (int k = 0; k < 4; ++k) {
-    const int x = after[k], y = before[(k + 1) % 4];
-    const Real bound = arc_bound(p, end(x), end(y));
-    if (bound > best.at.s + margin) {
-      if (const std::optional<V2<Real>> n = corner_direction(p, sides[k])) {
-        ++best.evaluations;  // the point's root counted as one evaluation
-        if (inside(k, *n)) {
-          add(*n, p.separation(*n, sides[k]));
-          ++best.evaluations;
-          continue;
-        }
-        beyond[k] = *n, outside[k] = true;
-      }
-    }
-    arcs.push_back({x, y, sides[k], bound, k});
-  }
+  // The frame's axes; the last two are the first two negated, where s follows from the same support
+  // points: two supports are evaluated.
+  const V2<Real> x(1, 0), y(0, 1);
+  const Separation<Real> ex = p.separation(x), ey = p.separation(y);
+  best.evaluations += 2;
+  const int starts[5] = {add(x, ex), add(y, ey), add(-x, p.opposite(x, ex)), add(-y, p.opposite(y, ey)), 0};
+  for (int k = 0; k < 4; ++k) arcs.push_back({starts[k], starts[k + 1], arc_bound(p, end(starts[k]), end(starts[k + 1]))});
   // The climb's maximum, polished (s' = 0 to rounding) but not certified, splits its arc as an end:
   // the search need not find it again, and the arcs beside it start flat there. The search used to
   // find that maximum again in most of the pairs the bound left; on bench_contact's candidate pairs
-  // the mean support evaluations fell from 4.05 to 3.96 (rect–ellipse) and from 7.38 to 6.59
-  // (ellipse pairs).
-  if (const std::optional<Direction<Real>>& reached = trail.reached) {
+  // the mean support evaluations fell from 7.38 to 6.59.
+  if (reached) {
     for (Arc<Real>& arc : arcs) {
       if (!(cross(end(arc.x).n, reached->n) > 0 && cross(reached->n, end(arc.y).n) > 0)) continue;
       const Arc<Real> whole = arc;
       const int mi = add(reached->n, reached->at);
-      settled[whole.quarter] = settles(whole.quarter, reached->n, reached->at);
-      arc = {whole.x, mi, whole.side, arc_bound(p, end(whole.x), end(mi)), whole.quarter};
-      arcs.push_back({mi, whole.y, whole.side, arc_bound(p, end(mi), end(whole.y)), whole.quarter});
+      arc = {whole.x, mi, arc_bound(p, end(whole.x), end(mi))};
+      arcs.push_back({mi, whole.y, arc_bound(p, end(mi), end(whole.y))});
       break;
     }
   }
@@ -522,14 +378,12 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     const Arc<Real> arc = *top;
     *top = arcs.back();
     arcs.pop_back();
-    if (settled[arc.quarter]) continue;
-    const Direction<Real> m = split(p, end(arc.x), end(arc.y), arc.side, margin / 2, best.evaluations);
+    const Direction<Real> m = split(p, end(arc.x), end(arc.y), margin / 2, best.evaluations);
     if (m.n == end(arc.x).n) continue;  // no direction between the ends: they bound the arc
     const int mi = add(m.n, m.at);
-    if ((settled[arc.quarter] = settles(arc.quarter, m.n, m.at))) continue;
-    for (const auto& [x, y] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
-      const Real bound = arc_bound(p, end(x), end(y));
-      if (bound > best.at.s + margin) arcs.push_back({x, y, arc.side, bound, arc.quarter});
+    for (const auto& [from, to] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
+      const Real bound = arc_bound(p, end(from), end(to));
+      if (bound > best.at.s + margin) arcs.push_back({from, to, bound});
     }
   }
   return best;
