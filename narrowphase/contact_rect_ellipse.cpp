@@ -37,32 +37,30 @@ Direction<double> at_foot(const RectEllipse& p, const V2<double>& corner, const 
                           double s) {
   const V2<double> n = -p.B.rot.apply(V2<double>(normal));
   const V2<double> off_b = -p.B.rot.apply(V2<double>(point));
-  const double h = n.dot(off_b);
-  const double k = p.B.a * p.B.b / h;
-  const double rho = k * k / h;  // (ab)^2 / h^3, as EllipseSupport::at
-  const double rho_slope = -3 * rho / h * perp(n).dot(off_b);
+  const double inv = 1 / n.dot(off_b);
+  const double k = p.B.a * p.B.b * inv;
+  const double rho = k * k * inv;  // (ab)^2 / h^3, as EllipseSupport::at
+  const double rho_slope = -3 * rho * inv * perp(n).dot(off_b);
   return {n, Separation<double>{s, 0.0, s + rho, p.delta - corner - off_b, corner, off_b, 0.0, rho, rho_slope}};
 }
 
 // The maximum of s inside the quarter turn from x counter-clockwise to y (a right angle), where the
-// rectangle's corner is the one on the side of x + y, if s has one there (else the quarter's
-// maximum is at an end); `evaluations` counts each point–ellipse root as one.
-std::optional<Direction<double>> quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>& y,
-                                                 int& evaluations) {
+// rectangle's corner is the one on the side of x + y, into `m` if s has one there (else the
+// quarter's maximum is at an end); `evaluations` counts each point–ellipse root as one.
+bool quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>& y, Direction<double>& m,
+                     int& evaluations) {
   const V2<double> corner = p.A.at(V2<double>(x + y), V2<double>(x + y)).offset;
   const Vec2 local = p.B.rot.apply_inverse(V2<double>(corner - p.delta));
-  const auto inside = [&](const Direction<double>& m) { return cross(x, m.n) >= 0 && cross(m.n, y) >= 0; };
+  const auto inside = [&] { return cross(x, m.n) >= 0 && cross(m.n, y) >= 0; };
   ++evaluations;
   const PointEllipseResult nearest = distance_point_ellipse(p.B.a, p.B.b, local);
-  const Direction<double> global =
-      at_foot(p, corner, nearest.closest, nearest.normal, nearest.inside ? -nearest.distance : nearest.distance);
-  if (inside(global)) return global;
+  m = at_foot(p, corner, nearest.closest, nearest.normal, nearest.inside ? -nearest.distance : nearest.distance);
+  if (inside()) return true;
   ++evaluations;
-  if (const std::optional<CurveFoot> other = other_local_nearest(p.B.a, p.B.b, local)) {
-    const Direction<double> m = at_foot(p, corner, other->point, other->normal, other->signed_distance);
-    if (inside(m)) return m;
-  }
-  return std::nullopt;
+  const std::optional<CurveFoot> other = other_local_nearest(p.B.a, p.B.b, local);
+  if (!other) return false;
+  m = at_foot(p, corner, other->point, other->normal, other->signed_distance);
+  return inside();
 }
 
 Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
@@ -71,10 +69,7 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
   // The best face normal f, turned towards B, and s there with the corners before and after it.
   const V2<double> axis = best_face(p);
   const V2<double> f = p.delta.dot(axis) >= 0 ? axis : V2<double>(-axis);
-  const V2<double> axes[5] = {f, perp(f), -f, -perp(f), f};
   const Support<double> at_f = p.B.at(f);
-  Deepest<double> best;
-  best.evaluations = 1;
   // A face contact: the ellipse's support point lies over the face, s has a kink at f, and the
   // middle of the face is A's point.
   {
@@ -86,43 +81,48 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
       if (disc_bound(p, f, e) <= s + margin) return Deepest<double>{{f, e}, 1};
     }
   }
-  // s at the four face normals, seen from the quarter before (ends[k][0]) and after (ends[k][1]):
-  // the last two from the points of the first two (SupportPair::opposite).
-  std::array<Separation<double>, 2> ends[4];
-  ends[0] = p.separations(f, axes[3] + f, f + axes[1], at_f);
+  int evaluations = 1;
+  const V2<double> axes[5] = {f, perp(f), -f, -perp(f), f};
+  // s at the four face normals, seen from the quarter before (ends[k][0]) and after (ends[k][1]),
+  // and the maxima inside the quarters.
+  Direction<double> ends[4][2], inner[4];
+  const Direction<double>* best = &ends[0][0];
   const auto consider = [&](const Direction<double>& m) {
-    if (m.at.s > best.at.s) static_cast<Direction<double>&>(best) = m;
+    if (m.at.s > best->at.s) best = &m;
   };
-  best.n = f, best.at = ends[0][0].s >= ends[0][1].s ? ends[0][0] : ends[0][1];
+  const auto set_ends = [&](int k, const std::array<Separation<double>, 2>& e) {
+    ends[k][0] = {axes[k], e[0]};
+    ends[k][1] = {axes[k], e[1]};
+  };
+  set_ends(0, p.separations(f, axes[3] + f, f + axes[1], at_f));
+  consider(ends[0][1]);
   bool settled[4] = {};
   // Where s rises from f into a quarter, the maximum is most often at that quarter's corner, and
   // disc_bound certifies it without the other face normal.
-  const bool rising_after = ends[0][1].slope > flat, rising_before = ends[0][0].slope < -flat;
+  const bool rising_after = ends[0][1].at.slope > flat, rising_before = ends[0][0].at.slope < -flat;
   if (rising_after != rising_before) {
     const int k = rising_after ? 0 : 3;
     settled[k] = true;
-    if (const std::optional<Direction<double>> m = quarter_maximum(p, axes[k], axes[k + 1], best.evaluations)) {
-      consider(*m);
-      if (disc_bound(p, m->n, m->at) <= m->at.s + margin) return best;
+    if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) {
+      consider(inner[k]);
+      if (disc_bound(p, inner[k].n, inner[k].at) <= inner[k].at.s + margin) return {*best, evaluations};
     }
   }
-  ends[1] = p.separations(axes[1], f + axes[1], axes[1] + axes[2]);
-  ++best.evaluations;
-  ends[2] = {p.opposite(f, ends[0][0]), p.opposite(f, ends[0][1])};
-  ends[3] = {p.opposite(axes[1], ends[1][0]), p.opposite(axes[1], ends[1][1])};
-  for (int k = 0; k < 4; ++k) {
-    for (const Separation<double>& e : ends[k]) consider({axes[k], e});
-  }
+  // The last two face normals from the points of the first two (SupportPair::opposite).
+  set_ends(1, p.separations(axes[1], f + axes[1], axes[1] + axes[2]));
+  ++evaluations;
+  set_ends(2, {p.opposite(f, ends[0][0].at), p.opposite(f, ends[0][1].at)});
+  set_ends(3, {p.opposite(axes[1], ends[1][0].at), p.opposite(axes[1], ends[1][1].at)});
+  for (int k = 1; k < 4; ++k) consider(ends[k][0]), consider(ends[k][1]);
   double bound[4];
   for (int k = 0; k < 4; ++k) {
-    bound[k] = settled[k] ? -std::numeric_limits<double>::infinity()
-                          : arc_bound(p, ArcEnd<double>::of(axes[k], ends[k][1]), ArcEnd<double>::of(axes[k + 1], ends[(k + 1) % 4][0]));
+    bound[k] = settled[k] ? -std::numeric_limits<double>::infinity() : arc_bound(p, ends[k][1], ends[(k + 1) % 4][0]);
   }
   for (;;) {
     const int k = static_cast<int>(std::max_element(bound, bound + 4) - bound);
-    if (!(bound[k] > best.at.s + margin)) return best;
+    if (!(bound[k] > best->at.s + margin)) return {*best, evaluations};
     bound[k] = -std::numeric_limits<double>::infinity();
-    if (const std::optional<Direction<double>> m = quarter_maximum(p, axes[k], axes[k + 1], best.evaluations)) consider(*m);
+    if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) consider(inner[k]);
   }
 }
 

@@ -48,23 +48,9 @@
 
 namespace collide2d::detail {
 
-// A direction and what s does there, with the support points of its arcs' interior.
-template <class Real>
-struct ArcEnd {
-  V2<Real> n;
-  V2<Real> gap;  // delta - p_A - p_B
-  Real s;
-  Real slope;
-  Real bend;
-  Real rho_a;
-  Real rho_b;
-
-  static ArcEnd of(const V2<Real>& n, const Separation<Real>& e) { return {n, e.gap, e.s, e.slope, e.bend, e.rho_a, e.rho_b}; }
-};
-
 template <class Real>
 struct Arc {
-  int x;       // from ends[x] counter-clockwise to ends[y], less than a half turn
+  int x;       // from the direction ends[x] counter-clockwise to ends[y], less than a half turn
   int y;
   Real bound;  // no s on the arc exceeds it
 };
@@ -75,19 +61,19 @@ struct Arc {
 // needle's flat side r is its length times its aspect, and n.(gap + r x) - r lost the bound to the
 // rounding of r (an ellipse of aspect 4,446, 2.9e47 long, ran the search to its cap; the fuzzer).
 template <class Real, class P>
-Real arc_bound(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y) {
+Real arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y) {
   using std::sqrt;
-  const Real r = p.A.rho_floor(x.n, y.n, x.rho_a, y.rho_a) + p.B.rho_floor(x.n, y.n, x.rho_b, y.rho_b);
-  const V2<Real> gx = x.gap + r * x.n;
-  const V2<Real> gy = y.gap + r * y.n;
-  Real best = std::max(x.s, y.s);
+  const Real r = p.A.rho_floor(x.n, y.n, x.at.rho_a, y.at.rho_a) + p.B.rho_floor(x.n, y.n, x.at.rho_b, y.at.rho_b);
+  const V2<Real> gx = x.at.gap + r * x.n;
+  const V2<Real> gy = y.at.gap + r * y.n;
+  Real best = std::max(x.at.s, y.at.s);
   const auto candidate = [&](const V2<Real>& v) {
     if (cross(x.n, v) >= 0 && cross(v, y.n) >= 0) {
       const Real length = sqrt(v.squaredNorm());
       if (!(length > 0)) return;
       const V2<Real> n = v / length;
-      best = std::max(best, std::min(n.dot(x.gap) - r * (n - x.n).squaredNorm() / 2,
-                                     n.dot(y.gap) - r * (n - y.n).squaredNorm() / 2));
+      best = std::max(best, std::min(n.dot(x.at.gap) - r * (n - x.n).squaredNorm() / 2,
+                                     n.dot(y.at.gap) - r * (n - y.n).squaredNorm() / 2));
     }
   };
   candidate(gx);
@@ -122,10 +108,10 @@ bool level(const Separation<Real>& e, Real flat) {
 // (level, above) counts as 0: the iteration stops there instead of bisecting its bracket down to
 // the last bit.
 template <class Real, class P>
-Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, Real flat, int& evaluations) {
+Direction<Real> split(const P& p, const Direction<Real>& x, const Direction<Real>& y, Real flat, int& evaluations) {
   using std::abs;
   const auto inside = [&](const V2<Real>& n) { return cross(x.n, n) > 0 && cross(n, y.n) > 0; };
-  if (x.slope > flat && y.slope < -flat) {
+  if (x.at.slope > flat && y.at.slope < -flat) {
     const Real end = cross(x.n, y.n) / (1 + x.n.dot(y.n));  // tan of half the arc's width
     Direction<Real> last;
     Real last_tau = -1;
@@ -135,7 +121,7 @@ Direction<Real> split(const P& p, const ArcEnd<Real>& x, const ArcEnd<Real>& y, 
       const Real dslope = -last.at.bend * 2 / (1 + tau * tau) * halley(last.at, tau);
       return std::pair<Real, Real>(level(last.at, flat) ? Real(0) : last.at.slope, dslope);
     };
-    const std::pair<Real, Real> start(x.slope, -x.bend * 2);
+    const std::pair<Real, Real> start(x.at.slope, -x.at.bend * 2);
     const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
     if (tau != last_tau) {  // the iteration ended on a point it had left
       ++evaluations;
@@ -339,16 +325,16 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
   best.at.s = -std::numeric_limits<Real>::infinity();
-  thread_local std::vector<ArcEnd<Real>> ends;
+  thread_local std::vector<Direction<Real>> ends;
   thread_local std::vector<Arc<Real>> arcs;
   ends.clear();
   arcs.clear();
   const auto add = [&](const V2<Real>& n, const Separation<Real>& e) {
-    ends.push_back(ArcEnd<Real>::of(n, e));
+    ends.push_back({n, e});
     if (e.s > best.at.s) best.n = n, best.at = e;
     return static_cast<int>(ends.size()) - 1;
   };
-  const auto end = [&](int i) -> const ArcEnd<Real>& { return ends[static_cast<std::size_t>(i)]; };
+  const auto end = [&](int i) -> const Direction<Real>& { return ends[static_cast<std::size_t>(i)]; };
   // The frame's axes; the last two are the first two negated, where s follows from the same support
   // points: two supports are evaluated.
   const V2<Real> x(1, 0), y(0, 1);

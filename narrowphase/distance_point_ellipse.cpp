@@ -70,6 +70,12 @@ PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p) {
 // e0 y0 + e1 y1 < e0^2 - e1^2; inside it but outside the evolute G stays below 1, and the climb
 // passes G's peak (its slope turns) or leaves the interval.
 std::optional<CurveFoot> other_local_nearest(double a, double b, const Vec2& p) {
+  // Outside the rhombus, before any division: most points are.
+  const bool wide = a >= b;
+  if (!((wide ? a : b) * std::abs(wide ? p.x() : p.y()) + (wide ? b : a) * std::abs(wide ? p.y() : p.x()) <
+        (a - b) * (a + b) * (wide ? 1.0 : -1.0))) {
+    return std::nullopt;
+  }
   const detail::Scalar d;
   const auto q = detail::Quadrant<double, bool>::of(d, p.x(), p.y(), a, b);
   const double pole = (q.e0 - q.e1) * (q.e0 + q.e1) / (q.e1 * q.e1);  // r0 - 1 without its rounding
