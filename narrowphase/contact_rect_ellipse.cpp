@@ -67,9 +67,10 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
   const double margin = climb_margin(p);
   const double flat = margin / 2;
   // The best face normal f, turned towards B, and s there with the corners before and after it.
-  const V2<double> axis = best_face(p);
+  double extent;
+  const V2<double> axis = best_face(p, &extent);
   const V2<double> f = p.delta.dot(axis) >= 0 ? axis : V2<double>(-axis);
-  const Support<double> at_f = p.B.at(f);
+  const Support<double> at_f = p.B.at_extent(f, extent);
   // A face contact: the ellipse's support point lies over the face, s has a kink at f, and the
   // middle of the face is A's point.
   {

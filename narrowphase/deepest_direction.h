@@ -185,13 +185,18 @@ V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSuppo
 // bench_contact's candidate rectangle–ellipse pairs the climb from the face normal nearest the line
 // of centres was certified in 54% of them, from this one in 72%, and the mean support evaluations
 // fell from 4.76 to 4.06.
+// `extent` receives the other shape's support value along it.
 template <class Real, class SA, class SB>
-V2<Real> best_face(const SupportPair<Real, SA, SB>& p) {
+V2<Real> best_face(const SupportPair<Real, SA, SB>& p, Real* extent = nullptr) {
   using std::abs;
-  const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
+  constexpr bool rect_a = std::is_same_v<SA, RectSupport<Real>>;
+  const Rotation<Real>& rot = rect_a ? p.A.rot : p.B.rot;
   const V2<Real> x(rot.c, rot.s), y = perp(x);
-  const auto at_face = [&](const V2<Real>& f) { return abs(p.delta.dot(f)) - p.A.extent(f) - p.B.extent(f); };
-  return at_face(x) >= at_face(y) ? x : y;
+  const Real other_x = rect_a ? p.B.extent(x) : p.A.extent(x), other_y = rect_a ? p.B.extent(y) : p.A.extent(y);
+  const Real own_x = rect_a ? p.A.extent(x) : p.B.extent(x), own_y = rect_a ? p.A.extent(y) : p.B.extent(y);
+  const bool along_x = abs(p.delta.dot(x)) - own_x - other_x >= abs(p.delta.dot(y)) - own_y - other_y;
+  if (extent != nullptr) *extent = along_x ? other_x : other_y;
+  return along_x ? x : y;
 }
 
 // The quick way, tried before the search: from `start` (a direction near the expected normal, such

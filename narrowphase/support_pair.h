@@ -52,12 +52,12 @@ struct EllipseSupport {
   Real b = 1;
 
   // n must be a unit vector.
-  Support<Real> at(const V2<Real>& n) const {
-    using std::sqrt;
+  Support<Real> at(const V2<Real>& n) const { return at_extent(n, extent(n)); }
+  // The same where h = extent(n) is known.
+  Support<Real> at_extent(const V2<Real>& n, Real h) const {
     const V2<Real> l = rot.apply_inverse(n);
     const Real u = a * l[0];
     const Real v = b * l[1];
-    const Real h = sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
     const Real inv = 1 / h;
     const Real k = a * b * inv;  // at most max(a, b): (ab)^2 / h^3 without overflow
     const Real rho = k * k * inv;
@@ -71,7 +71,9 @@ struct EllipseSupport {
   Real extent(const V2<Real>& n) const {
     using std::sqrt;
     const V2<Real> l = rot.apply_inverse(n);
-    return sqrt(a * a * l[0] * l[0] + b * b * l[1] * l[1]);
+    const Real u = a * l[0];
+    const Real v = b * l[1];
+    return sqrt(u * u + v * v);  // not hypot: that costs a quarter of a distance query
   }
   // The least radius of curvature over the directions from x to y (less than a half turn), given
   // its values there: rho = (ab)^2 / h^3 falls as h grows towards the major axis, so it is least at
