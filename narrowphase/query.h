@@ -28,7 +28,8 @@
 // Contact: circle–circle and rect–circle in closed form; rect–rect by separating axes and Box2D's
 // face clipping; circle–ellipse by the point–ellipse distance of the centre less the radius;
 // rect–ellipse and ellipse–ellipse by the global maximum of the separation over all directions
-// (narrowphase/deepest_direction.h).
+// (rect–ellipse: each quarter turn between the rectangle's face normals settled in closed form,
+// narrowphase/contact_rect_ellipse.cpp; two ellipses: narrowphase/deepest_direction.h).
 #pragma once
 
 #include "narrowphase/contact.h"
