@@ -206,10 +206,15 @@ struct SupportPair {
   // s along n with the corners of two sides of a rectangle's face normal n (the arcs before and
   // after it): the curved shape's support is evaluated once for both.
   std::array<Separation<Real>, 2> separations(const V2<Real>& n, const V2<Real>& before, const V2<Real>& after) const {
-    const Support<Real> a = A.at(n, before), b = B.at(n, before);
-    const Support<Real> a2 = std::is_same_v<SA, RectSupport<Real>> ? A.at(n, after) : a;
-    const Support<Real> b2 = std::is_same_v<SB, RectSupport<Real>> ? B.at(n, after) : b;
-    return {combine(n, a, b), combine(n, a2, b2)};
+    if constexpr (std::is_same_v<SA, RectSupport<Real>>) {
+      static_assert(!std::is_same_v<SB, RectSupport<Real>>, "two rectangles have their own kernels");
+      return separations(n, before, after, B.at(n, n));
+    } else if constexpr (std::is_same_v<SB, RectSupport<Real>>) {
+      return separations(n, before, after, A.at(n, n));
+    } else {
+      const Separation<Real> e = separation(n);
+      return {e, e};
+    }
   }
   // The same for a rectangle and a curve whose support at n is known.
   std::array<Separation<Real>, 2> separations(const V2<Real>& n, const V2<Real>& before, const V2<Real>& after,
