@@ -18,8 +18,8 @@
 // where a cheaper bound leaves them open: first the best face normal (a face contact's maximum is a
 // kink of s there), certified by disc_bound, which settles most pairs after one support
 // evaluation; then the corner on the side where s rises from that face, certified the same way;
-// then the other quarters in the order of their arc bounds (arc_bound), while a bound exceeds the
-// best value found.
+// then the other quarters in the order of their bounds (cheap_arc_bound: the ellipse's tangents at
+// the quarter's ends, else arc_bound), while a bound exceeds the best value found.
 #include "narrowphase/curved_contact.h"
 
 #include "narrowphase/distance_point_ellipse.h"
