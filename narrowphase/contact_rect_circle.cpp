@@ -1,5 +1,6 @@
 #include "narrowphase/box_local.h"
 #include "narrowphase/contact.h"
+#include "narrowphase/unit_vector.h"
 #include "shapes/rotation.h"
 
 #include <cmath>
@@ -30,8 +31,9 @@ Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, con
   Vec2 on_a = q;
   double d;
   if (out_x && out_y) {
-    d = std::hypot(p.x() - q.x(), p.y() - q.y());  // no denormal squares (contact_circle_circle.cpp)
-    n = (p - q) / d;
+    const detail::LengthAndDirection from_corner = detail::length_and_direction(p - q);
+    d = from_corner.length;
+    n = from_corner.direction;
   } else if (out_x || out_y) {
     const int k = out_x ? 0 : 1;
     n = Vec2::Zero();
