@@ -52,7 +52,7 @@ struct Vectors {
 // The vectors of pairs at i, i + n, ... (n lanes each) stepping side by side until every lane has
 // stopped, each where the one-off root stops. A vector whose lanes have all stopped steps no more
 // (the three vectors had stepped until the slowest of their 24 lanes on AVX-512, 5.5 steps where
-// a lane needs 3.4 on average; 21.1-21.6 -> 20.1-20.4 ns per pair on bench_contact's candidates).
+// a lane needs 3.4 on average; 20.9-21.7 -> 20.0-20.5 ns per pair on bench_contact's candidates).
 template <std::size_t... K>
 void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFields>& out, std::size_t i,
                   std::index_sequence<K...>) {
