@@ -60,17 +60,20 @@ double support_in_axes(const Shape& s, const Vec2& local) {
 // each is at most A + B x + (|A| + |B|) x^2 / 2 (|cos x - 1| and |sin x - x| are at most x^2 / 2):
 // one parabola per corner, so that the corner that takes over as the support is covered too.
 struct Parabola {
-  double gap = 0.0;  // below h now
-  double slope = 0.0;
-  double bend = 0.0;
+  double gap;  // below h now
+  double slope;
+  double bend;
 };
+// Only the first `count` pieces are set: zeroing all four, and the axes' copies of them, took a
+// sixth of a turning rectangle–ellipse step's instructions.
 struct SupportBound {
-  std::array<Parabola, 4> pieces{};
+  std::array<Parabola, 4> pieces;
   int count = 1;
 };
 
 SupportBound support_bound(const Shape& s, const Orientation& o, double w, const Vec2& n) {
   SupportBound out;
+  out.pieces[0] = {0.0, 0.0, 0.0};
   if (w == 0) return out;
   const Vec2 local = in_axes(o, n);
   const auto turn = [&](const Vec2& q) { return local.y() * q.x() - local.x() * q.y(); };  // dh/dtheta
