@@ -244,12 +244,15 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   // Shapes stay valid over the step (validate above), and only a turning one needs its cosine and
   // sine again, from quick_orientation where the angle allows (the C library's took a sixth of a
   // turning pair's time).
-  const Orientation a_start = Orientation::of(angle_of(a)), b_start = Orientation::of(angle_of(b));
   const auto orientation = [](const Shape& s, const Motion& m, const Orientation& start) {
     if (m.angular_velocity == 0) return start;
     const std::optional<Orientation> quick = detail::quick_orientation(angle_of(s));
     return quick ? *quick : Orientation::of(angle_of(s));
   };
+  const auto kept = [](const Shape& s, const Motion& m) {
+    return m.angular_velocity == 0 ? Orientation::of(angle_of(s)) : Orientation{};
+  };
+  const Orientation a_start = kept(a, a_motion), b_start = kept(b, b_motion);
   double t = 0.0;
   ContactOptions warm;  // each step's climb starts from the last normal, near the next one
   for (int k = 1;; ++k) {
