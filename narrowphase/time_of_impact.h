@@ -30,7 +30,7 @@
 // mean steps fell from 10.2 to 5.0 (ellipse pairs), 12.1 to 5.3 (rect–ellipse) and 13.4 to 5.5
 // (rectangle pairs). Each step's probe, and the contact of two ellipses, climb from the last step's
 // normal (ContactOptions::guess), and each step reuses the cosines and sines of a shape that does not turn. Far from contact a pair with an
-// ellipse (and no circle) takes the climb's direction once Newton's next gain is below 1e-3 of the
+// ellipse (and no circle) takes the climb's direction once Newton's next gain is below 3% of the
 // separation, without certifying the maximum, and two rectangles the widest gap along the last
 // normal and their face normals: any direction's separation is a lower bound of d, and the step
 // stays safe. Every result comes from an exact contact().
