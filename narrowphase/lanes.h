@@ -141,6 +141,26 @@ struct CircleEllipseLanes {
   std::array<V, kFields> fields() const { return {px, py, a, b, r}; }
 };
 
+// Two ellipses as the algebraic test takes them (ellipse_cubic-inl.h): B's centre less A's in world
+// axes, each orientation, each pair of semi-axes.
+template <class V>
+struct EllipseEllipseLanes {
+  V dx, dy;
+  V ca, sa;  // A's orientation
+  V cb, sb;  // B's orientation
+  V aa, ab;  // A's semi-axes
+  V ba, bb;  // B's semi-axes
+
+  static constexpr std::size_t kFields = 10;
+  std::array<V, kFields> fields() const { return {dx, dy, ca, sa, cb, sb, aa, ab, ba, bb}; }  // in declaration order
+};
+
+inline EllipseEllipseLanes<double> ellipse_ellipse_lanes(const Ellipse& a, const Orientation& oa, const Ellipse& b,
+                                                         const Orientation& ob) {
+  const Vec2 d = b.center - a.center;
+  return {d.x(), d.y(), oa.c, oa.s, ob.c, ob.s, a.a, a.b, b.a, b.b};
+}
+
 inline CircleCircleLanes<double> circle_circle_lanes(const Circle& a, const Circle& b) {
   const Vec2 d = b.center - a.center;
   return {d.x(), d.y(), a.radius, b.radius};

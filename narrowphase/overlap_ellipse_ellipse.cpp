@@ -1,6 +1,7 @@
 #include "narrowphase/overlap_ellipse_ellipse.h"
 
 #include "narrowphase/ellipse_contact.h"
+#include "narrowphase/lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +9,18 @@
 
 namespace collide2d {
 namespace detail {
+#include "narrowphase/ellipse_cubic-inl.h"
+
 namespace {
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+
+// The centres farther apart than the two longer semi-axes, beyond the rounding: no sine or cosine
+// needed.
+bool far_apart(const Ellipse& a, const Ellipse& b, double length) {
+  const double reach = std::max(a.a, a.b) + std::max(b.a, b.b);
+  return length - reach > 8 * kU * (length + reach);
+}
 
 // Whether the point p (relative to the centre of e) is inside e by more than the rounding of the
 // quadratic: its axis components carry 3 u |p| of error each, scaled by 1/a and 1/b.
@@ -83,14 +93,13 @@ EllipseContact from_gjk(const GjkOutcome<Real>& g, const EllipsePair<Real>& p, c
 EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
                                FilterVerdict* double_verdict, bool verdict_only) {
   const Vec2 delta = b.center - a.center;
-  const double reach = std::max(a.a, a.b) + std::max(b.a, b.b);
   const double length = delta.norm();
   FilterVerdict verdict = FilterVerdict::uncertain;
   EllipseContact out;
-  const bool far_apart = length - reach > 8 * kU * (length + reach);
-  if (!far_apart && !pair) pair = EllipsePair<double>::of(a, b);
+  const bool apart = far_apart(a, b, length);
+  if (!apart && !pair) pair = EllipsePair<double>::of(a, b);
   Vec2 axis = Vec2::Zero();
-  if (far_apart) {
+  if (apart) {
     verdict = FilterVerdict::separated;
     out = {false, delta / length, Vec2::Zero(), 0};
   } else if (boxes_apart(*pair, axis)) {
@@ -122,13 +131,19 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
 
 }  // namespace detail
 
+// Far apart, else the algebraic test (ellipse_cubic-inl.h, which the batch runs on vectors), else
+// the certain cases and GJK of ellipse_contact.
 bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
-  std::optional<detail::EllipsePair<double>> pair;
-  return detail::ellipse_contact(a, b, pair, nullptr, true).overlap;
+  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
+  return overlap_ellipse_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle));
 }
 
 bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation) {
+  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
+  const auto cubic = detail::ellipse_cubic_verdicts(detail::Scalar{},
+                                                    detail::ellipse_ellipse_lanes(a, a_orientation, b, b_orientation));
+  if (cubic.separated || cubic.overlap) return cubic.overlap;
   std::optional<detail::EllipsePair<double>> pair =
       detail::EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   return detail::ellipse_contact(a, b, pair, nullptr, true).overlap;
