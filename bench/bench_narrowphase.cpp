@@ -150,6 +150,7 @@ BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->App
 BENCHMARK(batch_overlap<Rect, Ellipse>)->Name("batch_overlap/rect_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
+BENCHMARK(batch_overlap<Ellipse, Ellipse>)->Name("batch_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
 BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
 BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::both_workloads);
 BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::both_workloads);

@@ -450,7 +450,7 @@ void World::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
 }
 
 // A pair dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
-// batch of its kind, in kernel order, but for two ellipses, which are tested now.
+// batch of its kind, in kernel order.
 World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
   if (!passes(a, b)) {
     ++out.filtered;
@@ -465,9 +465,7 @@ World::Verdict World::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& o
       [&](const auto& xs, const auto& ys) {
         using X = std::decay_t<decltype(xs)>;
         using Y = std::decay_t<decltype(ys)>;
-        if constexpr (std::is_same_v<X, Ellipse> && std::is_same_v<Y, Ellipse>) {
-          return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
-        } else if constexpr (detail::rank<X>() <= detail::rank<Y>()) {
+        if constexpr (detail::rank<X>() <= detail::rank<Y>()) {
           std::get<Batch<X, Y>>(out.batches).add(place, a, b);
           return Verdict::batched;
         } else {

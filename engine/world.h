@@ -358,8 +358,9 @@ class World {
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
-    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>, Batch<Circle, Ellipse>>
-        batches;  // every pair kind but ellipse–ellipse, in kernel order
+    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>, Batch<Circle, Ellipse>,
+               Batch<Ellipse, Ellipse>>
+        batches;  // every pair kind, in kernel order
     void clear();
   };
   std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing

@@ -35,6 +35,7 @@ HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
 #include "narrowphase/circle_overlap-inl.h"
+#include "narrowphase/ellipse_cubic-inl.h"
 #include "narrowphase/rect_ellipse_filter-inl.h"
 #include "narrowphase/rect_rect_overlap-inl.h"
 
@@ -47,6 +48,7 @@ detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) { return all_d
 detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) { return all_decided(circle_circle_overlap(D(), f)); }
 detail::LaneVerdicts<M> decide(const detail::RectCircleLanes<V>& f) { return all_decided(rect_circle_overlap(D(), f)); }
 detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) { return CircleEllipseFilter<D, V>(D(), f).run(); }
+detail::LaneVerdicts<M> decide(const detail::EllipseEllipseLanes<V>& f) { return ellipse_cubic_verdicts(D(), f); }
 
 // The kernel on the chunk's first `count` pairs, in whole vectors.
 template <template <class> class Lanes>
@@ -72,6 +74,9 @@ void rect_rect_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<
 void circle_circle_chunk(detail::Chunk<4>& chunk, std::size_t count) { decide_chunk<detail::CircleCircleLanes>(chunk, count); }
 void rect_circle_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::RectCircleLanes>(chunk, count); }
 void circle_ellipse_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::CircleEllipseLanes>(chunk, count); }
+void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
+  decide_chunk<detail::EllipseEllipseLanes>(chunk, count);
+}
 
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -95,6 +100,7 @@ HWY_EXPORT(rect_rect_chunk);
 HWY_EXPORT(circle_circle_chunk);
 HWY_EXPORT(rect_circle_chunk);
 HWY_EXPORT(circle_ellipse_chunk);
+HWY_EXPORT(ellipse_ellipse_chunk);
 
 }  // namespace
 
@@ -110,6 +116,9 @@ void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
 }
 void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
   HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(ellipse_ellipse_chunk)(chunk, count);
 }
 
 namespace {
@@ -168,6 +177,14 @@ void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ell
   detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
                         overlapping.size());
   overlap_lists<Circle, Ellipse>(circles, {}, ellipses, ellipse_orientations, overlapping);
+}
+
+void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
+                             std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
+                             std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_ellipse_ellipse", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
+                        overlapping.size());
+  overlap_lists<Ellipse, Ellipse>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 }  // namespace collide2d

@@ -33,6 +33,11 @@ void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientatio
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping);
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping);
+// Ellipse pairs: the algebraic test (overlap_ellipse_ellipse.h) on vectors, the pairs near touching
+// by the one-off kernel.
+void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
+                             std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
+                             std::span<std::uint8_t> overlapping);
 
 // Any of the above by the kinds of the lists, A before B in kernel order (rectangle, circle,
 // ellipse), for generic callers; a circle's orientations are not read.
@@ -47,13 +52,12 @@ void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientat
     overlap_rect_ellipse(a, a_orientations, b, b_orientations, overlapping);
   } else if constexpr (std::is_same_v<A, Circle> && std::is_same_v<B, Circle>) {
     overlap_circle_circle(a, b, overlapping);
-  } else {
-    static_assert(std::is_same_v<A, Circle> && std::is_same_v<B, Ellipse>, "no batch for this pair kind or order");
+  } else if constexpr (std::is_same_v<A, Circle> && std::is_same_v<B, Ellipse>) {
     overlap_circle_ellipse(a, b, b_orientations, overlapping);
+  } else {
+    static_assert(std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>, "no batch for this pair kind or order");
+    overlap_ellipse_ellipse(a, a_orientations, b, b_orientations, overlapping);
   }
 }
-
-// Not yet batched: ellipse pairs (overlap_ellipse_ellipse.h), whose GJK would need lanes that
-// iterate in step.
 
 }  // namespace collide2d

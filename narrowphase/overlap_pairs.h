@@ -8,6 +8,7 @@
 #include "narrowphase/batch_chunk.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/lanes.h"
+#include "narrowphase/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap_rect_ellipse.h"
 #include "narrowphase/rect_ellipse_frame.h"
 #include "narrowphase/rect_pair_frame.h"
@@ -47,10 +48,19 @@ inline RectCircleLanes<double> lanes_of(const PairRef<Rect, Circle>& p) { return
 inline CircleEllipseLanes<double> lanes_of(const PairRef<Circle, Ellipse>& p) {
   return circle_ellipse_lanes(p.a, p.b, p.b_orientation);
 }
+inline EllipseEllipseLanes<double> lanes_of(const PairRef<Ellipse, Ellipse>& p) {
+  return key(p.b) < key(p.a) ? ellipse_ellipse_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
+                             : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+}
 
 // The verdict of a pair the vector kernel left uncertain.
 inline bool exact(const PairRef<Rect, Ellipse>& p) { return minkowski_fallback(p.a, p.b); }
 inline bool exact(const PairRef<Circle, Ellipse>& p) { return circle_ellipse_exact(lanes_of(p)); }
+// The one-off kernel whole (its algebraic test is again uncertain, then its certain cases and GJK).
+inline bool exact(const PairRef<Ellipse, Ellipse>& p) {
+  return key(p.b) < key(p.a) ? overlap_ellipse_ellipse(p.b, p.b_orientation, p.a, p.a_orientation)
+                             : overlap_ellipse_ellipse(p.a, p.a_orientation, p.b, p.b_orientation);
+}
 template <class A, class B>
 bool exact(const PairRef<A, B>&) {
   throw std::logic_error("a kernel that decides every pair left one uncertain");
@@ -65,9 +75,10 @@ void decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>);
 void decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>);
 void decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>);
 void decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>);
+void decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>);
 
 // overlapping[k] for the pairs k < overlapping.size(), A before B in kernel order (rectangle,
-// circle, ellipse); every kind but two ellipses. In chunks: each pair's lanes from scalar code, the
+// circle, ellipse). In chunks: each pair's lanes from scalar code, the
 // chunk's verdicts from the vector kernel, each pair it left uncertain from the exact fallback.
 template <class A, class B, class Pair>
 void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {

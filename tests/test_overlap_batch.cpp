@@ -2,10 +2,12 @@
 // every SIMD target Highway compiled that this CPU runs: the hard-case families (rounding-level
 // gaps included, where the rectangle–ellipse batch must hand pairs to the fallback), two million
 // random rectangle–ellipse, a million rectangle–rectangle and half a million of each circle pair's
-// candidate pairs in batches of ragged lengths, and lists of different lengths refused.
+// and of ellipse pairs' candidate pairs in batches of ragged lengths, and lists of different
+// lengths refused.
 #include "batch_testing.h"
 #include "hard_cases.h"
 
+#include "narrowphase/lanes.h"
 #include "narrowphase/overlap_batch.h"
 #include "narrowphase/overlap_circle_circle.h"
 #include "narrowphase/overlap_rect_ellipse.h"
@@ -21,7 +23,12 @@
 #include <stdexcept>
 #include <vector>
 
-namespace collide2d::testing {
+namespace collide2d {
+namespace detail {
+#include "narrowphase/ellipse_cubic-inl.h"
+}  // namespace detail
+
+namespace testing {
 namespace {
 
 // The batched test, and the one-off test with orientations kept (query.h), for each pair kind.
@@ -140,6 +147,25 @@ TEST(OverlapBatch, HardCaseCirclePairsMatchTheOneOffKernel) {
   check_hard_cases<Circle, Ellipse>(Kind::circle, Kind::ellipse);
 }
 
+// Ellipse pairs of the hard-case families (touching at gaps down to 1e-12 of the size, needles to
+// aspect 1e6, offsets to 1e9, nested, identical), where the algebraic test must leave pairs to the
+// one-off kernel's GJK.
+TEST(OverlapBatch, HardCaseEllipsePairsMatchTheOneOffKernel) {
+  Pairs<Ellipse, Ellipse> p;
+  for (const Family& f : standard_families(Kind::ellipse, Kind::ellipse)) {
+    for (const Case& c : family_cases(f)) p.add(c);
+  }
+  int uncertain = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto v = detail::ellipse_cubic_verdicts(
+        detail::Scalar{}, detail::ellipse_ellipse_lanes(p.a[k], p.a_orientations[k], p.b[k], p.b_orientations[k]));
+    uncertain += !v.separated && !v.overlap;
+  }
+  std::printf("%zu hard-case ellipse pairs, %d of them uncertain for the algebraic test\n", p.size(), uncertain);
+  EXPECT_GT(uncertain, 100) << "the families must send pairs to the one-off kernel";
+  on_every_target([&](const char* target) { EXPECT_EQ(mismatches(p, 0, p.size(), target), 0) << target; });
+}
+
 // Candidate pairs as a broad phase hands them over, half of them placed at a small gap (either
 // sign) along a random direction, needles to aspect 1e6, in batches of ragged lengths.
 TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
@@ -150,6 +176,7 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   Pairs<Circle, Circle> circles;
   Pairs<Rect, Circle> rect_circles;
   Pairs<Circle, Ellipse> circle_ellipses;
+  Pairs<Ellipse, Ellipse> ellipses;
   while (with_ellipses.size() < 2'000'000) {
     const double aspect = std::pow(10.0, 6 * u(rng));
     const Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.05 + u(rng), 0.05 + u(rng)), 7 * u(rng)};
@@ -157,6 +184,8 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
     e.b = e.a / aspect;
     Rect s{e.center, Vec2(e.a, e.b), e.angle};
     Circle c{e.center, e.a}, d{r.center, 0.05 + u(rng)};
+    Ellipse f{r.center, 0.05 + u(rng), 0, 7 * u(rng)};
+    f.b = f.a / std::pow(10.0, 3 * u(rng));
     if (with_ellipses.size() % 2 == 1) {
       const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
       const double gap = (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng));
@@ -164,12 +193,14 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
       s.center = support(r, n) + gap * n - support(s, Vec2(-n));
       c.center = support(r, n) + gap * n - support(c, Vec2(-n));
       d.center = support(e, n) + gap * n - support(d, Vec2(-n));
+      f.center = support(e, n) + gap * n - support(f, Vec2(-n));
     }
     if (intersects(aabb(r), aabb(e))) with_ellipses.add(r, e);
     if (rects.size() < 1'000'000 && intersects(aabb(r), aabb(s))) rects.add(r, s);
     if (rect_circles.size() < 500'000 && intersects(aabb(r), aabb(c))) rect_circles.add(r, c);
     if (circles.size() < 500'000 && intersects(aabb(d), aabb(c))) circles.add(d, c);
     if (circle_ellipses.size() < 500'000 && intersects(aabb(d), aabb(e))) circle_ellipses.add(d, e);
+    if (ellipses.size() < 500'000 && intersects(aabb(e), aabb(f))) ellipses.add(e, f);
   }
   on_every_target([&](const char* target) {
     EXPECT_EQ(mismatches_in_ragged_batches(with_ellipses, target), 0) << target;
@@ -177,6 +208,7 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
     EXPECT_EQ(mismatches_in_ragged_batches(circles, target), 0) << target;
     EXPECT_EQ(mismatches_in_ragged_batches(rect_circles, target), 0) << target;
     EXPECT_EQ(mismatches_in_ragged_batches(circle_ellipses, target), 0) << target;
+    EXPECT_EQ(mismatches_in_ragged_batches(ellipses, target), 0) << target;
   });
 }
 
@@ -216,4 +248,5 @@ TEST(OverlapBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {
 }
 
 }  // namespace
-}  // namespace collide2d::testing
+}  // namespace testing
+}  // namespace collide2d
