@@ -29,6 +29,12 @@
 // only where every coefficient's magnitude lies in [1e-70, 1e70], so that no product of four
 // over- or underflows. Anything else is uncertain: the caller's exact kernel decides it.
 //
+// Needles of aspect beyond 1e6 are left to that kernel too, whatever the bound says. Not for the
+// test's sake: the fuzzer found a pair of aspects 6.6e23 and 6.4e24, 0.56 apart across their
+// axes, that this test calls apart, rightly, while the GJK path, which the distance query shares,
+// calls it overlapping (its double pass is uncertain, and the long double pass decides wrongly);
+// overlap and distance must agree, so until that path is fixed it decides such needles for both.
+//
 // Included inside a namespace, once per Highway target (no #pragma once).
 #if defined(COLLIDE2D_ELLIPSE_CUBIC_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef COLLIDE2D_ELLIPSE_CUBIC_INL_H_
@@ -67,8 +73,9 @@ auto ellipse_cubic_verdicts(D d, const detail::EllipseEllipseLanes<V>& f) {
   const V m_disc = Set(d, 18.0) * (((k * m_c2) * m_c1) * c0) + Set(d, 4.0) * (((m_c2 * m_c2) * m_c2) * c0) +
                    (m_c2 * m_c2) * (m_c1 * m_c1) + Set(d, 4.0) * (k * ((m_c1 * m_c1) * m_c1)) +
                    Set(d, 27.0) * ((k * k) * (c0 * c0));
-  const auto within = [&](const V& x) { return And(x >= Set(d, 1e-70), x <= Set(d, 1e70)); };
-  const auto ranged = And(And(within(k), within(c0)), And(within(m_c2), within(m_c1)));
+  const auto within = [&](const V& x, double bound) { return And(x >= Set(d, 1 / bound), x <= Set(d, bound)); };
+  const auto ranged = And(And(within(c0, 1e70), within(m_c2, 1e70)),
+                          And(within(m_c1, 1e70), And(within(k, 1e12), within(delta1 / delta2, 1e12))));
   const auto sure = And(ranged, Abs(disc) > Set(d, 0x1p-45) * m_disc);
   const V zero = Set(d, 0.0);
   const auto c2_negative = c2 < Neg(Set(d, 0x1p-47) * m_c2), c2_positive = c2 > Set(d, 0x1p-47) * m_c2;
