@@ -8,6 +8,7 @@
 #include "narrowphase/contact.h"
 
 #include "bench/box2d_baseline.h"
+#include "bench/scene_workload.h"
 #include "bench/workload.h"
 
 #include <benchmark/benchmark.h>
@@ -82,28 +83,28 @@ void box2d(benchmark::State& state) {
   });
 }
 
-BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::both_workloads);
-BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::both_workloads);
-BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::both_workloads);
-BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::both_workloads);
-BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::both_workloads);
-BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::both_workloads);
-BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::both_workloads);
-BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->Apply(bench::both_workloads);
-BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
+BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::workloads);
+BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::workloads);
+BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::workloads);
+BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::workloads);
+BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::workloads);
+BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::workloads);
+BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::workloads);
+BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::workloads);
+BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->Apply(bench::workloads);
+BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->Apply(bench::workloads);
+BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::workloads);
+BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::workloads);
+BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::workloads);
+BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::workloads);
+BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::workloads);
+BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::workloads);
 #if b2_maxPolygonVertices >= 16
-BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->Apply(bench::both_workloads);
-BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::both_workloads);
+BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::workloads);
+BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->Apply(bench::workloads);
+BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::workloads);
 #endif
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "narrowphase/query.h"
 
 #include "bench/box2d_baseline.h"
+#include "bench/scene_workload.h"
 #include "bench/workload.h"
 
 #include <benchmark/benchmark.h>
@@ -78,22 +79,22 @@ void boundary_ellipse_ellipse_nested(benchmark::State& state) {
 }
 BENCHMARK(boundary_ellipse_ellipse_nested);
 
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->Apply(bench::both_workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->Apply(bench::both_workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_minkowski, &minkowski)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_closest_features, &closest_features)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_ellipse_all_features, &all_features)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_rect_ellipse, &distance_rect_ellipse)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, overlap_rect_rect, &overlap_rect_rect)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_rect_rect, &distance_rect_rect)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->Apply(bench::workloads);
 
 // Box2D on the same pairs, converted beforehand (the conversion is not timed, and each pair's
 // transforms are the identity: its coordinates are taken from A's centre): b2TestOverlap on
@@ -146,18 +147,18 @@ void batch_overlap(benchmark::State& state) {
   bench::time_batches(state, [&] { overlap_batch<A, B>(w.a, oa, w.b, ob, out); });
 }
 
-BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(batch_overlap<Rect, Ellipse>)->Name("batch_overlap/rect_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::both_workloads);
-BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(batch_overlap<Ellipse, Ellipse>)->Name("batch_overlap/ellipse_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::both_workloads);
-BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::both_workloads);
-BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::both_workloads);
-BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::both_workloads);
-BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(batch_overlap<Circle, Ellipse>)->Name("batch_overlap/circle_ellipse")->Apply(bench::both_workloads);
-BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::both_workloads);
+BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::workloads);
+BENCHMARK(batch_overlap<Rect, Ellipse>)->Name("batch_overlap/rect_ellipse")->Apply(bench::workloads);
+BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::workloads);
+BENCHMARK(batch_overlap<Ellipse, Ellipse>)->Name("batch_overlap/ellipse_ellipse")->Apply(bench::workloads);
+BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::workloads);
+BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::workloads);
+BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::workloads);
+BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::workloads);
+BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::workloads);
+BENCHMARK(batch_overlap<Circle, Ellipse>)->Name("batch_overlap/circle_ellipse")->Apply(bench::workloads);
+BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {
@@ -165,7 +166,7 @@ void posed_distance_ellipse_ellipse(benchmark::State& state) {
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
 }
-BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::both_workloads);
+BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::workloads);
 BENCHMARK(box2d_distance_ellipse_ellipse)
     ->ArgNames({"candidates", "sides"})
     ->ArgsProduct({{0, 1}, benchmark::CreateRange(8, 256, 2)});

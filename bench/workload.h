@@ -102,13 +102,21 @@ const Workload<A, B>& candidate_workload() {
   return w;
 }
 
-// The benchmark's workload, by its first argument: random pairs (0) or candidate pairs (1).
+// The built-in scene's broad-phase pairs (bench/scene_workload.h, which a benchmark using them
+// includes: it needs the scene code of the command line).
+template <class A, class B>
+const Workload<A, B>& scene_workload();
+
+// The benchmark's workload, by its first argument: random pairs (0), the generator's candidate pairs
+// (1), the built-in scene's (2).
 template <class A, class B>
 const Workload<A, B>& pairs(const benchmark::State& state) {
+  if (state.range(0) == 2) return scene_workload<A, B>();
   return state.range(0) == 0 ? workload<A, B>() : candidate_workload<A, B>();
 }
 
-// Registers a benchmark on both workloads, named candidates:0 and candidates:1 (->Apply(...)).
-inline void both_workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1); }
+// Registers a benchmark on the three workloads, named candidates:0, candidates:1 and candidates:2
+// (->Apply(...)).
+inline void workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1)->Arg(2); }
 
 }  // namespace collide2d::bench
