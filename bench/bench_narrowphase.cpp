@@ -169,7 +169,7 @@ void posed_distance_ellipse_ellipse(benchmark::State& state) {
 BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::workloads);
 BENCHMARK(box2d_distance_ellipse_ellipse)
     ->ArgNames({"candidates", "sides"})
-    ->ArgsProduct({{0, 1}, benchmark::CreateRange(8, 256, 2)});
+    ->ArgsProduct({{0, 1, 2}, benchmark::CreateRange(8, 256, 2)});
 
 }  // namespace
 }  // namespace collide2d
