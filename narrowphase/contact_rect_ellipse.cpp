@@ -63,7 +63,8 @@ bool quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>
   return inside();
 }
 
-Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
+// The contact, from the global maximum of s; ca and cb are the centres.
+Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb) {
   const double margin = climb_margin(p);
   const double flat = margin / 2;
   // The best face normal f, turned towards B, and s there with the corners before and after it.
@@ -79,7 +80,14 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
     const double s = f.dot(gap), slope = perp(f).dot(gap);
     if (std::abs(slope) <= p.A.extent(perp(f)) + flat) {
       const Separation<double> e{s, slope, s + at_f.rho, gap, middle, at_f.offset, 0.0, at_f.rho, at_f.rho_slope};
-      if (disc_bound(p, f, e) <= s + margin) return Deepest<double>{{f, e}, 1};
+      if (disc_bound(p, f, e) <= s + margin) {
+        // As curved_contact would make it, without its probing: the normal is a face normal, so
+        // B's support point stays and A's is it moved back by s.
+        const Vec2 normal = p.to_world(f), pb = cb - p.to_world(at_f.offset);
+        Contact c = Contact::of(s, normal, Vec2(pb - s * normal), pb);
+        c.evaluations = 1;
+        return c;
+      }
     }
   }
   int evaluations = 1;
@@ -106,7 +114,9 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
     settled[k] = true;
     if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) {
       consider(inner[k]);
-      if (disc_bound(p, inner[k].n, inner[k].at) <= inner[k].at.s + margin) return {*best, evaluations};
+      if (disc_bound(p, inner[k].n, inner[k].at) <= inner[k].at.s + margin) {
+        return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
+      }
     }
   }
   // The last two face normals from the points of the first two (SupportPair::opposite).
@@ -122,7 +132,7 @@ Deepest<double> rect_ellipse_deepest(const RectEllipse& p) {
   }
   for (;;) {
     const int k = static_cast<int>(std::max_element(bound, bound + 4) - bound);
-    if (!(bound[k] > best->at.s + margin)) return {*best, evaluations};
+    if (!(bound[k] > best->at.s + margin)) return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
     bound[k] = -std::numeric_limits<double>::infinity();
     if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) consider(inner[k]);
   }
@@ -140,7 +150,7 @@ Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, co
                              const Orientation& b_orientation, const ContactOptions&) {
   const detail::RectEllipse p =
       detail::RectEllipse::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  return detail::curved_contact(p, a.center, b.center, detail::rect_ellipse_deepest(p));
+  return detail::rect_ellipse_contact(p, a.center, b.center);
 }
 
 }  // namespace collide2d
