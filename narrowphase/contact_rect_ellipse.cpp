@@ -80,14 +80,8 @@ Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& c
     const double s = f.dot(gap), slope = perp(f).dot(gap);
     if (std::abs(slope) <= p.A.extent(perp(f)) + flat) {
       const Separation<double> e{s, slope, s + at_f.rho, gap, middle, at_f.offset, 0.0, at_f.rho, at_f.rho_slope};
-      if (disc_bound(p, f, e) <= s + margin) {
-        // As curved_contact would make it, without its probing: the normal is a face normal, so
-        // B's support point stays and A's is it moved back by s.
-        const Vec2 normal = p.to_world(f), pb = cb - p.to_world(at_f.offset);
-        Contact c = Contact::of(s, normal, Vec2(pb - s * normal), pb);
-        c.evaluations = 1;
-        return c;
-      }
+      // Built here, as curved_contact would, without the Deepest it takes.
+      if (disc_bound(p, f, e) <= s + margin) return face_contact(p, cb, f, at_f.offset, s, 1);
     }
   }
   int evaluations = 1;

@@ -25,9 +25,21 @@ inline bool on_face_normal(const EllipseSupport<double>&, const V2<double>&) { r
 // support point jumps as n turns by a hair (1e-6 rad, wider than any such kink) and the other's
 // barely moves: the steadier point is kept, and its partner is that point moved by the separation
 // along the normal.
+// The contact along A's face normal n (in the pair's frame) at separation s: B's support point,
+// offset_b from its centre cb, is kept, and A's is that point moved back by s along the normal.
+template <class SA, class SB>
+Contact face_contact(const SupportPair<double, SA, SB>& p, const Vec2& cb, const V2<double>& n,
+                     const V2<double>& offset_b, double s, int evaluations) {
+  const Vec2 normal = p.to_world(n), pb = cb - p.to_world(offset_b);
+  Contact c = Contact::of(s, normal, Vec2(pb - s * normal), pb);
+  c.evaluations = evaluations;
+  return c;
+}
+
 template <class SA, class SB>
 Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb, const Deepest<double>& d) {
   const Separation<double>& e = d.at;
+  if (on_face_normal(p.A, d.n)) return face_contact(p, cb, d.n, e.offset_b, e.s, d.evaluations);
   const Vec2 normal = p.to_world(d.n);
   const Vec2 off_a = p.to_world(e.offset_a), off_b = p.to_world(e.offset_b);
   Vec2 pa = ca + off_a, pb = cb - off_b;
@@ -35,9 +47,7 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   const auto rounding = [&] {
     return 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
   };
-  if (on_face_normal(p.A, d.n)) {
-    pa = pb - e.s * normal;
-  } else if (on_face_normal(p.B, d.n)) {
+  if (on_face_normal(p.B, d.n)) {
     pb = pa + e.s * normal;
   } else if (!(std::abs(e.slope) <= rounding())) {
     const V2<double> hair = 1e-6 * perp(d.n);

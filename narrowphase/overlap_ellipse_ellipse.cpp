@@ -131,22 +131,31 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
 
 }  // namespace detail
 
-// Far apart, else the algebraic test (ellipse_cubic-inl.h, which the batch runs on vectors), else
-// the certain cases and GJK of ellipse_contact.
-bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
-  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
-  return overlap_ellipse_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle));
-}
+namespace {
 
-bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
-                             const Orientation& b_orientation) {
-  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
+// A pair not far apart: the algebraic test (ellipse_cubic-inl.h, which the batch runs on vectors),
+// else the certain cases and GJK of ellipse_contact.
+bool near_overlap(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b, const Orientation& b_orientation) {
   const auto cubic = detail::ellipse_cubic_verdicts(detail::Scalar{},
                                                     detail::ellipse_ellipse_lanes(a, a_orientation, b, b_orientation));
   if (cubic.separated || cubic.overlap) return cubic.overlap;
   std::optional<detail::EllipsePair<double>> pair =
       detail::EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   return detail::ellipse_contact(a, b, pair, nullptr, true).overlap;
+}
+
+}  // namespace
+
+// Far apart first: no sines and cosines for those.
+bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
+  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
+  return near_overlap(a, Orientation::of(a.angle), b, Orientation::of(b.angle));
+}
+
+bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation) {
+  if (detail::far_apart(a, b, (b.center - a.center).norm())) return false;
+  return near_overlap(a, a_orientation, b, b_orientation);
 }
 
 FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
