@@ -14,12 +14,18 @@
 // search (deepest_direction.h) bisected arcs of such quarters with seven to ten support evaluations
 // in deep overlaps, where s is convex near the face normals.
 //
-// Each point–ellipse root costs as much as a few support evaluations, so quarters are settled only
-// where a cheaper bound leaves them open: first the best face normal (a face contact's maximum is a
-// kink of s there), certified by disc_bound, which settles most pairs after one support
-// evaluation; then the corner on the side where s rises from that face, certified the same way;
-// then the other quarters in the order of their bounds (cheap_arc_bound: the ellipse's tangents at
-// the quarter's ends, else arc_bound), while a bound exceeds the best value found.
+// Each point–ellipse root costs as much as a few support evaluations, so a quarter's root is taken
+// only where its maximum can lie inside it and beat the best value found (quarter_bound). The four
+// face normals come first, from B's support at the rectangle's two axes. Where the best of them
+// shows the pair apart with B's support point over that face, delta lies in the face's Voronoi
+// region of the Minkowski sum A + B and s there is the distance: no bound is needed. Elsewhere a
+// quarter stays shut unless its corner lies in the solid ellipse, in the hull of its evolute, or
+// delta in the Voronoi region of its arc, and unless the ellipse's tangents at the quarter's ends
+// allow a larger s; the open ones are settled in the order of their bounds, and a maximum found in
+// one may certify itself (disc_bound). The generic climb and branch and bound, which this kernel
+// used before, tried the best face first and certified it by disc_bound, then bounded each quarter
+// from its ends: on bench_contact's scene pairs that took 134 ns on average where this takes 121,
+// with the same contacts to 1e-15 of the scale on a million random pairs.
 #include "narrowphase/curved_contact.h"
 
 #include "narrowphase/distance_point_ellipse.h"
@@ -47,15 +53,18 @@ Direction<double> at_foot(const RectEllipse& p, const V2<double>& corner, const 
 // The maximum of s inside the quarter turn from x counter-clockwise to y (a right angle), where the
 // rectangle's corner is the one on the side of x + y, into `m` if s has one there (else the
 // quarter's maximum is at an end); `evaluations` counts each point–ellipse root as one.
-bool quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>& y, Direction<double>& m,
-                     int& evaluations) {
+// `nearest` false skips the nearest point, known to lie outside the quarter.
+bool quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>& y, bool nearest,
+                     Direction<double>& m, int& evaluations) {
   const V2<double> corner = p.A.at(V2<double>(x + y), V2<double>(x + y)).offset;
   const Vec2 local = p.B.rot.apply_inverse(V2<double>(corner - p.delta));
   const auto inside = [&] { return cross(x, m.n) >= 0 && cross(m.n, y) >= 0; };
-  ++evaluations;
-  const PointEllipseResult nearest = distance_point_ellipse(p.B.a, p.B.b, local);
-  m = at_foot(p, corner, nearest.closest, nearest.normal, nearest.inside ? -nearest.distance : nearest.distance);
-  if (inside()) return true;
+  if (nearest) {
+    ++evaluations;
+    const PointEllipseResult foot = distance_point_ellipse(p.B.a, p.B.b, local);
+    m = at_foot(p, corner, foot.closest, foot.normal, foot.inside ? -foot.distance : foot.distance);
+    if (inside()) return true;
+  }
   ++evaluations;
   const std::optional<CurveFoot> other = other_local_nearest(p.B.a, p.B.b, local);
   if (!other) return false;
@@ -63,73 +72,110 @@ bool quarter_maximum(const RectEllipse& p, const V2<double>& x, const V2<double>
   return inside();
 }
 
+// The four face normals of the rectangle, k = 0..3 counter-clockwise from its axis x, with B's
+// support offsets along them and s there; quarter k runs from normal k to normal k + 1, where A's
+// support point is the corner between those two faces.
+struct Faces {
+  V2<double> normal[5];
+  V2<double> offset[5];  // B's, offset[k + 2] = -offset[k]
+  double s[4] = {};
+
+  static Faces of(const RectEllipse& p) {
+    Faces f;
+    const V2<double> x(p.A.rot.c, p.A.rot.s), y = perp(x);
+    const double ex = p.B.extent(x), ey = p.B.extent(y);
+    const V2<double> ox = p.B.at_extent(x, ex).offset, oy = p.B.at_extent(y, ey).offset;
+    const double dx = p.delta.dot(x), dy = p.delta.dot(y);
+    const V2<double> normals[4] = {x, y, -x, -y}, offsets[4] = {ox, oy, -ox, -oy};
+    const double s[4] = {dx - p.A.hx - ex, dy - p.A.hy - ey, -dx - p.A.hx - ex, -dy - p.A.hy - ey};
+    for (int k = 0; k < 5; ++k) f.normal[k] = normals[k % 4], f.offset[k] = offsets[k % 4];
+    std::copy(s, s + 4, f.s);
+    return f;
+  }
+  int best() const { return static_cast<int>(std::max_element(s, s + 4) - s); }
+  // A's corner in quarter k.
+  V2<double> corner(const RectEllipse& p, int k) const {
+    const double along = k % 2 == 0 ? p.A.hx : p.A.hy, across = k % 2 == 0 ? p.A.hy : p.A.hx;
+    return along * normal[k] + across * normal[k + 1];
+  }
+};
+
+// An upper bound of s over quarter k, or -infinity where its maximum lies at an end (a face normal,
+// which Faces weighed). Inside the quarter s is the corner's f_k(n) = n.(delta - c_k) - h_B(n).
+// - B lies behind its tangent at each end's support point o: f_k(n) <= n.g, g = delta - c_k - o,
+//   a sinusoid whose maximum over the quarter is |g| where g points into it, else at an end.
+// - The critical points of f_k are the normals of the ellipse through c_k (the top of the file).
+//   Where c_k lies outside the solid ellipse and outside the convex hull of its evolute (the rhombus
+//   a |x| + b |y| < |a^2 - b^2|), there are two, and f_k has one maximum, the corner's distance
+//   d_k > 0. The quarter then holds a maximum only where d_k's direction lies in it: delta lies in
+//   the Voronoi region of the arc of c_k + B between the two faces' segments, beyond both segments'
+//   ends, g_x.y > 0 and g_y.x > 0 with x, y the quarter's ends. A wrong call at that region's edge
+//   costs no more than the rounding (the arc meets the segment there, and the two separations
+//   agree); the point is taken as outside the solid and the hull only when it is more than the
+//   margin, 64 u of the scale, away from them, far above the rounding of its coordinates.
+struct QuarterBound {
+  double value = -std::numeric_limits<double>::infinity();
+  bool nearest = false;  // whether the corner's nearest point may be the quarter's maximum
+};
+
+QuarterBound quarter_bound(const RectEllipse& p, const Faces& f, int k) {
+  const V2<double>&x = f.normal[k], &y = f.normal[k + 1];
+  const V2<double> c = f.corner(p, k);
+  const V2<double> gx = p.delta - c - f.offset[k], gy = p.delta - c - f.offset[k + 1];
+  QuarterBound q;
+  q.nearest = gx.dot(y) > 0 && gy.dot(x) > 0;
+  if (!q.nearest) {
+    // Within the margin of the solid only if within it after squeezing the major axis to the minor.
+    const V2<double> local = p.B.rot.apply_inverse(V2<double>(c - p.delta));
+    const bool wide = p.B.a >= p.B.b;
+    const double minor = wide ? p.B.b : p.B.a, squeeze = wide ? p.B.b / p.B.a : p.B.a / p.B.b;
+    const double u = wide ? local[0] * squeeze : local[0], v = wide ? local[1] : local[1] * squeeze;
+    const double reach = minor + p.margin();
+    q.nearest = u * u + v * v <= reach * reach;
+    const double hull = p.B.a * std::abs(local[0]) + p.B.b * std::abs(local[1]);
+    const double evolute = std::abs((p.B.a - p.B.b) * (p.B.a + p.B.b)) + p.margin() * (p.B.a + p.B.b);
+    if (!q.nearest && !(hull < evolute)) return q;
+  }
+  const auto along = [&](const V2<double>& g) {
+    return g.dot(x) >= 0 && g.dot(y) >= 0 ? g.norm() : std::max(g.dot(x), g.dot(y));
+  };
+  q.value = std::min(along(gx), along(gy));
+  return q;
+}
+
 // The contact, from the global maximum of s; ca and cb are the centres.
 Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb) {
+  const Faces faces = Faces::of(p);
+  const int face = faces.best();
+  const V2<double>& f = faces.normal[face];
+  const double s = faces.s[face];
   const double margin = climb_margin(p);
-  const double flat = margin / 2;
-  // The best face normal f, turned towards B, and s there with the corners before and after it.
-  double extent;
-  const V2<double> axis = best_face(p, &extent);
-  const V2<double> f = p.delta.dot(axis) >= 0 ? axis : V2<double>(-axis);
-  const Support<double> at_f = p.B.at_extent(f, extent);
-  // A face contact: the ellipse's support point lies over the face, s has a kink at f, and the
-  // middle of the face is A's point.
-  {
-    const V2<double> middle = p.A.extent(f) * f;
-    const V2<double> gap = p.delta - middle - at_f.offset;
-    const double s = f.dot(gap), slope = perp(f).dot(gap);
-    if (std::abs(slope) <= p.A.extent(perp(f)) + flat) {
-      const Separation<double> e{s, slope, s + at_f.rho, gap, middle, at_f.offset, 0.0, at_f.rho, at_f.rho_slope};
-      // Built here, as curved_contact would, without the Deepest it takes.
-      if (disc_bound(p, f, e) <= s + margin) return face_contact(p, cb, f, at_f.offset, s, 1);
-    }
+  // Apart, with B's support point over the face: delta is in the face's Voronoi region of the
+  // Minkowski sum, and s is the distance.
+  if (s >= 0 && std::abs(perp(f).dot(p.delta - faces.offset[face])) <= p.A.extent(perp(f)) + margin / 2) {
+    return face_contact(p, cb, f, faces.offset[face], s, 1);
   }
+  QuarterBound bound[4];
+  for (int k = 0; k < 4; ++k) bound[k] = quarter_bound(p, faces, k);
   int evaluations = 1;
-  const V2<double> axes[5] = {f, perp(f), -f, -perp(f), f};
-  // s at the four face normals, seen from the quarter before (ends[k][0]) and after (ends[k][1]),
-  // and the maxima inside the quarters.
-  Direction<double> ends[4][2], inner[4];
-  const Direction<double>* best = &ends[0][0];
-  const auto consider = [&](const Direction<double>& m) {
-    if (m.at.s > best->at.s) best = &m;
-  };
-  const auto set_ends = [&](int k, const std::array<Separation<double>, 2>& e) {
-    ends[k][0] = {axes[k], e[0]};
-    ends[k][1] = {axes[k], e[1]};
-  };
-  set_ends(0, p.separations(f, axes[3] + f, f + axes[1], at_f));
-  consider(ends[0][1]);
-  bool settled[4] = {};
-  // Where s rises from f into a quarter, the maximum is most often at that quarter's corner, and
-  // disc_bound certifies it without the other face normal.
-  const bool rising_after = ends[0][1].at.slope > flat, rising_before = ends[0][0].at.slope < -flat;
-  if (rising_after != rising_before) {
-    const int k = rising_after ? 0 : 3;
-    settled[k] = true;
-    if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) {
-      consider(inner[k]);
-      if (disc_bound(p, inner[k].n, inner[k].at) <= inner[k].at.s + margin) {
-        return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
-      }
+  Direction<double> inner[4];
+  const Direction<double>* best = nullptr;
+  // The quarters in the order of their bounds while one exceeds the best value found; a maximum
+  // found inside one may certify itself (disc_bound) before the next root is taken.
+  const auto higher = [](const QuarterBound& a, const QuarterBound& b) { return a.value < b.value; };
+  for (bool certified = false; !certified;) {
+    const int k = static_cast<int>(std::max_element(bound, bound + 4, higher) - bound);
+    if (!(bound[k].value > (best ? best->at.s : s) + margin)) break;
+    bound[k].value = -std::numeric_limits<double>::infinity();
+    if (quarter_maximum(p, faces.normal[k], faces.normal[k + 1], bound[k].nearest, inner[k], evaluations) &&
+        inner[k].at.s > (best ? best->at.s : s)) {
+      best = &inner[k];
+      const double floor = best->at.s + margin;
+      certified = std::max_element(bound, bound + 4, higher)->value <= floor || disc_bound(p, best->n, best->at) <= floor;
     }
   }
-  // The last two face normals from the points of the first two (SupportPair::opposite).
-  set_ends(1, p.separations(axes[1], f + axes[1], axes[1] + axes[2]));
-  ++evaluations;
-  set_ends(2, {p.opposite(f, ends[0][0].at), p.opposite(f, ends[0][1].at)});
-  set_ends(3, {p.opposite(axes[1], ends[1][0].at), p.opposite(axes[1], ends[1][1].at)});
-  for (int k = 1; k < 4; ++k) consider(ends[k][0]), consider(ends[k][1]);
-  double bound[4];
-  for (int k = 0; k < 4; ++k) {
-    const Direction<double>&x = ends[k][1], &y = ends[(k + 1) % 4][0];
-    bound[k] = settled[k] ? -std::numeric_limits<double>::infinity() : cheap_arc_bound(p, x, y, best->at.s + margin);
-  }
-  for (;;) {
-    const int k = static_cast<int>(std::max_element(bound, bound + 4) - bound);
-    if (!(bound[k] > best->at.s + margin)) return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
-    bound[k] = -std::numeric_limits<double>::infinity();
-    if (quarter_maximum(p, axes[k], axes[k + 1], inner[k], evaluations)) consider(inner[k]);
-  }
+  if (best == nullptr) return face_contact(p, cb, f, faces.offset[face], s, evaluations);
+  return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
 }
 
 }  // namespace

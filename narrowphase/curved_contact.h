@@ -49,7 +49,7 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   };
   if (on_face_normal(p.B, d.n)) {
     pb = pa + e.s * normal;
-  } else if (!(std::abs(e.slope) <= rounding())) {
+  } else if (e.slope != 0 && !(std::abs(e.slope) <= rounding())) {  // 0: a root, its norms spared
     const V2<double> hair = 1e-6 * perp(d.n);
     const V2<double> before = (d.n - hair).normalized(), after = (d.n + hair).normalized();
     const Separation<double> x = p.separation(before, before), y = p.separation(after, after);
