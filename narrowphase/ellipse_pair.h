@@ -29,11 +29,23 @@ namespace collide2d::detail {
 // ellipse, whose rotation is then exactly the identity (see SupportPair).
 template <class Real>
 struct EllipsePair : SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>> {
+  // The magnitudes of the shorter ellipse's cosine and sine in the frame, |c_f c| + |s_f s| and
+  // |c_f s| + |s_f c| with (c_f, s_f) the frame's and (c, s) its own orientation: each composed
+  // value lies within 4 u of its magnitude of the true one. Zero where the angles are equal (the
+  // turn is then exactly the identity).
+  V2<Real> turn = V2<Real>::Zero();
+
   static EllipsePair of(const Ellipse& a, const Ellipse& b) {
-    return {SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, b)};
+    return of(a, Rotation<Real>::of(a.angle), b, Rotation<Real>::of(b.angle));
   }
   static EllipsePair of(const Ellipse& a, const Rotation<Real>& ra, const Ellipse& b, const Rotation<Real>& rb) {
-    return {SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, ra, b, rb)};
+    using std::abs;
+    EllipsePair p{SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>::of(a, ra, b, rb)};
+    if (a.angle != b.angle) {
+      const Rotation<Real>&f = p.frame, &o = longest(a) >= longest(b) ? rb : ra;
+      p.turn = V2<Real>(abs(f.c * o.c) + abs(f.s * o.s), abs(f.c * o.s) + abs(f.s * o.c));
+    }
+    return p;
   }
 };
 

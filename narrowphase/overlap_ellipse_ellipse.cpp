@@ -37,18 +37,28 @@ bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
 // angle. The rounding is that of the three terms of the gap, not of the pair's scale: a needle of
 // length 1e20 has a half-height known to a few ulps of its b in its own frame, and a gap of 0.5
 // beside it is certain (the fuzzer found such a pair called overlapping, at a scale where 0.5 is
-// below 8 u). The other ellipse's rotation in that frame is off by up to 2 u, so its half-width
-// is known to u times its own size only.
-bool boxes_apart(const EllipsePair<double>& p, Vec2& axis) {
+// below 8 u). delta's component carries a few u of its composition's magnitude (d the centres'
+// difference in world axes). The shorter ellipse's half-width sqrt((a c)^2 + (b s)^2) moves by at
+// most a dc + b ds where its cosine and sine carry dc and ds, a few u of their magnitudes
+// (EllipsePair::turn). That allowance was (a + b) u before, whatever the turn: for two needles
+// 2.4e24 and 5.1e25 long turned by 1e-297 from each other and 0.56 apart across their axes, 1e9
+// times the gap, so the pair went to GJK, whose long double pass called it overlapping (the fuzzer,
+// through the ellipse cubic, which called it apart).
+bool boxes_apart(const EllipsePair<double>& p, const Vec2& d, Vec2& axis) {
+  const bool a_frame = std::max(p.A.a, p.A.b) >= std::max(p.B.a, p.B.b);
   for (int k = 0; k < 2; ++k) {
     const auto half = [k](const EllipseSupport<double>& e) {
       const double c = k == 0 ? e.rot.c : e.rot.s, s = k == 0 ? e.rot.s : e.rot.c;
       return std::sqrt(e.a * e.a * c * c + e.b * e.b * s * s);
     };
-    const auto turned_size = [](const EllipseSupport<double>& e) { return e.rot.s == 0 ? 0.0 : e.a + e.b; };
+    const auto turned = [&](const EllipseSupport<double>& e, bool frame) {
+      return frame ? 0.0 : e.a * p.turn[k] + e.b * p.turn[1 - k];
+    };
+    const double along = k == 0 ? std::abs(p.frame.c * d.x()) + std::abs(p.frame.s * d.y())
+                                : std::abs(p.frame.c * d.y()) + std::abs(p.frame.s * d.x());
     const double half_a = half(p.A), half_b = half(p.B);
     const double gap = std::abs(p.delta[k]) - half_a - half_b;
-    if (gap > 8 * kU * (std::abs(p.delta[k]) + half_a + half_b + turned_size(p.A) + turned_size(p.B))) {
+    if (gap > 8 * kU * (along + half_a + half_b + turned(p.A, a_frame) + turned(p.B, !a_frame))) {
       axis = Vec2::Zero();
       axis[k] = p.delta[k] > 0 ? 1.0 : -1.0;
       return true;
@@ -102,7 +112,7 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
   if (apart) {
     verdict = FilterVerdict::separated;
     out = {false, delta / length, Vec2::Zero(), 0};
-  } else if (boxes_apart(*pair, axis)) {
+  } else if (boxes_apart(*pair, delta, axis)) {
     verdict = FilterVerdict::separated;
     out = {false, pair->to_world(axis), Vec2::Zero(), 0};
   } else if (clearly_inside(pair->A, pair->delta)) {

@@ -258,6 +258,29 @@ TEST(EllipseDistance, UltraThinNeedles) {
               worst_distance / kU, worst_point / kU);
 }
 
+// Needles side by side across their axes, turned from upright by angles so small that their sides
+// move by less than 1e-260 over their whole length: the gap between them is the gap of the upright
+// pair, exactly. The fuzzer found the pair of widths 3.6875 and 8, lengths 2.4e24 and 5.1e25, turned
+// by -1.0e-297 and 7.4e-322, called overlapping by overlap and distance alike (distance 0); the box
+// test then allowed (a + b) u for the shorter needle's turn, 1e9 times the gap.
+TEST(EllipseDistance, NeedlesTurnedByTinyAnglesApartAcrossAxes) {
+  for (const double length : {1e10, 2.4433940861928017e+24, 1e30}) {
+    for (const double gap : {0.5625, 1.0 / 1024, 3.0}) {
+      for (const auto& [ta, tb] : {std::pair{-1.0164679129429746e-297, 7.4109846876186982e-322},
+                                   std::pair{1e-300, -1e-290}, std::pair{0.0, 1e-295}}) {
+        const Ellipse a{Vec2(3.6875 + gap, 0.9375), 3.6875, length, ta};
+        const Ellipse b{Vec2(-8, -8), 8, 20.8 * length, tb};
+        for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, a}}) {
+          const DistanceResult d = distance(p, q);
+          EXPECT_FALSE(overlaps(p, q)) << length << " " << gap << " " << ta << " " << tb;
+          EXPECT_FALSE(d.overlapping) << length << " " << gap << " " << ta << " " << tb;
+          EXPECT_LE(std::abs(d.distance - gap), 8 * kU * (gap + 16)) << length << " " << gap << " " << ta << " " << tb;
+        }
+      }
+    }
+  }
+}
+
 // A needle 1e17 to 1e45 long and 4.5 thick, turned by theta, with an ellipse (turned by a further
 // phi) 0.5625 beside its middle, set out in the needle's axes: there the needle's side is flat to
 // 1e-32, so the gap and the closest points are known by construction, to the rounding of the
