@@ -151,12 +151,16 @@ QuarterBound quarter_bound(const RectEllipse& p, const Faces& f, const NearEllip
   const V2<double> c = f.corner(p, k);
   const V2<double> gx = p.delta - c - f.offset[k], gy = p.delta - c - f.offset[k + 1];
   QuarterBound q;
+  // In the arc's Voronoi region the pair is apart at that corner and its quarter holds the maximum,
+  // unless the corner lies in the solid: no bound is worth its square root there.
   q.nearest = gx.dot(y) > 0 && gy.dot(x) > 0;
-  if (!q.nearest) {
-    const V2<double> local = p.B.rot.apply_inverse(V2<double>(c - p.delta));
-    q.nearest = near.in_solid(local);
-    if (!q.nearest && !near.in_hull(local)) return q;
+  if (q.nearest) {
+    q.value = std::numeric_limits<double>::infinity();
+    return q;
   }
+  const V2<double> local = p.B.rot.apply_inverse(V2<double>(c - p.delta));
+  q.nearest = near.in_solid(local);
+  if (!q.nearest && !near.in_hull(local)) return q;
   const double r = p.B.rho_floor(x, y, f.rho[k], f.rho[k + 1]);
   const auto along = [&](const V2<double>& g, const V2<double>& end, const V2<double>& other) {
     const V2<double> w = g + r * end;
