@@ -245,6 +245,7 @@ TEST(RayCast, NeedlesAndRoundEllipsesMatchTheQuadraticIn50Digits) {
 // speculative margin, the pairs whose contact separation is within it), each the contact the
 // narrow phase gives for the pair, in the order of overlapping(), over frames of motion.
 TEST(World, ContactsMatchAllPairsWhenAskedFor) {
+  int circle_ellipse = 0;
   for (const double margin : {0.0, 0.2}) {
     Rng rng(11);
     World world({.fat_margin = 0.05, .contacts = true, .speculative_margin = margin});
@@ -280,13 +281,22 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
         ASSERT_EQ(BodyPair(got.a, got.b), BodyPair(expected[k].a, expected[k].b)) << "frame " << frame;
         ASSERT_EQ(got.contact.separation, expected[k].contact.separation);
         ASSERT_EQ(got.contact.normal, expected[k].contact.normal);
+        ASSERT_EQ(got.contact.point_a, expected[k].contact.point_a);
+        ASSERT_EQ(got.contact.point_b, expected[k].contact.point_b);
         ASSERT_EQ(got.contact.manifold_size, expected[k].contact.manifold_size);
+        // The pairs of a circle and an ellipse, in either order, are counted: the family is there.
+        const Shape& a = world.shape(got.a);
+        const Shape& b = world.shape(got.b);
+        circle_ellipse += (std::holds_alternative<Circle>(a) && std::holds_alternative<Ellipse>(b)) ||
+                          (std::holds_alternative<Ellipse>(a) && std::holds_alternative<Circle>(b));
       }
       EXPECT_EQ(world.last_frame().contacts, expected.size());
       EXPECT_EQ(plain.overlapping(), world.overlapping());
     }
     EXPECT_GT(world.contacts().size(), world.overlapping().size() * (margin > 0 ? 1 : 0));
   }
+  EXPECT_GT(circle_ellipse, 100);
+  std::printf("[measure] world contacts: %d circle-ellipse contacts checked\n", circle_ellipse);
 }
 
 TEST(World, BadInputIsRefusedAndChangesNothing) {
