@@ -18,13 +18,6 @@ inline bool on_face_normal(const RectSupport<double>& r, const V2<double>& n) {
 }
 inline bool on_face_normal(const EllipseSupport<double>&, const V2<double>&) { return false; }
 
-// The deepest points are the two support points where s'(n) vanishes to rounding. Elsewhere n is a
-// kink of s (a rectangle's face normal, where its support set is the whole face), or a maximum
-// sharper than a double angle resolves (a needle's flat side, s'' ~ a^2 / b, where its support
-// point may sit anywhere along the side, tip included; see at_maximum). Either way one shape's
-// support point jumps as n turns by a hair (1e-6 rad, wider than any such kink) and the other's
-// barely moves: the steadier point is kept, and its partner is that point moved by the separation
-// along the normal.
 // The contact along A's face normal n (in the pair's frame) at separation s: B's support point,
 // offset_b from its centre cb, is kept, and A's is that point moved back by s along the normal.
 template <class SA, class SB>
@@ -36,6 +29,13 @@ Contact face_contact(const SupportPair<double, SA, SB>& p, const Vec2& cb, const
   return c;
 }
 
+// The deepest points are the two support points where s'(n) vanishes to rounding. Elsewhere n is a
+// kink of s (a rectangle's face normal, where its support set is the whole face), or a maximum
+// sharper than a double angle resolves (a needle's flat side, s'' ~ a^2 / b, where its support
+// point may sit anywhere along the side, tip included; see at_maximum). Either way one shape's
+// support point jumps as n turns by a hair (1e-6 rad, wider than any such kink) and the other's
+// barely moves: the steadier point is kept, and its partner is that point moved by the separation
+// along the normal.
 template <class SA, class SB>
 Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb, const Deepest<double>& d) {
   const Separation<double>& e = d.at;
