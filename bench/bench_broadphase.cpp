@@ -1,7 +1,7 @@
 // Broad phase: one frame, every box moved and then one update, for n boxes in a uniform scene (8% of
 // the arena covered, speeds up to 0.2 box sizes per frame, boxes bouncing off the walls).
 #include "bench/box2d_baseline.h"
-#include "broadphase/broad_phase.h"
+#include <collide2d/broad_phase.h>
 
 #include <benchmark/benchmark.h>
 

@@ -3,15 +3,15 @@
 // (centres in a 4 x 4 square, most of them far apart: the kernels' first early-out answers them),
 // candidates:1 on candidate pairs (the same generator, only the pairs whose boxes overlap: what a
 // broad phase hands over, and where a World spends its narrow phase; bench/workload.h).
-#include "narrowphase/distance_ellipse_ellipse.h"
-#include "narrowphase/distance_rect_ellipse.h"
-#include "narrowphase/distance_rect_rect.h"
-#include "narrowphase/overlap_batch.h"
-#include "narrowphase/overlap_circle_ellipse.h"
-#include "narrowphase/overlap_ellipse_ellipse.h"
-#include "narrowphase/overlap_rect_ellipse.h"
-#include "narrowphase/overlap_rect_rect.h"
-#include "narrowphase/query.h"
+#include "narrowphase/distance/distance_ellipse_ellipse.h"
+#include "narrowphase/distance/distance_rect_ellipse.h"
+#include "narrowphase/distance/distance_rect_rect.h"
+#include <collide2d/batch.h>
+#include "narrowphase/overlap/overlap_circle_ellipse.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_rect.h"
+#include <collide2d/query.h>
 
 #include "bench/box2d_baseline.h"
 #include "bench/scene_workload.h"

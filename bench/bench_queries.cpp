@@ -12,8 +12,8 @@
 // World whose bodies are all static (their tree rebuilt, boxes not fattened) or all moving (fat
 // margin 0.1, the tree as motion leaves it, below).
 #include "bench/box2d_baseline.h"
-#include "broadphase/aabb_tree.h"
-#include "engine/world.h"
+#include <collide2d/aabb_tree.h>
+#include <collide2d/world.h>
 
 #include <benchmark/benchmark.h>
 #include <box2d/b2_dynamic_tree.h>

@@ -3,8 +3,8 @@
 // back at 4 to 8 per step with a sideways drift (sizes 0.05 to 1, aspect up to 10): most meet within
 // the step. Translation only, and with both turning up to 2 radians per step. Box2D's shapes and
 // sweeps are built beforehand; its proxies are set per call (a few stores).
-#include "narrowphase/query.h"
-#include "narrowphase/time_of_impact.h"
+#include <collide2d/query.h>
+#include <collide2d/time_of_impact.h>
 
 #include "bench/box2d_baseline.h"
 #include "bench/workload.h"

@@ -15,7 +15,7 @@
 // Counters: the frame's broad and narrow phase milliseconds (FrameStats), candidate pairs,
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "tools/run_command.h"
 #include "tools/scene.h"
 

@@ -2,9 +2,9 @@
 
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
-#include "narrowphase/contact.h"
-#include "narrowphase/distance_ellipse_ellipse.h"
-#include "narrowphase/overlap_ellipse_ellipse.h"
+#include <collide2d/contact.h>
+#include "narrowphase/distance/distance_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
 #include <algorithm>
 #include <chrono>

@@ -6,8 +6,8 @@
 #pragma once
 
 #include "bench/workload.h"
-#include "broadphase/broad_phase.h"
-#include "engine/world.h"
+#include <collide2d/broad_phase.h>
+#include <collide2d/world.h>
 #include "tools/scene.h"
 
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // once, cycled so that no input stays in a register.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <benchmark/benchmark.h>
 

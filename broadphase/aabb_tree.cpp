@@ -1,4 +1,4 @@
-#include "broadphase/aabb_tree.h"
+#include <collide2d/aabb_tree.h>
 
 #include <algorithm>
 #include <bit>

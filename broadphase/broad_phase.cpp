@@ -1,4 +1,4 @@
-#include "broadphase/broad_phase.h"
+#include <collide2d/broad_phase.h>
 
 #include <algorithm>
 #include <bit>

@@ -1,9 +1,9 @@
-#include "engine/world.h"
+#include <collide2d/world.h>
 
 #include "engine/thread_pool.h"
 #include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap_pairs.h"
-#include "narrowphase/ray_cast.h"
+#include "narrowphase/batch/overlap_pairs.h"
+#include <collide2d/ray_cast.h>
 
 #include <algorithm>
 #include <chrono>

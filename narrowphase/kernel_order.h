@@ -6,7 +6,7 @@
 // result exactly, bit for bit, whatever frame the kernel uses.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <array>
 #include <type_traits>

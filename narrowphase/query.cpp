@@ -1,14 +1,14 @@
-#include "narrowphase/query.h"
+#include <collide2d/query.h>
 
-#include "narrowphase/contact.h"
-#include "narrowphase/distance_rect_ellipse.h"
-#include "narrowphase/distance_rect_rect.h"
+#include <collide2d/contact.h>
+#include "narrowphase/distance/distance_rect_ellipse.h"
+#include "narrowphase/distance/distance_rect_rect.h"
 #include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap_circle_circle.h"
-#include "narrowphase/overlap_circle_ellipse.h"
-#include "narrowphase/overlap_ellipse_ellipse.h"
-#include "narrowphase/overlap_rect_circle.h"
-#include "narrowphase/overlap_rect_rect.h"
+#include "narrowphase/overlap/overlap_circle_circle.h"
+#include "narrowphase/overlap/overlap_circle_ellipse.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_circle.h"
+#include "narrowphase/overlap/overlap_rect_rect.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 // Private: the cosine and sine of an angle of moderate size, faster than the C library's.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <cmath>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include "shapes/rotation.h"
 

@@ -2,7 +2,7 @@
 
 #include "mp_reference.h"
 
-#include "narrowphase/overlap_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -21,7 +21,7 @@
 // For ellipse pairs the two seed methods (gradient, polynomial) are measured, not asserted.
 #pragma once
 
-#include "narrowphase/query.h"
+#include <collide2d/query.h>
 
 #include <cstdint>
 #include <optional>

@@ -17,7 +17,7 @@
 // Inputs are the double shapes, taken exactly; angles become exact 50-digit cosines and sines.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 

@@ -10,7 +10,7 @@
 //
 //   collide2d_soak BODIES FRAMES CHECK_EVERY      (exit status 0 when every check passed)
 // The CI runs a short version; the README gives the long one (100,000 bodies, 10,000 frames).
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "mp_reference.h"
 #include "world_reference.h"
 

@@ -1,7 +1,7 @@
 // The box tree against a scan of every box in double precision: queries report every box that
 // meets them and no box farther than float rounding, rays find the nearest hit, through random
 // inserts, moves, removals and rebuilds; the height stays within the AVL bound.
-#include "broadphase/aabb_tree.h"
+#include <collide2d/aabb_tree.h>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // the circumscribed polygon approximations and that of the inscribed ones, and the bracket closes
 // on collide2d's value as the polygons get finer.
 #include "bench/box2d_baseline.h"
-#include "narrowphase/query.h"
-#include "narrowphase/time_of_impact.h"
+#include <collide2d/query.h>
+#include <collide2d/time_of_impact.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Sweep and prune against brute force: after every update, the same pairs, began and ended lists,
 // on random, clustered, collinear, identical, zero-size and churning scenes.
-#include "broadphase/broad_phase.h"
+#include <collide2d/broad_phase.h>
 #include "engine/thread_pool.h"
 
 #include <gtest/gtest.h>

@@ -3,8 +3,8 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/distance_point_ellipse.h"
-#include "narrowphase/overlap_circle_ellipse.h"
+#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/overlap/overlap_circle_ellipse.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/query.h"
+#include <collide2d/query.h>
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "batch_testing.h"
 #include "hard_cases.h"
 
-#include "narrowphase/contact.h"
+#include <collide2d/contact.h>
 
 #include <gtest/gtest.h>
 

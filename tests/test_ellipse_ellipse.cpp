@@ -3,8 +3,8 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/distance_ellipse_ellipse.h"
-#include "narrowphase/overlap_ellipse_ellipse.h"
+#include "narrowphase/distance/distance_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
 #include <gtest/gtest.h>
 

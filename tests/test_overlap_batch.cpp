@@ -7,12 +7,12 @@
 #include "batch_testing.h"
 #include "hard_cases.h"
 
-#include "narrowphase/lanes.h"
-#include "narrowphase/overlap_batch.h"
-#include "narrowphase/overlap_circle_circle.h"
-#include "narrowphase/overlap_rect_ellipse.h"
-#include "narrowphase/overlap_rect_rect.h"
-#include "narrowphase/query.h"
+#include "narrowphase/batch/lanes.h"
+#include <collide2d/batch.h>
+#include "narrowphase/overlap/overlap_circle_circle.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_rect.h"
+#include <collide2d/query.h>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/ellipse_cubic-inl.h"
+#include "narrowphase/overlap/ellipse_cubic-inl.h"
 }  // namespace detail
 
 namespace testing {

@@ -2,7 +2,7 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/query.h"
+#include <collide2d/query.h>
 #include "tools/query_command.h"
 
 #include <Eigen/Geometry>

@@ -3,8 +3,8 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/distance_rect_ellipse.h"
-#include "narrowphase/overlap_rect_ellipse.h"
+#include "narrowphase/distance/distance_rect_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Shapes: validation messages name the field; support points and containment agree with boundary
 // points sampled from the shapes' parametric forms; AABBs hold the exact 50-digit box.
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include "mp_reference.h"
 #include "shapes/quick_orientation.h"

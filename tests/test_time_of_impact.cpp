@@ -1,10 +1,10 @@
 // Time of impact against constructions whose first contact time is known exactly, and the
 // guarantees over random motions: never after the first contact, within tolerance at the time
 // reported, no contact anywhere before it.
-#include "narrowphase/time_of_impact.h"
+#include <collide2d/time_of_impact.h>
 
 #include "mp_reference.h"
-#include "narrowphase/query.h"
+#include <collide2d/query.h>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The World against an all-pairs narrow phase over many frames, its queries against brute force,
 // and its refusal of bad input.
 #include "engine/thread_pool.h"
-#include "engine/world.h"
-#include "narrowphase/ray_cast.h"
+#include <collide2d/world.h>
+#include <collide2d/ray_cast.h>
 #include "mp_reference.h"
 #include "world_reference.h"
 

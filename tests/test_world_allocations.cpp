@@ -1,7 +1,7 @@
 // A steady World frame allocates nothing: the broad phase's strips and pair lists, the narrow
 // phase's result lists and the trees keep their storage from frame to frame. This binary counts
 // every operator new, so it holds these tests alone.
-#include "engine/world.h"
+#include <collide2d/world.h>
 
 #include "tests/allocation_counter.h"
 

@@ -2,7 +2,7 @@
 // and the soak run.
 #pragma once
 
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "mp_reference.h"
 
 #include <algorithm>

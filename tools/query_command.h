@@ -20,8 +20,8 @@
 // error stream; processing goes on.
 #pragma once
 
-#include "narrowphase/query.h"
-#include "narrowphase/time_of_impact.h"
+#include <collide2d/query.h>
+#include <collide2d/time_of_impact.h>
 
 #include <iosfwd>
 #include <optional>

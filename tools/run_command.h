@@ -2,7 +2,7 @@
 // summarises what the broad and narrow phases did and how long they took, and draws the last frame.
 #pragma once
 
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "tools/scene.h"
 
 #include <cstdint>

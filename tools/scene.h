@@ -31,8 +31,8 @@
 // (got -1)`, `frames: missing`, `bodies[0]: unknown field 'radus'`.
 #pragma once
 
-#include "engine/world.h"
-#include "shapes/shapes.h"
+#include <collide2d/world.h>
+#include <collide2d/shapes.h>
 
 #include <cstdint>
 #include <stdexcept>

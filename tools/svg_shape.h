@@ -2,7 +2,7 @@
 // coordinates; callers flip y with the viewBox. Shared by `collide2d run` and examples/settle.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <iosfwd>
 

@@ -1,6 +1,6 @@
 #include "examples/settle/settle.h"
 
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "tools/svg_shape.h"
 
 #include <algorithm>

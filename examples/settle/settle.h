@@ -12,7 +12,7 @@
 // the smallest body (stiffness_for), and the step is 0.15 sqrt(m / k) for the lightest body.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <iosfwd>
 #include <vector>

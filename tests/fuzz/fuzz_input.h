@@ -3,7 +3,7 @@
 // and the kernels both get exercised.
 #pragma once
 
-#include "shapes/shapes.h"
+#include <collide2d/shapes.h>
 
 #include <algorithm>
 #include <cstddef>

@@ -8,10 +8,10 @@
 // overlapping (to 1e-9 of the scale), the same both ways with the normal reversed, and its search
 // certified within its cap of support evaluations.
 #include "fuzz_input.h"
-#include "narrowphase/contact.h"
+#include <collide2d/contact.h>
 #include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap_batch.h"
-#include "narrowphase/query.h"
+#include <collide2d/batch.h>
+#include <collide2d/query.h>
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,9 @@
 // where the boxes over the step meet, and none that time_of_impact does not find. (Where they do
 // not meet the shapes can still come within the tolerance, which grows with the coordinates: 5e3 at
 // 3e18; the World never pairs them, as with a proximity pair culled by its boxes.)
-#include "engine/world.h"
+#include <collide2d/world.h>
 #include "fuzz_input.h"
-#include "narrowphase/ray_cast.h"
+#include <collide2d/ray_cast.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,191 @@
+// The batched overlap tests (overlap_batch.h). Google Highway (libhwy-dev) compiles the lane-generic
+// filters once per SIMD target and picks the best the CPU offers at the first call; a plain build
+// then runs on any x86-64 (and on ARM) without -march flags. Highway rather than xsimd: its runtime
+// dispatch is built in (xsimd 8 leaves it to the caller), and its operations are plain functions on
+// vector types, so each kernel's template reads the same on one pair and on a vector of them
+// (lanes.h).
+//
+// Work goes in chunks (batch_chunk.h): the vector kernel decides the chunk, and the uncertain pairs
+// go to the exact fallback one by one.
+#include <collide2d/batch.h>
+#include "narrowphase/batch/overlap_pairs.h"
+
+#include "narrowphase/batch/batch_chunk.h"
+#include "narrowphase/kernel_order.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/frames/rect_ellipse_frame.h"
+#include "narrowphase/frames/rect_pair_frame.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "narrowphase/batch/overlap_batch.cpp"
+#include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace collide2d::HWY_NAMESPACE {
+
+#include "narrowphase/overlap/circle_overlap-inl.h"
+#include "narrowphase/overlap/ellipse_cubic-inl.h"
+#include "narrowphase/overlap/rect_ellipse_filter-inl.h"
+#include "narrowphase/overlap/rect_rect_overlap-inl.h"
+
+#include "narrowphase/batch/batch_load-inl.h"
+
+detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return RectEllipseFilter<D>(D(), f).run(); }
+// The kernels that decide every lane.
+detail::LaneVerdicts<M> all_decided(const M& hit) { return {hn::Not(hit), hit}; }
+detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) { return all_decided(rect_rect_overlap(f)); }
+detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) { return all_decided(circle_circle_overlap(D(), f)); }
+detail::LaneVerdicts<M> decide(const detail::RectCircleLanes<V>& f) { return all_decided(rect_circle_overlap(D(), f)); }
+detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) { return CircleEllipseFilter<D, V>(D(), f).run(); }
+detail::LaneVerdicts<M> decide(const detail::EllipseEllipseLanes<V>& f) { return ellipse_cubic_verdicts(D(), f); }
+
+// The kernel on the chunk's first `count` pairs, in whole vectors.
+template <template <class> class Lanes>
+void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t count) {
+  constexpr std::size_t kFields = Lanes<double>::kFields;
+  const std::size_t lanes = hn::Lanes(D());
+  for (std::size_t i = 0; i < count; i += lanes) {
+    const auto v = decide(load<Lanes<V>>(chunk.field, i, std::make_index_sequence<kFields>()));
+    std::uint8_t separated[detail::kMaxLanes / 8 + 1] = {}, overlap[detail::kMaxLanes / 8 + 1] = {};
+    hn::StoreMaskBits(D(), v.separated, separated);
+    hn::StoreMaskBits(D(), v.overlap, overlap);
+    for (std::size_t j = 0; j < lanes; ++j) {
+      const auto bit = [j](const std::uint8_t* bits) { return (bits[j / 8] >> (j % 8) & 1) != 0; };
+      const FilterVerdict verdict =
+          bit(separated) ? FilterVerdict::separated : bit(overlap) ? FilterVerdict::overlap : FilterVerdict::uncertain;
+      chunk.verdict[i + j] = static_cast<std::uint8_t>(verdict);
+    }
+  }
+}
+
+void rect_ellipse_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectEllipseLanes>(chunk, count); }
+void rect_rect_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectRectLanes>(chunk, count); }
+void circle_circle_chunk(detail::Chunk<4>& chunk, std::size_t count) { decide_chunk<detail::CircleCircleLanes>(chunk, count); }
+void rect_circle_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::RectCircleLanes>(chunk, count); }
+void circle_ellipse_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::CircleEllipseLanes>(chunk, count); }
+void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
+  decide_chunk<detail::EllipseEllipseLanes>(chunk, count);
+}
+
+}  // namespace collide2d::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace collide2d {
+
+void detail::check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out, const char* results) {
+  if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
+  std::string lengths;
+  for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
+  lengths.resize(lengths.size() - 2);
+  throw std::invalid_argument(std::string(what) + ": the lists differ in length (" + lengths + " pairs in, " +
+                              std::to_string(out) + " " + results + " out)");
+}
+
+namespace {
+
+HWY_EXPORT(rect_ellipse_chunk);
+HWY_EXPORT(rect_rect_chunk);
+HWY_EXPORT(circle_circle_chunk);
+HWY_EXPORT(rect_circle_chunk);
+HWY_EXPORT(circle_ellipse_chunk);
+HWY_EXPORT(ellipse_ellipse_chunk);
+
+}  // namespace
+
+void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) { HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count); }
+void detail::decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
+  HWY_DYNAMIC_DISPATCH(circle_circle_chunk)(chunk, count);
+}
+void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
+  HWY_DYNAMIC_DISPATCH(rect_circle_chunk)(chunk, count);
+}
+void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(ellipse_ellipse_chunk)(chunk, count);
+}
+
+namespace {
+
+// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
+template <class S>
+const Orientation& orientation(std::span<const Orientation> list, std::size_t k) {
+  static const Orientation unturned;
+  if constexpr (std::is_same_v<S, Circle>) {
+    return unturned;
+  } else {
+    return list[k];
+  }
+}
+
+// The public functions' lists as pairs.
+template <class A, class B>
+void overlap_lists(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
+                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  detail::overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        return detail::PairRef<A, B>{a[k], orientation<A>(a_orientations, k), b[k], orientation<B>(b_orientations, k)};
+      },
+      overlapping);
+}
+
+}  // namespace
+
+void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
+                          std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
+                          std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+                        overlapping.size());
+  overlap_lists<Rect, Ellipse>(rects, rect_orientations, ellipses, ellipse_orientations, overlapping);
+}
+
+void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
+                       std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
+  overlap_lists<Rect, Rect>(a, a_orientations, b, b_orientations, overlapping);
+}
+
+void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
+  overlap_lists<Circle, Circle>(a, {}, b, {}, overlapping);
+}
+
+void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
+                         std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
+  overlap_lists<Rect, Circle>(rects, rect_orientations, circles, {}, overlapping);
+}
+
+void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
+                            std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
+                        overlapping.size());
+  overlap_lists<Circle, Ellipse>(circles, {}, ellipses, ellipse_orientations, overlapping);
+}
+
+void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
+                             std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
+                             std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_ellipse_ellipse", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
+                        overlapping.size());
+  overlap_lists<Ellipse, Ellipse>(a, a_orientations, b, b_orientations, overlapping);
+}
+
+}  // namespace collide2d
+#endif

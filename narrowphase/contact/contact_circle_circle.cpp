@@ -1,0 +1,14 @@
+#include <collide2d/contact.h>
+#include "narrowphase/frames/unit_vector.h"
+
+namespace collide2d {
+
+// Along the line of centres (unit_vector.h says how its direction stays unit for centres a few
+// denormals apart). Concentric circles: every direction is a maximiser; +x is reported.
+Contact contact_circle_circle(const Circle& a, const Circle& b) {
+  const detail::LengthAndDirection line = detail::length_and_direction(b.center - a.center);
+  const Vec2& n = line.direction;
+  return Contact::of(line.length - a.radius - b.radius, n, a.center + a.radius * n, b.center - b.radius * n);
+}
+
+}  // namespace collide2d

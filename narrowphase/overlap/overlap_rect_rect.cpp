@@ -1,0 +1,19 @@
+#include "narrowphase/overlap/overlap_rect_rect.h"
+
+#include "narrowphase/frames/rect_pair_frame.h"
+#include "narrowphase/batch/lanes.h"
+
+namespace collide2d {
+namespace detail {
+#include "narrowphase/overlap/rect_rect_overlap-inl.h"
+}  // namespace detail
+
+bool overlap_rect_rect(const Rect& a, const Rect& b) {
+  return overlap_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle));
+}
+
+bool overlap_rect_rect(const Rect& a, const Orientation& ao, const Rect& b, const Orientation& bo) {
+  return detail::rect_rect_overlap(detail::rect_rect_lanes(a, ao, b, bo));
+}
+
+}  // namespace collide2d
