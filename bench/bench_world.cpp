@@ -16,8 +16,8 @@
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include <collide2d/world.h>
-#include "tools/run_command.h"
-#include "tools/scene.h"
+#include "tools/scene/scene_run.h"
+#include "tools/scene/scene.h"
 
 #include "bench/box2d_baseline.h"
 #include "tests/allocation_counter.h"

@@ -8,7 +8,7 @@
 #include "bench/workload.h"
 #include <collide2d/broad_phase.h>
 #include <collide2d/world.h>
-#include "tools/scene.h"
+#include "tools/scene/scene.h"
 
 #include <stdexcept>
 #include <type_traits>

@@ -1,7 +1,7 @@
 // Scene files for `collide2d run`: round trip, every kind of broken file named by its field, and a
 // run whose last frame agrees with an all-pairs check.
-#include "tools/run_command.h"
-#include "tools/scene.h"
+#include "tools/scene/scene_run.h"
+#include "tools/scene/scene.h"
 #include "world_reference.h"
 
 #include <gtest/gtest.h>

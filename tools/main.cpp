@@ -5,7 +5,7 @@
 // and the 50-digit reference, is bench/collide2d_report.
 #include "tools/cli_args.h"
 #include "tools/query_command.h"
-#include "tools/run_command.h"
+#include "tools/scene/scene_run.h"
 
 #include <fstream>
 #include <iostream>

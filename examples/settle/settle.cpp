@@ -1,7 +1,7 @@
 #include "examples/settle/settle.h"
 
 #include <collide2d/world.h>
-#include "tools/svg_shape.h"
+#include "tools/scene/svg_shape.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tools/svg_shape.h"
+#include "tools/scene/svg_shape.h"
 
 #include <numbers>
 #include <ostream>

@@ -1,4 +1,4 @@
-#include "tools/scene.h"
+#include "tools/scene/scene.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <collide2d/world.h>
-#include "tools/scene.h"
+#include "tools/scene/scene.h"
 
 #include <cstdint>
 #include <iosfwd>

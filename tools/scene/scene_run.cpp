@@ -1,6 +1,6 @@
-#include "tools/run_command.h"
+#include "tools/scene/scene_run.h"
 
-#include "tools/svg_shape.h"
+#include "tools/scene/svg_shape.h"
 
 #include <algorithm>
 #include <cmath>
