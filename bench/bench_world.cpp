@@ -20,7 +20,7 @@
 #include "tools/scene/scene.h"
 
 #include "bench/box2d_baseline.h"
-#include "tests/allocation_counter.h"
+#include "tests/support/allocation_counter.h"
 
 #include <benchmark/benchmark.h>
 

@@ -3,7 +3,7 @@
 // every operator new, so it holds these tests alone.
 #include <collide2d/world.h>
 
-#include "tests/allocation_counter.h"
+#include "tests/support/allocation_counter.h"
 
 #include <gtest/gtest.h>
 
