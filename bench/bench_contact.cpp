@@ -5,7 +5,8 @@
 // polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt
 // with a cap of 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with
 // radius 0, so its manifold is empty for pairs apart while ours carries their exact distance.
-#include <collide2d/contact.h>
+#include <collide2d/batch.h>
+#include <collide2d/kernels.h>
 
 #include "bench/box2d_baseline.h"
 #include "bench/scene_workload.h"

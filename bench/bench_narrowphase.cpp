@@ -3,15 +3,11 @@
 // (centres in a 4 x 4 square, most of them far apart: the kernels' first early-out answers them),
 // candidates:1 on candidate pairs (the same generator, only the pairs whose boxes overlap: what a
 // broad phase hands over, and where a World spends its narrow phase; bench/workload.h).
-#include "narrowphase/distance/distance_ellipse_ellipse.h"
-#include "narrowphase/distance/distance_rect_ellipse.h"
-#include "narrowphase/distance/distance_rect_rect.h"
 #include <collide2d/batch.h>
-#include "narrowphase/overlap/overlap_circle_ellipse.h"
-#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
-#include "narrowphase/overlap/overlap_rect_ellipse.h"
-#include "narrowphase/overlap/overlap_rect_rect.h"
+#include <collide2d/kernels.h>
 #include <collide2d/query.h>
+
+#include "narrowphase/baselines/baselines.h"
 
 #include "bench/box2d_baseline.h"
 #include "bench/scene_workload.h"
@@ -38,26 +34,30 @@ void kernel(benchmark::State& state, Result (*fn)(const A&, const B&)) {
   bench::time_queries(state, [&](std::size_t k) { return fn(w.a[k], w.b[k]); });
 }
 
-bool minkowski(const Rect& r, const Ellipse& e) { return overlap_rect_ellipse(r, e, RectEllipseMethod::minkowski); }
+bool minkowski(const Rect& r, const Ellipse& e) { return overlap_rect_ellipse(r, e); }
 bool closest_features(const Rect& r, const Ellipse& e) {
-  return overlap_rect_ellipse(r, e, RectEllipseMethod::closest_features);
+  return baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::closest_features);
 }
-bool all_features(const Rect& r, const Ellipse& e) { return overlap_rect_ellipse(r, e, RectEllipseMethod::all_features); }
+bool all_features(const Rect& r, const Ellipse& e) {
+  return baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::all_features);
+}
 // The user-facing dispatch: validation and std::visit on top of the kernel.
 bool dispatch(const Rect& r, const Ellipse& e) { return overlaps(Shape(r), Shape(e)); }
 
-// Ellipse pairs: one function per solver so that the method is fixed at compile time.
-template <EllipseDistanceMethod M>
-DistanceResult ellipse_distance(const Ellipse& a, const Ellipse& b) {
-  return distance_ellipse_ellipse(a, b, M).result;
+// Ellipse pairs: the kernels, and one function per baseline solver so that it is fixed at compile
+// time.
+DistanceResult robust_distance(const Ellipse& a, const Ellipse& b) { return distance_ellipse_ellipse(a, b); }
+DistanceResult robust_boundary(const Ellipse& a, const Ellipse& b) { return boundary_distance_ellipse_ellipse(a, b); }
+template <baselines::EllipseSolver S>
+DistanceResult baseline_distance(const Ellipse& a, const Ellipse& b) {
+  return baselines::distance_ellipse_ellipse(a, b, S).result;
 }
-template <EllipseDistanceMethod M>
-DistanceResult ellipse_boundary(const Ellipse& a, const Ellipse& b) {
-  return boundary_distance_ellipse_ellipse(a, b, M).result;
+template <baselines::EllipseSolver S>
+DistanceResult baseline_boundary(const Ellipse& a, const Ellipse& b) {
+  return baselines::curve_distance(a, b, S).result;
 }
-constexpr auto kRobust = EllipseDistanceMethod::robust;
-constexpr auto kGradient = EllipseDistanceMethod::gradient;
-constexpr auto kPolynomial = EllipseDistanceMethod::polynomial;
+constexpr auto kGradient = baselines::EllipseSolver::gradient;
+constexpr auto kPolynomial = baselines::EllipseSolver::polynomial;
 
 // Nested pairs: B inside A (within A's inscribed circle), where the boundary distance searches the
 // directions for the least gap instead of running the separated pair's Newton iteration.
@@ -89,12 +89,12 @@ BENCHMARK_CAPTURE(kernel, overlap_circle_ellipse, &overlap_circle_ellipse)->Appl
 BENCHMARK_CAPTURE(kernel, distance_circle_ellipse, &distance_circle_ellipse)->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &ellipse_distance<kRobust>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &ellipse_distance<kGradient>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &ellipse_distance<kPolynomial>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &ellipse_boundary<kRobust>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &ellipse_boundary<kGradient>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &ellipse_boundary<kPolynomial>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &robust_distance)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &baseline_distance<kGradient>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &baseline_distance<kPolynomial>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &robust_boundary)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &baseline_boundary<kGradient>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &baseline_boundary<kPolynomial>)->Apply(bench::workloads);
 
 // Box2D on the same pairs, converted beforehand (the conversion is not timed, and each pair's
 // transforms are the identity: its coordinates are taken from A's centre): b2TestOverlap on
@@ -164,7 +164,7 @@ BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8g
 void posed_distance_ellipse_ellipse(benchmark::State& state) {
   const Workload<Ellipse, Ellipse>& w = bench::pairs<Ellipse, Ellipse>(state);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
-  bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]).result; });
+  bench::time_queries(state, [&](std::size_t k) { return distance_ellipse_ellipse(w.a[k], oa[k], w.b[k], ob[k]); });
 }
 BENCHMARK(posed_distance_ellipse_ellipse)->Apply(bench::workloads);
 BENCHMARK(box2d_distance_ellipse_ellipse)

@@ -2,9 +2,9 @@
 
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
-#include <collide2d/contact.h>
-#include "narrowphase/distance/distance_ellipse_ellipse.h"
-#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include <collide2d/kernels.h>
+
+#include "narrowphase/baselines/baselines.h"
 
 #include <algorithm>
 #include <chrono>
@@ -71,12 +71,13 @@ std::vector<MethodResult> measure_methods(const ReportOptions& options) {
       options, [](const Ellipse& a, const Ellipse& b) { return !overlap_ellipse_ellipse(a, b); },
       [](const Ellipse& a, const Ellipse& b) { return static_cast<double>(reference::ellipse_pair(a, b).distance); });
   std::vector<MethodResult> out;
-  for (const auto& [name, m] : {std::pair{"robust", EllipseDistanceMethod::robust},
-                                std::pair{"gradient", EllipseDistanceMethod::gradient},
-                                std::pair{"polynomial", EllipseDistanceMethod::polynomial}}) {
-    const EllipseDistanceMethod method = m;  // a structured binding cannot be captured before C++20 in clang 14
-    out.push_back(measure(w, options.repetitions, name, 0, [&w, method](std::size_t k) {
-      return distance_ellipse_ellipse(w.a[k], w.b[k], method).result.distance;
+  out.push_back(measure(w, options.repetitions, "robust", 0,
+                        [&w](std::size_t k) { return distance_ellipse_ellipse(w.a[k], w.b[k]).distance; }));
+  for (const auto& [name, s] : {std::pair{"gradient", baselines::EllipseSolver::gradient},
+                                std::pair{"polynomial", baselines::EllipseSolver::polynomial}}) {
+    const baselines::EllipseSolver solver = s;  // a structured binding cannot be captured before C++20 in clang 14
+    out.push_back(measure(w, options.repetitions, name, 0, [&w, solver](std::size_t k) {
+      return baselines::distance_ellipse_ellipse(w.a[k], w.b[k], solver).result.distance;
     }));
   }
   for (const auto& [name, fit] : {std::pair{"box2d inscribed", baseline::Fit::inscribed},

@@ -1,4 +1,21 @@
+// SweepAndPrune cuts the plane into strips across the sweep axis (as wide as four mean boxes) and
+// keeps, for each strip, the endpoints of the boxes that reach into it sorted along the sweep axis
+// from frame to frame (structure of arrays: keys, tags, and each box's interval across the strip).
+// Insertion sort repairs each strip, near linear when motion is coherent; past a budget of swaps
+// (most boxes jumped) the strip is radix-sorted instead (LSD on the key bytes), so a scene that
+// jumps costs O(n) sorting rather than O(n^2). Boxes entering a strip are sorted among themselves
+// and merged in. A sweep over each strip then lists its pairs; a pair met in several strips is
+// reported only in the first strip both boxes reach. Cutting into strips is what keeps the cost
+// near linear: in one list per axis, as in classic sweep and prune, the endpoints get denser as a
+// 2D scene grows (about sqrt(n) boxes stack over each point of the axis), and so do the swaps and
+// the pairs to check. Pairs that began and ended are the difference from the previous frame.
+// The sweep axis is the one along which the box centres spread more (their variance), re-chosen
+// when the other axis spreads 1.5 times more, so that a scene laid out along a line sweeps along
+// it; the strips are rebuilt when the axis or the mean box size changes by 2x.
+
 #include <collide2d/broad_phase.h>
+
+#include "broadphase/internal.h"
 
 #include <algorithm>
 #include <bit>
@@ -105,7 +122,7 @@ void BroadPhaseBase::remove(ProxyId id) {
 }
 
 void BroadPhaseBase::finish_update(std::vector<ProxyPair>& now) {
-  replace_pairs(pairs_, now, began_, ended_);
+  detail::replace_pairs(pairs_, now, began_, ended_);
   free_.insert(free_.end(), removed_.begin(), removed_.end());
   removed_.clear();
   inserted_.clear();

@@ -1,14 +1,8 @@
 #include <collide2d/query.h>
 
-#include <collide2d/contact.h>
-#include "narrowphase/distance/distance_rect_ellipse.h"
-#include "narrowphase/distance/distance_rect_rect.h"
+#include <collide2d/kernels.h>
 #include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap/overlap_circle_circle.h"
-#include "narrowphase/overlap/overlap_circle_ellipse.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
-#include "narrowphase/overlap/overlap_rect_circle.h"
-#include "narrowphase/overlap/overlap_rect_rect.h"
 
 #include <algorithm>
 #include <array>
@@ -21,16 +15,12 @@ namespace {
 using detail::key;  // the order in which kernels take their shapes (kernel_order.h)
 using detail::rank;
 
-bool overlap_kernel(const Rect& a, const Rect& b, const OverlapOptions&) { return overlap_rect_rect(a, b); }
-bool overlap_kernel(const Rect& a, const Circle& b, const OverlapOptions&) { return overlap_rect_circle(a, b); }
-bool overlap_kernel(const Rect& a, const Ellipse& b, const OverlapOptions& o) {
-  return overlap_rect_ellipse(a, b, o.rect_ellipse);
-}
-bool overlap_kernel(const Circle& a, const Circle& b, const OverlapOptions&) { return overlap_circle_circle(a, b); }
-bool overlap_kernel(const Circle& a, const Ellipse& b, const OverlapOptions&) {
-  return overlap_circle_ellipse(a, b);
-}
-bool overlap_kernel(const Ellipse& a, const Ellipse& b, const OverlapOptions&) { return overlap_ellipse_ellipse(a, b); }
+bool overlap_kernel(const Rect& a, const Rect& b) { return overlap_rect_rect(a, b); }
+bool overlap_kernel(const Rect& a, const Circle& b) { return overlap_rect_circle(a, b); }
+bool overlap_kernel(const Rect& a, const Ellipse& b) { return overlap_rect_ellipse(a, b); }
+bool overlap_kernel(const Circle& a, const Circle& b) { return overlap_circle_circle(a, b); }
+bool overlap_kernel(const Circle& a, const Ellipse& b) { return overlap_circle_ellipse(a, b); }
+bool overlap_kernel(const Ellipse& a, const Ellipse& b) { return overlap_ellipse_ellipse(a, b); }
 
 using O = Orientation;
 bool posed_overlap(const Rect& a, const O& oa, const Rect& b, const O& ob) { return overlap_rect_rect(a, oa, b, ob); }
@@ -40,22 +30,12 @@ bool posed_overlap(const Circle& a, const O&, const Circle& b, const O&) { retur
 bool posed_overlap(const Circle& a, const O&, const Ellipse& b, const O& ob) { return overlap_circle_ellipse(a, b, ob); }
 bool posed_overlap(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_ellipse_ellipse(a, oa, b, ob); }
 
-DistanceResult distance_kernel(const Rect& a, const Rect& b, const DistanceOptions&) { return distance_rect_rect(a, b); }
-DistanceResult distance_kernel(const Rect& a, const Circle& b, const DistanceOptions&) {
-  return distance_rect_circle(a, b);
-}
-DistanceResult distance_kernel(const Rect& a, const Ellipse& b, const DistanceOptions&) {
-  return distance_rect_ellipse(a, b);
-}
-DistanceResult distance_kernel(const Circle& a, const Circle& b, const DistanceOptions&) {
-  return distance_circle_circle(a, b);
-}
-DistanceResult distance_kernel(const Circle& a, const Ellipse& b, const DistanceOptions&) {
-  return distance_circle_ellipse(a, b);
-}
-DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b, const DistanceOptions& o) {
-  return distance_ellipse_ellipse(a, b, o.ellipse).result;
-}
+DistanceResult distance_kernel(const Rect& a, const Rect& b) { return distance_rect_rect(a, b); }
+DistanceResult distance_kernel(const Rect& a, const Circle& b) { return distance_rect_circle(a, b); }
+DistanceResult distance_kernel(const Rect& a, const Ellipse& b) { return distance_rect_ellipse(a, b); }
+DistanceResult distance_kernel(const Circle& a, const Circle& b) { return distance_circle_circle(a, b); }
+DistanceResult distance_kernel(const Circle& a, const Ellipse& b) { return distance_circle_ellipse(a, b); }
+DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b) { return distance_ellipse_ellipse(a, b); }
 
 Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, const ContactOptions& o) {
   return contact_rect_rect(a, oa, b, ob, o);
@@ -80,7 +60,7 @@ Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}
 
 // Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
 // centre (any side when the centres coincide).
-DistanceResult boundary_kernel(const Circle& a, const Circle& b, const DistanceOptions&) {
+DistanceResult boundary_kernel(const Circle& a, const Circle& b) {
   const Vec2 delta = b.center - a.center;
   const double d = delta.norm();
   if (d >= a.radius + b.radius) return distance_circle_circle(a, b);
@@ -96,14 +76,12 @@ DistanceResult boundary_kernel(const Circle& a, const Circle& b, const DistanceO
   const double across = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
   return DistanceResult::touching(a.center + along * u + across * Vec2(-u.y(), u.x()));
 }
-DistanceResult boundary_kernel(const Circle& a, const Ellipse& b, const DistanceOptions& o) {
-  return boundary_distance_ellipse_ellipse(as_ellipse(a), b, o.ellipse).result;
+DistanceResult boundary_kernel(const Circle& a, const Ellipse& b) {
+  return boundary_distance_ellipse_ellipse(as_ellipse(a), b);
 }
-DistanceResult boundary_kernel(const Ellipse& a, const Ellipse& b, const DistanceOptions& o) {
-  return boundary_distance_ellipse_ellipse(a, b, o.ellipse).result;
-}
+DistanceResult boundary_kernel(const Ellipse& a, const Ellipse& b) { return boundary_distance_ellipse_ellipse(a, b); }
 template <class X>
-DistanceResult boundary_kernel(const Rect&, const X&, const DistanceOptions&) {
+DistanceResult boundary_kernel(const Rect&, const X&) {
   throw UnsupportedPair("the boundary distance covers circles and ellipses, not rectangles");
 }
 
@@ -138,10 +116,10 @@ auto ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
 
 }  // namespace
 
-bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options) {
+bool overlaps(const Shape& a, const Shape& b) {
   validate(a);
   validate(b);
-  return in_kernel_order(a, b, [&options](const auto& x, const auto& y, bool) { return overlap_kernel(x, y, options); });
+  return in_kernel_order(a, b, [](const auto& x, const auto& y, bool) { return overlap_kernel(x, y); });
 }
 
 bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation) {
@@ -150,7 +128,7 @@ bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, 
   });
 }
 
-bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options) {
+bool overlaps(const Shape& shape, const Aabb& box) {
   validate(shape);
   validate(box);
   // Only the part of the box within the shape's own box matters, and cutting it out is exact (min
@@ -161,15 +139,15 @@ bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options
   if ((part.min.array() > part.max.array()).any()) return false;
   // A part with no width is still a rectangle for the kernels, which skip validation.
   const Rect r{0.5 * (part.min + part.max), 0.5 * (part.max - part.min), 0.0};
-  return std::visit([&](const auto& x) { return overlap_kernel(r, x, options); }, shape);
+  return std::visit([&](const auto& x) { return overlap_kernel(r, x); }, shape);
 }
 
-DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
-  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return distance_kernel(x, y, options); });
+DistanceResult distance(const Shape& a, const Shape& b) {
+  return ordered_result(a, b, [](const auto& x, const auto& y) { return distance_kernel(x, y); });
 }
 
-DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options) {
-  return ordered_result(a, b, [&options](const auto& x, const auto& y) { return boundary_kernel(x, y, options); });
+DistanceResult boundary_distance(const Shape& a, const Shape& b) {
+  return ordered_result(a, b, [](const auto& x, const auto& y) { return boundary_kernel(x, y); });
 }
 
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {

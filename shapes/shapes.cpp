@@ -1,6 +1,6 @@
 #include <collide2d/shapes.h>
 
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +11,7 @@ namespace collide2d {
 namespace {
 
 using Rot = detail::Rotation<double>;
+using detail::reject;
 
 void require_finite(const char* shape, const char* field, double value) {
   if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
@@ -36,7 +37,7 @@ Aabb around(const Vec2& center, const Vec2& half) {
 
 }  // namespace
 
-void reject(const char* what, const char* field, double value, const char* rule) {
+void detail::reject(const char* what, const char* field, double value, const char* rule) {
   std::ostringstream msg;
   msg.precision(17);
   msg << what << ' ' << field << ' ' << rule << " (got " << value << ')';

@@ -107,19 +107,19 @@ std::optional<QueryLine> parse_query_line(std::string_view line) {
 }
 
 void apply_method(std::string_view name, QueryOptions& options) {
-  constexpr std::pair<std::string_view, RectEllipseMethod> overlap_methods[] = {
-      {"minkowski", RectEllipseMethod::minkowski},
-      {"closest-features", RectEllipseMethod::closest_features},
-      {"all-features", RectEllipseMethod::all_features}};
-  constexpr std::pair<std::string_view, EllipseDistanceMethod> distance_methods[] = {
-      {"robust", EllipseDistanceMethod::robust},
-      {"gradient", EllipseDistanceMethod::gradient},
-      {"polynomial", EllipseDistanceMethod::polynomial}};
+  using baselines::EllipseSolver;
+  using baselines::RectEllipseTest;
+  constexpr std::pair<std::string_view, std::optional<RectEllipseTest>> overlap_methods[] = {
+      {"minkowski", std::nullopt},
+      {"closest-features", RectEllipseTest::closest_features},
+      {"all-features", RectEllipseTest::all_features}};
+  constexpr std::pair<std::string_view, std::optional<EllipseSolver>> distance_methods[] = {
+      {"robust", std::nullopt}, {"gradient", EllipseSolver::gradient}, {"polynomial", EllipseSolver::polynomial}};
   for (const auto& [word, method] : overlap_methods) {
-    if (name == word) return void(options.overlap.rect_ellipse = method);
+    if (name == word) return void(options.rect_ellipse = method);
   }
   for (const auto& [word, method] : distance_methods) {
-    if (name == word) return void(options.distance.ellipse = method);
+    if (name == word) return void(options.ellipse = method);
   }
   throw ParseError("unknown method '" + std::string(name) +
                    "' (expected minkowski, closest-features, all-features, robust, gradient or polynomial)");
@@ -140,9 +140,12 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
                       c.normal.x() + 0.0, c.normal.y() + 0.0, c.point_a.x() + 0.0, c.point_a.y() + 0.0,
                       c.point_b.x() + 0.0, c.point_b.y() + 0.0);
   } else {
-    const bool hit = overlaps(q.a, q.b, options.overlap);
-    const DistanceResult d = options.answer == Answer::boundary ? boundary_distance(q.a, q.b, options.distance)
-                                                                : distance(q.a, q.b, options.distance);
+    const bool hit = options.rect_ellipse ? baselines::overlaps(q.a, q.b, *options.rect_ellipse) : overlaps(q.a, q.b);
+    const bool boundary = options.answer == Answer::boundary;
+    const DistanceResult d = options.ellipse ? boundary ? baselines::boundary_distance(q.a, q.b, *options.ellipse)
+                                                        : baselines::distance(q.a, q.b, *options.ellipse)
+                             : boundary ? boundary_distance(q.a, q.b)
+                                        : distance(q.a, q.b);
     n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance, d.point_a.x(),
                       d.point_a.y(), d.point_b.x(), d.point_b.y());
   }

@@ -23,6 +23,8 @@
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
 
+#include "narrowphase/baselines/baselines.h"
+
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -51,14 +53,17 @@ std::optional<QueryLine> parse_query_line(std::string_view line);
 enum class Answer { distance, boundary, contact, toi };
 
 struct QueryOptions {
-  OverlapOptions overlap;
-  DistanceOptions distance;
+  // A reference method instead of the kernel (narrowphase/baselines/baselines.h): for the
+  // rectangle–ellipse overlap, and for the ellipse distances (both solid and boundary; a circle's
+  // boundary with an ellipse too).
+  std::optional<baselines::RectEllipseTest> rect_ellipse;
+  std::optional<baselines::EllipseSolver> ellipse;
   Answer answer = Answer::distance;
 };
 
-// Applies a method named on the command line: a rect–ellipse overlap test (minkowski,
-// closest-features, all-features) or an ellipse distance solver (robust, gradient, polynomial).
-// Throws ParseError for other names.
+// Applies a method named on the command line: a rect–ellipse overlap test (minkowski, the kernel;
+// closest-features, all-features) or an ellipse distance solver (robust, the kernel; gradient,
+// polynomial). Throws ParseError for other names.
 void apply_method(std::string_view name, QueryOptions& options);
 
 // The output line for one query (without newline). Throws UnsupportedPair.

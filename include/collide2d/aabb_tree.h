@@ -1,28 +1,29 @@
-// A bounding-volume tree of axis-aligned boxes, for queries that should visit only the boxes they
-// meet: the boxes that overlap a box, and the boxes a ray crosses, nearest first.
-//
-//   AabbTree tree;
-//   AabbTree::Leaf leaf = tree.insert(box, value);  // value: the caller's index, reported by queries
-//   tree.move(leaf, new_box);                       // remove(leaf) too; leaves stay valid until removed
-//   tree.query(box, [](std::uint32_t value) { ... });
-//   tree.ray_cast(origin, unit_direction, max_distance, [](std::uint32_t value, double reach) {
-//     return reach;  // or the distance of a hit nearer than reach: boxes beyond it are then skipped
-//   });
-//   tree.rebuild();                                 // a better tree for boxes that will stay put
-//
-// Boxes are stored in single precision, rounded outward and then one more step out (a node takes 36
-// bytes instead of 52, so more of the tree stays in cache; the extra step keeps a box that a ray
-// grazes in double precision inside the stored one). A query therefore reports a superset of the
-// boxes that meet it in double precision: callers test their exact shapes next.
-//
-// insert() descends to the sibling that least grows the tree's total perimeter (Box2D's
-// b2DynamicTree, after Goldsmith and Salmon) and AVL rotations on the way back up keep the height
-// within 1.44 log2(n) + 2. rebuild() builds the inner nodes again top-down, splitting the boxes at the
-// median of their centres along the longer side of the centres' bounds: O(n log n), a height of
-// ceil(log2 n), and boxes grouped by place rather than by the order they came in. Leaves keep their
-// handles across rebuild().
-//
-// Boxes must be valid (finite, min <= max): the tree does not check; its callers do.
+/// @file
+/// A bounding-volume tree of axis-aligned boxes, for queries that should visit only the boxes they
+/// meet: the boxes that overlap a box, and the boxes a ray crosses, nearest first.
+///
+///   AabbTree tree;
+///   AabbTree::Leaf leaf = tree.insert(box, value);  // value: the caller's index, reported by queries
+///   tree.move(leaf, new_box);                       // remove(leaf) too; leaves stay valid until removed
+///   tree.query(box, [](std::uint32_t value) { ... });
+///   tree.ray_cast(origin, unit_direction, max_distance, [](std::uint32_t value, double reach) {
+///     return reach;  // or the distance of a hit nearer than reach: boxes beyond it are then skipped
+///   });
+///   tree.rebuild();                                 // a better tree for boxes that will stay put
+///
+/// Boxes are stored in single precision, rounded outward and then one more step out (a node takes 36
+/// bytes instead of 52, so more of the tree stays in cache; the extra step keeps a box that a ray
+/// grazes in double precision inside the stored one). A query therefore reports a superset of the
+/// boxes that meet it in double precision: callers test their exact shapes next.
+///
+/// insert() descends to the sibling that least grows the tree's total perimeter (Box2D's
+/// b2DynamicTree, after Goldsmith and Salmon) and AVL rotations on the way back up keep the height
+/// within 1.44 log2(n) + 2. rebuild() builds the inner nodes again top-down, splitting the boxes at the
+/// median of their centres along the longer side of the centres' bounds: O(n log n), a height of
+/// ceil(log2 n), and boxes grouped by place rather than by the order they came in. Leaves keep their
+/// handles across rebuild().
+///
+/// Boxes must be valid (finite, min <= max): the tree does not check; its callers do.
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -38,40 +39,47 @@
 
 namespace collide2d {
 
+/// A bounding-volume tree of boxes, each with a value of the caller's.
 class AabbTree {
  public:
+  /// A stored box's handle; valid until removed, across rebuild().
   using Leaf = std::int32_t;
 
+  /// Stores a box (valid: finite, min <= max) with `value`, which queries report.
   Leaf insert(const Aabb& box, std::uint32_t value);
+  /// A new box for a leaf, re-inserted where it now fits best.
   void move(Leaf leaf, const Aabb& box);
   void remove(Leaf leaf);
+  /// Builds the inner nodes again top-down (see the file comment).
   void rebuild();
-  // A new box for a leaf with the tree's shape kept: its ancestors' boxes are refitted up to the
-  // first that does not change. Cheaper than move() (no search, no rotation) for leaves that moved
-  // a little; the tree gets worse as they drift from where insertion or rebuild() put them, which
-  // inner_perimeter() measures.
+  /// A new box for a leaf with the tree's shape kept: its ancestors' boxes are refitted up to the
+  /// first that does not change. Cheaper than move() (no search, no rotation) for leaves that moved
+  /// a little; the tree gets worse as they drift from where insertion or rebuild() put them, which
+  /// inner_perimeter() measures.
   void set_box(Leaf leaf, const Aabb& box);
-  // set_box() for many leaves: when they are many enough that their walks up would refit more nodes
-  // than the tree has, the boxes are stored and every inner node refitted once, bottom up.
+  /// set_box() for many leaves: when they are many enough that their walks up would refit more nodes
+  /// than the tree has, the boxes are stored and every inner node refitted once, bottom up.
   void set_boxes(std::span<const std::pair<Leaf, Aabb>> boxes);
-  // The sum of the inner boxes' half perimeters (width plus height), kept up to date: the cost of a
-  // query grows with it.
+  /// The sum of the inner boxes' half perimeters (width plus height), kept up to date: the cost of a
+  /// query grows with it.
   double inner_perimeter() const { return inner_perimeter_; }
 
+  /// Stored boxes.
   std::size_t size() const { return leaves_; }
-  // Leaves inserted since the last rebuild() (moves do not count): how much of the tree is in the
-  // order boxes came in rather than grouped by place.
+  /// Leaves inserted since the last rebuild() (moves do not count): how much of the tree is in the
+  /// order boxes came in rather than grouped by place.
   std::size_t inserted_since_rebuild() const { return inserted_; }
+  /// The longest path from the root to a leaf; -1 for an empty tree.
   int height() const { return root_ < 0 ? -1 : nodes_[root_].height; }
 
-  // visit(value) for each stored box that meets `box` (closed boxes: touching counts).
+  /// visit(value) for each stored box that meets `box` (closed boxes: touching counts).
   template <class Visit>
   void query(const Aabb& box, Visit&& visit) const;
 
-  // visit(value, reach) -> new reach, for each stored box the ray origin + t * direction, t in
-  // [0, reach], meets. The reach returned bounds the rest of the walk, and the nearer child of each
-  // node is walked first, so that a near hit skips the boxes behind it (the order is not sorted
-  // overall). The direction need not be a unit vector: t is in its lengths.
+  /// visit(value, reach) -> new reach, for each stored box the ray origin + t * direction, t in
+  /// [0, reach], meets. The reach returned bounds the rest of the walk, and the nearer child of each
+  /// node is walked first, so that a near hit skips the boxes behind it (the order is not sorted
+  /// overall). The direction need not be a unit vector: t is in its lengths.
   template <class Visit>
   void ray_cast(const Vec2& origin, const Vec2& direction, double reach, Visit&& visit) const;
 

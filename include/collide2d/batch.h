@@ -1,20 +1,18 @@
-// Batched overlap tests, for callers with their own pair lists (a broad phase of their own, a
-// game's candidate list): pair i is (the i-th shape of the first list, the i-th of the second), and
-// overlapping[i] is set to 1 when the solids share a point, to 0 otherwise.
-//
-// Each verdict is bit for bit overlaps(a, a_orientation, b, b_orientation)'s (query.h): the typed
-// kernel's, with two shapes of one kind first put in the fixed order that makes the verdict the
-// same either way round (a rectangle 1e35 from a small one can otherwise round to the other
-// verdict). The certain cases are decided 2 to 8 pairs at a time with SIMD instructions (Google
-// Highway, chosen at run time for the CPU: SSE4, AVX2, AVX-512, NEON, ...); the few pairs whose
-// margins lie within their rounding bounds are finished one by one by the exact fallback.
-//
-// Like the posed one-off kernels, these neither validate the shapes nor take sines and cosines:
-// each orientation must be Orientation::of(angle) of its shape, and the shapes must be valid
-// (validate() in shapes.h), as the World keeps them. Lists of different lengths throw
-// std::invalid_argument, naming the lengths, before anything is written.
+/// @file
+/// Batched kernels, for callers with pair lists of their own (a broad phase of their own, a game's
+/// candidate list): pair i is the i-th shape of the first list with the i-th of the second.
+///
+/// Each result is bit for bit the one-off kernel's (kernels.h), two shapes of one kind first put in
+/// the order of query.h. The certain cases run 2 to 8 pairs at a time in SIMD lanes (Google
+/// Highway, chosen at run time for the CPU: SSE4, AVX2, AVX-512, NEON, ...); the few pairs within
+/// their rounding bounds of touching are finished one by one by the exact fallback.
+///
+/// Contract, as for kernels.h: valid shapes, and each orientation Orientation::of(angle) of its
+/// shape; nothing is validated. Lists of different lengths throw std::invalid_argument, naming the
+/// lengths, before anything is written.
 #pragma once
 
+#include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
 #include <cstdint>
@@ -23,6 +21,7 @@
 
 namespace collide2d {
 
+/// overlapping[i] = 1 when pair i's solids share a point, else 0.
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping);
@@ -33,14 +32,12 @@ void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientatio
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping);
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping);
-// Ellipse pairs: the algebraic test (overlap_ellipse_ellipse.h) on vectors, the pairs near touching
-// by the one-off kernel.
 void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
                              std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping);
 
-// Any of the above by the kinds of the lists, A before B in kernel order (rectangle, circle,
-// ellipse), for generic callers; a circle's orientations are not read.
+/// Any of the above by the kinds of the lists, A before B in kernel order (rectangle, circle,
+/// ellipse), for generic code; a circle's orientations are not read.
 template <class A, class B>
 void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
                    std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
@@ -59,5 +56,11 @@ void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientat
     overlap_ellipse_ellipse(a, a_orientations, b, b_orientations, overlapping);
   }
 }
+
+/// contacts[i] = contact_circle_ellipse(circles[i], ellipses[i], ellipse_orientations[i]), bit for
+/// bit: the point-ellipse roots of several vectors of pairs step side by side, each lane stopping
+/// where the one-off root stops.
+void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
+                            std::span<const Orientation> ellipse_orientations, std::span<Contact> contacts);
 
 }  // namespace collide2d

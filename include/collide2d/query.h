@@ -1,78 +1,156 @@
-// The user-facing narrow phase: one entry point per query over every pair of shapes, either order.
-//
-//   bool overlaps(a, b, options)            solid shapes share a point (touching counts); nothing else
-//   bool overlaps(shape, box, options)      the same for a shape and an axis-aligned box
-//   DistanceResult distance(a, b, options)  distance 0 and a witness when overlapping, else closest points
-//   Contact contact(a, b, options)          signed distance (minus the penetration depth when overlapping),
-//                                           normal, deepest or closest points, and a manifold
-//                                           (narrowphase/contact.h)
-//   DistanceResult boundary_distance(a, b, options)
-//                                           circles and ellipses: the gap between the boundary curves
-//                                           (0 and a common point when they meet), e.g. of nested shapes
-//
-// All validate their shapes first and throw InvalidShape (naming the field) on NaN, infinity or a
-// non-positive size. Pairs are dispatched at compile time (std::visit) to the typed kernels below,
-// each written once for the order rect < circle < ellipse and swapped for the other order:
-//
-//   pair              overlap                                  distance
-//   rect–rect         separating axes (overlap_rect_rect)      vertex–box minimum (distance_rect_rect)
-//   rect–circle       clamp in the box frame                   same clamp
-//   rect–ellipse      options.rect_ellipse (overlap_rect_...)  Minkowski regions + point–ellipse
-//   circle–circle     centre distance                          centre distance
-//   circle–ellipse    point–ellipse distance                   point–ellipse distance
-//   ellipse–ellipse   GJK on exact supports (overlap_ellipse_  options.ellipse (distance_ellipse_ellipse)
-//                     ellipse), long double when undecided
-//
-// Boundary distance: circle–circle in closed form; circle–ellipse as ellipse–ellipse with a = b;
-// rectangles throw UnsupportedPair.
-// Contact: circle–circle and rect–circle in closed form; rect–rect by separating axes and Box2D's
-// face clipping; circle–ellipse by the point–ellipse distance of the centre less the radius;
-// rect–ellipse and ellipse–ellipse by the global maximum of the separation over all directions
-// (rect–ellipse: each quarter turn between the rectangle's face normals settled in closed form,
-// narrowphase/contact_rect_ellipse.cpp; two ellipses: narrowphase/deepest_direction.h).
+/// @file
+/// The narrow phase for two shapes of any kinds, in either order: overlap, distance, contact, and
+/// the gap between boundary curves.
+///
+/// Every function here validates its shapes and throws InvalidShape (naming the field) for NaN,
+/// infinity or a size out of range. Each pair runs the exact kernel of its kinds (kernels.h), two
+/// shapes of one kind put in a fixed order first, so that swapping A and B swaps the result bit for
+/// bit. Points and normals are in the world frame. docs/algorithms.md gives each kernel's method and
+/// docs/accuracy.md the bounds the tests assert.
 #pragma once
 
-#include <collide2d/contact.h>
-#include "narrowphase/distance/distance_ellipse_ellipse.h"
-#include <collide2d/distance_result.h>
-#include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include <collide2d/shapes.h>
 
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <span>
 #include <stdexcept>
 
 namespace collide2d {
 
-struct OverlapOptions {
-  RectEllipseMethod rect_ellipse = RectEllipseMethod::minkowski;
+/// The distance between two solids A and B, in the order the query was given.
+/// Apart: `distance` > 0 and point_a, point_b are closest points on the boundaries, |point_b -
+/// point_a| = distance to rounding; a pair apart by less than its rounding still has a distance of
+/// at least the smallest double, so that 0 always means overlapping. Overlapping (touching
+/// included): distance 0 and point_a = point_b, a point of both solids.
+struct DistanceResult {
+  bool overlapping = false;
+  double distance = 0.0;
+  Vec2 point_a = Vec2::Zero();
+  Vec2 point_b = Vec2::Zero();
+
+  /// The same result for the query (B, A).
+  DistanceResult swapped() const { return {overlapping, distance, point_b, point_a}; }
+
+  /// An overlapping result with `witness` as the common point.
+  static DistanceResult touching(const Vec2& witness) { return {true, 0.0, witness, witness}; }
+  /// A result apart, its distance raised to the smallest double if it rounded to 0.
+  static DistanceResult apart(double distance, const Vec2& a, const Vec2& b) {
+    return {false, std::max(distance, std::numeric_limits<double>::denorm_min()), a, b};
+  }
 };
 
-struct DistanceOptions {
-  EllipseDistanceMethod ellipse = EllipseDistanceMethod::robust;
+/// What a contact point of two rectangles is made of: the kind of contact and two indices, stable
+/// while the same features touch (for warm-starting a solver). A rectangle's faces are numbered +x 0,
+/// +y 1, -x 2, -y 3 in its own axes; its corners (-,-) 0, (+,-) 1, (+,+) 2, (-,+) 3. A point of an
+/// incident face cut by a side plane of the reference face is corner 4 (at that face's lower end, in
+/// the reference's axes) or 5. Curved contacts have id 0.
+enum class FeatureKind : std::uint8_t {
+  curved = 0,
+  face_of_a = 1,      ///< first: A's reference face; second: B's corner (or cut point)
+  face_of_b = 2,      ///< first: B's reference face; second: A's corner (or cut point)
+  corner_corner = 3,  ///< first: A's corner; second: B's corner (rectangles apart, closest at corners)
 };
 
-// Thrown for a query that is not defined for the pair (the boundary distance of a rectangle).
+/// The id of a contact point made of `kind`, `first` and `second`.
+constexpr std::uint32_t feature_id(FeatureKind kind, int first, int second) {
+  return static_cast<std::uint32_t>(kind) << 16 | static_cast<std::uint32_t>(first) << 8 |
+         static_cast<std::uint32_t>(second);
+}
+/// The kind of a feature id.
+constexpr FeatureKind feature_kind(std::uint32_t id) { return static_cast<FeatureKind>(id >> 16); }
+/// The id of the same features for the pair (B, A).
+std::uint32_t swapped_feature(std::uint32_t id);
+
+/// One point of a contact manifold.
+struct ContactPoint {
+  Vec2 point_a = Vec2::Zero();  ///< on A (for a manifold point: on A's face or A's corner)
+  Vec2 point_b = Vec2::Zero();  ///< on B; point_b - point_a = separation * normal
+  double separation = 0.0;
+  std::uint32_t id = 0;  ///< feature_id() of the features that make it
+};
+
+/// The contact of two solids: their signed distance, the normal and the points.
+///
+/// separation = max over unit u of u.(c_B - c_A) - h_A(u) - h_B(-u) (h the support functions):
+/// apart, the distance; overlapping, minus the penetration depth (the length of the shortest
+/// translation of B that leaves the solids only touching); 0 when they touch; continuous through
+/// contact. The normal is the maximiser. Where it is not unique (concentric shapes, symmetric
+/// crossings, parallel faces) any maximiser is returned and the separation is exact all the same.
+/// The sign of a separation within a few u of the pair's scale is rounding: overlaps() is the exact
+/// verdict there.
+struct Contact {
+  double separation = 0.0;      ///< > 0 apart, < 0 overlapping (minus the depth)
+  Vec2 normal = Vec2::UnitX();  ///< unit, from A to B: moving B by -separation * normal leaves them touching
+  /// Apart: the closest points. Overlapping: the deepest points, A's support point along `normal`
+  /// and B's along -normal (where a support set is a face, its point facing the other shape's
+  /// deepest point). point_b - point_a = separation * normal. Where two rectangles' deepest corner
+  /// lies beyond the reference face's ends, the incident face's deepest point within them stands in
+  /// for it, so that both points stay on their shapes.
+  Vec2 point_a = Vec2::Zero();
+  Vec2 point_b = Vec2::Zero();
+  /// The manifold: one point for curved pairs (the one above); for two rectangles the points of the
+  /// incident face clipped to the reference face (Box2D's b2CollidePolygons), deepest first, each
+  /// with its own separation (two for a face resting on a face).
+  std::array<ContactPoint, 2> manifold{};
+  int manifold_size = 1;
+  int evaluations = 0;  ///< support evaluations of a curved pair's search (0 for closed forms)
+
+  /// The manifold's points.
+  std::span<const ContactPoint> points() const { return {manifold.data(), static_cast<std::size_t>(manifold_size)}; }
+  /// The same contact for the pair (B, A).
+  Contact swapped() const;
+  /// A one-point contact.
+  static Contact of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
+                    std::uint32_t id = 0);
+};
+
+// Inline: a batch writes thousands of contacts, and a call out of line built each one and copied it.
+inline Contact Contact::of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
+                           std::uint32_t id) {
+  Contact c;
+  c.separation = separation;
+  c.normal = normal;
+  c.point_a = point_a;
+  c.point_b = point_b;
+  c.manifold[0] = {point_a, point_b, separation, id};
+  return c;
+}
+
+/// What a contact query may use beyond the two shapes.
+struct ContactOptions {
+  /// Rectangle manifolds keep, beside the deepest point, the points whose separation is at most
+  /// max(deepest, 0) + margin: 0 keeps the points touching or overlapping as deep; a speculative
+  /// solver passes its margin.
+  double margin = 0.0;
+  /// A direction near the expected normal (last frame's): two ellipses start their search there
+  /// and end sooner. Any direction gives the same contact to rounding; zero means none. Other pairs
+  /// ignore it. Must be finite.
+  Vec2 guess = Vec2::Zero();
+};
+
+/// Thrown for a query the pair does not support (the boundary distance of a rectangle).
 class UnsupportedPair : public std::logic_error {
  public:
   using std::logic_error::logic_error;
 };
 
-bool overlaps(const Shape& a, const Shape& b, const OverlapOptions& options = {});
-// The same verdict, bit for bit, with the default options, for callers that validated both shapes
-// when they posed them and keep each one's Orientation::of(angle_of(shape)) (the World): no
-// validation, and no cosines and sines (but in the ellipse pair's long-double fallback, a pair
-// within about 1e-14 of touching, which takes them from the angles).
-bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation);
-// Whether the solid shape meets the closed axis-aligned box, which may have no width or height (a
-// segment or a point): the part of the box within the shape's own box, as a rectangle of angle 0,
-// for the rectangle kernels; exact up to the rounding of that part's centre and half sizes, which
-// is the rounding of the shape's coordinates. Validates both (InvalidShape).
-bool overlaps(const Shape& shape, const Aabb& box, const OverlapOptions& options = {});
-DistanceResult distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
-DistanceResult boundary_distance(const Shape& a, const Shape& b, const DistanceOptions& options = {});
+/// Whether the solids share a point (touching counts). Computes nothing beyond the verdict.
+bool overlaps(const Shape& a, const Shape& b);
+/// Whether the solid shape meets the closed box, which may have no width or height (a segment or a
+/// point). Exact up to the rounding of the shape's coordinates. Throws InvalidShape for an invalid
+/// box too.
+bool overlaps(const Shape& shape, const Aabb& box);
+/// The distance and closest points, or 0 and a common point when the solids overlap.
+DistanceResult distance(const Shape& a, const Shape& b);
+/// Circles and ellipses: the gap between the boundary curves (the solid distance for disjoint
+/// shapes, the gap of a shape nested in another), or 0 and a common point when the curves meet.
+/// Throws UnsupportedPair for a rectangle.
+DistanceResult boundary_distance(const Shape& a, const Shape& b);
+/// The signed distance, normal and points (see Contact). Throws std::invalid_argument for a guess
+/// that is not finite.
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options = {});
-// The same contact, bit for bit, for callers that validated both shapes when they posed them and
-// keep each one's Orientation::of(angle_of(shape)) (the World, a time of impact): no validation, no
-// cosines and sines.
-Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
-                const ContactOptions& options = {});
 
 }  // namespace collide2d

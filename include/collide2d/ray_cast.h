@@ -1,9 +1,6 @@
-// Where a ray first meets a solid shape: exact for circles and ellipses (the root of the quadratic
-// of the ray against the curve, not a polygon), slabs for rectangles.
-//
-// The ray is origin + t direction for 0 <= t <= max_distance, direction a unit vector. A ray that
-// starts inside the shape hits it at t = 0 with a zero normal. Inputs are assumed valid (World and
-// the command line validate them).
+/// @file
+/// Where a ray first meets a solid shape: exact for circles and ellipses (the root of the ray's
+/// quadratic against the curve, not a polygon), slabs for rectangles.
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -12,12 +9,16 @@
 
 namespace collide2d {
 
+/// Where a ray meets a shape.
 struct RayShapeHit {
-  double distance = 0.0;       // t at the hit
+  double distance = 0.0;       ///< t at the hit
   Vec2 point = Vec2::Zero();
-  Vec2 normal = Vec2::Zero();  // outward unit normal at the hit
+  Vec2 normal = Vec2::Zero();  ///< outward unit normal at the hit; zero when the ray starts inside
 };
 
+/// The first point of the shape on the ray origin + t direction, 0 <= t <= max_distance, or nullopt.
+/// A ray that starts inside the shape hits it at t = 0. Contract: a valid shape, a finite origin, a
+/// unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
 std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction,
                                     double max_distance);
 

@@ -11,7 +11,7 @@
 // (first ellipse at the origin) the two differ only in which start they take.
 #include "narrowphase/baselines/ellipse_seed_solvers.h"
 
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <algorithm>
 #include <cmath>

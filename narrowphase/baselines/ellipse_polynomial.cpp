@@ -19,7 +19,7 @@
 // polynomial near tangency and for eccentric ellipses.
 #include "narrowphase/baselines/ellipse_seed_solvers.h"
 
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <Eigen/Dense>
 #include <unsupported/Eigen/Polynomials>

@@ -3,7 +3,7 @@
 // root per Newton step that the CPU cannot overlap; lanes of pairs stepping together, and several
 // vectors of them side by side, fill that chain (Highway, as in overlap_batch.cpp).
 #include "narrowphase/batch/batch_chunk.h"
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 #include "narrowphase/batch/lanes.h"
 
 #include <algorithm>

@@ -6,9 +6,9 @@
 // each kernel, one field per lane, are plain structs here, shared by both.
 #pragma once
 
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 #include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 #include <collide2d/shapes.h>
 
 #include <algorithm>

@@ -62,8 +62,8 @@ void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t coun
     hn::StoreMaskBits(D(), v.overlap, overlap);
     for (std::size_t j = 0; j < lanes; ++j) {
       const auto bit = [j](const std::uint8_t* bits) { return (bits[j / 8] >> (j % 8) & 1) != 0; };
-      const FilterVerdict verdict =
-          bit(separated) ? FilterVerdict::separated : bit(overlap) ? FilterVerdict::overlap : FilterVerdict::uncertain;
+      const detail::FilterVerdict verdict =
+          bit(separated) ? detail::FilterVerdict::separated : bit(overlap) ? detail::FilterVerdict::overlap : detail::FilterVerdict::uncertain;
       chunk.verdict[i + j] = static_cast<std::uint8_t>(verdict);
     }
   }

@@ -1,4 +1,4 @@
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 
 namespace collide2d {
 

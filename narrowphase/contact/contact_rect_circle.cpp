@@ -1,7 +1,7 @@
 #include "narrowphase/frames/box_local.h"
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 #include "narrowphase/frames/unit_vector.h"
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // Private: the contact of a pair with a curved shape, from the global maximum of its separation.
 #pragma once
 
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 #include "narrowphase/contact/deepest_direction.h"
 
 #include <cmath>

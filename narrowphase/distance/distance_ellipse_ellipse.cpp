@@ -1,8 +1,9 @@
+#include <collide2d/kernels.h>
+
 #include "narrowphase/distance/distance_ellipse_ellipse.h"
 
 #include "narrowphase/ellipse/ellipse_contact.h"
 #include "narrowphase/ellipse/ellipse_pair.h"
-#include "narrowphase/baselines/ellipse_seed_solvers.h"
 
 #include <algorithm>
 #include <array>
@@ -16,6 +17,7 @@ namespace collide2d {
 namespace {
 
 using detail::EllipsePair;
+using detail::SolverReport;
 using V2 = detail::V2<double>;
 
 // A pair found apart only in long double (double puts s at 0 or below): s at the long-double maximum,
@@ -287,40 +289,42 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
 }
 
 // `pair` holds the pair's frame when the caller kept the orientations, else is built on demand.
-SolverReport distance_of(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair,
-                         EllipseDistanceMethod method) {
+SolverReport distance_of(const Ellipse& a, const Ellipse& b, std::optional<EllipsePair<double>>& pair) {
   const detail::EllipseContact contact = detail::ellipse_contact(a, b, pair);
   if (contact.overlap) return {DistanceResult::touching(contact.witness), contact.iterations, true};
-  switch (method) {
-    case EllipseDistanceMethod::gradient: return detail::gradient_descent_curves(a, b);
-    case EllipseDistanceMethod::polynomial: return detail::polynomial_curves(a, b);
-    case EllipseDistanceMethod::robust: break;
-  }
   if (!pair) pair.emplace(EllipsePair<double>::of(a, b));
   return separated(a, b, *pair, contact);
 }
 
 }  // namespace
 
-SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
+SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
   std::optional<EllipsePair<double>> pair;
-  return distance_of(a, b, pair, method);
+  return distance_of(a, b, pair);
 }
 
-SolverReport distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
-                                      const Orientation& b_orientation) {
+SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                                     const Orientation& b_orientation) {
   std::optional<EllipsePair<double>> pair =
       EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  return distance_of(a, b, pair, EllipseDistanceMethod::robust);
+  return distance_of(a, b, pair);
 }
 
-SolverReport boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseDistanceMethod method) {
-  switch (method) {
-    case EllipseDistanceMethod::gradient: return detail::gradient_descent_curves(a, b);
-    case EllipseDistanceMethod::polynomial: return detail::polynomial_curves(a, b);
-    case EllipseDistanceMethod::robust: break;
-  }
+SolverReport detail::robust_boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
   return robust_boundary(a, b);
+}
+
+DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
+  return detail::robust_distance_ellipse_ellipse(a, b).result;
+}
+
+DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                        const Orientation& b_orientation) {
+  return detail::robust_distance_ellipse_ellipse(a, a_orientation, b, b_orientation).result;
+}
+
+DistanceResult boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b) {
+  return detail::robust_boundary_distance_ellipse_ellipse(a, b).result;
 }
 
 }  // namespace collide2d

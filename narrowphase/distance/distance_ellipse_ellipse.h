@@ -1,8 +1,9 @@
-// Distances between two ellipses: between the solids (0 when they overlap) and between the boundary
-// curves (0 when the curves meet; the gap of nested ellipses otherwise), with closest points.
+// Private: distances between two ellipses, distance_ellipse_ellipse and
+// boundary_distance_ellipse_ellipse in kernels.h: between the solids (0 when they overlap) and
+// between the boundary curves (0 when the curves meet; the gap of nested ellipses otherwise), with
+// closest points.
 //
-// Methods
-// - robust (default). Solid distance: the overlap decision of overlap_ellipse_ellipse.h (GJK on
+// Method. Solid distance: the overlap decision of overlap_ellipse_ellipse.h (GJK on
 //   the exact support functions, long double when double cannot decide) yields either a common
 //   point or a direction n0 that separates. From n0, safeguarded Newton maximises the separation
 //   s(n) = n.(c_B - c_A) - h_A(n) - h_B(n) over the angle of n: on the arc of separating
@@ -32,38 +33,23 @@
 //   (near-tangent gaps +-1e-3 ... +-1e-12, aspect ratios to 1e6, offsets to 1e9, sizes 1e-6 and 1e6,
 //   nested, inner-tangent, concentric, identical, mirror-symmetric and axis-aligned contacts,
 //   nesting at the cusps of the evolute, thin rings between an ellipse and its near copy).
-// - gradient: seed 000 (gradient descent on the two curve parameters), reproduced as published,
-//   a baseline to measure. It finds a local minimum of the distance between the curves.
-// - polynomial: seed 001 (Lagrange conditions eliminated to a degree-12 polynomial, the quartic of
-//   the point–ellipse distance when either ellipse is a circle), real roots from the eigenvalues of
-//   the companion matrix (Eigen's unsupported Polynomials module), a baseline to measure. It finds
-//   the stationary points of the distance between the curves, so it misses crossings.
-// For gradient and polynomial, the solid distance first applies the exact overlap test (returning
-// its common point when the shapes overlap) and otherwise reports the method's curve distance.
 #pragma once
 
-#include <collide2d/distance_result.h>
+#include <collide2d/query.h>
 
-namespace collide2d {
+namespace collide2d::detail {
 
-enum class EllipseDistanceMethod { robust, gradient, polynomial };
-
+// A distance with the work that found it.
 struct SolverReport {
   DistanceResult result;
-  int iterations = 0;      // support evaluations (robust), descent steps (gradient), roots (polynomial)
-  bool converged = true;   // the method met its own stopping rule
+  int iterations = 0;     // support evaluations (the robust solvers), descent steps or roots (baselines)
+  bool converged = true;  // the method met its own stopping rule
 };
 
-SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b,
-                                      EllipseDistanceMethod method = EllipseDistanceMethod::robust);
-// `robust`, given each ellipse's Orientation::of(angle), for callers that keep orientations between
-// queries: the same answer, bit for bit, with no sine or cosine in the double computation.
-SolverReport distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
-                                      const Orientation& b_orientation);
+// The kernels of kernels.h with their support evaluations, for tests and benchmarks.
+SolverReport robust_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+SolverReport robust_distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                             const Orientation& b_orientation);
+SolverReport robust_boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
 
-// The distance between the boundary curves. `overlapping` means the curves share a point; the
-// points lie on the curves.
-SolverReport boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b,
-                                               EllipseDistanceMethod method = EllipseDistanceMethod::robust);
-
-}  // namespace collide2d
+}  // namespace collide2d::detail

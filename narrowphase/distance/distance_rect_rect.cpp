@@ -1,7 +1,13 @@
-#include "narrowphase/distance/distance_rect_rect.h"
+// Distance between two solid oriented rectangles, with closest points.
+// Separated: a closest pair of two disjoint convex polygons always has a vertex of one of them, so
+// the distance is the least of the eight vertex-to-box distances (each a clamp in the box's frame).
+// Overlapping (overlap_rect_rect): distance 0 and the centroid of the vertices of B clipped to A
+// (Sutherland–Hodgman) as witness. Computed in A's frame after subtracting centres; accurate to a
+// few ulps of the pair's scale.
+
+#include <collide2d/kernels.h>
 
 #include "narrowphase/frames/box_local.h"
-#include "narrowphase/overlap/overlap_rect_rect.h"
 #include "narrowphase/frames/rect_pair_frame.h"
 
 #include <array>

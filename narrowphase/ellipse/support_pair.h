@@ -11,7 +11,7 @@
 // The signed distance of the pair is max s over all n, apart and overlapping alike.
 #pragma once
 
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 #include <collide2d/shapes.h>
 
 #include <Eigen/Core>

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "narrowphase/batch/lanes.h"
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 #include <collide2d/shapes.h>
 
 #include <Eigen/Core>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "narrowphase/batch/lanes.h"
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 #include <collide2d/shapes.h>
 
 namespace collide2d::detail {

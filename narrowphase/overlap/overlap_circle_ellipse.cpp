@@ -1,8 +1,16 @@
-#include "narrowphase/overlap/overlap_circle_ellipse.h"
+// Circle–ellipse overlap through the exact point–ellipse distance (distance_point_ellipse.h), not a
+// general ellipse–ellipse solver: the circle overlaps the ellipse iff its centre is within r of the
+// solid ellipse. It answers without the root finder when the centre is inside the ellipse, farther than r
+// from the ellipse's bounding box in the ellipse frame, within r of the boundary point on the ray
+// from the ellipse's centre through the circle's, or beyond r of the tangent line there (each by
+// more than the rounding of the distance). Overlap witness: the circle centre when it
+// is inside the ellipse, else the nearest ellipse point.
+
+#include <collide2d/kernels.h>
 
 #include "narrowphase/batch/lanes.h"
 #include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <limits>
 
@@ -24,20 +32,6 @@ bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation
 
 bool detail::circle_ellipse_exact(const CircleEllipseLanes<double>& f) {
   return distance_point_ellipse(f.a, f.b, Vec2(f.px, f.py)).distance <= f.r;
-}
-
-DistanceResult distance_circle_ellipse(const Circle& c, const Ellipse& e) {
-  const Orientation eo = Orientation::of(e.angle);
-  const detail::Rotation<double> rot{eo.c, eo.s};
-  const detail::CircleEllipseLanes<double> f = detail::circle_ellipse_lanes(c, e, eo);
-  const Vec2 p(f.px, f.py);
-  const PointEllipseResult pe = distance_point_ellipse(e.a, e.b, p);
-  if (pe.inside) return DistanceResult::touching(c.center);
-  const Vec2 on_ellipse = e.center + rot.apply(pe.closest);
-  if (pe.distance <= c.radius) return DistanceResult::touching(on_ellipse);
-  const Vec2 toward = rot.apply(Vec2(pe.closest - p));  // world direction, centre to ellipse point
-  return DistanceResult::apart(pe.distance - c.radius, c.center + (c.radius / pe.distance) * toward,
-                               on_ellipse);
 }
 
 }  // namespace collide2d

@@ -1,3 +1,5 @@
+#include <collide2d/kernels.h>
+
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
 #include "narrowphase/ellipse/ellipse_contact.h"
@@ -168,7 +170,7 @@ bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation,
   return near_overlap(a, a_orientation, b, b_orientation);
 }
 
-FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
+detail::FilterVerdict detail::overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b) {
   std::optional<detail::EllipsePair<double>> pair;
   FilterVerdict verdict = FilterVerdict::uncertain;
   detail::ellipse_contact(a, b, pair, &verdict, true);

@@ -1,4 +1,5 @@
-// Overlap of two solid ellipses: a yes/no answer, no distance computed.
+// Private: the overlap of two solid ellipses, overlap_ellipse_ellipse in kernels.h: a yes/no
+// answer, no distance computed.
 //
 // Method. The pair overlaps exactly when no direction n separates it, that is when
 // s(n) = n.(c_B - c_A) - h_A(n) - h_B(n) <= 0 for every n (h the support functions). The test runs
@@ -27,18 +28,12 @@
 #pragma once
 
 #include "narrowphase/overlap/overlap_rect_ellipse.h"  // FilterVerdict
+
 #include <collide2d/shapes.h>
 
-namespace collide2d {
-
-bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
-// The same answer, bit for bit, given each ellipse's Orientation::of(angle), for callers that keep
-// orientations between queries: the double pass evaluates no sine or cosine (the long-double
-// fallback still takes its own from the angles).
-bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
-                             const Orientation& b_orientation);
+namespace collide2d::detail {
 
 // The double pass alone (for tests and benchmarks of the fallback rate).
 FilterVerdict overlap_ellipse_ellipse_filter(const Ellipse& a, const Ellipse& b);
 
-}  // namespace collide2d
+}  // namespace collide2d::detail

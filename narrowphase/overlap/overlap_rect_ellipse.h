@@ -1,17 +1,17 @@
-// Overlap of a solid oriented rectangle and a solid ellipse: a yes/no answer, nothing more.
+// Private: the overlap of a solid oriented rectangle and a solid ellipse, overlap_rect_ellipse in
+// kernels.h: a yes/no answer, nothing more.
 //
-// Source: D. Eberly, "Intersection of Rectangle and Ellipse" (seed 004). All tests work in the
+// Source: D. Eberly, "Intersection of Rectangle and Ellipse" (Geometric Tools). All tests work in the
 // rectangle's frame after subtracting the centres, so the pair's distance from the world origin
 // costs no accuracy; the ellipse quadratic is evaluated from projections onto the ellipse axes.
 //
-// Methods
-// - minkowski (default). The ellipse centre K must lie in the Minkowski sum S = R + E0 (E0 the
+// Method. The ellipse centre K must lie in the Minkowski sum S = R + E0 (E0 the
 //   ellipse moved to the origin): a box R' (R grown by the support half-widths l_i) minus four
-//   corner pieces, each outside the ellipse copy E_P centred at a corner P. Seed 004 picks the
-//   corner P by the signs of K's coordinates; that is wrong: for a slanted, eccentric ellipse the
-//   piece of corner (+,+) reaches into the other quadrants, and the seed then reports overlap for
-//   separated shapes (e.g. rectangle half extents 0.1, ellipse a = 10, b = 0.01 at 45 degrees,
-//   centre (1.1, 6.1): separated, seed says overlap). Here every corner is tested, and the piece
+//   corner pieces, each outside the ellipse copy E_P centred at a corner P. Choosing the corner P
+//   by the signs of K's coordinates, as Eberly's article does, is not enough: for a slanted,
+//   eccentric ellipse the piece of corner (+,+) reaches into the other quadrants, and that test
+//   reports overlap for separated shapes (e.g. rectangle half extents 0.1, ellipse a = 10,
+//   b = 0.01 at 45 degrees, centre (1.1, 6.1): 3.39 apart). Here every corner is tested, and the piece
 //   is characterised exactly: K - P lies in the cone spanned by the support offsets of E0 in the
 //   two rectangle normals at P (Eberly's z0, z1 > 0) and Q_P(K) > 1. Any such point is outside S
 //   (the ray from P through K leaves E_P at a point of the boundary of S), and every point of
@@ -21,19 +21,15 @@
 //   the cone coordinates, then doubled). When a margin lies inside its bound the pair goes to the
 //   fallback: the closest-features test evaluated in long double (64-bit significand on x86-64,
 //   113-bit on AArch64), recomputing the frame from the raw shapes with cosl/sinl.
-// - closest_features (the fallback in double): minimum of the ellipse quadratic over the one or
-//   two rectangle edges facing the ellipse centre, in closed form (Lagrange + clamp).
-// - all_features (reference): any corner in the ellipse, any edge crossing it, or the ellipse centre
-//   in the rectangle. The edge test uses the cross-product form of the discriminant,
-//   |d|^2 - (p x d)^2 >= 0 in the frame where the ellipse is the unit disc; the seed's
-//   q1^2 - q0 q2 cancels catastrophically for needles.
+//   The fallback, closest features: the minimum of the ellipse quadratic over the one or two
+//   rectangle edges facing the ellipse centre, in closed form (Lagrange and a clamp).
 //
 // Accuracy (measured by tests/test_rect_ellipse.cpp against a 50-digit reference): no wrong default
 // verdict in any hard-case family (gaps +-1e-3 ... +-1e-12 of the size, aspect ratios to 1e6, sizes
 // 1e-6 and 1e6, offsets to 1e9), nor in 840 contacts at the rounding level (gap 0, +-1e-14 ...
 // +-1e-16 of the size), where the filter deferred 724 times and the fallback matched the exact
-// verdict of the rounded input every time. In double, closest_features and all_features erred in
-// 98 to 160 of those rounding-level checks per family, and never above a 1e-12 gap.
+// verdict of the rounded input every time. The plain-double tests it is measured against
+// (narrowphase/baselines/) err there.
 // Limit: the rectangle's frame holds the ellipse centre to u times the centres' distance, so a
 // rectangle far along a needle (6.8e38 from the centre of an ellipse 3e48 long, 1.09 beside it)
 // can be called overlapping; that is within the stated target (1e-12 of the centre distance), and
@@ -42,21 +38,13 @@
 
 #include <collide2d/shapes.h>
 
-namespace collide2d {
+namespace collide2d::detail {
 
-enum class RectEllipseMethod { minkowski, closest_features, all_features };
-
-// The fast path alone: `uncertain` when a decision margin is inside its rounding-error bound.
+// The verdict of a test that may defer: `uncertain` when a decision margin is inside its
+// rounding-error bound.
 enum class FilterVerdict { overlap, separated, uncertain };
 
-bool overlap_rect_ellipse(const Rect& r, const Ellipse& e,
-                          RectEllipseMethod method = RectEllipseMethod::minkowski);
-
+// The Minkowski filter alone, in double (for the tests of the fallback rate).
 FilterVerdict overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e);
 
-// The default (Minkowski) test given each shape's Orientation::of(angle), for callers that keep
-// orientations between queries: the same answer without evaluating a sine or cosine.
-bool overlap_rect_ellipse(const Rect& r, const Orientation& r_orientation, const Ellipse& e,
-                          const Orientation& e_orientation);
-
-}  // namespace collide2d
+}  // namespace collide2d::detail

@@ -1,4 +1,9 @@
-#include "narrowphase/overlap/overlap_rect_rect.h"
+// Overlap of two solid oriented rectangles by the separating-axis theorem: the four face normals
+// are the only candidate axes in 2D. Computed in A's frame after subtracting centres.
+// Exact up to rounding of the projected extents (a few ulps of the pair's scale); touching counts
+// as overlap.
+
+#include <collide2d/kernels.h>
 
 #include "narrowphase/frames/rect_pair_frame.h"
 #include "narrowphase/batch/lanes.h"

@@ -1,6 +1,6 @@
 #include <collide2d/ray_cast.h>
 
-#include "shapes/rotation.h"
+#include "shapes/internal.h"
 
 #include <cmath>
 #include <limits>

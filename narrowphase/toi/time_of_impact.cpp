@@ -1,9 +1,41 @@
+// Method: conservative advancement on the exact signed distance d(t) of contact(). At time t, with
+// separation d and normal n, the separation of the pair along the fixed direction n changes at the
+// rate n.(v_B - v_A) plus that of the two support functions, and a shape turning at rate w changes
+// its support function at most |w| L, L the largest distance of its normal lines from its centre
+// (a - b for an ellipse, the longer half side of a rectangle, 0 for a circle; turning_reach derives
+// them), less than the farthest point that B. Mirtich's conservative advancement uses ("Impulse-based
+// Dynamic Simulation of Rigid Body Systems", 1996). As d(t') >= s(n, t'),
+//   d(t') >= d - (W - n.(v_B - v_A)) (t' - t),      W = |w_A| L_A + |w_B| L_B,
+// and the step goes to where this lower bound reaches half the tolerance: never past the first time
+// the shapes touch, nor past the first time their separation falls to half the tolerance. For
+// translation alone (W = 0) d is convex in t (a maximum of functions affine in t) with slope
+// n.(v_B - v_A) at t, so the step is Newton's on d from below its root: quadratic, never past it.
+// With rotation that bound alone converges linearly, so Taylor bounds ride along. d(t') is at least
+// the separation along any axis u(t'), as it is the largest over all of them; take u turning from
+// n at a constant rate omega. Each shape then turns relative to the axis, and its support function
+// along u is at most a parabola in t' - t (an ellipse's from its exact slope and h'' <= a^2 / b - b;
+// a rectangle's the largest of one parabola per corner), as is the centres' offset projected on u
+// from below, so d(t') is at least a concave function whose first root is safe too. The axes: the
+// fixed one and one turning with the shape that turns, or, where both turn, one axis only, turning
+// with a rectangle (a contact on a rectangle's face: along a fixed axis its far corner crosses at
+// once while d does not move to first order; Box2D's face separation functions turn with the body
+// too; of two rectangles, the one whose face normal lies nearest n) or with the slower of two
+// ellipses (leading_axis, below). The step goes to the latest of all the first roots. Each step's
+// probe, and the contact of two ellipses, climb from the last step's normal (ContactOptions::guess);
+// each step reuses the cosine and sine of a shape that does not turn, and takes a turning one's from
+// a polynomial (quick_orientation.h). Far from contact a pair with an ellipse (and no circle) takes
+// the climb's direction once Newton's next gain is below 3% of the separation, without certifying
+// the maximum, and two rectangles the widest gap along the last normal and their face normals: any
+// direction's separation is a lower bound of d, and the step stays safe. Every result comes from an
+// exact contact().
+
 #include <collide2d/time_of_impact.h>
 
+#include <collide2d/kernels.h>
+
 #include "narrowphase/contact/deepest_direction.h"
-#include <collide2d/query.h>
-#include "shapes/quick_orientation.h"
-#include "shapes/rotation.h"
+#include "narrowphase/toi/quick_orientation.h"
+#include "shapes/internal.h"
 
 #include <algorithm>
 #include <array>
@@ -36,10 +68,10 @@ void validate(const Shape& s, const Motion& m, const char* which) {
   for (int k = 0; k < 2; ++k) {
     const char* field = k == 0 ? "velocity x" : "velocity y";
     const double v = m.velocity[k];
-    if (!std::isfinite(v)) reject(which, field, v, "must be finite");
-    if (std::abs(center_of(s)[k] + v) > kMaxMagnitude) reject(which, field, v, "carries the centre beyond +-1e50");
+    if (!std::isfinite(v)) detail::reject(which, field, v, "must be finite");
+    if (std::abs(center_of(s)[k] + v) > kMaxMagnitude) detail::reject(which, field, v, "carries the centre beyond +-1e50");
   }
-  if (!std::isfinite(m.angular_velocity)) reject(which, "angular velocity", m.angular_velocity, "must be finite");
+  if (!std::isfinite(m.angular_velocity)) detail::reject(which, "angular velocity", m.angular_velocity, "must be finite");
 }
 
 // A world direction in a shape's own axes, with its kept orientation.
@@ -53,7 +85,7 @@ double support_in_axes(const Shape& s, const Vec2& local) {
 }
 
 // An upper bound of a turning shape's support function h along a fixed direction n over the rest of
-// the step, for the Taylor bound (time_of_impact.h): the largest of a few parabolas in the time from
+// the step, for the Taylor bound (the method, above): the largest of a few parabolas in the time from
 // now, each h_now - gap + slope t + bend t^2 / 2. The slope of h is w dh/dtheta = w n.perp(q), q the
 // support point's offset from the centre (the envelope theorem). An ellipse's h + h'' is its radius
 // of curvature at q, so h'' <= a^2 / b - b everywhere: one parabola. A rectangle's h is the largest
@@ -144,7 +176,7 @@ double later_root(double step, double gap, const Axis& axis) {
 }
 
 // The separation along a direction near the maximiser, a lower bound of d that serves a step far
-// from contact as well as d itself (time_of_impact.h), for pairs without a circle (whose contacts
+// from contact as well as d itself (the method, above), for pairs without a circle (whose contacts
 // are closed forms and cheap). With an ellipse, the contact's climb from the last normal, stopped
 // once its next gain is below 3% of the separation (the step is then within 3% of the exact one;
 // 1e-3 took 3 to 7% more instructions per time of impact on bench_toi's pairs for 0.04 to 0.09
@@ -247,7 +279,7 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   validate(a, a_motion, "A");
   validate(b, b_motion, "B");
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
-    reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
+    detail::reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
   }
   // Poses along the step are rounded to their coordinates' ulps, and a separation below that cannot
   // be kept: a step aimed closer could land on a rounded pose that overlaps (a bullet 1e6 from the
@@ -289,7 +321,7 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
     warm.guess = c->normal;
     // The step goes to the latest of the first times at which a lower bound of d could fall to half
     // the tolerance: the rate bound, then the Taylor bounds along a fixed axis and along axes that
-    // turn with either shape (time_of_impact.h).
+    // turn with either shape (the method, above).
     const Vec2 n = c->normal, m(-n.y(), n.x());
     const double along = n.dot(v), gap = c->separation - tolerance / 2;
     const double closing = spin - along;  // the fastest the separation can fall

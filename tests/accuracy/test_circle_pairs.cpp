@@ -4,7 +4,7 @@
 #include "mp_reference.h"
 
 #include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "narrowphase/overlap/overlap_circle_ellipse.h"
+#include <collide2d/kernels.h>
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
+#include <collide2d/kernels.h>
 #include <collide2d/query.h>
 
 #include <gtest/gtest.h>

@@ -3,6 +3,9 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
+#include <collide2d/kernels.h>
+
+#include "narrowphase/baselines/baselines.h"
 #include "narrowphase/distance/distance_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
@@ -93,22 +96,25 @@ TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
     const auto ref = reference::ellipse_pair(first, other);
     const double scale = std::max(5.0, other.center.norm());
     const double crossing_tolerance = ref.boundary == 0 ? 1e-7 * scale : 1e-12 * scale;
-    for (const auto method : {EllipseDistanceMethod::robust, EllipseDistanceMethod::gradient,
-                              EllipseDistanceMethod::polynomial}) {
-      const SolverReport solid = distance_ellipse_ellipse(first, other, method);
-      const SolverReport curve = boundary_distance_ellipse_ellipse(first, other, method);
+    // 0: the kernel; 1, 2: the gradient and polynomial baselines.
+    for (const int method : {0, 1, 2}) {
+      const auto solver = method == 1 ? baselines::EllipseSolver::gradient : baselines::EllipseSolver::polynomial;
+      const detail::SolverReport solid = method == 0 ? detail::robust_distance_ellipse_ellipse(first, other)
+                                                     : baselines::distance_ellipse_ellipse(first, other, solver);
+      const detail::SolverReport curve = method == 0 ? detail::robust_boundary_distance_ellipse_ellipse(first, other)
+                                                     : baselines::curve_distance(first, other, solver);
       const double solid_error = std::abs(solid.result.distance - static_cast<double>(ref.distance));
       const double curve_error = std::abs(curve.result.distance - static_cast<double>(ref.boundary));
       std::printf("[seed-000] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n",
-                  k, static_cast<int>(method), solid_error, curve_error, curve.iterations, curve.converged);
+                  k, method, solid_error, curve_error, curve.iterations, curve.converged);
       EXPECT_EQ(solid.result.overlapping, ref.overlap) << "sample " << k;
-      const bool robust = method == EllipseDistanceMethod::robust;
+      const bool robust = method == 0;
       const double bound = (robust ? 8 * kU : 1e-12) * scale;
-      EXPECT_LE(solid_error, bound) << "sample " << k << " method " << static_cast<int>(method);
-      if (method == EllipseDistanceMethod::polynomial) continue;  // measured above: it misses crossings
+      EXPECT_LE(solid_error, bound) << "sample " << k << " method " << method;
+      if (method == 2) continue;  // the polynomial misses crossings (measured above)
       EXPECT_TRUE(curve.converged) << "sample " << k;
-      const double tol = method == EllipseDistanceMethod::gradient ? crossing_tolerance : bound;
-      EXPECT_LE(curve_error, tol) << "sample " << k << " method " << static_cast<int>(method);
+      const double tol = method == 1 ? crossing_tolerance : bound;
+      EXPECT_LE(curve_error, tol) << "sample " << k << " method " << method;
     }
     ++k;
   }
@@ -205,7 +211,7 @@ TEST(EllipseBoundary, NearlyCongruentPairsCostBoundedWork) {
         const Ellipse a{Vec2(0.3, 0.1), 1.0, 1.0 / aspect, 0.4};
         const Ellipse b{Vec2(0.3, 0.1 + (mode == 1 ? 0.5 * e / aspect : 0.0)), 1 - e, (1 - e) / aspect,
                         0.4 + (mode == 2 ? 2 * e : 0.0)};
-        const SolverReport r = boundary_distance_ellipse_ellipse(a, b);
+        const detail::SolverReport r = detail::robust_boundary_distance_ellipse_ellipse(a, b);
         const double ref = static_cast<double>(reference::ellipse_pair(a, b).boundary);
         EXPECT_LE(std::abs(r.result.distance - ref), 8 * kU) << aspect << " " << e << " " << mode;
         EXPECT_LE(r.iterations, 1000) << aspect << " " << e << " " << mode;

@@ -1,9 +1,12 @@
-// Rectangle–ellipse: overlap (three methods) and distance on the hard-case families, against the
-// 50-digit reference; agreement of the three overlap tests on a large random set.
+// Rectangle–ellipse: overlap (the kernel and the two plain-double baselines) and distance on the
+// hard-case families, against the 50-digit reference; agreement of the three overlap tests on a
+// large random set.
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/distance/distance_rect_ellipse.h"
+#include <collide2d/kernels.h>
+
+#include "narrowphase/baselines/baselines.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <gtest/gtest.h>
@@ -44,14 +47,15 @@ TEST(RectEllipseRounding, FallbackDecidesRoundingLevelContacts) {
   }
 }
 
-// Seed 004 picks the corner by the quadrant of the ellipse centre and calls this pair overlapping;
-// the needle's axis passes 3.39 from the rectangle.
-TEST(RectEllipseOverlap, SeedCornerChoiceCounterexample) {
+// Choosing the corner by the quadrant of the ellipse centre, as Eberly's "Intersection of Rectangle
+// and Ellipse" does, calls this pair overlapping; the needle's axis passes 3.39 from the rectangle.
+TEST(RectEllipseOverlap, QuadrantCornerChoiceCounterexample) {
   const Rect r{Vec2(0, 0), Vec2(0.1, 0.1), 0.0};
   const Ellipse e{Vec2(1.1, 6.1), 10.0, 0.01, std::numbers::pi / 4};
   ASSERT_FALSE(reference::overlap(r, e));
-  for (const auto m : {RectEllipseMethod::minkowski, RectEllipseMethod::closest_features, RectEllipseMethod::all_features}) {
-    EXPECT_FALSE(overlap_rect_ellipse(r, e, m));
+  EXPECT_FALSE(overlap_rect_ellipse(r, e));
+  for (const auto t : {baselines::RectEllipseTest::closest_features, baselines::RectEllipseTest::all_features}) {
+    EXPECT_FALSE(baselines::overlap_rect_ellipse(r, e, t));
   }
   EXPECT_NEAR(distance_rect_ellipse(r, e).distance, static_cast<double>(reference::distance(r, e)), 1e-14);
 }
@@ -66,11 +70,11 @@ TEST(RectEllipseOverlap, MethodsAgreeOnRandomPairs) {
   for (int k = 0; k < n; ++k) {
     const Rect r{Vec2(2 * u(rng) - 1, 2 * u(rng) - 1), Vec2(log_u(0.01, 2), log_u(0.01, 2)), 7 * u(rng)};
     const Ellipse e{Vec2(2 * u(rng) - 1, 2 * u(rng) - 1), log_u(0.001, 2), log_u(0.001, 2), 7 * u(rng)};
-    const bool m = overlap_rect_ellipse(r, e, RectEllipseMethod::minkowski);
-    const bool c = overlap_rect_ellipse(r, e, RectEllipseMethod::closest_features);
-    const bool a = overlap_rect_ellipse(r, e, RectEllipseMethod::all_features);
+    const bool m = overlap_rect_ellipse(r, e);
+    const bool c = baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::closest_features);
+    const bool a = baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::all_features);
     overlapping += m;
-    fallbacks += overlap_rect_ellipse_filter(r, e) == FilterVerdict::uncertain;
+    fallbacks += detail::overlap_rect_ellipse_filter(r, e) == detail::FilterVerdict::uncertain;
     if (m != c || m != a) {
       ++disagreements;
       ADD_FAILURE() << "methods disagree (minkowski " << m << ", closest " << c << ", all " << a << ") on rect "

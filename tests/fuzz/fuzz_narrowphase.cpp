@@ -8,7 +8,7 @@
 // overlapping (to 1e-9 of the scale), the same both ways with the normal reversed, and its search
 // certified within its cap of support evaluations.
 #include "fuzz_input.h"
-#include <collide2d/contact.h>
+#include <collide2d/kernels.h>
 #include "narrowphase/kernel_order.h"
 #include <collide2d/batch.h>
 #include <collide2d/query.h>

@@ -2,6 +2,9 @@
 
 #include "mp_reference.h"
 
+#include <collide2d/kernels.h>
+
+#include "narrowphase/baselines/baselines.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
 #include <Eigen/Geometry>
@@ -408,10 +411,11 @@ References references_for(const Case& c) {
 
 int filter_fallback(const Case& c) {
   if (const auto* r = std::get_if<Rect>(&c.a); r && is_ellipse(c.b)) {
-    return overlap_rect_ellipse_filter(*r, std::get<Ellipse>(c.b)) == FilterVerdict::uncertain;
+    return detail::overlap_rect_ellipse_filter(*r, std::get<Ellipse>(c.b)) == detail::FilterVerdict::uncertain;
   }
   if (is_ellipse(c.a) && is_ellipse(c.b)) {
-    return overlap_ellipse_ellipse_filter(std::get<Ellipse>(c.a), std::get<Ellipse>(c.b)) == FilterVerdict::uncertain;
+    return detail::overlap_ellipse_ellipse_filter(std::get<Ellipse>(c.a), std::get<Ellipse>(c.b)) ==
+           detail::FilterVerdict::uncertain;
   }
   return 0;
 }
@@ -436,16 +440,16 @@ void check_boundary(const Family& f, const Case& c, double ref, double scale, co
 
 // The seed methods on an ellipse pair: measured against the reference, never asserted.
 void measure_seed_methods(const Ellipse& a, const Ellipse& b, const References& ref, double scale, FamilyStats& stats) {
-  const EllipseDistanceMethod methods[] = {EllipseDistanceMethod::gradient, EllipseDistanceMethod::polynomial};
+  const baselines::EllipseSolver solvers[] = {baselines::EllipseSolver::gradient, baselines::EllipseSolver::polynomial};
   for (int m = 0; m < 2; ++m) {
-    const auto record = [&](const SolverReport& r, double truth) {
+    const auto record = [&](const detail::SolverReport& r, double truth) {
       const double err = std::abs(r.result.distance - truth) / scale;
       stats.method_errors[m].push_back(std::isnan(err) ? INFINITY : err);
       stats.method_unconverged[m] += !r.converged;
       stats.method_wrong[m] += !(err <= 1e-6);
     };
-    if (!ref.overlap) record(distance_ellipse_ellipse(a, b, methods[m]), ref.distance);
-    record(boundary_distance_ellipse_ellipse(a, b, methods[m]), *ref.boundary);
+    if (!ref.overlap) record(baselines::distance_ellipse_ellipse(a, b, solvers[m]), ref.distance);
+    record(baselines::curve_distance(a, b, solvers[m]), *ref.boundary);
   }
 }
 
@@ -496,8 +500,9 @@ FamilyStats run_family(const Family& f) {
   FamilyStats stats;
   // The rect–ellipse overlap methods; other pairs have one overlap test.
   const bool rect_ellipse = (f.a == Kind::rect && f.b == Kind::ellipse) || (f.a == Kind::ellipse && f.b == Kind::rect);
-  std::vector<OverlapOptions> methods{{RectEllipseMethod::minkowski}};
-  if (rect_ellipse) methods.insert(methods.end(), {{RectEllipseMethod::closest_features}, {RectEllipseMethod::all_features}});
+  // The plain-double baselines beside the default test (nullopt).
+  std::vector<std::optional<baselines::RectEllipseTest>> methods{std::nullopt};
+  if (rect_ellipse) methods.insert(methods.end(), {baselines::RectEllipseTest::closest_features, baselines::RectEllipseTest::all_features});
   const std::vector<Case> cases = family_cases(f);
   for (int k = 0; k < f.cases; ++k) {
     const Case& c = cases[static_cast<std::size_t>(k)];
@@ -512,16 +517,17 @@ FamilyStats run_family(const Family& f) {
     stats.fallbacks += filter_fallback(c);
     // The default test owes the exact verdict of the rounded input everywhere; the plain-double
     // rect-ellipse tests owe it only where the gap is clear of the target.
-    for (const OverlapOptions& m : methods) {
-      const bool exact = m.rect_ellipse == RectEllipseMethod::minkowski;
+    for (const auto& m : methods) {
+      const bool exact = !m;
+      const auto test = [&m](const Shape& x, const Shape& y) { return m ? baselines::overlaps(x, y, *m) : overlaps(x, y); };
       for (const bool swap : {false, true}) {
-        const bool got = swap ? overlaps(c.b, c.a, m) : overlaps(c.a, c.b, m);
+        const bool got = swap ? test(c.b, c.a) : test(c.a, c.b);
         if (exact) {  // the World's test, orientations kept: the same verdict, here too
           const Orientation oa = Orientation::of(angle_of(c.a)), ob = Orientation::of(angle_of(c.b));
           EXPECT_EQ(swap ? overlaps(c.b, ob, c.a, oa) : overlaps(c.a, oa, c.b, ob), got) << what << " posed, swap " << swap;
         }
         if (clear || exact) {
-          EXPECT_EQ(got, ref.overlap) << what << " method " << static_cast<int>(m.rect_ellipse) << " swap " << swap;
+          EXPECT_EQ(got, ref.overlap) << what << " method " << (m ? 1 + static_cast<int>(*m) : 0) << " swap " << swap;
           ++(clear ? stats.verdicts_checked : stats.rounding_verdicts_checked);
         } else {
           stats.plain_mismatches_below_target += got != ref.overlap;
@@ -541,10 +547,11 @@ FamilyStats run_family(const Family& f) {
     if (is_ellipse(c.a) && is_ellipse(c.b)) {
       const Ellipse& ea = std::get<Ellipse>(c.a);
       const Ellipse& eb = std::get<Ellipse>(c.b);
-      const SolverReport robust = distance_ellipse_ellipse(ea, eb);
+      const detail::SolverReport robust = detail::robust_distance_ellipse_ellipse(ea, eb);
       stats.robust_iterations.push_back(robust.iterations);
       // With the orientations kept: the same answer, bit for bit.
-      const SolverReport posed = distance_ellipse_ellipse(ea, Orientation::of(ea.angle), eb, Orientation::of(eb.angle));
+      const detail::SolverReport posed =
+          detail::robust_distance_ellipse_ellipse(ea, Orientation::of(ea.angle), eb, Orientation::of(eb.angle));
       EXPECT_EQ(posed.result.distance, robust.result.distance) << what << " posed distance";
       EXPECT_EQ(posed.result.point_a, robust.result.point_a) << what << " posed point a";
       EXPECT_EQ(posed.result.point_b, robust.result.point_b) << what << " posed point b";

@@ -5,7 +5,8 @@
 #include "batch_testing.h"
 #include "hard_cases.h"
 
-#include <collide2d/contact.h>
+#include <collide2d/batch.h>
+#include <collide2d/kernels.h>
 
 #include <gtest/gtest.h>
 

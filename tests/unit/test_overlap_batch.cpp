@@ -9,9 +9,8 @@
 
 #include "narrowphase/batch/lanes.h"
 #include <collide2d/batch.h>
-#include "narrowphase/overlap/overlap_circle_circle.h"
+#include <collide2d/kernels.h>
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
-#include "narrowphase/overlap/overlap_rect_rect.h"
 #include <collide2d/query.h>
 
 #include <gtest/gtest.h>
@@ -90,7 +89,7 @@ TEST(OverlapBatch, HardCaseFamiliesMatchTheOneOffKernel) {
   }
   int uncertain = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    uncertain += overlap_rect_ellipse_filter(p.a[k], p.b[k]) == FilterVerdict::uncertain;
+    uncertain += detail::overlap_rect_ellipse_filter(p.a[k], p.b[k]) == detail::FilterVerdict::uncertain;
   }
   std::printf("%zu hard-case pairs, %d of them uncertain for the filter\n", p.size(), uncertain);
   EXPECT_GT(uncertain, 500) << "the families must send pairs to the fallback";

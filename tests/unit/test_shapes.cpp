@@ -3,7 +3,7 @@
 #include <collide2d/shapes.h>
 
 #include "mp_reference.h"
-#include "shapes/quick_orientation.h"
+#include "narrowphase/toi/quick_orientation.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // The World against an all-pairs narrow phase over many frames, its queries against brute force,
 // and its refusal of bad input.
 #include "engine/thread_pool.h"
+#include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 #include <collide2d/ray_cast.h>
 #include "mp_reference.h"

@@ -1,0 +1,25 @@
+// Sensors: a sensor reports the solid bodies that overlap it, in lists of its own, and is otherwise
+// not solid. It never appears in the solid pairs, proximity, contacts, impacts or queries, and
+// sensors do not sense each other (Box2D v3's rules); filters apply to sensor pairs too.
+#include "engine/world_state.h"
+
+#include "broadphase/internal.h"
+
+#include <algorithm>
+
+namespace collide2d::detail {
+
+void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
+  if (touching) out.sensing.push_back(bodies_[a].sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
+}
+
+// The first `chunks` chunks' sensor pairs joined in chunk order and sorted, and what entered and
+// left.
+void WorldState::update_sensing(std::size_t chunks) {
+  sensed_.clear();
+  for (std::size_t k = 0; k < chunks; ++k) sensed_.insert(sensed_.end(), chunks_[k].sensing.begin(), chunks_[k].sensing.end());
+  std::sort(sensed_.begin(), sensed_.end());
+  replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
+}
+
+}  // namespace collide2d::detail

@@ -1,0 +1,255 @@
+// The World's update: the broad phase (the sweep and prune of the moving bodies, and each moving
+// body's static neighbours), then the narrow phase over the candidate pairs in chunks, each chunk's
+// overlap tests batched by pair kind, on the thread pool.
+#include "engine/world_state.h"
+
+#include "broadphase/internal.h"
+#include "narrowphase/internal.h"
+
+#include <collide2d/kernels.h>
+
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace collide2d::detail {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A tree with a quarter or more of its leaves inserted since its last rebuild.
+bool fresh(const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted_since_rebuild() >= tree.size(); }
+
+}  // namespace
+
+// The moving bodies' tree catches up: each loose body's leaf takes its fat box (its ancestors
+// refitted), and the tree is rebuilt when a quarter of it is new since its last rebuild or its inner
+// perimeters have grown 1.5 times since. It runs alongside the narrow phase, which does not use it.
+void WorldState::refresh_moving_tree() {
+  tree_boxes_.clear();
+  for (const std::uint32_t index : loose_) {
+    Body& b = bodies_[index];
+    tree_boxes_.emplace_back(b.leaf, broad_.fat_box(b.proxy));
+    b.loose = -1;
+  }
+  moving_tree_.set_boxes(tree_boxes_);
+  const bool moved = !loose_.empty();
+  loose_.clear();
+  const bool worn = moved && moving_tree_.size() >= 64 && moving_tree_.inner_perimeter() > 1.5 * moving_perimeter_;
+  if (fresh(moving_tree_) || worn) {
+    moving_tree_.rebuild();
+    moving_perimeter_ = moving_tree_.inner_perimeter();
+  }
+}
+
+// The pairs of moving bodies from the sweep and prune, and each moving body's pairs with the static
+// bodies it keeps, looked up again where its fat box or the statics changed.
+void WorldState::find_candidates() {
+  // A few thousand moving bodies sort and sweep in less time than waking the pool takes.
+  constexpr std::size_t kParallelBodies = 4096;
+  broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) {
+    if (broad_.size() < kParallelBodies) {
+      for (std::size_t k = 0; k < count; ++k) task(k);
+    } else {
+      pool_->run(count, task);
+    }
+  });
+  if (fresh(static_tree_)) static_tree_.rebuild();
+  candidates_.clear();
+  const auto ordered = [](std::uint32_t a, std::uint32_t b) { return a < b ? std::pair(a, b) : std::pair(b, a); };
+  for (const ProxyPair& p : broad_.pairs()) candidates_.push_back(ordered(body_of_[p.a], body_of_[p.b]));
+  const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every body's list is empty
+  for (ProxyId proxy = 0; statics && proxy < body_of_.size(); ++proxy) {
+    const std::uint32_t index = body_of_[proxy];
+    if (index == kNoBody) continue;
+    Body& b = bodies_[index];
+    const Aabb& fat = broad_.fat_box(proxy);
+    if (statics_changed_ || !encloses(b.queried, fat)) {
+      // Looked up around the fat box, half its larger side further, so that the next few frames'
+      // fat boxes stay within it and need no look-up: the statics kept are a superset, and the test
+      // below keeps those the fat box meets.
+      b.queried = grown(fat, 0.5 * (fat.max - fat.min).maxCoeff());
+      b.statics.clear();
+      static_tree_.query(b.queried, [&](std::uint32_t s) {
+        if (intersects(broad_box(bodies_[s]), b.queried)) b.statics.push_back(s);
+      });
+      ++stats_.requeried;
+    }
+    for (const std::uint32_t s : b.statics) {
+      if (intersects(broad_box(bodies_[s]), fat)) candidates_.push_back(ordered(index, s));
+    }
+  }
+  statics_changed_ = false;
+}
+
+void WorldState::Found::clear() {
+  overlapping.clear();
+  sensing.clear();
+  proximity.clear();
+  contacts.clear();
+  impacts.clear();
+  filtered = 0;
+  verdicts.clear();
+  std::apply([](auto&... batch) { (batch.clear(), ...); }, batches);
+}
+
+template <class A, class B>
+void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_body, std::uint32_t b_body) {
+  if (places.capacity() < kPairsPerChunk) {
+    places.reserve(kPairsPerChunk);
+    a.reserve(kPairsPerChunk);
+    b.reserve(kPairsPerChunk);
+    verdicts.reserve(kPairsPerChunk);
+  }
+  places.push_back(place);
+  a.push_back(a_body);
+  b.push_back(b_body);
+}
+
+template <class A, class B>
+void WorldState::Batch<A, B>::run(const std::vector<Body>& bodies, std::vector<Verdict>& chunk_verdicts) {
+  verdicts.resize(places.size());
+  overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        const Body& x = bodies[a[k]];
+        const Body& y = bodies[b[k]];
+        return PairRef<A, B>{std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
+      },
+      verdicts);
+  for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
+}
+
+template <class A, class B>
+void WorldState::Batch<A, B>::clear() {
+  places.clear();
+  a.clear();
+  b.clear();
+}
+
+void WorldState::update() {
+  const auto start = std::chrono::steady_clock::now();
+  stats_ = {};
+  find_candidates();
+  stats_.broad_seconds = seconds_since(start);
+  const auto narrow_start = std::chrono::steady_clock::now();
+  narrow_phase();
+  begin_steps();
+  stats_.narrow_seconds = seconds_since(narrow_start);
+  stats_.candidates = candidates_.size();
+  stats_.overlapping = overlapping_.size();
+  stats_.proximity = proximity_.size();
+  stats_.contacts = contacts_.size();
+  stats_.impacts = impacts_.size();
+  stats_.sensing = sensing_.size();
+}
+
+// The candidate pairs in chunks, in order, on the pool with the moving tree's refresh beside them;
+// then each result list joined in chunk order and sorted by pair, which makes it the same for any
+// thread count.
+void WorldState::narrow_phase() {
+  const std::size_t chunks = std::max<std::size_t>(1, (candidates_.size() + kPairsPerChunk - 1) / kPairsPerChunk);
+  if (chunks_.size() < chunks) chunks_.resize(chunks);
+  const auto task = [this](std::size_t task) {
+    if (task == 0) {  // the longest task, so first
+      refresh_moving_tree();
+      return;
+    }
+    const std::size_t k = task - 1;
+    narrow_chunk(k * kPairsPerChunk, std::min(candidates_.size(), (k + 1) * kPairsPerChunk), chunks_[k]);
+  };
+  if (chunks < 4) {  // a thousand pairs take less time than waking the pool
+    for (std::size_t k = 0; k <= chunks; ++k) task(k);
+  } else {
+    pool_->run(chunks + 1, task);
+  }
+  now_.clear();
+  proximity_.clear();
+  contacts_.clear();
+  impacts_.clear();
+  for (std::size_t k = 0; k < chunks; ++k) {
+    const Found& f = chunks_[k];
+    now_.insert(now_.end(), f.overlapping.begin(), f.overlapping.end());
+    proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
+    contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
+    impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
+    stats_.filtered += f.filtered;
+  }
+  const auto by_pair = [](const auto& p, const auto& q) { return std::tie(p.a, p.b) < std::tie(q.a, q.b); };
+  std::sort(now_.begin(), now_.end());
+  std::sort(proximity_.begin(), proximity_.end(), by_pair);
+  std::sort(contacts_.begin(), contacts_.end(), by_pair);
+  std::sort(impacts_.begin(), impacts_.end(), by_pair);
+  replace_pairs(overlapping_, now_, began_, ended_);
+  update_sensing(chunks);
+}
+
+// The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
+// (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results in order.
+void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
+  out.clear();
+  for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
+  std::apply([&](auto&... batch) { (batch.run(bodies_, out.verdicts), ...); }, out.batches);
+  for (std::size_t i = begin; i < end; ++i) {
+    const Verdict v = out.verdicts[i - begin];
+    if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
+  }
+}
+
+// A pair dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
+// batch of its kind, in kernel order.
+WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
+  if (!passes(a, b)) {
+    ++out.filtered;
+    return Verdict::skipped;
+  }
+  const Body& x = bodies_[a];
+  const Body& y = bodies_[b];
+  if (x.sensor && y.sensor) return Verdict::skipped;
+  if (!intersects(x.box, y.box)) return Verdict::apart;
+  const auto place = static_cast<std::uint32_t>(out.verdicts.size());
+  return std::visit(
+      [&](const auto& xs, const auto& ys) {
+        using X = std::decay_t<decltype(xs)>;
+        using Y = std::decay_t<decltype(ys)>;
+        if constexpr (rank<X>() <= rank<Y>()) {
+          std::get<Batch<X, Y>>(out.batches).add(place, a, b);
+          return Verdict::batched;
+        } else {
+          std::get<Batch<Y, X>>(out.batches).add(place, b, a);
+          return Verdict::batched;
+        }
+      },
+      x.shape, y.shape);
+}
+
+// One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
+// solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
+void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
+  const Body& x = bodies_[a];
+  const Body& y = bodies_[b];
+  if (x.sensor || y.sensor) {
+    sense(a, b, touching, out);
+    return;
+  }
+  const ContactOptions manifold{.margin = speculative_margin_};
+  if (x.continuous || y.continuous) impact(a, b, out);
+  if (touching) {
+    out.overlapping.push_back({id_of(a), id_of(b)});
+    if (contacts_on_) out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
+    return;
+  }
+  if (proximity_margin_ > 0.0) {
+    const DistanceResult d = distance(x.shape, y.shape);
+    if (!d.overlapping && d.distance <= proximity_margin_) out.proximity.push_back({id_of(a), id_of(b), d});
+  }
+  if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
+    const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
+    if (c.separation <= speculative_margin_) out.contacts.push_back({id_of(a), id_of(b), c});
+  }
+}
+
+}  // namespace collide2d::detail

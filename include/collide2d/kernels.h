@@ -1,0 +1,78 @@
+/// @file
+/// The typed kernels, for callers who know their shapes' kinds or keep their orientations: a broad
+/// phase of their own, a solver, a game's own loop. They are what query.h dispatches to, and what
+/// the World runs.
+///
+/// Contract: the shapes must be valid (validate() in shapes.h); the kernels do not check. Each takes
+/// its pair in kernel order, a rectangle before a circle before an ellipse; two shapes of one kind
+/// in either order (the dispatch of query.h fixes one, so that it is symmetric bit for bit). A
+/// kernel that takes Orientations skips the sines and cosines: each must be Orientation::of(angle)
+/// of its shape, and the result is the plain kernel's bit for bit. docs/algorithms.md gives each
+/// kernel's method and source, docs/accuracy.md the bounds the tests assert.
+#pragma once
+
+#include <collide2d/query.h>
+#include <collide2d/shapes.h>
+
+namespace collide2d {
+
+/// overlaps(a, b) with each shape's kept orientation: the same verdict bit for bit, with no
+/// validation and no sines and cosines (but in the ellipse pair's long-double fallback, for a pair
+/// within about 1e-14 of touching).
+bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation);
+/// contact(a, b, options) with each shape's kept orientation: the same contact bit for bit, with no
+/// validation and no sines and cosines.
+Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
+                const ContactOptions& options = {});
+
+/// Overlap of two rectangles by separating axes (their four face normals), in A's frame.
+bool overlap_rect_rect(const Rect& a, const Rect& b);
+bool overlap_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b, const Orientation& b_orientation);
+/// Overlap of a rectangle and a circle: the centre clamped to the box, in the box's frame.
+bool overlap_rect_circle(const Rect& r, const Circle& c);
+bool overlap_rect_circle(const Rect& r, const Orientation& r_orientation, const Circle& c);
+/// Overlap of a rectangle and an ellipse: the ellipse centre against the Minkowski sum, decided in
+/// double where its margins clear their rounding bounds, else in long double.
+bool overlap_rect_ellipse(const Rect& r, const Ellipse& e);
+bool overlap_rect_ellipse(const Rect& r, const Orientation& r_orientation, const Ellipse& e,
+                          const Orientation& e_orientation);
+/// Overlap of two circles: the centres' distance against the radii.
+bool overlap_circle_circle(const Circle& a, const Circle& b);
+/// Overlap of a circle and an ellipse: the centre's distance to the ellipse against the radius.
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e);
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation& e_orientation);
+/// Overlap of two ellipses: the pencil's characteristic cubic where its signs clear their error
+/// bounds, else GJK on the exact support functions, in long double near touching.
+bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation);
+
+/// Distances with closest points (DistanceResult), one kernel per pair.
+DistanceResult distance_rect_rect(const Rect& a, const Rect& b);
+DistanceResult distance_rect_circle(const Rect& r, const Circle& c);
+DistanceResult distance_rect_ellipse(const Rect& r, const Ellipse& e);
+DistanceResult distance_circle_circle(const Circle& a, const Circle& b);
+DistanceResult distance_circle_ellipse(const Circle& c, const Ellipse& e);
+DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                        const Orientation& b_orientation);
+/// The gap between two ellipse curves (boundary_distance() in query.h).
+DistanceResult boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+
+/// Contacts (Contact in query.h), one kernel per pair.
+Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options = {});
+Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                          const Orientation& b_orientation, const ContactOptions& options = {});
+Contact contact_rect_circle(const Rect& a, const Circle& b);
+Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b);
+Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptions& options = {});
+Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
+                             const Orientation& b_orientation, const ContactOptions& options = {});
+Contact contact_circle_circle(const Circle& a, const Circle& b);
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b);
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation);
+Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b, const ContactOptions& options = {});
+Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                                const Orientation& b_orientation, const ContactOptions& options = {});
+
+}  // namespace collide2d

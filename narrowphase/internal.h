@@ -1,0 +1,7 @@
+// The narrow phase module's interface to the rest of the library (not installed): the batched
+// overlap tests over pairs given by reference, as the World holds its bodies, and the order in which
+// kernels take their shapes.
+#pragma once
+
+#include "narrowphase/batch/overlap_pairs.h"
+#include "narrowphase/kernel_order.h"
