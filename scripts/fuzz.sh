@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (AddressSanitizer and UndefinedBehaviorSanitizer on) and
 # runs each of the six on its corpus in tests/fuzz/corpus for FUZZ_SECONDS seconds (default 10). New
-# inputs stay in a scratch copy of the corpus; a failing input is written to build-fuzz/ and fails
-# the script. A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
+# inputs stay in a scratch copy of the corpus. The script fails when a fuzzer exits with an error
+# (a failed property, a sanitizer finding, a crash, a timeout), writes a failing input to
+# build-fuzz/, or runs no input at all. A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -15,13 +16,18 @@ cmake --build "$build" -j "$(nproc)" --target $(printf 'fuzz_%s ' $names)
 rm -f "$build"/crash-* "$build"/timeout-* "$build"/leak-* "$build"/oom-*
 for name in $names; do
   scratch="$build/corpus-$name"
+  log="$build/fuzz_$name.log"
   rm -rf "$scratch" && mkdir -p "$scratch" && cp "$root/tests/fuzz/corpus/$name"/* "$scratch"/
   echo "fuzz_$name: ${seconds} s"
-  (cd "$build" && "./tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 "$scratch" 2>&1 |
-    grep -E '^stat::number_of_executed_units|^SUMMARY|property failed') || true
+  status=0
+  (cd "$build" && "./tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -print_final_stats=1 "$scratch" \
+    > "$log" 2>&1) || status=$?
+  grep -E '^stat::number_of_executed_units|^SUMMARY|property failed' "$log" || true
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   failures=$(find "$build" -maxdepth 1 \( -name 'crash-*' -o -name 'timeout-*' -o -name 'leak-*' -o -name 'oom-*' \))
-  if [ -n "$failures" ]; then
-    echo "fuzz_$name found a failing input: $failures" >&2
+  if [ "$status" -ne 0 ] || [ -n "$failures" ] || [ -z "$runs" ] || [ "$runs" -eq 0 ]; then
+    echo "fuzz_$name failed (exit status $status, ${runs:-no} inputs run${failures:+, failing input: $failures}); its log: $log" >&2
+    tail -n 20 "$log" >&2
     exit 1
   fi
 done

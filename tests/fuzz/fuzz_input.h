@@ -6,9 +6,10 @@
 #include <collide2d/shapes.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 
 namespace collide2d::fuzz {
 
@@ -25,11 +26,9 @@ class Input {
   // a tame value from one byte (-8 ... 8 in steps) so that shapes often meet.
   double number() {
     if (byte() & 1) {
-      double x = 0;
-      std::uint8_t raw[8] = {};
+      std::array<std::uint8_t, 8> raw{};
       for (std::uint8_t& b : raw) b = byte();
-      std::memcpy(&x, raw, sizeof x);
-      return x;
+      return std::bit_cast<double>(raw);
     }
     return (static_cast<int>(byte()) - 128) / 16.0;
   }

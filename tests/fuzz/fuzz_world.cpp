@@ -9,6 +9,7 @@
 // where the boxes over the step meet, and none that time_of_impact does not find. (Where they do
 // not meet the shapes can still come within the tolerance, which grows with the coordinates: 5e3 at
 // 3e18; the World never pairs them, as with a proximity pair culled by its boxes.)
+#include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 #include "fuzz_input.h"
 #include <collide2d/ray_cast.h>
