@@ -115,12 +115,14 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
     const double major = std::max(e->a, e->b), minor = std::min(e->a, e->b);
     out.pieces[0] = {0.0, w * turn(q / support_in_axes(s, local)), w * w * (major * major / minor - minor)};
   } else if (const auto* r = std::get_if<Rect>(&s)) {
-    // The support corner first: its pieces decide most steps.
-    const Vec2 p(std::copysign(r->half_extents.x(), local.x()), std::copysign(r->half_extents.y(), local.y()));
-    const std::array<Vec2, 4> corners{p, Vec2(-p.x(), p.y()), Vec2(p.x(), -p.y()), Vec2(-p)};
-    const double top = local.dot(p);
+    // The support corner first: its pieces decide most steps. The corners' dot products are written
+    // out in doubles, which compile to shorter code than arrays of Eigen 2-vectors.
+    const double lx = local.x(), ly = local.y();
+    const double px = std::copysign(r->half_extents.x(), lx), py = std::copysign(r->half_extents.y(), ly);
+    const double cx[4] = {px, -px, px, -px}, cy[4] = {py, py, -py, -py};
+    const double top = lx * px + ly * py;
     for (std::size_t i = 0; i < 4; ++i) {
-      const double along = local.dot(corners[i]), across = turn(corners[i]);
+      const double along = lx * cx[i] + ly * cy[i], across = ly * cx[i] - lx * cy[i];
       out.pieces[i] = {top - along, w * across, w * w * (std::abs(along) + std::abs(across))};
     }
     out.count = 4;

@@ -6,7 +6,6 @@
 #include <collide2d/shapes.h>
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -26,9 +25,9 @@ class Input {
   // a tame value from one byte (-8 ... 8 in steps) so that shapes often meet.
   double number() {
     if (byte() & 1) {
-      std::array<std::uint8_t, 8> raw{};
-      for (std::uint8_t& b : raw) b = byte();
-      return std::bit_cast<double>(raw);
+      std::uint64_t bits = 0;  // little-endian, as the corpora were written
+      for (int k = 0; k < 8; ++k) bits |= std::uint64_t{byte()} << (8 * k);
+      return std::bit_cast<double>(bits);
     }
     return (static_cast<int>(byte()) - 128) / 16.0;
   }
