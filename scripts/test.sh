@@ -10,12 +10,12 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 
-# The sanitizer build (no benchmarks; the packaging test builds an uninstrumented consumer against
+# The sanitizer build (no benchmarks; the packaging tests build uninstrumented consumers against
 # the instrumented library, which cannot link, so it runs in the normal build only).
 sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
 cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_SANITIZE=ON -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
 cmake --build "$sanitize" -j "$(nproc)"
-ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -E package_consumer
+ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -LE package
 
 # A short fuzz run: a minute in all.
 FUZZ_SECONDS=${FUZZ_SECONDS:-10} bash "$root/scripts/fuzz.sh"
