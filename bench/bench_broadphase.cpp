@@ -1,7 +1,7 @@
 // Broad phase: one frame, every box moved and then one update, for n boxes in a uniform scene (8% of
 // the arena covered, speeds up to 0.2 box sizes per frame, boxes bouncing off the walls).
-#include "bench/box2d_baseline.h"
 #include <collide2d/broad_phase.h>
+#include "bench/box2d_baseline.h"
 
 #include <benchmark/benchmark.h>
 
@@ -40,7 +40,8 @@ struct MovingBoxes {
     for (std::size_t k = 0; k < centre.size(); ++k) {
       centre[k] += velocity[k];
       for (int a = 0; a < 2; ++a) {
-        if ((centre[k][a] < 0 && velocity[k][a] < 0) || (centre[k][a] > side && velocity[k][a] > 0)) velocity[k][a] *= -1;
+        if ((centre[k][a] < 0 && velocity[k][a] < 0) || (centre[k][a] > side && velocity[k][a] > 0))
+          velocity[k][a] *= -1;
       }
     }
   }

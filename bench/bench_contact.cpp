@@ -1,10 +1,10 @@
 // Contact kernels against Box2D 2.4.1's manifold functions on two workloads, named by the argument:
 // candidates:1, candidate pairs (boxes overlap, as a broad phase hands them over), and
-// candidates:0, the random pairs of bench_narrowphase (most far apart; bench/workload.h): b2CollidePolygons on the rectangles' 4-gons and on
-// the ellipses' inscribed 8-gons, b2CollidePolygonAndCircle, b2CollideCircles. Debian's Box2D caps
-// polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt
-// with a cap of 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with
-// radius 0, so its manifold is empty for pairs apart while ours carries their exact distance.
+// candidates:0, the random pairs of bench_narrowphase (most far apart; bench/workload.h): b2CollidePolygons on the
+// rectangles' 4-gons and on the ellipses' inscribed 8-gons, b2CollidePolygonAndCircle, b2CollideCircles. Debian's Box2D
+// caps polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt with a cap of
+// 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with radius 0, so its
+// manifold is empty for pairs apart while ours carries their exact distance.
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 
@@ -44,7 +44,6 @@ Contact kernel(const Circle& a, const Orientation&, const Ellipse& b, const Orie
 Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const Orientation& ob) {
   return contact_ellipse_ellipse(a, oa, b, ob);
 }
-
 
 template <class A, class B>
 void ours(benchmark::State& state) {
@@ -98,13 +97,17 @@ BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon"
 BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::workloads);
 BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::workloads);
 BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::workloads);
-BENCHMARK(box2d<Circle, Ellipse>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(box2d<Circle, Ellipse>)
+    ->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")
+    ->Apply(bench::workloads);
 BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::workloads);
 BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::workloads);
 BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::workloads);
 #if b2_maxPolygonVertices >= 16
 BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::workloads);
-BENCHMARK(box2d<Circle, Ellipse, 16>)->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")->Apply(bench::workloads);
+BENCHMARK(box2d<Circle, Ellipse, 16>)
+    ->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")
+    ->Apply(bench::workloads);
 BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::workloads);
 #endif
 

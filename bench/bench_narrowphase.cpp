@@ -26,7 +26,6 @@ namespace {
 using bench::kPairs;
 using bench::Workload;
 
-
 // Times one typed kernel; kernels live in the library, so the call is out of line either way.
 template <class A, class B, class Result>
 void kernel(benchmark::State& state, Result (*fn)(const A&, const B&)) {
@@ -91,10 +90,12 @@ BENCHMARK_CAPTURE(kernel, dispatch_overlaps_rect_ellipse, &dispatch)->Apply(benc
 BENCHMARK_CAPTURE(kernel, overlap_ellipse_ellipse, &overlap_ellipse_ellipse)->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_robust, &robust_distance)->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_gradient, &baseline_distance<kGradient>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &baseline_distance<kPolynomial>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, distance_ellipse_ellipse_polynomial, &baseline_distance<kPolynomial>)
+    ->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_robust, &robust_boundary)->Apply(bench::workloads);
 BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_gradient, &baseline_boundary<kGradient>)->Apply(bench::workloads);
-BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &baseline_boundary<kPolynomial>)->Apply(bench::workloads);
+BENCHMARK_CAPTURE(kernel, boundary_ellipse_ellipse_polynomial, &baseline_boundary<kPolynomial>)
+    ->Apply(bench::workloads);
 
 // Box2D on the same pairs, converted beforehand (the conversion is not timed, and each pair's
 // transforms are the identity: its coordinates are taken from A's centre): b2TestOverlap on

@@ -11,9 +11,9 @@
 // body the ray meets, exact), and ray_cast() (the first hit, where a near hit prunes the rest), in a
 // World whose bodies are all static (their tree rebuilt, boxes not fattened) or all moving (fat
 // margin 0.1, the tree as motion leaves it, below).
-#include "bench/box2d_baseline.h"
 #include <collide2d/aabb_tree.h>
 #include <collide2d/world.h>
+#include "bench/box2d_baseline.h"
 
 #include <benchmark/benchmark.h>
 #include <box2d/b2_dynamic_tree.h>
@@ -45,9 +45,14 @@ struct Scene {
       const Vec2 c(u(rng) * side, u(rng) * side);
       const double half = 0.3 + 1.7 * u(rng), angle = 2 * M_PI * u(rng);
       switch (k % 3) {
-        case 0: shapes.push_back(Circle{c, half}); break;
-        case 1: shapes.push_back(Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle}); break;
-        default: shapes.push_back(Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle});
+        case 0:
+          shapes.push_back(Circle{c, half});
+          break;
+        case 1:
+          shapes.push_back(Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle});
+          break;
+        default:
+          shapes.push_back(Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle});
       }
       const Aabb box = aabb(shapes.back());
       boxes.push_back({box.min.array() - 0.1, box.max.array() + 0.1});

@@ -16,8 +16,8 @@
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include <collide2d/world.h>
-#include "tools/scene/scene_run.h"
 #include "tools/scene/scene.h"
+#include "tools/scene/scene_run.h"
 
 #include "bench/box2d_baseline.h"
 #include "tests/support/allocation_counter.h"
@@ -41,9 +41,12 @@ Shape random_shape(std::mt19937_64& rng, const Vec2& c) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double half = 0.3 + 1.7 * u(rng), angle = 2 * M_PI * u(rng);
   switch (rng() % 3) {
-    case 0: return Circle{c, half};
-    case 1: return Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle};
-    default: return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle};
+    case 0:
+      return Circle{c, half};
+    case 1:
+      return Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle};
+    default:
+      return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle};
   }
 }
 
@@ -135,7 +138,8 @@ void frame(benchmark::State& state) {
   for (const Shape& shape : movers.shapes) ids.push_back(world.add(shape));
   world.update();
   const std::size_t bench_lists = movers.heap() + ids.capacity() * sizeof(BodyId);
-  state.counters["heap_B_per_body"] = static_cast<double>(heap_in_use() - heap_before - bench_lists) / (moving + statics);
+  state.counters["heap_B_per_body"] =
+      static_cast<double>(heap_in_use() - heap_before - bench_lists) / (moving + statics);
   const auto step = [&] {
     movers.step(rng);
     for (int k = 0; k < moving; ++k) world.set_pose(ids[k], movers.centre[k], movers.angle[k]);
@@ -150,7 +154,8 @@ void frame(benchmark::State& state) {
     totals.add(world.last_frame());
   }
   const double frames = static_cast<double>(state.iterations());
-  state.counters["allocs_per_frame"] = static_cast<double>(testing::allocation_count.load() - allocations_before) / frames;
+  state.counters["allocs_per_frame"] =
+      static_cast<double>(testing::allocation_count.load() - allocations_before) / frames;
   totals.report(state);
 }
 
@@ -165,7 +170,8 @@ class Box2dWorld {
  public:
   // With filters, a pair passes them (should_pair, Box2D's b2ContactFilter rule) before its test,
   // as b2ContactManager::AddPair asks ShouldCollide before it makes a contact.
-  explicit Box2dWorld(const std::vector<Shape>& shapes, std::vector<Filter> filters = {}) : filters_(std::move(filters)) {
+  explicit Box2dWorld(const std::vector<Shape>& shapes, std::vector<Filter> filters = {})
+      : filters_(std::move(filters)) {
     std::vector<Aabb> boxes;
     for (const Shape& shape : shapes) {
       const Shape local = std::visit(
@@ -182,7 +188,8 @@ class Box2dWorld {
     broad_.insert_batch(boxes);
   }
   void set_pose(std::size_t k, const Vec2& centre, double angle) {
-    transforms_[k].Set(b2Vec2(static_cast<float>(centre.x()), static_cast<float>(centre.y())), static_cast<float>(angle));
+    transforms_[k].Set(b2Vec2(static_cast<float>(centre.x()), static_cast<float>(centre.y())),
+                       static_cast<float>(angle));
     b2AABB box;
     shapes_[k].shape()->ComputeAABB(&box, transforms_[k], 0);
     broad_.move(static_cast<std::uint32_t>(k), box);
@@ -193,7 +200,8 @@ class Box2dWorld {
     for (const std::uint64_t key : broad_.pairs()) {
       const std::size_t a = key >> 32, b = key & 0xffffffffu;
       if (!filters_.empty() && !should_pair(filters_[a], filters_[b])) continue;
-      overlapping += b2TestOverlap(shapes_[a].shape(), 0, shapes_[b].shape(), 0, transforms_[a], transforms_[b]) ? 1 : 0;
+      overlapping +=
+          b2TestOverlap(shapes_[a].shape(), 0, shapes_[b].shape(), 0, transforms_[a], transforms_[b]) ? 1 : 0;
     }
     return overlapping;
   }
@@ -287,10 +295,26 @@ void box2d_scene_frame(benchmark::State& state) {
 
 // Args: the level's size (for "alone", the number of moving bodies), then the World's threads.
 BENCHMARK(frame<Level::none>)->Name("frame/alone")->Args({1000, 0})->Unit(benchmark::kMicrosecond);
-BENCHMARK(frame<Level::none, true>)->Name("frame/alone_contacts")->Args({1000, 1})->Args({10000, 1})->Unit(benchmark::kMicrosecond);
-BENCHMARK(frame<Level::static_bodies>)->Name("frame/level")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
-BENCHMARK(frame<Level::static_apart>)->Name("frame/level_apart")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
-BENCHMARK(frame<Level::moving_bodies>)->Name("frame/level_moving")->Args({10000, 0})->Args({100000, 0})->Unit(benchmark::kMicrosecond);
+BENCHMARK(frame<Level::none, true>)
+    ->Name("frame/alone_contacts")
+    ->Args({1000, 1})
+    ->Args({10000, 1})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(frame<Level::static_bodies>)
+    ->Name("frame/level")
+    ->Args({10000, 0})
+    ->Args({100000, 0})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(frame<Level::static_apart>)
+    ->Name("frame/level_apart")
+    ->Args({10000, 0})
+    ->Args({100000, 0})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(frame<Level::moving_bodies>)
+    ->Name("frame/level_moving")
+    ->Args({10000, 0})
+    ->Args({100000, 0})
+    ->Unit(benchmark::kMicrosecond);
 // The narrow phase on 1 and 2 threads: 100,000 moving bodies (their square 8% covered).
 BENCHMARK(frame<Level::none>)->Name("frame/crowd")->Args({100000, 1})->Args({100000, 2})->Unit(benchmark::kMillisecond);
 BENCHMARK(box2d_frame)->Name("box2d_frame/alone")->Arg(1000)->Unit(benchmark::kMicrosecond);

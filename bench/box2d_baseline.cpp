@@ -43,7 +43,8 @@ b2AABB to_box2d(const Aabb& box) {
 
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
   if (const auto* e = std::get_if<Ellipse>(&shape)) return ellipse_polygon(*e, sides, fit, origin);
-  if (const auto* c = std::get_if<Circle>(&shape)) return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
+  if (const auto* c = std::get_if<Circle>(&shape))
+    return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
   const auto& r = std::get<Rect>(shape);
   Polygon p;
   for (const Vec2& corner : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {
@@ -180,7 +181,8 @@ void Box2dBroadPhase::move(std::uint32_t id, const b2AABB& box) {
 
 void Box2dBroadPhase::update() {
   tree_.UpdatePairs(this);
-  std::erase_if(pairs_, [this](std::uint64_t key) { return !tree_.TestOverlap(proxy_[key >> 32], proxy_[key & 0xffffffffu]); });
+  std::erase_if(pairs_,
+                [this](std::uint64_t key) { return !tree_.TestOverlap(proxy_[key >> 32], proxy_[key & 0xffffffffu]); });
 }
 
 void Box2dBroadPhase::AddPair(void* a, void* b) {

@@ -10,8 +10,8 @@
 // shape radii; the polygons built here have radius 0, so overlap means the polygons themselves meet.
 #pragma once
 
-#include <collide2d/time_of_impact.h>
 #include <collide2d/shapes.h>
+#include <collide2d/time_of_impact.h>
 
 #include <box2d/b2_broad_phase.h>
 #include <box2d/b2_circle_shape.h>

@@ -1,8 +1,8 @@
 #include "bench/report.h"
 
+#include <collide2d/kernels.h>
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
-#include <collide2d/kernels.h>
 
 #include "narrowphase/baselines/baselines.h"
 
@@ -101,7 +101,9 @@ std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) 
       [](const Ellipse& a, const Ellipse& b) {
         return contact_ellipse_ellipse(a, b).separation < -0.02 * std::max({a.a, a.b, b.a, b.b});
       },
-      [](const Ellipse& a, const Ellipse& b) { return static_cast<double>(reference::signed_distance(a, b).separation); });
+      [](const Ellipse& a, const Ellipse& b) {
+        return static_cast<double>(reference::signed_distance(a, b).separation);
+      });
   std::vector<MethodResult> out;
   out.push_back(measure(w, options.repetitions, "collide2d contact", 0,
                         [&w](std::size_t k) { return contact_ellipse_ellipse(w.a[k], w.b[k]).separation; }));
@@ -153,7 +155,8 @@ void write_report_svg(const std::vector<MethodResult>& results, std::ostream& ou
   };
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << kLeft << "\" y=\"24\" font-size=\"15\">collide2d ellipse-ellipse distance: time per query "
+      << "<text x=\"" << kLeft
+      << "\" y=\"24\" font-size=\"15\">collide2d ellipse-ellipse distance: time per query "
          "against error</text>\n";
   for (double k = x0; k <= x1; ++k) {
     const double x = px(std::pow(10.0, k));
@@ -171,7 +174,8 @@ void write_report_svg(const std::vector<MethodResult>& results, std::ostream& ou
       << kHeight - kTop - kBottom << "\" fill=\"none\" stroke=\"#333\"/>\n"
       << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"" << kHeight - 18
       << "\" text-anchor=\"middle\">time per query (ns, log)</text>\n"
-      << "<text transform=\"rotate(-90)\" x=\"" << -(kTop + kHeight - kBottom) / 2 << "\" y=\"24\" text-anchor=\"middle\">"
+      << "<text transform=\"rotate(-90)\" x=\"" << -(kTop + kHeight - kBottom) / 2
+      << "\" y=\"24\" text-anchor=\"middle\">"
       << "median error / scale (log; max as a bar)</text>\n";
   const char* colours[] = {"#c0392b", "#8e44ad", "#d68910", "#2471a3", "#17a589"};
   std::vector<std::string> names;
@@ -186,8 +190,10 @@ void write_report_svg(const std::vector<MethodResult>& results, std::ostream& ou
       const double x = px(r.nanoseconds), y = py(r.median_error), top = py(r.max_error);
       curve += std::to_string(x) + "," + std::to_string(y) + " ";
       out << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x << "\" y2=\"" << top << "\" stroke=\"" << colour
-          << "\" stroke-opacity=\"0.5\"/>\n<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"" << colour << "\"/>\n";
-      if (r.sides) out << "<text x=\"" << x + 5 << "\" y=\"" << y - 5 << "\" font-size=\"10\">" << r.sides << "</text>\n";
+          << "\" stroke-opacity=\"0.5\"/>\n<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"" << colour
+          << "\"/>\n";
+      if (r.sides)
+        out << "<text x=\"" << x + 5 << "\" y=\"" << y - 5 << "\" font-size=\"10\">" << r.sides << "</text>\n";
     }
     out << "<polyline points=\"" << curve << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
     const double ly = kTop + 20 + 22.0 * m;

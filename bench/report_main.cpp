@@ -34,12 +34,12 @@ int report(int argc, char** argv) {
     }
   }
   const auto results = collide2d::report::measure_methods(options);
-  collide2d::report::print_report(results, "ellipse-ellipse distance, " + std::to_string(options.pairs) + " separated pairs",
-                                  options, std::cout);
+  collide2d::report::print_report(
+      results, "ellipse-ellipse distance, " + std::to_string(options.pairs) + " separated pairs", options, std::cout);
   std::cout << '\n';
-  collide2d::report::print_report(collide2d::report::measure_contact_methods(options),
-                                  "ellipse-ellipse contact depth, " + std::to_string(options.pairs) + " overlapping pairs",
-                                  options, std::cout);
+  collide2d::report::print_report(
+      collide2d::report::measure_contact_methods(options),
+      "ellipse-ellipse contact depth, " + std::to_string(options.pairs) + " overlapping pairs", options, std::cout);
   collide2d::cli::write_svg_file(svg_path, "plot",
                                  [&results](std::ostream& out) { collide2d::report::write_report_svg(results, out); });
   return 0;

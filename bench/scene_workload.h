@@ -5,9 +5,9 @@
 // of the kind are found (frames repeat pairs that stay in contact, as a narrow phase sees them).
 #pragma once
 
-#include "bench/workload.h"
 #include <collide2d/broad_phase.h>
 #include <collide2d/world.h>
+#include "bench/workload.h"
 #include "tools/scene/scene.h"
 
 #include <stdexcept>

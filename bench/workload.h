@@ -40,8 +40,8 @@ void time_batches(benchmark::State& state, Batch batch) {
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * kPairs);
-  state.counters["per_pair"] = benchmark::Counter(static_cast<double>(kPairs),
-                                                  benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_pair"] = benchmark::Counter(
+      static_cast<double>(kPairs), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 // Each shape's orientation, kept as the World keeps it (and Box2D its polygons' transforms).

@@ -134,7 +134,9 @@ void AabbTree::set_box(Leaf leaf, const Aabb& box) {
     const Node before = nodes_[at];
     refit(at);
     const Node& now = nodes_[at];
-    if (now.lo[0] == before.lo[0] && now.lo[1] == before.lo[1] && now.hi[0] == before.hi[0] && now.hi[1] == before.hi[1]) break;
+    if (now.lo[0] == before.lo[0] && now.lo[1] == before.lo[1] && now.hi[0] == before.hi[0] &&
+        now.hi[1] == before.hi[1])
+      break;
   }
 }
 

@@ -172,7 +172,8 @@ bool SweepAndPrune::lay_out() {
   double width = 4.0 * extent[across] / n;
   if (!(width > 0.0)) width = 4.0 * std::sqrt(var[across] / n);
   if (!(width > 0.0) || !std::isfinite(width)) width = 1.0;
-  const bool rebuild = strip_width_ == 0.0 || axis != sweep_axis_ || width > 2 * strip_width_ || width < 0.5 * strip_width_;
+  const bool rebuild =
+      strip_width_ == 0.0 || axis != sweep_axis_ || width > 2 * strip_width_ || width < 0.5 * strip_width_;
   if (rebuild) {
     sweep_axis_ = axis;
     strip_width_ = width;
@@ -299,8 +300,8 @@ void SweepAndPrune::merge_incoming(Strip& s) const {
   tags.clear();
   std::size_t i = 0, j = 0;
   while (i < s.tags.size() || j < order.size()) {
-    const bool take_old = j == order.size() ||
-                          (i < s.tags.size() && !before(fresh.keys[order[j]], fresh.tags[order[j]], s.keys[i], s.tags[i]));
+    const bool take_old = j == order.size() || (i < s.tags.size() && !before(fresh.keys[order[j]], fresh.tags[order[j]],
+                                                                             s.keys[i], s.tags[i]));
     tags.push_back(take_old ? s.tags[i++] : fresh.tags[order[j++]]);
   }
   s.resize(tags.size());

@@ -12,7 +12,8 @@ namespace collide2d::detail {
 // places: `now` is left holding the old pairs, whose storage the caller's next frame fills again, so
 // that a steady frame allocates nothing.
 template <class Pair>
-void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>& now, std::vector<Pair>& began, std::vector<Pair>& ended) {
+void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>& now, std::vector<Pair>& began,
+                   std::vector<Pair>& ended) {
   began.clear();
   ended.clear();
   std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));

@@ -31,7 +31,8 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
   Body& b = body(id);
   if (b.continuous == continuous) return;
   if (b.is_static) {
-    throw std::invalid_argument("body " + std::to_string(id.index) + " is static: only moving bodies can be continuous");
+    throw std::invalid_argument("body " + std::to_string(id.index) +
+                                " is static: only moving bodies can be continuous");
   }
   if (continuous) {
     continuous_.push_back(id.index);

@@ -15,7 +15,9 @@
 namespace collide2d::detail {
 namespace {
 
-bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
+bool lets_through(const QueryFilter& q, const Filter& f) {
+  return (f.category & q.mask) != 0 && (f.mask & q.category) != 0;
+}
 
 }  // namespace
 
@@ -62,7 +64,8 @@ std::vector<BodyId> WorldState::within(const Shape& shape, double d, const Query
   return select(grown(aabb(shape), d), filter, [&](const Shape& s) { return distance(shape, s).distance <= d; });
 }
 
-std::optional<BodyCastHit> WorldState::cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter) const {
+std::optional<BodyCastHit> WorldState::cast(const Shape& shape, const Vec2& translation,
+                                            const QueryFilter& filter) const {
   validate(shape);
   require_finite(translation.x(), "cast translation x");
   require_finite(translation.y(), "cast translation y");
@@ -71,7 +74,8 @@ std::optional<BodyCastHit> WorldState::cast(const Shape& shape, const Vec2& tran
   std::optional<BodyCastHit> best;
   for (const BodyId id : select(swept(shape, end), filter, [](const Shape&) { return true; })) {
     const auto hit = shape_cast(shape, translation, bodies_[id.index].shape);
-    if (hit && (!best || hit->fraction < best->fraction)) best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
+    if (hit && (!best || hit->fraction < best->fraction))
+      best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
   }
   return best;
 }
@@ -106,7 +110,8 @@ std::optional<RayHit> WorldState::ray_cast(const Vec2& origin, const Vec2& direc
                                            const QueryFilter& filter) const {
   std::optional<RayHit> best;
   rays(origin, direction, max_distance, filter, [&best](const RayHit& hit, double) {
-    if (!best || hit.distance < best->distance || (hit.distance == best->distance && hit.body.index < best->body.index)) {
+    if (!best || hit.distance < best->distance ||
+        (hit.distance == best->distance && hit.body.index < best->body.index)) {
       best = hit;
     }
     return best->distance;

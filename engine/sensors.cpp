@@ -10,14 +10,16 @@
 namespace collide2d::detail {
 
 void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
-  if (touching) out.sensing.push_back(bodies_[a].sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
+  if (touching)
+    out.sensing.push_back(bodies_[a].sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
 }
 
 // The first `chunks` chunks' sensor pairs joined in chunk order and sorted, and what entered and
 // left.
 void WorldState::update_sensing(std::size_t chunks) {
   sensed_.clear();
-  for (std::size_t k = 0; k < chunks; ++k) sensed_.insert(sensed_.end(), chunks_[k].sensing.begin(), chunks_[k].sensing.end());
+  for (std::size_t k = 0; k < chunks; ++k)
+    sensed_.insert(sensed_.end(), chunks_[k].sensing.begin(), chunks_[k].sensing.end());
   std::sort(sensed_.begin(), sensed_.end());
   replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
 }

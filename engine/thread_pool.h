@@ -7,9 +7,9 @@
 #pragma once
 
 #include <atomic>
-#include <cstdint>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -36,8 +36,8 @@ class ThreadPool {
   const std::function<void(std::size_t)>* task_ = nullptr;
   std::size_t count_ = 0;
   std::atomic<std::size_t> next_{0};
-  std::size_t busy_ = 0;            // workers still in the current run
-  std::uint64_t generation_ = 0;    // one per run, so that a worker joins each run once
+  std::size_t busy_ = 0;          // workers still in the current run
+  std::uint64_t generation_ = 0;  // one per run, so that a worker joins each run once
 
   void work(std::stop_token stop);
   void drain();

@@ -120,7 +120,8 @@ void WorldState::Batch<A, B>::run(const std::vector<Body>& bodies, std::vector<V
         return PairRef<A, B>{std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
       },
       verdicts);
-  for (std::size_t j = 0; j < places.size(); ++j) chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
+  for (std::size_t j = 0; j < places.size(); ++j)
+    chunk_verdicts[places[j]] = verdicts[j] != 0 ? Verdict::touching : Verdict::apart;
 }
 
 template <class A, class B>
@@ -191,7 +192,8 @@ void WorldState::narrow_phase() {
 // (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results in order.
 void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
   out.clear();
-  for (std::size_t i = begin; i < end; ++i) out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
+  for (std::size_t i = begin; i < end; ++i)
+    out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
   std::apply([&](auto&... batch) { (batch.run(bodies_, out.verdicts), ...); }, out.batches);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
@@ -239,14 +241,16 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
   if (x.continuous || y.continuous) impact(a, b, out);
   if (touching) {
     out.overlapping.push_back({id_of(a), id_of(b)});
-    if (contacts_on_) out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
+    if (contacts_on_)
+      out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
     return;
   }
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);
     if (!d.overlapping && d.distance <= proximity_margin_) out.proximity.push_back({id_of(a), id_of(b), d});
   }
-  if (speculative_margin_ > 0.0 && intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
+  if (speculative_margin_ > 0.0 &&
+      intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
     const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
     if (c.separation <= speculative_margin_) out.contacts.push_back({id_of(a), id_of(b), c});
   }

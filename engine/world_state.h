@@ -103,12 +103,12 @@ class WorldState {
     bool is_static = false;
     bool sensor = false;
     bool continuous = false;
-    ProxyId proxy = 0;          // moving: its sweep-and-prune proxy
-    AabbTree::Leaf leaf = -1;   // its leaf in the moving or the static tree
-    std::int32_t loose = -1;    // moving: its place in loose_ while its tree leaf is out of date
-    Aabb queried;               // moving: the box its static neighbours were looked up in (kNowhere: none yet)
+    ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
+    AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
+    std::int32_t loose = -1;             // moving: its place in loose_ while its tree leaf is out of date
+    Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
     std::vector<std::uint32_t> statics;  // moving: those neighbours (body indices)
-    Shape start;  // continuous: the pose at the last update, where the step begins
+    Shape start;                         // continuous: the pose at the last update, where the step begins
   };
   static constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
   // An empty box, which encloses no fat box: a body entering the sweep and prune looks up its static
@@ -141,8 +141,8 @@ class WorldState {
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
-    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>, Batch<Circle, Ellipse>,
-               Batch<Ellipse, Ellipse>>
+    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>,
+               Batch<Circle, Ellipse>, Batch<Ellipse, Ellipse>>
         batches;  // every pair kind, in kernel order
     void clear();
   };
@@ -156,13 +156,13 @@ class WorldState {
   double moving_perimeter_ = 0.0;       // its inner boxes' perimeters right after its last rebuild
   std::vector<std::uint32_t> loose_;    // moving bodies whose fat box changed since the last update
   std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
-  AabbTree static_tree_;                // the static bodies' broad-phase boxes
+  AabbTree static_tree_;                                     // the static bodies' broad-phase boxes
   bool statics_changed_ = false;
   double proximity_margin_;
   bool contacts_on_;
   double speculative_margin_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a < b
-  std::vector<BodyPair> now_;        // the narrow phase's pairs joined: storage kept between frames
+  std::vector<BodyPair> now_;  // the narrow phase's pairs joined: storage kept between frames
   std::vector<SensorPair> sensed_;
   std::vector<std::uint32_t> continuous_;  // the continuous bodies' indices
   std::function<bool(BodyId, BodyId)> pair_predicate_;
@@ -201,7 +201,8 @@ class WorldState {
   template <class Test>
   std::vector<BodyId> select(const Aabb& box, const QueryFilter& filter, Test test) const;
   template <class OnHit>
-  void rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter, OnHit on_hit) const;
+  void rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter,
+            OnHit on_hit) const;
 };
 
 // Shared by the files of the World.

@@ -25,10 +25,16 @@ bool overlap_kernel(const Ellipse& a, const Ellipse& b) { return overlap_ellipse
 using O = Orientation;
 bool posed_overlap(const Rect& a, const O& oa, const Rect& b, const O& ob) { return overlap_rect_rect(a, oa, b, ob); }
 bool posed_overlap(const Rect& a, const O& oa, const Circle& b, const O&) { return overlap_rect_circle(a, oa, b); }
-bool posed_overlap(const Rect& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_rect_ellipse(a, oa, b, ob); }
+bool posed_overlap(const Rect& a, const O& oa, const Ellipse& b, const O& ob) {
+  return overlap_rect_ellipse(a, oa, b, ob);
+}
 bool posed_overlap(const Circle& a, const O&, const Circle& b, const O&) { return overlap_circle_circle(a, b); }
-bool posed_overlap(const Circle& a, const O&, const Ellipse& b, const O& ob) { return overlap_circle_ellipse(a, b, ob); }
-bool posed_overlap(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob) { return overlap_ellipse_ellipse(a, oa, b, ob); }
+bool posed_overlap(const Circle& a, const O&, const Ellipse& b, const O& ob) {
+  return overlap_circle_ellipse(a, b, ob);
+}
+bool posed_overlap(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob) {
+  return overlap_ellipse_ellipse(a, oa, b, ob);
+}
 
 DistanceResult distance_kernel(const Rect& a, const Rect& b) { return distance_rect_rect(a, b); }
 DistanceResult distance_kernel(const Rect& a, const Circle& b) { return distance_rect_circle(a, b); }
@@ -124,7 +130,8 @@ bool overlaps(const Shape& a, const Shape& b) {
 
 bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation) {
   return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
-    return swapped ? posed_overlap(x, b_orientation, y, a_orientation) : posed_overlap(x, a_orientation, y, b_orientation);
+    return swapped ? posed_overlap(x, b_orientation, y, a_orientation)
+                   : posed_overlap(x, a_orientation, y, b_orientation);
   });
 }
 

@@ -28,9 +28,7 @@ struct Rotation {
   }
   // This rotation seen from `frame`: frame^-1 * this. Composed from the two cosines and sines
   // rather than from the angle difference, which loses digits when the angles are large.
-  Rotation relative_to(const Rotation& frame) const {
-    return {frame.c * c + frame.s * s, frame.c * s - frame.s * c};
-  }
+  Rotation relative_to(const Rotation& frame) const { return {frame.c * c + frame.s * s, frame.c * s - frame.s * c}; }
 };
 
 }  // namespace collide2d::detail

@@ -25,7 +25,8 @@ void require_coordinate(const char* shape, const char* field, double value) {
 void require_size(const char* shape, const char* field, double value) {
   require_finite(shape, field, value);
   if (!(value > 0.0)) reject(shape, field, value, "must be positive");
-  if (value < kMinSize || value > kMaxMagnitude) reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
+  if (value < kMinSize || value > kMaxMagnitude)
+    reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
 }
 
 // The box grown by a few ulps of its coordinates: the kernels' rounding must not put a point of the
@@ -137,8 +138,12 @@ Aabb oriented_box(const Rect& r, const Orientation& o) {
 
 Aabb aabb(const Ellipse& e) { return oriented_box(e, Orientation::of(e.angle)); }
 Aabb aabb(const Rect& r) { return oriented_box(r, Orientation::of(r.angle)); }
-Aabb aabb(const Shape& s) { return std::visit([](const auto& x) { return aabb(x); }, s); }
-Aabb aabb(const Shape& s, const Orientation& o) { return std::visit([&o](const auto& x) { return oriented_box(x, o); }, s); }
+Aabb aabb(const Shape& s) {
+  return std::visit([](const auto& x) { return aabb(x); }, s);
+}
+Aabb aabb(const Shape& s, const Orientation& o) {
+  return std::visit([&o](const auto& x) { return oriented_box(x, o); }, s);
+}
 
 Vec2 support(const Circle& c, const Vec2& d) {
   const double n = d.norm();
@@ -169,9 +174,7 @@ Vec2 support(const Shape& s, const Vec2& d) {
   return std::visit([&d](const auto& shape) { return support(shape, d); }, s);
 }
 
-bool contains(const Circle& c, const Vec2& p) {
-  return (p - c.center).squaredNorm() <= c.radius * c.radius;
-}
+bool contains(const Circle& c, const Vec2& p) { return (p - c.center).squaredNorm() <= c.radius * c.radius; }
 
 bool contains(const Ellipse& e, const Vec2& p) {
   const Vec2 q = Rot::of(e.angle).apply_inverse(Vec2(p - e.center));

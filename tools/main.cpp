@@ -111,6 +111,7 @@ int main(int argc, char** argv) {
     const std::string_view command = argc >= 2 ? argv[1] : "";
     if (command == "query") return query(argc, argv);
     if (command == "run") return run(argc, argv);
-    throw collide2d::cli::UsageError(command.empty() ? "no command given" : "unknown command '" + std::string(command) + "'");
+    throw collide2d::cli::UsageError(command.empty() ? "no command given"
+                                                     : "unknown command '" + std::string(command) + "'");
   });
 }

@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cstdio>
 #include <istream>
-#include <utility>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 namespace collide2d::tool {
@@ -84,7 +84,8 @@ Side parse_side(std::string_view text, const char* side) {
   if (words.size() != 3) {
     throw ParseError(std::string("a motion takes 3 numbers (vx vy w) after '@', got ") + std::to_string(words.size()));
   }
-  return {parse_shape(text.substr(0, at), side), {{parse_number(words[0]), parse_number(words[1])}, parse_number(words[2])},
+  return {parse_shape(text.substr(0, at), side),
+          {{parse_number(words[0]), parse_number(words[1])}, parse_number(words[2])},
           true};
 }
 
@@ -145,7 +146,7 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
     const DistanceResult d = options.ellipse ? boundary ? baselines::boundary_distance(q.a, q.b, *options.ellipse)
                                                         : baselines::distance(q.a, q.b, *options.ellipse)
                              : boundary ? boundary_distance(q.a, q.b)
-                                        : distance(q.a, q.b);
+                                             : distance(q.a, q.b);
     n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance, d.point_a.x(),
                       d.point_a.y(), d.point_b.x(), d.point_b.y());
   }

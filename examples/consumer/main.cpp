@@ -5,13 +5,12 @@
 int main() {
   using namespace collide2d;
   // One pair at a time: the narrow phase.
-  const Shape wall = Rect{Vec2(0, 0), Vec2(2, 0.5), 0.3};          // centre, half extents, angle
-  const Shape rock = Ellipse{Vec2(1, 2), 1.5, 0.4, 1.0};           // centre, a, b, angle of the a-axis
-  if (overlaps(wall, rock)) std::puts("hit");                      // yes/no only
-  const DistanceResult d = distance(wall, rock);                   // 0 and a witness when overlapping
-  std::printf("%g from (%g, %g) to (%g, %g)\n", d.distance,
-              d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
-  const Contact c = contact(wall, rock);                           // how deep, along which normal, where
+  const Shape wall = Rect{Vec2(0, 0), Vec2(2, 0.5), 0.3};  // centre, half extents, angle
+  const Shape rock = Ellipse{Vec2(1, 2), 1.5, 0.4, 1.0};   // centre, a, b, angle of the a-axis
+  if (overlaps(wall, rock)) std::puts("hit");              // yes/no only
+  const DistanceResult d = distance(wall, rock);           // 0 and a witness when overlapping
+  std::printf("%g from (%g, %g) to (%g, %g)\n", d.distance, d.point_a.x(), d.point_a.y(), d.point_b.x(), d.point_b.y());
+  const Contact c = contact(wall, rock);  // how deep, along which normal, where
   std::printf("separation %g along (%g, %g)\n", c.separation, c.normal.x(), c.normal.y());
 
   // Many bodies moving every frame: the World (sweep and prune, then the narrow phase).
@@ -31,7 +30,8 @@ int main() {
     for (const Proximity& p : world.proximity()) std::printf("frame %d: %g apart\n", frame, p.result.distance);
     for (const BodyContact& b : world.contacts()) std::printf("frame %d: %g deep\n", frame, 0.0 - b.contact.separation);
     for (const SensorPair& s : world.sensor_began()) {
-      std::printf("frame %d: body %llu entered zone %llu\n", frame, static_cast<unsigned long long>(world.user_id(s.visitor)),
+      std::printf("frame %d: body %llu entered zone %llu\n", frame,
+                  static_cast<unsigned long long>(world.user_id(s.visitor)),
                   static_cast<unsigned long long>(world.user_id(s.sensor)));
     }
   }

@@ -27,7 +27,8 @@ int run(int argc, char** argv) {
     } else if (arg == "--width") {
       options.width = collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv));
     } else if (arg == "--seed") {
-      options.seed = static_cast<unsigned>(collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv)));
+      options.seed =
+          static_cast<unsigned>(collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv)));
     } else if (arg == "--svg") {
       svg_path = collide2d::cli::value_of(i, argc, argv);
     } else {

@@ -17,11 +17,11 @@ namespace collide2d::settle {
 namespace {
 
 constexpr double kGravity = 9.81;
-constexpr double kDamping = 0.3;     // each contact's dashpot, as a fraction of critical damping
-constexpr double kFriction = 0.5;    // Coulomb coefficient
-constexpr double kWall = 1.0;        // wall thickness
-constexpr double kLargest = 0.4;     // the largest half-extent of a body
-constexpr double kDrag = 1.0;        // a light drag on every body (per second), which hastens the rest
+constexpr double kDamping = 0.3;   // each contact's dashpot, as a fraction of critical damping
+constexpr double kFriction = 0.5;  // Coulomb coefficient
+constexpr double kWall = 1.0;      // wall thickness
+constexpr double kLargest = 0.4;   // the largest half-extent of a body
+constexpr double kDrag = 1.0;      // a light drag on every body (per second), which hastens the rest
 constexpr double kCell = 2 * kLargest + 0.05;
 
 // A body's motion; its shape and pose live in the World.
@@ -60,11 +60,15 @@ double smallest_half_size(const Shape& s) {
 
 Shape random_shape(std::mt19937_64& rng, int kind, const Vec2& center) {
   const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  const double size = uniform(kLargest / 2, kLargest), aspect = uniform(1.0, 2.0), angle = uniform(0.0, 2 * std::numbers::pi);
+  const double size = uniform(kLargest / 2, kLargest), aspect = uniform(1.0, 2.0),
+               angle = uniform(0.0, 2 * std::numbers::pi);
   switch (kind % 3) {
-    case 0: return Circle{center, size};
-    case 1: return Ellipse{center, size, size / aspect, angle};
-    default: return Rect{center, Vec2(size, size / aspect), angle};
+    case 0:
+      return Circle{center, size};
+    case 1:
+      return Ellipse{center, size, size / aspect, angle};
+    default:
+      return Rect{center, Vec2(size, size / aspect), angle};
   }
 }
 
@@ -194,7 +198,8 @@ class Pile {
     const Vec2 slide = relative - approach * normal;
     const auto kept = std::lower_bound(previous_.begin(), previous_.end(), spring,
                                        [](const Spring& x, const Spring& y) { return x.key() < y.key(); });
-    if (kept != previous_.end() && kept->key() == spring.key()) spring.stretch = kept->stretch - kept->stretch.dot(normal) * normal;
+    if (kept != previous_.end() && kept->key() == spring.key())
+      spring.stretch = kept->stretch - kept->stretch.dot(normal) * normal;
     spring.stretch += slide * step_;
     Vec2 friction = -kt * spring.stretch - damping_t * slide;
     const double limit = kFriction * push;
@@ -214,7 +219,7 @@ class Pile {
   std::vector<Body> bodies_;
   std::vector<Vec2> forces_;
   std::vector<double> torques_;
-  std::vector<Spring> springs_;   // this step's, sorted by pair and feature
+  std::vector<Spring> springs_;  // this step's, sorted by pair and feature
   std::vector<Spring> previous_;
   double width_;
   double height_ = 0.0;
@@ -262,19 +267,21 @@ void write_settle_svg(const SettleResult& r, std::ostream& out) {
   for (const Shape& s : r.shapes) top = std::max(top, aabb(s).max.y());
   top += kWall;
   std::ostringstream caption;
-  caption << r.shapes.size() << " bodies at rest after " << r.seconds << " s (" << r.steps << " steps); deepest contact "
-          << r.max_penetration / r.smallest * 100 << "% of the smallest half-size";
+  caption << r.shapes.size() << " bodies at rest after " << r.seconds << " s (" << r.steps
+          << " steps); deepest contact " << r.max_penetration / r.smallest * 100 << "% of the smallest half-size";
   const double left = -kWall, right = r.width + kWall, bottom = -kWall;
-  const double w = right - left, font = std::min(0.98 * w / (0.6 * static_cast<double>(caption.str().size())), 0.025 * w);
+  const double w = right - left,
+               font = std::min(0.98 * w / (0.6 * static_cast<double>(caption.str().size())), 0.025 * w);
   const double h = top - bottom + 2 * font;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << left << ' ' << -top << ' ' << w << ' ' << h
       << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * h / w) << "\">\n"
-      << "<style>.body{fill:#9db4cc;stroke:#34495e;stroke-width:0.02}.wall{fill:#566573}text{font-family:sans-serif}</style>\n"
+      << "<style>.body{fill:#9db4cc;stroke:#34495e;stroke-width:0.02}.wall{fill:#566573}text{font-family:sans-serif}</"
+         "style>\n"
       << "<g transform=\"scale(1,-1)\">\n";
   for (const Shape& s : r.walls) tool::svg_shape(out, s, "wall");
   for (const Shape& s : r.shapes) tool::svg_shape(out, s, "body");
-  out << "</g>\n<text x=\"" << left + 0.01 * w << "\" y=\"" << -bottom + 1.5 * font << "\" font-size=\"" << font << "\">"
-      << caption.str() << "</text>\n</svg>\n";
+  out << "</g>\n<text x=\"" << left + 0.01 * w << "\" y=\"" << -bottom + 1.5 * font << "\" font-size=\"" << font
+      << "\">" << caption.str() << "</text>\n</svg>\n";
 }
 
 }  // namespace collide2d::settle

@@ -21,24 +21,24 @@ namespace collide2d::settle {
 
 struct SettleOptions {
   int bodies = 2000;
-  double width = 40.0;          // inside width of the box; its floor is y = 0
+  double width = 40.0;  // inside width of the box; its floor is y = 0
   unsigned seed = 1;
-  double max_seconds = 20.0;    // simulated time at most
-  double rest_speed = 1e-2;     // at rest: no body faster than this (sizes per second) ...
-  double rest_seconds = 0.25;   // ... for this long
+  double max_seconds = 20.0;   // simulated time at most
+  double rest_speed = 1e-2;    // at rest: no body faster than this (sizes per second) ...
+  double rest_seconds = 0.25;  // ... for this long
 };
 
 struct SettleResult {
-  std::vector<Shape> shapes;    // the bodies where they came to rest
-  std::vector<Shape> walls;     // floor, left and right wall
+  std::vector<Shape> shapes;  // the bodies where they came to rest
+  std::vector<Shape> walls;   // floor, left and right wall
   double width = 0.0;
-  double seconds = 0.0;         // simulated
+  double seconds = 0.0;  // simulated
   int steps = 0;
   bool at_rest = false;
-  double max_speed = 0.0;       // at the end
-  double max_penetration = 0.0; // deepest contact at the end (minus the least separation)
-  double smallest = 0.0;        // the smallest half-size of any body (a circle's radius, a semi-axis)
-  int outside = 0;              // bodies not within the box's walls and above its floor
+  double max_speed = 0.0;        // at the end
+  double max_penetration = 0.0;  // deepest contact at the end (minus the least separation)
+  double smallest = 0.0;         // the smallest half-size of any body (a circle's radius, a semi-axis)
+  int outside = 0;               // bodies not within the box's walls and above its floor
 };
 
 SettleResult settle(const SettleOptions& options, std::ostream* progress = nullptr);

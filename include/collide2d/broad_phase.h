@@ -20,9 +20,9 @@
 #include <collide2d/shapes.h>
 
 #include <compare>
-#include <functional>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -125,7 +125,7 @@ class SweepAndPrune : public BroadPhaseBase {
     std::vector<std::uint32_t> tags;  // id << 1 | is_max
     std::vector<double> lo;           // the box's interval across the sweep axis
     std::vector<double> hi;
-    std::vector<std::int64_t> first;  // the first strip the box reaches (where its pairs are reported)
+    std::vector<std::int64_t> first;      // the first strip the box reaches (where its pairs are reported)
     std::vector<std::uint32_t> incoming;  // tags of boxes that entered since the last update
     void resize(std::size_t n);
   };

@@ -27,7 +27,8 @@ Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b
 
 /// Overlap of two rectangles by separating axes (their four face normals), in A's frame.
 bool overlap_rect_rect(const Rect& a, const Rect& b);
-bool overlap_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b, const Orientation& b_orientation);
+bool overlap_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                       const Orientation& b_orientation);
 /// Overlap of a rectangle and a circle: the centre clamped to the box, in the box's frame.
 bool overlap_rect_circle(const Rect& r, const Circle& c);
 bool overlap_rect_circle(const Rect& r, const Orientation& r_orientation, const Circle& c);

@@ -11,7 +11,7 @@ namespace collide2d {
 
 /// Where a ray meets a shape.
 struct RayShapeHit {
-  double distance = 0.0;       ///< t at the hit
+  double distance = 0.0;  ///< t at the hit
   Vec2 point = Vec2::Zero();
   Vec2 normal = Vec2::Zero();  ///< outward unit normal at the hit; zero when the ray starts inside
 };
@@ -19,7 +19,6 @@ struct RayShapeHit {
 /// The first point of the shape on the ray origin + t direction, 0 <= t <= max_distance, or nullopt.
 /// A ray that starts inside the shape hits it at t = 0. Contract: a valid shape, a finite origin, a
 /// unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
-std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction,
-                                    double max_distance);
+std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction, double max_distance);
 
 }  // namespace collide2d

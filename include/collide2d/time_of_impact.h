@@ -59,7 +59,7 @@ Shape at_time(const Shape& s, const Motion& m, double t);
 
 /// A shape cast's first contact.
 struct CastHit {
-  double fraction = 0.0;        ///< of the translation; 0 when they overlap at the start
+  double fraction = 0.0;  ///< of the translation; 0 when they overlap at the start
   Vec2 point = Vec2::Zero();
   Vec2 normal = Vec2::UnitX();  ///< the target's outward normal there, towards the moving shape
 };

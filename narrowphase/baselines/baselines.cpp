@@ -59,7 +59,8 @@ std::optional<DistanceResult> in_order(const Shape& a, const Shape& b, Kernel ke
     }
     return kernel(x, y);
   }
-  if (std::holds_alternative<Y>(a) && std::holds_alternative<X>(b)) return kernel(std::get<X>(b), std::get<Y>(a)).swapped();
+  if (std::holds_alternative<Y>(a) && std::holds_alternative<X>(b))
+    return kernel(std::get<X>(b), std::get<Y>(a)).swapped();
   return std::nullopt;
 }
 

@@ -151,8 +151,10 @@ SolverReport general(const Ellipse& e0, const Ellipse& e1) {
     for (int j = 0; i + j < 7; ++j) {
       Poly term(static_cast<std::size_t>(i) + 1, 0.0);
       term[static_cast<std::size_t>(i)] = P.c[i][j];
-      if (j % 2 == 0) alpha = add(alpha, multiply(term, one_minus_square(j / 2)));
-      else beta = add(beta, multiply(term, one_minus_square((j - 1) / 2)));
+      if (j % 2 == 0)
+        alpha = add(alpha, multiply(term, one_minus_square(j / 2)));
+      else
+        beta = add(beta, multiply(term, one_minus_square((j - 1) / 2)));
     }
   }
   const Poly S = add(multiply(alpha, alpha), multiply({-1.0, 0.0, 1.0}, multiply(beta, beta)));
@@ -203,8 +205,10 @@ SolverReport circle_path(const Ellipse& c, const Ellipse& e, bool circle_first) 
     const double d = to_e.norm();
     if (!(d > 0)) continue;
     const Vec2 on_c = c.center + (r / d) * to_e;
-    if (circle_first) best.offer(on_c, on_e, std::abs(d - r));
-    else best.offer(on_e, on_c, std::abs(d - r));
+    if (circle_first)
+      best.offer(on_c, on_e, std::abs(d - r));
+    else
+      best.offer(on_e, on_c, std::abs(d - r));
   }
   return report(best);
 }

@@ -35,7 +35,8 @@ void fill_chunk(Chunk<kFields>& chunk, std::size_t start, std::size_t count, Lan
     for (std::size_t f = 0; f < kFields; ++f) chunk.field[f][i] = fields[f];
   }
   const std::size_t padded = (count + kMaxLanes - 1) / kMaxLanes * kMaxLanes;
-  for (std::size_t f = 0; f < kFields; ++f) std::fill(chunk.field[f] + count, chunk.field[f] + padded, chunk.field[f][count - 1]);
+  for (std::size_t f = 0; f < kFields; ++f)
+    std::fill(chunk.field[f] + count, chunk.field[f] + padded, chunk.field[f][count - 1]);
 }
 
 // Throws std::invalid_argument naming `what` and the lengths unless every input list has `out`

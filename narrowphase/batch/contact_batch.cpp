@@ -2,8 +2,8 @@
 // circle–ellipse contact's time, and one pair at a time it is a chain of divisions and a square
 // root per Newton step that the CPU cannot overlap; lanes of pairs stepping together, and several
 // vectors of them side by side, fill that chain (Highway, as in overlap_batch.cpp).
-#include "narrowphase/batch/batch_chunk.h"
 #include <collide2d/kernels.h>
+#include "narrowphase/batch/batch_chunk.h"
 #include "narrowphase/batch/lanes.h"
 
 #include <algorithm>
@@ -59,7 +59,8 @@ void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFiel
   const std::size_t n = hn::Lanes(D());
   Vectors v[] = {Vectors(in, i + K * n)...};
   bool running[] = {(static_cast<void>(K), true)...};
-  while ((static_cast<int>(running[K] && (running[K] = v[K].root.step())) | ...)) {  // |, not ||: each vector running steps
+  while ((static_cast<int>(running[K] && (running[K] = v[K].root.step())) |
+          ...)) {  // |, not ||: each vector running steps
   }
   (v[K].store(out, i + K * n), ...);
 }
@@ -72,7 +73,8 @@ void contact_chunk(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFie
   constexpr std::size_t kTogether = 3;
   const std::size_t n = hn::Lanes(D());
   std::size_t i = 0;
-  for (; i + (kTogether - 1) * n < count; i += kTogether * n) side_by_side(in, out, i, std::make_index_sequence<kTogether>());
+  for (; i + (kTogether - 1) * n < count; i += kTogether * n)
+    side_by_side(in, out, i, std::make_index_sequence<kTogether>());
   for (; i < count; i += n) side_by_side(in, out, i, std::index_sequence<0>());
 }
 
@@ -103,8 +105,10 @@ void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ell
     for (std::size_t i = 0; i < count; ++i) {
       const std::size_t k = start + i;
       const auto lane = [&](std::size_t field) { return out.field[field][i]; };
-      contacts[k] = out.verdict[i] ? detail::ContactLanes<double>{lane(0), lane(1), lane(2), lane(3), lane(4), lane(5), lane(6)}.contact()
-                                   : contact_circle_ellipse(circles[k], ellipses[k], ellipse_orientations[k]);
+      contacts[k] =
+          out.verdict[i]
+              ? detail::ContactLanes<double>{lane(0), lane(1), lane(2), lane(3), lane(4), lane(5), lane(6)}.contact()
+              : contact_circle_ellipse(circles[k], ellipses[k], ellipse_orientations[k]);
     }
   }
 }

@@ -7,9 +7,9 @@
 #pragma once
 
 #include <collide2d/kernels.h>
+#include <collide2d/shapes.h>
 #include "narrowphase/ellipse/distance_point_ellipse.h"
 #include "shapes/internal.h"
-#include <collide2d/shapes.h>
 
 #include <algorithm>
 #include <array>
@@ -176,7 +176,8 @@ inline CircleEllipseLanes<double> circle_ellipse_lanes(const Circle& c, const El
 // The verdict for a circle–ellipse lane the filter left uncertain: the point–ellipse root
 // (overlap_circle_ellipse.cpp).
 bool circle_ellipse_exact(const CircleEllipseLanes<double>& f);
-inline CirclePosedEllipseLanes<double> circle_posed_ellipse_lanes(const Circle& c, const Ellipse& e, const Orientation& eo) {
+inline CirclePosedEllipseLanes<double> circle_posed_ellipse_lanes(const Circle& c, const Ellipse& e,
+                                                                  const Orientation& eo) {
   return {c.center.x(), c.center.y(), e.center.x(), e.center.y(), eo.c, eo.s, e.a, e.b, c.radius};
 }
 

@@ -11,10 +11,10 @@
 #include "narrowphase/batch/overlap_pairs.h"
 
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/kernel_order.h"
-#include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include "narrowphase/frames/rect_ellipse_frame.h"
 #include "narrowphase/frames/rect_pair_frame.h"
+#include "narrowphase/kernel_order.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -45,9 +45,13 @@ detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return Re
 // The kernels that decide every lane.
 detail::LaneVerdicts<M> all_decided(const M& hit) { return {hn::Not(hit), hit}; }
 detail::LaneVerdicts<M> decide(const detail::RectRectLanes<V>& f) { return all_decided(rect_rect_overlap(f)); }
-detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) { return all_decided(circle_circle_overlap(D(), f)); }
+detail::LaneVerdicts<M> decide(const detail::CircleCircleLanes<V>& f) {
+  return all_decided(circle_circle_overlap(D(), f));
+}
 detail::LaneVerdicts<M> decide(const detail::RectCircleLanes<V>& f) { return all_decided(rect_circle_overlap(D(), f)); }
-detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) { return CircleEllipseFilter<D, V>(D(), f).run(); }
+detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) {
+  return CircleEllipseFilter<D, V>(D(), f).run();
+}
 detail::LaneVerdicts<M> decide(const detail::EllipseEllipseLanes<V>& f) { return ellipse_cubic_verdicts(D(), f); }
 
 // The kernel on the chunk's first `count` pairs, in whole vectors.
@@ -62,18 +66,27 @@ void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t coun
     hn::StoreMaskBits(D(), v.overlap, overlap);
     for (std::size_t j = 0; j < lanes; ++j) {
       const auto bit = [j](const std::uint8_t* bits) { return (bits[j / 8] >> (j % 8) & 1) != 0; };
-      const detail::FilterVerdict verdict =
-          bit(separated) ? detail::FilterVerdict::separated : bit(overlap) ? detail::FilterVerdict::overlap : detail::FilterVerdict::uncertain;
+      const detail::FilterVerdict verdict = bit(separated) ? detail::FilterVerdict::separated
+                                            : bit(overlap) ? detail::FilterVerdict::overlap
+                                                           : detail::FilterVerdict::uncertain;
       chunk.verdict[i + j] = static_cast<std::uint8_t>(verdict);
     }
   }
 }
 
-void rect_ellipse_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectEllipseLanes>(chunk, count); }
+void rect_ellipse_chunk(detail::Chunk<8>& chunk, std::size_t count) {
+  decide_chunk<detail::RectEllipseLanes>(chunk, count);
+}
 void rect_rect_chunk(detail::Chunk<8>& chunk, std::size_t count) { decide_chunk<detail::RectRectLanes>(chunk, count); }
-void circle_circle_chunk(detail::Chunk<4>& chunk, std::size_t count) { decide_chunk<detail::CircleCircleLanes>(chunk, count); }
-void rect_circle_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::RectCircleLanes>(chunk, count); }
-void circle_ellipse_chunk(detail::Chunk<5>& chunk, std::size_t count) { decide_chunk<detail::CircleEllipseLanes>(chunk, count); }
+void circle_circle_chunk(detail::Chunk<4>& chunk, std::size_t count) {
+  decide_chunk<detail::CircleCircleLanes>(chunk, count);
+}
+void rect_circle_chunk(detail::Chunk<5>& chunk, std::size_t count) {
+  decide_chunk<detail::RectCircleLanes>(chunk, count);
+}
+void circle_ellipse_chunk(detail::Chunk<5>& chunk, std::size_t count) {
+  decide_chunk<detail::CircleEllipseLanes>(chunk, count);
+}
 void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
   decide_chunk<detail::EllipseEllipseLanes>(chunk, count);
 }
@@ -84,7 +97,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace collide2d {
 
-void detail::check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out, const char* results) {
+void detail::check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out,
+                           const char* results) {
   if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
   std::string lengths;
   for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
@@ -107,7 +121,9 @@ HWY_EXPORT(ellipse_ellipse_chunk);
 void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
   HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) { HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count); }
+void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) {
+  HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count);
+}
 void detail::decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
   HWY_DYNAMIC_DISPATCH(circle_circle_chunk)(chunk, count);
 }
@@ -150,14 +166,16 @@ void overlap_lists(std::span<const A> a, std::span<const Orientation> a_orientat
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_ellipse", {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+  detail::check_lengths("overlap_rect_ellipse",
+                        {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
                         overlapping.size());
   overlap_lists<Rect, Ellipse>(rects, rect_orientations, ellipses, ellipse_orientations, overlapping);
 }
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()}, overlapping.size());
+  detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
+                        overlapping.size());
   overlap_lists<Rect, Rect>(a, a_orientations, b, b_orientations, overlapping);
 }
 
@@ -168,7 +186,8 @@ void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b,
 
 void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()}, overlapping.size());
+  detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()},
+                        overlapping.size());
   overlap_lists<Rect, Circle>(rects, rect_orientations, circles, {}, overlapping);
 }
 

@@ -5,14 +5,14 @@
 // pairs' batch took 8.6 ns a pair instead of 5.8.
 #pragma once
 
+#include <collide2d/shapes.h>
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/kernel_order.h"
 #include "narrowphase/batch/lanes.h"
-#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
-#include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include "narrowphase/frames/rect_ellipse_frame.h"
 #include "narrowphase/frames/rect_pair_frame.h"
-#include <collide2d/shapes.h>
+#include "narrowphase/kernel_order.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -44,7 +44,9 @@ inline RectRectLanes<double> lanes_of(const PairRef<Rect, Rect>& p) {
 inline CircleCircleLanes<double> lanes_of(const PairRef<Circle, Circle>& p) {
   return key(p.b) < key(p.a) ? circle_circle_lanes(p.b, p.a) : circle_circle_lanes(p.a, p.b);
 }
-inline RectCircleLanes<double> lanes_of(const PairRef<Rect, Circle>& p) { return rect_circle_lanes(p.a, p.a_orientation, p.b); }
+inline RectCircleLanes<double> lanes_of(const PairRef<Rect, Circle>& p) {
+  return rect_circle_lanes(p.a, p.a_orientation, p.b);
+}
 inline CircleEllipseLanes<double> lanes_of(const PairRef<Circle, Ellipse>& p) {
   return circle_ellipse_lanes(p.a, p.b, p.b_orientation);
 }

@@ -5,10 +5,14 @@ namespace collide2d {
 std::uint32_t swapped_feature(std::uint32_t id) {
   const int first = static_cast<int>(id >> 8 & 0xff), second = static_cast<int>(id & 0xff);
   switch (feature_kind(id)) {
-    case FeatureKind::face_of_a: return feature_id(FeatureKind::face_of_b, first, second);
-    case FeatureKind::face_of_b: return feature_id(FeatureKind::face_of_a, first, second);
-    case FeatureKind::corner_corner: return feature_id(FeatureKind::corner_corner, second, first);
-    case FeatureKind::curved: break;
+    case FeatureKind::face_of_a:
+      return feature_id(FeatureKind::face_of_b, first, second);
+    case FeatureKind::face_of_b:
+      return feature_id(FeatureKind::face_of_a, first, second);
+    case FeatureKind::corner_corner:
+      return feature_id(FeatureKind::corner_corner, second, first);
+    case FeatureKind::curved:
+      break;
   }
   return id;
 }

@@ -1,5 +1,5 @@
-#include "narrowphase/frames/box_local.h"
 #include <collide2d/kernels.h>
+#include "narrowphase/frames/box_local.h"
 #include "narrowphase/frames/unit_vector.h"
 #include "shapes/internal.h"
 

@@ -111,7 +111,8 @@ struct Faces {
     const double dx = p.delta.dot(x), dy = p.delta.dot(y);
     const V2<double> normals[4] = {x, y, -x, -y}, offsets[4] = {ox, oy, -ox, -oy};
     const double s[4] = {dx - p.A.hx - ex, dy - p.A.hy - ey, -dx - p.A.hx - ex, -dy - p.A.hy - ey};
-    for (int k = 0; k < 5; ++k) f.normal[k] = normals[k % 4], f.offset[k] = offsets[k % 4], f.rho[k] = k % 2 ? sy.rho : sx.rho;
+    for (int k = 0; k < 5; ++k)
+      f.normal[k] = normals[k % 4], f.offset[k] = offsets[k % 4], f.rho[k] = k % 2 ? sy.rho : sx.rho;
     std::copy(s, s + 4, f.s);
     return f;
   }

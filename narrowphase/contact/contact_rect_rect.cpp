@@ -118,8 +118,7 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
                           const Orientation& b_orientation, const ContactOptions& options) {
   const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
-  const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center),
-                    false};
+  const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
   const View* view = &from_a;
   int k = 0;
   double best = -std::numeric_limits<double>::infinity();
@@ -137,8 +136,9 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
   };
   const auto point = [&](const Feature& x, FeatureKind kind) {
     const Vec2 r = to_world(x.on_ref), i = to_world(x.on_inc);
-    const std::uint32_t id = kind == FeatureKind::corner_corner && !v.ref_is_a ? feature_id(kind, x.inc_index, x.ref_index)
-                                                                               : feature_id(kind, x.ref_index, x.inc_index);
+    const std::uint32_t id = kind == FeatureKind::corner_corner && !v.ref_is_a
+                                 ? feature_id(kind, x.inc_index, x.ref_index)
+                                 : feature_id(kind, x.ref_index, x.inc_index);
     return v.ref_is_a ? ContactPoint{r, i, x.separation, id} : ContactPoint{i, r, x.separation, id};
   };
 
@@ -154,8 +154,8 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
   // Apart, the face's separation is the distance only if the incident rectangle's nearest point
   // lies within the reference face's side planes; else the nearest features are two corners, and
   // every point of the incident face within the side planes is farther than the face's separation.
-  const double rounding = 8 * std::numeric_limits<double>::epsilon() *
-                          (v.center.norm() + v.ref_half.sum() + v.inc_half.sum());
+  const double rounding =
+      8 * std::numeric_limits<double>::epsilon() * (v.center.norm() + v.ref_half.sum() + v.inc_half.sum());
   if (best > 0 && (!cut || face[0].separation > best + rounding)) {
     const Feature c = nearest_corners(v);
     const ContactPoint p = point(c, FeatureKind::corner_corner);

@@ -50,7 +50,7 @@ namespace collide2d::detail {
 
 template <class Real>
 struct Arc {
-  int x;       // from the direction ends[x] counter-clockwise to ends[y], less than a half turn
+  int x;  // from the direction ends[x] counter-clockwise to ends[y], less than a half turn
   int y;
   Real bound;  // no s on the arc exceeds it
 };
@@ -140,7 +140,8 @@ Direction<Real> split(const P& p, const Direction<Real>& x, const Direction<Real
       return std::pair<Real, Real>(level(last.at, flat) ? Real(0) : last.at.slope, dslope);
     };
     const std::pair<Real, Real> start(x.at.slope, -x.at.bend * 2);
-    const Real tau = newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
+    const Real tau =
+        newton_in_bracket(f, Real(0), end, start, evaluations, [](Real lo, Real hi) { return (lo + hi) / 2; });
     if (tau != last_tau) {  // the iteration ended on a point it had left
       ++evaluations;
       f(tau);
@@ -280,7 +281,9 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
     e = p.separation(n);
     ++evaluations;
   }
-  const auto in_quarter = [&](const V2<Real>& v) { return !sided || (cross(face, v) * cross(face, side) > 0 && v.dot(face) > 0); };
+  const auto in_quarter = [&](const V2<Real>& v) {
+    return !sided || (cross(face, v) * cross(face, side) > 0 && v.dot(face) > 0);
+  };
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
   // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
   // Where s > 0 the shapes are apart and s is concave on the whole arc where it is positive, with
@@ -290,7 +293,9 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   // the same reason a step out of the quarter turn, apart, goes on from the face normal it crossed
   // (the maximum lies on it or beyond): a fifth of a rectangle–ellipse time of impact's climbs
   // ended there.
-  const auto near_enough = [&] { return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s); };
+  const auto near_enough = [&] {
+    return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s);
+  };
   for (int k = 0; !near_enough() && !kink && (!level(e, flat) || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
     const bool apart = e.s > 0;
     // At least, not equal: touching, s flips sign from one direction to the next.
@@ -364,7 +369,9 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   const Separation<Real> ex = p.separation(x), ey = p.separation(y);
   best.evaluations += 2;
   const int starts[5] = {add(x, ex), add(y, ey), add(-x, p.opposite(x, ex)), add(-y, p.opposite(y, ey)), 0};
-  for (int k = 0; k < 4; ++k) arcs.push_back({starts[k], starts[k + 1], cheap_arc_bound(p, end(starts[k]), end(starts[k + 1]), best.at.s + margin)});
+  for (int k = 0; k < 4; ++k)
+    arcs.push_back(
+        {starts[k], starts[k + 1], cheap_arc_bound(p, end(starts[k]), end(starts[k + 1]), best.at.s + margin)});
   // The climb's maximum, polished (s' = 0 to rounding) but not certified, splits its arc as an end:
   // the search need not find it again, and the arcs beside it start flat there. The search used to
   // find that maximum again in most of the pairs the bound left; on bench_contact's candidate pairs
@@ -380,9 +387,8 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     }
   }
   while (!arcs.empty() && best.evaluations < cap) {
-    const auto top = std::max_element(arcs.begin(), arcs.end(), [](const Arc<Real>& l, const Arc<Real>& r) {
-      return l.bound < r.bound;
-    });
+    const auto top = std::max_element(arcs.begin(), arcs.end(),
+                                      [](const Arc<Real>& l, const Arc<Real>& r) { return l.bound < r.bound; });
     if (top->bound <= best.at.s + margin) break;
     const Arc<Real> arc = *top;
     *top = arcs.back();

@@ -19,8 +19,7 @@ DistanceResult distance_circle_ellipse(const Circle& c, const Ellipse& e) {
   const Vec2 on_ellipse = e.center + rot.apply(pe.closest);
   if (pe.distance <= c.radius) return DistanceResult::touching(on_ellipse);
   const Vec2 toward = rot.apply(Vec2(pe.closest - p));  // world direction, centre to ellipse point
-  return DistanceResult::apart(pe.distance - c.radius, c.center + (c.radius / pe.distance) * toward,
-                               on_ellipse);
+  return DistanceResult::apart(pe.distance - c.radius, c.center + (c.radius / pe.distance) * toward, on_ellipse);
 }
 
 }  // namespace collide2d

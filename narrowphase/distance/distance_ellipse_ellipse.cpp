@@ -54,8 +54,8 @@ SolverReport separated(const Ellipse& a, const Ellipse& b, const EllipsePair<dou
   const auto best = detail::best_direction(pair, pair.from_world(contact.direction), iterations);
   const auto& e = best.at;
   if (!(e.s > 0)) return separated_by_rounding(a, b, contact, iterations);
-  const double rounding = 64 * std::numeric_limits<double>::epsilon() *
-                          (pair.delta.norm() + e.offset_a.norm() + e.offset_b.norm());
+  const double rounding =
+      64 * std::numeric_limits<double>::epsilon() * (pair.delta.norm() + e.offset_a.norm() + e.offset_b.norm());
   // The distance is s, the certified distance between the support lines; |gap| = sqrt(s^2 + s'^2)
   // would add the rounding of the gap's component across n, which dominates when s is tiny.
   const Vec2 pa = a.center + pair.to_world(e.offset_a);
@@ -108,8 +108,8 @@ struct Extremes {
 // the ends of the axes), so |g''| <= |delta| + the two: 0 for concentric circles, where the bounds
 // from the parameters' differences still allow a bump of the size of the difference.
 struct Congruence {
-  double rho;    // bounds |rho_B - rho_A|
-  double bend;   // bounds |g''|
+  double rho;   // bounds |rho_B - rho_A|
+  double bend;  // bounds |g''|
 };
 
 Congruence congruence_of(const EllipsePair<double>& p) {
@@ -125,7 +125,8 @@ Congruence congruence_of(const EllipsePair<double>& p) {
   const double da = std::abs(y.a - x.a), db = std::abs(y.b - x.b);
   const double turn = std::abs(std::remainder(y.theta - x.theta, std::numbers::pi));
   const double spread = 2 * big * std::max(x.a - x.b, y.a - y.b);  // >= a^2 - b^2 along the path
-  const double rho = 2 * big / small * da + 2 * big * big / (small * small) * db + 3 * big * spread / (small * small) * turn;
+  const double rho =
+      2 * big / small * da + 2 * big * big / (small * small) * db + 3 * big * spread / (small * small) * turn;
   const auto roundness = [](const Axes& e) { return e.a * e.a / e.b - e.b; };  // max |h''|
   return {rho, p.delta.norm() + std::min(rho + da + db + big * turn, roundness(x) + roundness(y))};
 }
@@ -146,8 +147,8 @@ Bend bend_between(const Containment& x, const Containment& y, const Congruence& 
   const double w = y.angle - x.angle;
   const double rho_lo = std::max(std::min(x.rho_b, y.rho_b) - std::max(x.rho_a, y.rho_a), -congruence.rho);
   const double rho_hi = std::min(std::max(x.rho_b, y.rho_b) - std::min(x.rho_a, y.rho_a), congruence.rho);
-  const double bound = (std::max(std::abs(rho_lo), std::abs(rho_hi)) + std::max(std::abs(x.g), std::abs(y.g))) /
-                       (1 - w * w / 8);
+  const double bound =
+      (std::max(std::abs(rho_lo), std::abs(rho_hi)) + std::max(std::abs(x.g), std::abs(y.g))) / (1 - w * w / 8);
   const double rounding = 8 * std::numeric_limits<double>::epsilon();
   const double slack = bound * (w * w / 8 + rounding);
   const double lo = std::max(rho_lo - std::max(x.g, y.g) - slack, -congruence.bend * (1 + rounding));
@@ -190,7 +191,7 @@ Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
   const Congruence congruence = congruence_of(p);
   while (!arcs.empty() && !(out.min.g < -margin && out.max.g > margin)) {
     const Containment x = arcs.back().first, y = arcs.back().second;  // not a structured binding: clang 14
-    arcs.pop_back();                                                     // cannot capture one in the lambda
+    arcs.pop_back();                                                  // cannot capture one in the lambda
     const Bend bend = bend_between(x, y, congruence);
     const bool may_lower = std::min(x.g, y.g) - bend.dip < out.min.g - rounding;
     const bool may_raise = std::max(x.g, y.g) + bend.dip > out.max.g + rounding;
@@ -303,8 +304,8 @@ SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Ell
   return distance_of(a, b, pair);
 }
 
-SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
-                                                     const Orientation& b_orientation) {
+SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation,
+                                                     const Ellipse& b, const Orientation& b_orientation) {
   std::optional<EllipsePair<double>> pair =
       EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   return distance_of(a, b, pair);

@@ -72,8 +72,8 @@ LocalPair nearest_corner(const Frame& f, const Supports& sp, double tol) {
   LocalPair best;
   for (const double s0 : {-1.0, 1.0}) {
     for (const double s1 : {-1.0, 1.0}) {
-      const bool serves = s0 * f.x[0] >= f.e[0] + s0 * s1 * sp.t[1] - tol &&
-                          s1 * f.x[1] >= f.e[1] + s0 * s1 * sp.t[0] - tol;
+      const bool serves =
+          s0 * f.x[0] >= f.e[0] + s0 * s1 * sp.t[1] - tol && s1 * f.x[1] >= f.e[1] + s0 * s1 * sp.t[0] - tol;
       if (!serves) continue;
       const Vec2 corner(s0 * f.e[0], s1 * f.e[1]);
       const PointEllipseResult pe = distance_point_ellipse(f.a, f.b, f.to_ellipse_axes(corner));
@@ -90,9 +90,7 @@ DistanceResult distance_rect_ellipse(const Rect& r, const Ellipse& e) {
   const Frame f = detail::rect_ellipse_frame<double>(r, e);
   const detail::Rotation<double> rot = detail::Rotation<double>::of(r.angle);
   const auto to_world = [&](const Vec2& p) -> Vec2 { return r.center + rot.apply(p); };
-  const auto witness = [&]() {
-    return DistanceResult::touching(to_world(detail::closest_in_ellipse_metric(f).point));
-  };
+  const auto witness = [&]() { return DistanceResult::touching(to_world(detail::closest_in_ellipse_metric(f).point)); };
   if (detail::minkowski_overlap(f, r, e)) return witness();
 
   const Supports sp = supports(f);

@@ -95,7 +95,7 @@ std::optional<CurveFoot> other_local_nearest(double a, double b, const Vec2& p) 
       const double u = 1 / (pole - w), v = 1 / w;
       const double a_ = n0 * u, b_ = q.z1 * v;
       const double sum = a_ * a_ + b_ * b_;
-      const double rise = b_ * b_ * v - a_ * a_ * u;  // G' sum^(3/2)
+      const double rise = b_ * b_ * v - a_ * a_ * u;     // G' sum^(3/2)
       if (!(rise > 0) || k == 100) return std::nullopt;  // past G's peak below 1: no root
       const double next = w + (std::sqrt(sum) - 1) * sum / rise;
       if (!(next > w)) break;  // at the root to rounding

@@ -26,10 +26,10 @@
 namespace collide2d {
 
 struct PointEllipseResult {
-  double distance = 0.0;          // from the point to the nearest point of the curve
-  Vec2 closest = Vec2::Zero();    // that nearest point, in the ellipse frame
-  Vec2 normal = Vec2::UnitX();    // the curve's outward unit normal at `closest`, in the ellipse frame
-  bool inside = false;            // the point lies in the closed solid ellipse
+  double distance = 0.0;        // from the point to the nearest point of the curve
+  Vec2 closest = Vec2::Zero();  // that nearest point, in the ellipse frame
+  Vec2 normal = Vec2::UnitX();  // the curve's outward unit normal at `closest`, in the ellipse frame
+  bool inside = false;          // the point lies in the closed solid ellipse
 };
 
 PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p);

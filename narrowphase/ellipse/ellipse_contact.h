@@ -4,8 +4,8 @@
 
 #include "narrowphase/ellipse/ellipse_pair.h"
 
-#include <optional>
 #include <collide2d/shapes.h>
+#include <optional>
 
 namespace collide2d::detail {
 

@@ -14,8 +14,8 @@
 // overlap when no n gives s > 0.
 #pragma once
 
-#include "narrowphase/overlap/overlap_rect_ellipse.h"  // FilterVerdict
 #include "narrowphase/ellipse/support_pair.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"  // FilterVerdict
 
 #include <algorithm>
 #include <cmath>
@@ -245,8 +245,8 @@ struct GjkSimplex {
       const Real l2 = cross(v[0].w, v[1].w) / area;
       if (l0 >= 0 && l1 >= 0 && l2 >= 0) {
         weight[0] = l0, weight[1] = l1, weight[2] = l2;
-        depth = std::abs(area) * std::min({l0 / (v[2].w - v[1].w).norm(), l1 / (v[0].w - v[2].w).norm(),
-                                          l2 / (v[1].w - v[0].w).norm()});
+        depth = std::abs(area) *
+                std::min({l0 / (v[2].w - v[1].w).norm(), l1 / (v[0].w - v[2].w).norm(), l2 / (v[1].w - v[0].w).norm()});
         return true;
       }
     }

@@ -37,7 +37,13 @@ class SecularRoot {
   using M = decltype(V() < V());
 
   SecularRoot(D d, const V& r0, const V& z0, const V& z1)
-      : d_(d), n0_(r0 * z0), z1_(z1), shift_(r0 - Set(d, 1.0)), hi_(n0_ + z1), t_(Max(z1, n0_ - shift_)), running_(t_ == t_) {}
+      : d_(d),
+        n0_(r0 * z0),
+        z1_(z1),
+        shift_(r0 - Set(d, 1.0)),
+        hi_(n0_ + z1),
+        t_(Max(z1, n0_ - shift_)),
+        running_(t_ == t_) {}
 
   // One Newton step in every lane still running; false once none is.
   bool step() {

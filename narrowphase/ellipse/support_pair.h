@@ -11,8 +11,8 @@
 // The signed distance of the pair is max s over all n, apart and overlapping alike.
 #pragma once
 
-#include "shapes/internal.h"
 #include <collide2d/shapes.h>
+#include "shapes/internal.h"
 
 #include <Eigen/Core>
 
@@ -39,9 +39,9 @@ Real cross(const V2<Real>& p, const V2<Real>& q) {
 
 template <class Real>
 struct Support {
-  V2<Real> offset;  // support point minus centre
-  Real h = 0;       // support function value
-  Real rho = 0;     // radius of curvature of the boundary at the support point
+  V2<Real> offset;     // support point minus centre
+  Real h = 0;          // support function value
+  Real rho = 0;        // radius of curvature of the boundary at the support point
   Real rho_slope = 0;  // d rho / d phi for n turning counter-clockwise
 };
 
@@ -134,10 +134,10 @@ struct RectSupport {
 
 template <class Real>
 struct Separation {
-  Real s = 0;       // s(n)
-  Real slope = 0;   // ds/dphi for n turning counter-clockwise
-  Real bend = 0;    // -d2s/dphi2 = s + rho_A + rho_B, positive wherever s > 0 (s is concave there)
-  V2<Real> gap;     // support point of B in -n minus support point of A in n
+  Real s = 0;      // s(n)
+  Real slope = 0;  // ds/dphi for n turning counter-clockwise
+  Real bend = 0;   // -d2s/dphi2 = s + rho_A + rho_B, positive wherever s > 0 (s is concave there)
+  V2<Real> gap;    // support point of B in -n minus support point of A in n
   V2<Real> offset_a;
   V2<Real> offset_b;  // B's support offset in direction +n (B's contact point is c_B - offset_b)
   Real rho_a = 0;
@@ -168,8 +168,8 @@ template <class Real, class SA, class SB>
 struct SupportPair {
   SA A;
   SB B;
-  V2<Real> delta;  // c_B - c_A
-  Real scale = 0;  // |delta| + the two shapes' reaches: rounding errors are a few u * scale
+  V2<Real> delta;        // c_B - c_A
+  Real scale = 0;        // |delta| + the two shapes' reaches: rounding errors are a few u * scale
   Rotation<Real> frame;  // the pair's axes in world axes
 
   template <class X, class Y>
@@ -238,7 +238,8 @@ struct SupportPair {
   Separation<Real> combine(const V2<Real>& n, const Support<Real>& sa, const Support<Real>& sb) const {
     const V2<Real> gap = delta - sa.offset - sb.offset;
     const Real s = n.dot(gap);
-    return {s, perp(n).dot(gap), s + sa.rho + sb.rho, gap, sa.offset, sb.offset, sa.rho, sb.rho, sa.rho_slope + sb.rho_slope};
+    return {s,      perp(n).dot(gap), s + sa.rho + sb.rho,        gap, sa.offset, sb.offset,
+            sa.rho, sb.rho,           sa.rho_slope + sb.rho_slope};
   }
 };
 

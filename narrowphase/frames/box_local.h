@@ -5,8 +5,6 @@
 
 namespace collide2d::detail {
 
-inline Vec2 clamp_to_box(const Vec2& p, const Vec2& half) {
-  return p.cwiseMax(-half).cwiseMin(half);
-}
+inline Vec2 clamp_to_box(const Vec2& p, const Vec2& half) { return p.cwiseMax(-half).cwiseMin(half); }
 
 }  // namespace collide2d::detail

@@ -8,9 +8,9 @@
 // and p^T M p cancels to ~1/a^2, losing twelve digits; the projected form is a sum of squares.
 #pragma once
 
+#include <collide2d/shapes.h>
 #include "narrowphase/batch/lanes.h"
 #include "shapes/internal.h"
-#include <collide2d/shapes.h>
 
 #include <Eigen/Core>
 
@@ -23,9 +23,9 @@ using V2 = Eigen::Matrix<Real, 2, 1>;
 
 template <class Real>
 struct RectEllipseFrame {
-  V2<Real> x;    // ellipse centre
-  V2<Real> e;    // rectangle half extents
-  Real c = 1;    // ellipse a-axis direction (c, s)
+  V2<Real> x;  // ellipse centre
+  V2<Real> e;  // rectangle half extents
+  Real c = 1;  // ellipse a-axis direction (c, s)
   Real s = 0;
   Real a = 1;
   Real b = 1;
@@ -36,9 +36,7 @@ struct RectEllipseFrame {
     return V2<Real>(c * d[0] + s * d[1], -s * d[0] + c * d[1]);
   }
   // Inverse of to_ellipse_axes.
-  V2<Real> from_ellipse_axes(const V2<Real>& u) const {
-    return x + V2<Real>(c * u[0] - s * u[1], s * u[0] + c * u[1]);
-  }
+  V2<Real> from_ellipse_axes(const V2<Real>& u) const { return x + V2<Real>(c * u[0] - s * u[1], s * u[0] + c * u[1]); }
   Real quadratic(const V2<Real>& p) const {
     const V2<Real> u = to_ellipse_axes(p);
     const Real u0 = u[0] / a;

@@ -1,16 +1,16 @@
 // Private: rectangle B seen from rectangle A's frame.
 #pragma once
 
+#include <collide2d/shapes.h>
 #include "narrowphase/batch/lanes.h"
 #include "shapes/internal.h"
-#include <collide2d/shapes.h>
 
 namespace collide2d::detail {
 
 struct RectPairFrame {
-  Rotation<double> a_rot;   // A's orientation in the world
-  Rotation<double> b_rel;   // B's orientation in A's frame
-  Vec2 b_center;            // B's centre in A's frame
+  Rotation<double> a_rot;  // A's orientation in the world
+  Rotation<double> b_rel;  // B's orientation in A's frame
+  Vec2 b_center;           // B's centre in A's frame
 
   RectPairFrame(const Rect& a, const Rect& b)
       : RectPairFrame(a, Rotation<double>::of(a.angle), b, Rotation<double>::of(b.angle)) {}
@@ -20,9 +20,10 @@ struct RectPairFrame {
 };
 
 // The overlap test's inputs (rect_rect_overlap-inl.h) for one pair.
-inline RectRectLanes<double> rect_rect_lanes(const Rect& a, const Orientation& ao, const Rect& b, const Orientation& bo) {
+inline RectRectLanes<double> rect_rect_lanes(const Rect& a, const Orientation& ao, const Rect& b,
+                                             const Orientation& bo) {
   const RectPairFrame f(a, {ao.c, ao.s}, b, {bo.c, bo.s});
-  return {f.b_center.x(), f.b_center.y(), f.b_rel.c,          f.b_rel.s,
+  return {f.b_center.x(),     f.b_center.y(),     f.b_rel.c,          f.b_rel.s,
           a.half_extents.x(), a.half_extents.y(), b.half_extents.x(), b.half_extents.y()};
 }
 

@@ -77,7 +77,8 @@ class CircleEllipseFilter {
     const V u = f_.px / f_.a, v = f_.py / f_.b;
     const V w2 = u * u + v * v;
     if (decide(out_.overlap, w2 <= k(1.0))) return out_;
-    const V margin = k(16 * std::numeric_limits<double>::epsilon()) * (Sqrt(f_.px * f_.px + f_.py * f_.py) + f_.a + f_.b + f_.r);
+    const V margin =
+        k(16 * std::numeric_limits<double>::epsilon()) * (Sqrt(f_.px * f_.px + f_.py * f_.py) + f_.a + f_.b + f_.r);
     const V clear = f_.r + margin;
     if (decide(out_.separated, squared_distance_to_box(f_.px, f_.py, f_.a, f_.b) > clear * clear)) return out_;
     const V root = Sqrt(w2);

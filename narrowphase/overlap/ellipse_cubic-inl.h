@@ -81,7 +81,7 @@ auto ellipse_cubic_verdicts(D d, const detail::EllipseEllipseLanes<V>& f) {
                           And(within(m_c1, 1e70), And(within(k, 1e12), within(delta1 / delta2, 1e12))));
   const auto sure = And(ranged, Abs(disc) > Set(d, 0x1p-45) * m_disc);
   const V zero = Set(d, 0.0);
-  const auto c2_negative = c2 < Neg(Set(d, 0x1p-47) * m_c2), c2_positive = c2 > Set(d, 0x1p-47) * m_c2;
+  const auto c2_negative = c2<Neg(Set(d, 0x1p-47) * m_c2), c2_positive = c2> Set(d, 0x1p-47) * m_c2;
   const auto c1_positive = c1 > Set(d, 0x1p-47) * m_c1, c1_negative = c1 < Neg(Set(d, 0x1p-47) * m_c1);
   const auto real_roots = And(sure, disc > zero);
   detail::LaneVerdicts<decltype(disc > zero)> out;

@@ -22,7 +22,9 @@ namespace detail {
 // The centre inside the ellipse, or the point–ellipse distance within r: the same decision as
 // distance_circle_ellipse, so the two always agree. Certain cases come first
 // (circle_overlap-inl.h), the root only for the pairs they leave.
-bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) { return overlap_circle_ellipse(c, e, Orientation::of(e.angle)); }
+bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) {
+  return overlap_circle_ellipse(c, e, Orientation::of(e.angle));
+}
 
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation& eo) {
   const detail::CircleEllipseLanes<double> f = detail::circle_ellipse_lanes(c, e, eo);

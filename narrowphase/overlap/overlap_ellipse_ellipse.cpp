@@ -2,8 +2,8 @@
 
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
-#include "narrowphase/ellipse/ellipse_contact.h"
 #include "narrowphase/batch/lanes.h"
+#include "narrowphase/ellipse/ellipse_contact.h"
 
 #include <algorithm>
 #include <cmath>
@@ -147,7 +147,8 @@ namespace {
 
 // A pair not far apart: the algebraic test (ellipse_cubic-inl.h, which the batch runs on vectors),
 // else the certain cases and GJK of ellipse_contact.
-bool near_overlap(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b, const Orientation& b_orientation) {
+bool near_overlap(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
+                  const Orientation& b_orientation) {
   const auto cubic = detail::ellipse_cubic_verdicts(detail::Scalar{},
                                                     detail::ellipse_ellipse_lanes(a, a_orientation, b, b_orientation));
   if (cubic.separated || cubic.overlap) return cubic.overlap;

@@ -5,8 +5,8 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/frames/rect_pair_frame.h"
 #include "narrowphase/batch/lanes.h"
+#include "narrowphase/frames/rect_pair_frame.h"
 
 namespace collide2d {
 namespace detail {

@@ -97,7 +97,7 @@ class RectEllipseFilter {
     const V a = shrink * f_.a, b = shrink * f_.b;
     V u0, u1;
     to_ellipse_axes(k(0.0), k(0.0), u0, u1);
-    const V rect = Max(Abs(f_.x0) * e1, Abs(f_.x1) * e0);  // e0 e1 / s_R
+    const V rect = Max(Abs(f_.x0) * e1, Abs(f_.x1) * e0);       // e0 e1 / s_R
     const V ellipse = Sqrt(b * u0 * b * u0 + a * u1 * a * u1);  // a b / s_E
     const M shared = rect * (a * b) + ellipse * (e0 * e1) > rect * ellipse * k(1 + 16 * kU);
     return And(And(e0 > k(0.0), e1 > k(0.0)), And(shrink > k(0.0), shared));

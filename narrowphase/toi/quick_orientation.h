@@ -23,8 +23,8 @@ inline std::optional<Orientation> quick_orientation(double angle) {
   const double r = (angle - k * kPio2Hi) - k * kPio2Lo;
   const double z = r * r;
   double sine = 1.0 / 355687428096000.0, cosine = 1.0 / 6402373705728000.0;  // 1/17!, 1/18!
-  for (const double c : {-1.0 / 1307674368000.0, 1.0 / 6227020800.0, -1.0 / 39916800.0, 1.0 / 362880.0,
-                         -1.0 / 5040.0, 1.0 / 120.0, -1.0 / 6.0}) {  // -1/15!, 1/13!, ... -1/3!
+  for (const double c : {-1.0 / 1307674368000.0, 1.0 / 6227020800.0, -1.0 / 39916800.0, 1.0 / 362880.0, -1.0 / 5040.0,
+                         1.0 / 120.0, -1.0 / 6.0}) {  // -1/15!, 1/13!, ... -1/3!
     sine = sine * z + c;
   }
   for (const double c : {-1.0 / 20922789888000.0, 1.0 / 87178291200.0, -1.0 / 479001600.0, 1.0 / 3628800.0,
@@ -34,10 +34,14 @@ inline std::optional<Orientation> quick_orientation(double angle) {
   sine = r + r * z * sine;
   cosine = 1.0 - z * cosine;
   switch (static_cast<long long>(k) & 3) {  // the quarter turns
-    case 0: return Orientation{cosine, sine};
-    case 1: return Orientation{-sine, cosine};
-    case 2: return Orientation{-cosine, -sine};
-    default: return Orientation{sine, -cosine};
+    case 0:
+      return Orientation{cosine, sine};
+    case 1:
+      return Orientation{-sine, cosine};
+    case 2:
+      return Orientation{-cosine, -sine};
+    default:
+      return Orientation{sine, -cosine};
   }
 }
 

@@ -69,9 +69,11 @@ void validate(const Shape& s, const Motion& m, const char* which) {
     const char* field = k == 0 ? "velocity x" : "velocity y";
     const double v = m.velocity[k];
     if (!std::isfinite(v)) detail::reject(which, field, v, "must be finite");
-    if (std::abs(center_of(s)[k] + v) > kMaxMagnitude) detail::reject(which, field, v, "carries the centre beyond +-1e50");
+    if (std::abs(center_of(s)[k] + v) > kMaxMagnitude)
+      detail::reject(which, field, v, "carries the centre beyond +-1e50");
   }
-  if (!std::isfinite(m.angular_velocity)) detail::reject(which, "angular velocity", m.angular_velocity, "must be finite");
+  if (!std::isfinite(m.angular_velocity))
+    detail::reject(which, "angular velocity", m.angular_velocity, "must be finite");
 }
 
 // A world direction in a shape's own axes, with its kept orientation.
@@ -80,7 +82,8 @@ Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<doub
 // The support function of a shape along a unit direction given in its own axes.
 double support_in_axes(const Shape& s, const Vec2& local) {
   if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
+  if (const auto* e = std::get_if<Ellipse>(&s))
+    return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
   return std::get<Circle>(s).radius;
 }
 
@@ -152,7 +155,7 @@ double first_root(double gap, double slope, double bend) {
 struct Axis {
   double slope = 0.0;  // of the centres' term, less its rounding
   double bend = 0.0;
-  SupportBound a;      // A's support function along u, B's along -u
+  SupportBound a;  // A's support function along u, B's along -u
   SupportBound b;
 };
 
@@ -291,8 +294,8 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   const double tolerance = std::max(options.tolerance > 0 ? options.tolerance : 1e-9 * (reach_of(a) + reach_of(b)),
                                     8 * std::numeric_limits<double>::epsilon() * coordinates);
   const Vec2 v = b_motion.velocity - a_motion.velocity;
-  const double spin = std::abs(a_motion.angular_velocity) * turning_reach(a) +
-                      std::abs(b_motion.angular_velocity) * turning_reach(b);
+  const double spin =
+      std::abs(a_motion.angular_velocity) * turning_reach(a) + std::abs(b_motion.angular_velocity) * turning_reach(b);
   const double reaches = turning_reach(a) + turning_reach(b);
   // Shapes stay valid over the step (validate above), and only a turning one needs its cosine and
   // sine again, from quick_orientation where the angle allows (the C library's took a sixth of a
@@ -340,8 +343,9 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
       // The slope less the rounding of its terms (n is a rounded unit vector), which the tolerance
       // of a fast bullet would not cover.
       const double rounding = 16 * kU * (v.norm() + spin + std::abs(omega) * (centres.norm() + reaches));
-      const Axis axis{along + omega * centres.dot(m) - rounding, omega * omega * offset + 2 * std::abs(omega * m.dot(v)),
-                      support_bound(at_a, oa, wa - omega, n), support_bound(at_b, ob, wb - omega, -n)};
+      const Axis axis{along + omega * centres.dot(m) - rounding,
+                      omega * omega * offset + 2 * std::abs(omega * m.dot(v)), support_bound(at_a, oa, wa - omega, n),
+                      support_bound(at_b, ob, wb - omega, -n)};
       step = later_root(step, gap, axis);
     }
     if (!(t + step < 1.0)) return result(ToiStatus::miss, 1.0, exact(), k);

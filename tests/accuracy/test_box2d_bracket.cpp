@@ -1,9 +1,9 @@
 // Box2D as an independent check: for convex shapes the true distance lies between the distance of
 // the circumscribed polygon approximations and that of the inscribed ones, and the bracket closes
 // on collide2d's value as the polygons get finer.
-#include "bench/box2d_baseline.h"
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
+#include "bench/box2d_baseline.h"
 
 #include <gtest/gtest.h>
 
@@ -22,14 +22,22 @@ using baseline::Fit;
 std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const auto ellipse = [&] { return Ellipse{Vec2(4 * u(rng), 4 * u(rng)), 0.2 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)}; };
+  const auto ellipse = [&] {
+    return Ellipse{Vec2(4 * u(rng), 4 * u(rng)), 0.2 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
+  };
   std::vector<std::pair<Shape, Shape>> out;
   for (int k = 0; k < n; ++k) {
     const Shape b = ellipse();
     switch (k % 3) {
-      case 0: out.emplace_back(ellipse(), b); break;
-      case 1: out.emplace_back(Rect{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.1 + u(rng), 0.1 + u(rng)), 7 * u(rng)}, b); break;
-      default: out.emplace_back(Circle{Vec2(4 * u(rng), 4 * u(rng)), 0.1 + u(rng)}, b); break;
+      case 0:
+        out.emplace_back(ellipse(), b);
+        break;
+      case 1:
+        out.emplace_back(Rect{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.1 + u(rng), 0.1 + u(rng)), 7 * u(rng)}, b);
+        break;
+      default:
+        out.emplace_back(Circle{Vec2(4 * u(rng), 4 * u(rng)), 0.1 + u(rng)}, b);
+        break;
     }
   }
   return out;
@@ -86,8 +94,8 @@ TEST(Box2dBracket, BracketClosesOnOurDistance) {
     return v[v.size() / 2];
   };
   const double w8 = median(widths[0]), w256 = median(widths[1]);
-  std::printf("[box2d bracket] %zu pairs: median width %.3e at N = 8, %.3e at N = 256 (ratio %.0f)\n",
-              widths[0].size(), w8, w256, w8 / w256);
+  std::printf("[box2d bracket] %zu pairs: median width %.3e at N = 8, %.3e at N = 256 (ratio %.0f)\n", widths[0].size(),
+              w8, w256, w8 / w256);
   EXPECT_GT(w8 / w256, 100.0);
 }
 
@@ -116,7 +124,6 @@ TEST(Box2dBracket, OverlapOfPolygonsBracketsTheExactVerdict) {
   EXPECT_GT(decided, 2000);
 }
 
-
 // Contacts. The signed distance only grows when the shapes shrink (s(n) = n.delta - h_A - h_B), so
 // Box2D's manifold on the circumscribed N-gons gives a separation at most ours, and on the
 // inscribed ones at least ours (b2CollidePolygons: the polygons' exact depth by separating axes).
@@ -135,10 +142,12 @@ TEST(Box2dBracket, ContactDepthLiesBetweenCircumscribedAndInscribed) {
     double width[2];
     bool both = true;
     for (int i = 0; i < 2; ++i) {
-      const auto outer = baseline::box2d_contact(baseline::to_box2d_shapes(
-          baseline::to_box2d(a, sides[i], Fit::circumscribed, origin), baseline::to_box2d(b, sides[i], Fit::circumscribed, origin)));
-      const auto inner = baseline::box2d_contact(baseline::to_box2d_shapes(
-          baseline::to_box2d(a, sides[i], Fit::inscribed, origin), baseline::to_box2d(b, sides[i], Fit::inscribed, origin)));
+      const auto outer = baseline::box2d_contact(
+          baseline::to_box2d_shapes(baseline::to_box2d(a, sides[i], Fit::circumscribed, origin),
+                                    baseline::to_box2d(b, sides[i], Fit::circumscribed, origin)));
+      const auto inner =
+          baseline::box2d_contact(baseline::to_box2d_shapes(baseline::to_box2d(a, sides[i], Fit::inscribed, origin),
+                                                            baseline::to_box2d(b, sides[i], Fit::inscribed, origin)));
       ASSERT_TRUE(outer) << "circumscribed polygons of an overlapping pair apart";
       ASSERT_LE(outer->separation, c.separation + kFloatTolerance) << "sides " << sides[i];
       if (!inner) {
@@ -158,10 +167,11 @@ TEST(Box2dBracket, ContactDepthLiesBetweenCircumscribedAndInscribed) {
     std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
     return v[v.size() / 2];
   };
-  std::printf("[box2d bracket] contacts of %d overlapping pairs: median depth bracket %.3e at N = 5, %.3e at N = 8 "
-              "(ratio %.2f); median normal turn %.3e, %.3e rad\n",
-              checked, median(widths[0]), median(widths[1]), median(widths[0]) / median(widths[1]), median(turns[0]),
-              median(turns[1]));
+  std::printf(
+      "[box2d bracket] contacts of %d overlapping pairs: median depth bracket %.3e at N = 5, %.3e at N = 8 "
+      "(ratio %.2f); median normal turn %.3e, %.3e rad\n",
+      checked, median(widths[0]), median(widths[1]), median(widths[0]) / median(widths[1]), median(turns[0]),
+      median(turns[1]));
   EXPECT_GT(median(widths[0]) / median(widths[1]), 2.0);
   EXPECT_LT(median(turns[1]), median(turns[0]));
 }
@@ -202,12 +212,14 @@ TEST(Box2dBracket, TimeOfImpactLiesBetweenCircumscribedAndInscribed) {
     if (ours.status != ToiStatus::hit) continue;
     const double closing = std::abs(ours.normal.dot(mb.velocity));
     if (closing < 0.1 * mb.velocity.norm()) continue;  // grazing: Box2D's early stop is not bounded
-    const double slack = (0.01625 + 4e-3) / closing;  // its target, and float ulps of coordinates ~400
-    double t[2][2];  // [N = 8, 32][circumscribed, inscribed]
+    const double slack = (0.01625 + 4e-3) / closing;   // its target, and float ulps of coordinates ~400
+    double t[2][2];                                    // [N = 8, 32][circumscribed, inscribed]
     for (int n = 0; n < 2; ++n) {
       for (int f = 0; f < 2; ++f) {
         b2TOIOutput out;
-        baseline::box2d_time_of_impact(baseline::to_box2d_toi(sa, {}, sb, mb, n == 0 ? 8 : 32, f == 0 ? Fit::circumscribed : Fit::inscribed), &out);
+        baseline::box2d_time_of_impact(
+            baseline::to_box2d_toi(sa, {}, sb, mb, n == 0 ? 8 : 32, f == 0 ? Fit::circumscribed : Fit::inscribed),
+            &out);
         t[n][f] = out.state == b2TOIOutput::e_separated ? 1.0 : out.t;
       }
       EXPECT_LE(t[n][0], ours.t + slack) << "circumscribed, N index " << n;
@@ -221,8 +233,9 @@ TEST(Box2dBracket, TimeOfImpactLiesBetweenCircumscribedAndInscribed) {
     std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
     return v[v.size() / 2];
   };
-  std::printf("[box2d bracket] times of impact of %d pairs: median bracket %.3e at N = 8, %.3e at N = 32 (ratio %.1f)\n",
-              checked, median(widths[0]), median(widths[1]), median(widths[0]) / median(widths[1]));
+  std::printf(
+      "[box2d bracket] times of impact of %d pairs: median bracket %.3e at N = 8, %.3e at N = 32 (ratio %.1f)\n",
+      checked, median(widths[0]), median(widths[1]), median(widths[0]) / median(widths[1]));
   EXPECT_GT(median(widths[0]) / median(widths[1]), 4.0);
 }
 

@@ -3,8 +3,8 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
-#include "narrowphase/ellipse/distance_point_ellipse.h"
 #include <collide2d/kernels.h>
+#include "narrowphase/ellipse/distance_point_ellipse.h"
 
 #include <gtest/gtest.h>
 
@@ -54,7 +54,6 @@ TEST(CircleEllipse, CirclePathMatchesEllipsePathAtEqualAxes) {
   }
 }
 
-
 // The point–ellipse distance inside, near the major axis, where the secular root is tiny: points
 // beside the evolute's cusp at heights 0 and 1e-17 ... 1e-3 (a height of 1e-17 once gave a distance
 // off by 1.3e-2), and random points inside and out, against the 50-digit curve distance.
@@ -101,7 +100,8 @@ TEST(PointEllipse, SubnormalHeightsOffTheAxisMatchReference) {
           ASSERT_TRUE(std::isfinite(r.distance) && r.closest.allFinite()) << a << " " << b << " " << p.transpose();
           const Ellipse e{Vec2::Zero(), a, b, 0.0};
           const double ref = static_cast<double>(reference::curve_distance(e, reference::to_mp(Vec2(along, 0.0))));
-          EXPECT_LE(std::abs(r.distance - ref), 4 * std::numeric_limits<double>::epsilon() * std::max(a, p.norm()) + height)
+          EXPECT_LE(std::abs(r.distance - ref),
+                    4 * std::numeric_limits<double>::epsilon() * std::max(a, p.norm()) + height)
               << "a " << a << " b " << b << " p " << p.transpose();
           // The same point seen from the other axis (the ellipse turned a quarter).
           const PointEllipseResult q = distance_point_ellipse(b, a, Vec2(height, along));
@@ -143,7 +143,8 @@ TEST(PointEllipse, OtherLocalNearestMatchesADenseScan) {
     std::vector<int> maxima;
     for (int i = 0; i < kGrid; ++i) {
       const double here = g[static_cast<std::size_t>(i)];
-      if (here > g[static_cast<std::size_t>((i + kGrid - 1) % kGrid)] && here >= g[static_cast<std::size_t>((i + 1) % kGrid)]) {
+      if (here > g[static_cast<std::size_t>((i + kGrid - 1) % kGrid)] &&
+          here >= g[static_cast<std::size_t>((i + 1) % kGrid)]) {
         maxima.push_back(i);
       }
     }
@@ -153,9 +154,11 @@ TEST(PointEllipse, OtherLocalNearestMatchesADenseScan) {
     if (!other) continue;
     ++found;
     const Vec2& x = other->point;
-    EXPECT_NEAR(std::pow(x.x() / a, 2) + std::pow(x.y() / b, 2), 1.0, 1e-14) << "a " << a << " b " << b << " p " << p.transpose();
+    EXPECT_NEAR(std::pow(x.x() / a, 2) + std::pow(x.y() / b, 2), 1.0, 1e-14)
+        << "a " << a << " b " << b << " p " << p.transpose();
     const Vec2 d = p - x;
-    EXPECT_NEAR(d.x() * other->normal.y() - d.y() * other->normal.x(), 0.0, 1e-14) << "a " << a << " b " << b << " p " << p.transpose();
+    EXPECT_NEAR(d.x() * other->normal.y() - d.y() * other->normal.x(), 0.0, 1e-14)
+        << "a " << a << " b " << b << " p " << p.transpose();
     EXPECT_NEAR(d.dot(other->normal), other->signed_distance, 1e-14);
     // The radius of curvature at x: (ab)^2 / h^3 with h the support value along the normal.
     const double h = x.dot(other->normal);

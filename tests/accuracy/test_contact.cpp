@@ -16,8 +16,8 @@
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collide2d::testing {
@@ -59,7 +59,9 @@ std::vector<ContactFamily> contact_families() {
 
 std::string name_of(const ContactFamily& f) { return test_name(f.family); }
 
-double angle_between(const Vec2& u, const Vec2& v) { return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)); }
+double angle_between(const Vec2& u, const Vec2& v) {
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
 
 double ulps_of(const Vec2& p) { return 8 * kU * std::max(std::abs(p.x()), std::abs(p.y())); }
 
@@ -127,7 +129,8 @@ TEST_P(ContactFamilies, MatchReference) {
       const double turn = angle_between(got.normal, ref_normal);
       worst.normal = std::max(worst.normal, turn);
       ++worst.normals;
-      EXPECT_LE(turn, 1e-10) << what << " normal (" << got.normal.transpose() << ") reference (" << ref_normal.transpose() << ")";
+      EXPECT_LE(turn, 1e-10) << what << " normal (" << got.normal.transpose() << ") reference ("
+                             << ref_normal.transpose() << ")";
     }
 
     const double ulps = ulps_of(got.point_a) + ulps_of(got.point_b);
@@ -141,13 +144,15 @@ TEST_P(ContactFamilies, MatchReference) {
 
     // A guess moves only where the climb starts: from near the normal, and from its opposite.
     const double c3 = std::cos(0.3), s3 = std::sin(0.3);
-    for (const Vec2& guess : {Vec2(c3 * ref_normal.x() - s3 * ref_normal.y(), s3 * ref_normal.x() + c3 * ref_normal.y()),
-                              Vec2(-ref_normal)}) {
+    for (const Vec2& guess :
+         {Vec2(c3 * ref_normal.x() - s3 * ref_normal.y(), s3 * ref_normal.x() + c3 * ref_normal.y()),
+          Vec2(-ref_normal)}) {
       ContactOptions from;
       from.guess = guess;
       const Contact guessed = contact(c.a, c.b, from);
       EXPECT_LE(std::abs(guessed.separation - ref_sep) / scale, 8 * kU)
-          << what << " from the guess (" << guess.transpose() << "): " << guessed.separation << " reference " << ref_sep;
+          << what << " from the guess (" << guess.transpose() << "): " << guessed.separation << " reference "
+          << ref_sep;
       EXPECT_LE(guessed.evaluations, 1000) << what << " support evaluations from a guess";
     }
 
@@ -157,14 +162,14 @@ TEST_P(ContactFamilies, MatchReference) {
     // as well as n (s(-n) = s(n) when the centres coincide).
     if (center_of(c.a) != center_of(c.b)) EXPECT_EQ(back.normal, Vec2(-got.normal)) << what << " swapped normal";
   }
-  std::printf("[contact] %-44s worst separation %.1f u  points %.1f u  known gap %.1f u  normal %.1e rad (%d)  evals <= %d\n",
-              f.name.c_str(), worst.separation / kU, worst.points / kU, worst.known / kU, worst.normal, worst.normals,
-              worst.evaluations);
+  std::printf(
+      "[contact] %-44s worst separation %.1f u  points %.1f u  known gap %.1f u  normal %.1e rad (%d)  evals <= %d\n",
+      f.name.c_str(), worst.separation / kU, worst.points / kU, worst.known / kU, worst.normal, worst.normals,
+      worst.evaluations);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, ContactFamilies, ::testing::ValuesIn(contact_families()),
                          [](const auto& info) { return name_of(info.param); });
-
 
 // What a solver relies on, over the cases of every family: apart, the separation is the distance;
 // its sign is the overlap verdict; moving B by -separation * normal leaves the pair touching; a
@@ -206,8 +211,9 @@ TEST(ContactProperties, HoldOnEveryFamily) {
       EXPECT_LE(motion, motion_bound) << what;
     }
   }
-  std::printf("[contact] properties: %d pairs apart; %d pushed out, worst %.2f of the bound; rigid motion worst %.2f of it\n",
-              apart, pushed, worst_push, worst_motion);
+  std::printf(
+      "[contact] properties: %d pairs apart; %d pushed out, worst %.2f of the bound; rigid motion worst %.2f of it\n",
+      apart, pushed, worst_push, worst_motion);
 }
 
 void expect_same_contact(const Contact& plain, const Contact& kept, const std::string& what) {
@@ -222,15 +228,19 @@ void expect_same_contact(const Contact& plain, const Contact& kept, const std::s
 // the same contact bit for bit (Orientation::of is the kernels' own rotation).
 using KernelPair = std::optional<std::pair<Contact, Contact>>;
 template <class A, class B>
-KernelPair both_ways(const A&, const B&) { return std::nullopt; }
+KernelPair both_ways(const A&, const B&) {
+  return std::nullopt;
+}
 KernelPair both_ways(const Rect& a, const Rect& b) {
-  return std::pair{contact_rect_rect(a, b), contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
+  return std::pair{contact_rect_rect(a, b),
+                   contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
 }
 KernelPair both_ways(const Rect& a, const Circle& b) {
   return std::pair{contact_rect_circle(a, b), contact_rect_circle(a, Orientation::of(a.angle), b)};
 }
 KernelPair both_ways(const Rect& a, const Ellipse& b) {
-  return std::pair{contact_rect_ellipse(a, b), contact_rect_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
+  return std::pair{contact_rect_ellipse(a, b),
+                   contact_rect_ellipse(a, Orientation::of(a.angle), b, Orientation::of(b.angle))};
 }
 KernelPair both_ways(const Circle& a, const Ellipse& b) {
   return std::pair{contact_circle_ellipse(a, b), contact_circle_ellipse(a, b, Orientation::of(b.angle))};
@@ -268,7 +278,8 @@ TEST(ContactOrientations, KeptByTheCallerGiveTheSameQuery) {
       for (const bool swap : {false, true}) {
         const Shape& a = swap ? c.b : c.a;
         const Shape& b = swap ? c.a : c.b;
-        expect_same_contact(contact(a, b), contact(a, swap ? ob : oa, b, swap ? oa : ob), describe(a) + " ; " + describe(b));
+        expect_same_contact(contact(a, b), contact(a, swap ? ob : oa, b, swap ? oa : ob),
+                            describe(a) + " ; " + describe(b));
         const bool overlap = overlaps(a, b);
         EXPECT_EQ(overlaps(a, swap ? ob : oa, b, swap ? oa : ob), overlap) << describe(a) + " ; " + describe(b);
         overlapping += overlap;
@@ -314,7 +325,8 @@ TEST(ContactManifold, RectanglesResting) {
   EXPECT_EQ(back.normal, Vec2(0, -1));
   EXPECT_EQ(back.separation, c.separation);
   for (int i = 0; i < 2; ++i) {
-    EXPECT_EQ(back.manifold[static_cast<std::size_t>(i)].id, swapped_feature(c.manifold[static_cast<std::size_t>(i)].id));
+    EXPECT_EQ(back.manifold[static_cast<std::size_t>(i)].id,
+              swapped_feature(c.manifold[static_cast<std::size_t>(i)].id));
     EXPECT_EQ(feature_kind(back.manifold[static_cast<std::size_t>(i)].id), FeatureKind::face_of_b);
   }
 
@@ -361,7 +373,9 @@ TEST(ContactManifold, LongIncidentFaceClipsToAShortReferenceFace) {
 // 4,096 evaluations; the fuzzer found it).
 TEST(ContactSearch, HugeFlatSideCertifiesWithinItsRounding) {
   const Rect box{{-2.25, -2.25}, {2.25, 2.25}, 8.5884776959808324e-275};
-  const Ellipse needle{{8.3138050000613955e-275, 8.3138050000613955e-275}, 6.419116461067246e+43, 2.8545232667078439e+47,
+  const Ellipse needle{{8.3138050000613955e-275, 8.3138050000613955e-275},
+                       6.419116461067246e+43,
+                       2.8545232667078439e+47,
                        -13203.574554449877};
   const Contact c = contact(box, needle);
   EXPECT_LT(c.evaluations, 200);
@@ -382,8 +396,9 @@ TEST(ContactSearch, SharpPeakBesideAFarRectangle) {
 }
 
 // Centres 1e-160 apart: their difference squares to a denormal, and a normal from norm() came out
-// 1.00004 long (the fuzzer); centres a denormal or two apart gave normals 0.94 to 1.41 long. The circle pairs, nearly concentric (a rectangle's corner, at least
-// 1e-50 from its centre, keeps differences beside it far above the denormals).
+// 1.00004 long (the fuzzer); centres a denormal or two apart gave normals 0.94 to 1.41 long. The circle pairs, nearly
+// concentric (a rectangle's corner, at least 1e-50 from its centre, keeps differences beside it far above the
+// denormals).
 TEST(ContactNormal, UnitWhenTheCentresNearlyCoincide) {
   const Vec2 tiny(0, 1.1436311670790528e-160);
   const Shape pairs[][2] = {{Circle{{7.9375, 0}, 8}, Circle{Vec2(7.9375, 0) + tiny, 6.125}},

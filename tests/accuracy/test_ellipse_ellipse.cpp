@@ -13,8 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -28,19 +28,36 @@ std::vector<Family> ellipse_families() {
   for (const Kind inner : {Kind::ellipse, Kind::circle}) {
     for (const double aspect : {1.0, 10.0}) {
       char name[64];
-      std::snprintf(name, sizeof name, "%s in ellipse inner-tangent aspect %.0f", inner == Kind::circle ? "circle" : "ellipse",
-                    aspect);
-      Family f{.name = name, .a = Kind::ellipse, .b = inner, .aspect_min = aspect, .aspect_max = 2 * aspect,
-               .placement = Placement::inner_tangent, .seed = 11};
+      std::snprintf(name, sizeof name, "%s in ellipse inner-tangent aspect %.0f",
+                    inner == Kind::circle ? "circle" : "ellipse", aspect);
+      Family f{.name = name,
+               .a = Kind::ellipse,
+               .b = inner,
+               .aspect_min = aspect,
+               .aspect_max = 2 * aspect,
+               .placement = Placement::inner_tangent,
+               .seed = 11};
       out.push_back(f);
     }
   }
-  out.push_back(Family{.name = "ellipse-ellipse congruent ring", .a = Kind::ellipse, .b = Kind::ellipse,
-                       .aspect_max = 20, .placement = Placement::congruent, .seed = 29});
-  out.push_back(Family{.name = "ellipse-ellipse concentric", .a = Kind::ellipse, .b = Kind::ellipse,
-                       .aspect_max = 10, .placement = Placement::concentric, .seed = 13});
-  out.push_back(Family{.name = "circle-ellipse concentric", .a = Kind::circle, .b = Kind::ellipse,
-                       .aspect_max = 10, .placement = Placement::concentric, .seed = 17});
+  out.push_back(Family{.name = "ellipse-ellipse congruent ring",
+                       .a = Kind::ellipse,
+                       .b = Kind::ellipse,
+                       .aspect_max = 20,
+                       .placement = Placement::congruent,
+                       .seed = 29});
+  out.push_back(Family{.name = "ellipse-ellipse concentric",
+                       .a = Kind::ellipse,
+                       .b = Kind::ellipse,
+                       .aspect_max = 10,
+                       .placement = Placement::concentric,
+                       .seed = 13});
+  out.push_back(Family{.name = "circle-ellipse concentric",
+                       .a = Kind::circle,
+                       .b = Kind::ellipse,
+                       .aspect_max = 10,
+                       .placement = Placement::concentric,
+                       .seed = 17});
   return out;
 }
 
@@ -61,9 +78,15 @@ TEST(EllipseRounding, FallbackDecidesRoundingLevelContacts) {
     // maximises s to its rounding, 64 eps (|c_B - c_A| + |offset_a| + |offset_b|): their gap may
     // lean across n by that much, up to 384 u scale, so |b - a| exceeds a distance of ~u by as much
     // (measured: 238 u at aspect 1e3). Nearer-tangent families stay below 4 u.
-    Family f{.name = name, .a = Kind::ellipse, .b = Kind::ellipse, .cases = 140, .aspect_min = aspect,
-             .aspect_max = 4 * aspect, .deltas = {0.0, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16, -1e-16},
-             .point_bound = 384, .seed = 3};
+    Family f{.name = name,
+             .a = Kind::ellipse,
+             .b = Kind::ellipse,
+             .cases = 140,
+             .aspect_min = aspect,
+             .aspect_max = 4 * aspect,
+             .deltas = {0.0, 1e-14, -1e-14, 1e-15, -1e-15, 1e-16, -1e-16},
+             .point_bound = 384,
+             .seed = 3};
     const FamilyStats s = run_family(f);
     EXPECT_GT(s.fallbacks, 0) << "the filter should defer some rounding-level contacts";
     EXPECT_EQ(s.rounding_verdicts_checked, 2 * f.cases) << "every verdict here is at the rounding level";
@@ -76,12 +99,12 @@ Ellipse seed_ellipse(double x, double y, double width, double height, double deg
 }
 
 std::vector<Ellipse> seed_samples() {
-  return {seed_ellipse(0, 0, 6, 10, 15),    seed_ellipse(0, 0, 6, 10, 195),   seed_ellipse(0, 0, 6, 9, 15),
-          seed_ellipse(0, 0, 6, 9, 195),    seed_ellipse(0, 0, 5, 10, 15),    seed_ellipse(0, 0, 5, 10, 195),
-          seed_ellipse(0, 0, 6, 10, -15),   seed_ellipse(0, 0, 6, 10, 165),   seed_ellipse(7, 7, 5, 9, 15),
-          seed_ellipse(7, 7, 5, 9, 195),    seed_ellipse(-7, -7, 7, 4, 0),    seed_ellipse(-7, -7, 7, 4, 180),
-          seed_ellipse(-7, 7, 10, 4, 0),    seed_ellipse(-7, 7, 10, 4, 180),  seed_ellipse(7, -7, 4, 6, 45),
-          seed_ellipse(7, -7, 4, 6, 225),   seed_ellipse(-8, 0, 4, 4, 0),     seed_ellipse(-8, 0, 4, 4, 15),
+  return {seed_ellipse(0, 0, 6, 10, 15),   seed_ellipse(0, 0, 6, 10, 195),  seed_ellipse(0, 0, 6, 9, 15),
+          seed_ellipse(0, 0, 6, 9, 195),   seed_ellipse(0, 0, 5, 10, 15),   seed_ellipse(0, 0, 5, 10, 195),
+          seed_ellipse(0, 0, 6, 10, -15),  seed_ellipse(0, 0, 6, 10, 165),  seed_ellipse(7, 7, 5, 9, 15),
+          seed_ellipse(7, 7, 5, 9, 195),   seed_ellipse(-7, -7, 7, 4, 0),   seed_ellipse(-7, -7, 7, 4, 180),
+          seed_ellipse(-7, 7, 10, 4, 0),   seed_ellipse(-7, 7, 10, 4, 180), seed_ellipse(7, -7, 4, 6, 45),
+          seed_ellipse(7, -7, 4, 6, 225),  seed_ellipse(-8, 0, 4, 4, 0),    seed_ellipse(-8, 0, 4, 4, 15),
           seed_ellipse(0.5, -0.5, 2, 4, 0)};
 }
 
@@ -105,8 +128,9 @@ TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
                                                      : baselines::curve_distance(first, other, solver);
       const double solid_error = std::abs(solid.result.distance - static_cast<double>(ref.distance));
       const double curve_error = std::abs(curve.result.distance - static_cast<double>(ref.boundary));
-      std::printf("[seed-000] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n",
-                  k, method, solid_error, curve_error, curve.iterations, curve.converged);
+      std::printf(
+          "[seed-000] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n", k,
+          method, solid_error, curve_error, curve.iterations, curve.converged);
       EXPECT_EQ(solid.result.overlapping, ref.overlap) << "sample " << k;
       const bool robust = method == 0;
       const double bound = (robust ? 8 * kU : 1e-12) * scale;

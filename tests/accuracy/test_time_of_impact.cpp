@@ -3,8 +3,8 @@
 // reported, no contact anywhere before it.
 #include <collide2d/time_of_impact.h>
 
-#include "mp_reference.h"
 #include <collide2d/query.h>
+#include "mp_reference.h"
 
 #include <gtest/gtest.h>
 
@@ -153,8 +153,8 @@ TEST(TimeOfImpact, NeverAfterTheFirstContact) {
   }
   EXPECT_GT(hits, 40);
   EXPECT_GT(misses, 50);
-  std::printf("[toi] random motions: %d hits, %d misses, %d earlier times apart; at most %d steps\n", hits,
-              misses, checked, most);
+  std::printf("[toi] random motions: %d hits, %d misses, %d earlier times apart; at most %d steps\n", hits, misses,
+              checked, most);
 }
 
 // A circle of radius 0.5 cast 4 to the right at a box whose face is 2.5 away from its edge: the
@@ -261,7 +261,8 @@ std::vector<ToiFamily> toi_families() {
   for (const double sizes : {10.0, 1e2, 1e3, 1e4, 1e5, 1e6}) {
     const double angle = turn(), w = 0.001, speed = sizes * 2 * w;
     const Vec2 n = unit(angle + 1.5707963267948966);
-    const Rect still{{0, 0}, {1, w}, angle}, moving{-(speed / 2) * n + 0.3 * unit(angle), {1, w}, angle + 0.2 * (u(rng) - 0.5)};
+    const Rect still{{0, 0}, {1, w}, angle},
+        moving{-(speed / 2) * n + 0.3 * unit(angle), {1, w}, angle + 0.2 * (u(rng) - 0.5)};
     needles.cases.push_back({still, {}, moving, {speed * n, 0}, 1e-12, false});
   }
   out.push_back(needles);
@@ -271,8 +272,10 @@ std::vector<ToiFamily> toi_families() {
   for (const double delta : {1e-3, 1e-6, 1e-9, 1e-12}) {
     for (const double side : {1.0, -1.0}) {
       const double gap = side * delta;
-      grazing.cases.push_back({Rect{{0, 0}, {1, 0.5}, 0}, {}, Circle{{-3, 0.5 + 0.25 + gap}, 0.25}, {{6, 0}, 0}, delta / 4, true});
-      grazing.cases.push_back({Ellipse{{0, 0}, 2, 0.5, 0}, {}, Circle{{-4, 0.5 + 0.25 + gap}, 0.25}, {{8, 0}, 0}, delta / 4, true});
+      grazing.cases.push_back(
+          {Rect{{0, 0}, {1, 0.5}, 0}, {}, Circle{{-3, 0.5 + 0.25 + gap}, 0.25}, {{6, 0}, 0}, delta / 4, true});
+      grazing.cases.push_back(
+          {Ellipse{{0, 0}, 2, 0.5, 0}, {}, Circle{{-4, 0.5 + 0.25 + gap}, 0.25}, {{8, 0}, 0}, delta / 4, true});
     }
   }
   out.push_back(grazing);
@@ -281,8 +284,12 @@ std::vector<ToiFamily> toi_families() {
   for (const double w : {1.0, 10.0, 100.0}) {
     for (int k = 0; k < 3; ++k) {
       const double reach = 0.2 + 0.7 * u(rng), angle = turn();
-      spinning.cases.push_back({Rect{{0, 0}, {1, 0.01}, angle}, {Vec2::Zero(), k % 2 ? w : -w},
-                                Circle{reach * unit(angle + 1.2 + 2 * u(rng)), 0.05}, {}, 1e-12, false});
+      spinning.cases.push_back({Rect{{0, 0}, {1, 0.01}, angle},
+                                {Vec2::Zero(), k % 2 ? w : -w},
+                                Circle{reach * unit(angle + 1.2 + 2 * u(rng)), 0.05},
+                                {},
+                                1e-12,
+                                false});
     }
   }
   out.push_back(spinning);

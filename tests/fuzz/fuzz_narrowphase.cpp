@@ -7,16 +7,16 @@
 // finite with a unit normal, its separation the distance when apart and at most 0 when
 // overlapping (to 1e-9 of the scale), the same both ways with the normal reversed, and its search
 // certified within its cap of support evaluations.
-#include "fuzz_input.h"
-#include <collide2d/kernels.h>
-#include "narrowphase/kernel_order.h"
 #include <collide2d/batch.h>
+#include <collide2d/kernels.h>
 #include <collide2d/query.h>
+#include "fuzz_input.h"
+#include "narrowphase/kernel_order.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <span>
 #include <type_traits>
 

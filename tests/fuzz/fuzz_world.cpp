@@ -9,10 +9,10 @@
 // where the boxes over the step meet, and none that time_of_impact does not find. (Where they do
 // not meet the shapes can still come within the tolerance, which grows with the coordinates: 5e3 at
 // 3e18; the World never pairs them, as with a proximity pair culled by its boxes.)
+#include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 #include "fuzz_input.h"
-#include <collide2d/ray_cast.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,8 @@ double box_gap(const Aabb& p, const Aabb& q) {
 // the same tolerance: it is neither overlapping nor apart.
 // Whether the World pairs the two at all, and whether as a sensor pair.
 bool paired(const World& w, BodyId x, BodyId y) {
-  return should_pair(w.filter(x), w.filter(y)) && !(w.is_static(x) && w.is_static(y)) && !(w.is_sensor(x) && w.is_sensor(y));
+  return should_pair(w.filter(x), w.filter(y)) && !(w.is_static(x) && w.is_static(y)) &&
+         !(w.is_sensor(x) && w.is_sensor(y));
 }
 bool sensor_pair(const World& w, BodyId x, BodyId y) { return w.is_sensor(x) || w.is_sensor(y); }
 
@@ -117,11 +118,14 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Bod
 
 // Filters from three categories, every mask of them, and groups -2 … 2.
 Filter filter_from(fuzz::Input& in) {
-  return {.category = std::uint64_t{1} << (in.byte() % 3), .mask = static_cast<std::uint64_t>(in.byte() % 8),
+  return {.category = std::uint64_t{1} << (in.byte() % 3),
+          .mask = static_cast<std::uint64_t>(in.byte() % 8),
           .group = static_cast<std::int32_t>(in.byte() % 5) - 2};
 }
 
-bool lets_through(const QueryFilter& q, const Filter& f) { return (f.category & q.mask) != 0 && (f.mask & q.category) != 0; }
+bool lets_through(const QueryFilter& q, const Filter& f) {
+  return (f.category & q.mask) != 0 && (f.mask & q.category) != 0;
+}
 
 // The World's observable state, to check that a refused call changed nothing.
 std::vector<std::pair<BodyId, std::size_t>> snapshot(const World& w) {
@@ -154,7 +158,8 @@ void check_impacts(const World& w, const Starts& starts) {
       };
       const TimeOfImpact r = time_of_impact(si ? *si : w.shape(ids[i]), motion(si, ids[i]), sj ? *sj : w.shape(ids[j]),
                                             motion(sj, ids[j]));
-      if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
+      if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled)
+        expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
     }
   }
   // A box inside the one the World gives a body over the step: its box now, or for a continuous
@@ -215,7 +220,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         case 0:
           if (world.size() < 24) {
             const std::uint8_t kind = in.byte();
-            world.add(in.shape(), {.user_id = 0, .filter = filter_from(in), .is_static = kind % 3 == 0, .sensor = kind % 5 == 0});
+            world.add(in.shape(),
+                      {.user_id = 0, .filter = filter_from(in), .is_static = kind % 3 == 0, .sensor = kind % 5 == 0});
           }
           break;
         case 6: {
@@ -264,13 +270,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           break;
         case 4: {
           std::vector<BodyId> expected;
-          const QueryFilter q{.category = std::uint64_t{1} << (in.byte() % 3), .mask = static_cast<std::uint64_t>(in.byte() % 8)};
+          const QueryFilter q{.category = std::uint64_t{1} << (in.byte() % 3),
+                              .mask = static_cast<std::uint64_t>(in.byte() % 8)};
           if (in.byte() % 2 == 0) {
             const Shape probe = in.shape();
             const auto got = world.overlapping(probe, q);
             for (const BodyId id : world.bodies()) {
               if (world.is_sensor(id) || !lets_through(q, world.filter(id))) continue;
-              if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id))) expected.push_back(id);
+              if (intersects(aabb(probe), aabb(world.shape(id))) && overlaps(probe, world.shape(id)))
+                expected.push_back(id);
             }
             check(got == expected, "overlapping(shape) equals brute force");
           } else {
@@ -278,7 +286,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const Aabb box{corner, corner + in.point().cwiseAbs()};  // may have no width or height
             const auto got = world.overlapping(box, q);
             for (const BodyId id : world.bodies()) {
-              if (!world.is_sensor(id) && lets_through(q, world.filter(id)) && overlaps(world.shape(id), box)) expected.push_back(id);
+              if (!world.is_sensor(id) && lets_through(q, world.filter(id)) && overlaps(world.shape(id), box))
+                expected.push_back(id);
             }
             check(got == expected, "overlapping(box) equals brute force");
           }
@@ -288,7 +297,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           const Vec2 origin = in.point();
           const Vec2 direction = in.point();
           const auto hit = world.ray_cast(origin, direction, 100.0);
-          if (hit) check(std::isfinite(hit->distance) && hit->distance >= 0 && hit->point.allFinite(), "ray hit finite");
+          if (hit)
+            check(std::isfinite(hit->distance) && hit->distance >= 0 && hit->point.allFinite(), "ray hit finite");
           // Every solid body the ray meets, through the trees (moved bodies too, before the update
           // refreshes them), as the kernel finds them one by one.
           const std::vector<RayHit> all = world.ray_cast_all(origin, direction, 100.0);

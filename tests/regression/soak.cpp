@@ -54,7 +54,8 @@ BruteForce all_pairs(const World& world) {
     const bool sa = world.is_sensor(p.a), sb = world.is_sensor(p.b);
     if (sa && sb) continue;
     if (sa || sb) {
-      if (overlaps(world.shape(p.a), world.shape(p.b))) out.sensing.push_back(sa ? SensorPair{p.a, p.b} : SensorPair{p.b, p.a});
+      if (overlaps(world.shape(p.a), world.shape(p.b)))
+        out.sensing.push_back(sa ? SensorPair{p.a, p.b} : SensorPair{p.b, p.a});
       continue;
     }
     out.boxes_meet.push_back(p);
@@ -74,7 +75,8 @@ int reference_disagreements(const World& world, const BruteForce& all, std::mt19
     const BodyPair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
     const bool reported = std::binary_search(world.overlapping().begin(), world.overlapping().end(), p);
     if (reported != reference::overlap(world.shape(p.a), world.shape(p.b))) {
-      std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a.index, p.b.index, reported, !reported);
+      std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a.index, p.b.index, reported,
+                  !reported);
       ++wrong;
     }
   }
@@ -97,9 +99,12 @@ int main(int argc, char** argv) {
     const Vec2 c(side * u(rng), side * u(rng));
     const double size = 0.3 + 1.7 * u(rng);
     switch (static_cast<int>(3 * u(rng))) {
-      case 0: return Circle{c, size};
-      case 1: return Ellipse{c, size, size / (1 + 7 * u(rng)), 6.3 * u(rng)};
-      default: return Rect{c, Vec2(size, size * (0.2 + 0.8 * u(rng))), 6.3 * u(rng)};
+      case 0:
+        return Circle{c, size};
+      case 1:
+        return Ellipse{c, size, size / (1 + 7 * u(rng)), 6.3 * u(rng)};
+      default:
+        return Rect{c, Vec2(size, size * (0.2 + 0.8 * u(rng))), 6.3 * u(rng)};
     }
   };
   World world({.fat_margin = 0.1});
@@ -152,9 +157,11 @@ int main(int argc, char** argv) {
     const std::size_t heap = heap_in_use();
     if (baseline == 0) baseline = heap;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("frame %6d at %.0f s: %zu bodies (%zu static), %zu overlapping pairs, %zu sensor pairs, heap %.1f MB (first check %.1f MB), %d failures\n",
-                frame, seconds, world.size(), statics.size(), world.overlapping().size(), world.sensing().size(), heap / 1e6,
-                baseline / 1e6, failures);
+    std::printf(
+        "frame %6d at %.0f s: %zu bodies (%zu static), %zu overlapping pairs, %zu sensor pairs, heap %.1f MB (first "
+        "check %.1f MB), %d failures\n",
+        frame, seconds, world.size(), statics.size(), world.overlapping().size(), world.sensing().size(), heap / 1e6,
+        baseline / 1e6, failures);
     std::fflush(stdout);
     if (heap > baseline + baseline / 4 + (1u << 20)) {
       std::printf("heap grew beyond the live set\n");

@@ -7,18 +7,18 @@
 #include "narrowphase/baselines/baselines.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cctype>
-#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <tuple>
 #include <type_traits>
 
 namespace collide2d::testing {
@@ -45,9 +45,12 @@ Shape random_shape(Rng& rng, Kind kind, double size, const Family& f, const Vec2
   const double u = long_x ? size : size / aspect;
   const double v = long_x ? size / aspect : size;
   switch (kind) {
-    case Kind::circle: return Circle{center, size};
-    case Kind::ellipse: return Ellipse{center, u, v, angle};
-    case Kind::rect: break;
+    case Kind::circle:
+      return Circle{center, size};
+    case Kind::ellipse:
+      return Ellipse{center, u, v, angle};
+    case Kind::rect:
+      break;
   }
   return Rect{center, Vec2(u, v), angle};
 }
@@ -62,7 +65,9 @@ double half_size(const Shape& s) {
 
 namespace {
 
-void translate(Shape& s, const Vec2& by) { std::visit([&by](auto& x) { x.center += by; }, s); }
+void translate(Shape& s, const Vec2& by) {
+  std::visit([&by](auto& x) { x.center += by; }, s);
+}
 
 struct BoundaryPoint {
   Vec2 point;
@@ -80,7 +85,9 @@ BoundaryPoint contact_on(Rng& rng, const Shape& a) {
     local[1 - i] = uniform(rng, -0.9, 0.9) * r->half_extents[1 - i];
     normal[i] = side;
     const Vec2 c = unit(r->angle);
-    const auto rotate = [&c](const Vec2& v) { return Vec2(c.x() * v.x() - c.y() * v.y(), c.y() * v.x() + c.x() * v.y()); };
+    const auto rotate = [&c](const Vec2& v) {
+      return Vec2(c.x() * v.x() - c.y() * v.y(), c.y() * v.x() + c.x() * v.y());
+    };
     return {r->center + rotate(local), rotate(normal)};
   }
   const Vec2 n = unit(uniform(rng, 0.0, 2 * std::numbers::pi));
@@ -119,8 +126,9 @@ Shape inner_tangent(Rng& rng, const Shape& a, Kind kind, double delta) {
   const Vec2 n = unit(uniform(rng, 0.0, 2 * std::numbers::pi));
   const Vec2 p = support(a, n);
   const double size = 0.5 * least_curvature_radius(a);
-  Shape b = kind == Kind::circle ? Shape(Circle{Vec2::Zero(), size})
-                                 : Shape(Ellipse{Vec2::Zero(), size, size / uniform(rng, 1.0, 2.0), std::atan2(n.y(), n.x())});
+  Shape b = kind == Kind::circle
+                ? Shape(Circle{Vec2::Zero(), size})
+                : Shape(Ellipse{Vec2::Zero(), size, size / uniform(rng, 1.0, 2.0), std::atan2(n.y(), n.x())});
   translate(b, Vec2(p - delta * n - support(b, n)));
   return b;
 }
@@ -140,9 +148,11 @@ Shape concentric_to(Rng& rng, const Shape& a, Kind kind) {
 double reach(const Shape& s, const Vec2& n) { return n.dot(support(s, n) - center_of(s)); }
 
 void set_angle(Shape& s, double angle) {
-  std::visit([angle](auto& x) {
-    if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, Circle>) x.angle = angle;
-  }, s);
+  std::visit(
+      [angle](auto& x) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, Circle>) x.angle = angle;
+      },
+      s);
 }
 
 // One of A's four axis directions: exact unit vectors when A is axis-aligned.
@@ -208,9 +218,9 @@ Case cusp_case(Rng& rng, const Family& f, int k, const Vec2& origin) {
   // An ellipse O: the disc's radius as one semi-axis, the other smaller (inside E) or larger (around E).
   const double other_axis = radius * (k % 2 == 0 ? uniform(rng, 0.3, 1.0) : uniform(rng, 1.0, 1.5));
   const bool swap_axes = uniform(rng, 0.0, 1.0) < 0.5;
-  const Shape o = other == Kind::circle ? Shape(Circle{c, radius})
-                                        : Shape(Ellipse{c, swap_axes ? other_axis : radius,
-                                                        swap_axes ? radius : other_axis, e.angle});
+  const Shape o = other == Kind::circle
+                      ? Shape(Circle{c, radius})
+                      : Shape(Ellipse{c, swap_axes ? other_axis : radius, swap_axes ? radius : other_axis, e.angle});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return ellipse_first ? Case{e, o, nan} : Case{o, e, nan};
 }
@@ -274,7 +284,8 @@ Case make_case(Rng& rng, const Family& f, int k) {
   if (f.placement == Placement::identical) return {a, identical_to(a, f.b), nan};
   if (f.placement == Placement::concentric) return {a, concentric_to(rng, a, f.b), nan};
   const double nominal = f.deltas[static_cast<std::size_t>(k) % f.deltas.size()];
-  if (f.placement == Placement::congruent) return {a, congruent_copy(rng, std::get<Ellipse>(a), std::abs(nominal)), nan};
+  if (f.placement == Placement::congruent)
+    return {a, congruent_copy(rng, std::get<Ellipse>(a), std::abs(nominal)), nan};
   if (f.placement == Placement::inner_tangent) {
     const double delta = nominal * f.size;
     return {a, inner_tangent(rng, a, f.b, delta), nan};  // the solids overlap clearly either way
@@ -428,8 +439,10 @@ void check_boundary(const Family& f, const Case& c, double ref, double scale, co
   EXPECT_LE(err, kDistanceBound * scale) << what << " boundary distance " << d.distance << " reference " << ref;
   const double bound = f.point_bound * kU * scale;
   const double ulps_a = ulps_of(d.point_a), ulps_b = ulps_of(d.point_b);
-  const double off_a = static_cast<double>(reference::curve_distance(as_ellipse(c.a), reference::to_mp(d.point_a))) - ulps_a;
-  const double off_b = static_cast<double>(reference::curve_distance(as_ellipse(c.b), reference::to_mp(d.point_b))) - ulps_b;
+  const double off_a =
+      static_cast<double>(reference::curve_distance(as_ellipse(c.a), reference::to_mp(d.point_a))) - ulps_a;
+  const double off_b =
+      static_cast<double>(reference::curve_distance(as_ellipse(c.b), reference::to_mp(d.point_b))) - ulps_b;
   const double span = std::abs((d.point_b - d.point_a).norm() - d.distance) - ulps_a - ulps_b;
   EXPECT_LE(off_a, bound) << what << " boundary point_a is off A's curve";
   EXPECT_LE(off_b, bound) << what << " boundary point_b is off B's curve";
@@ -460,17 +473,20 @@ T median(std::vector<T> v) {
 }
 
 void print_summary(const Family& f, const FamilyStats& stats) {
-  std::printf("[family] %-38s cases %4d  verdicts checked %5d (+%4d below target)  plain-double mismatches below target %3d  fallbacks %3d  worst distance error %.2e  points %.2e",
-              f.name.c_str(), stats.cases, stats.verdicts_checked, stats.rounding_verdicts_checked,
-              stats.plain_mismatches_below_target, stats.fallbacks, stats.worst_distance_error, stats.worst_point_error);
+  std::printf(
+      "[family] %-38s cases %4d  verdicts checked %5d (+%4d below target)  plain-double mismatches below target %3d  "
+      "fallbacks %3d  worst distance error %.2e  points %.2e",
+      f.name.c_str(), stats.cases, stats.verdicts_checked, stats.rounding_verdicts_checked,
+      stats.plain_mismatches_below_target, stats.fallbacks, stats.worst_distance_error, stats.worst_point_error);
   if (f.a != Kind::rect && f.b != Kind::rect) std::printf("  boundary %.2e", stats.worst_boundary_error);
   if (!stats.robust_iterations.empty()) {
     std::printf("  robust median iterations %d", median(stats.robust_iterations));
     const char* names[] = {"gradient", "polynomial"};
     for (int m = 0; m < 2; ++m) {
       const auto& e = stats.method_errors[m];
-      std::printf("  %s: %zu queries, median error %.1e, worst %.1e, unconverged %d, error > 1e-6 %d", names[m], e.size(),
-                  median(e), *std::max_element(e.begin(), e.end()), stats.method_unconverged[m], stats.method_wrong[m]);
+      std::printf("  %s: %zu queries, median error %.1e, worst %.1e, unconverged %d, error > 1e-6 %d", names[m],
+                  e.size(), median(e), *std::max_element(e.begin(), e.end()), stats.method_unconverged[m],
+                  stats.method_wrong[m]);
     }
   }
   std::printf("\n");
@@ -502,7 +518,9 @@ FamilyStats run_family(const Family& f) {
   const bool rect_ellipse = (f.a == Kind::rect && f.b == Kind::ellipse) || (f.a == Kind::ellipse && f.b == Kind::rect);
   // The plain-double baselines beside the default test (nullopt).
   std::vector<std::optional<baselines::RectEllipseTest>> methods{std::nullopt};
-  if (rect_ellipse) methods.insert(methods.end(), {baselines::RectEllipseTest::closest_features, baselines::RectEllipseTest::all_features});
+  if (rect_ellipse)
+    methods.insert(methods.end(),
+                   {baselines::RectEllipseTest::closest_features, baselines::RectEllipseTest::all_features});
   const std::vector<Case> cases = family_cases(f);
   for (int k = 0; k < f.cases; ++k) {
     const Case& c = cases[static_cast<std::size_t>(k)];
@@ -519,12 +537,15 @@ FamilyStats run_family(const Family& f) {
     // rect-ellipse tests owe it only where the gap is clear of the target.
     for (const auto& m : methods) {
       const bool exact = !m;
-      const auto test = [&m](const Shape& x, const Shape& y) { return m ? baselines::overlaps(x, y, *m) : overlaps(x, y); };
+      const auto test = [&m](const Shape& x, const Shape& y) {
+        return m ? baselines::overlaps(x, y, *m) : overlaps(x, y);
+      };
       for (const bool swap : {false, true}) {
         const bool got = swap ? test(c.b, c.a) : test(c.a, c.b);
         if (exact) {  // the World's test, orientations kept: the same verdict, here too
           const Orientation oa = Orientation::of(angle_of(c.a)), ob = Orientation::of(angle_of(c.b));
-          EXPECT_EQ(swap ? overlaps(c.b, ob, c.a, oa) : overlaps(c.a, oa, c.b, ob), got) << what << " posed, swap " << swap;
+          EXPECT_EQ(swap ? overlaps(c.b, ob, c.a, oa) : overlaps(c.a, oa, c.b, ob), got)
+              << what << " posed, swap " << swap;
         }
         if (clear || exact) {
           EXPECT_EQ(got, ref.overlap) << what << " method " << (m ? 1 + static_cast<int>(*m) : 0) << " swap " << swap;

@@ -51,9 +51,9 @@ struct Family {
   int cases = 120;
   double size = 1.0;
   double offset = 0.0;
-  double aspect_min = 1.0;   // aspect ratios of rectangles and ellipses, log-uniform
+  double aspect_min = 1.0;  // aspect ratios of rectangles and ellipses, log-uniform
   double aspect_max = 4.0;
-  double size_ratio = 3.0;   // B's size over A's, log-uniform in [1/ratio, ratio]
+  double size_ratio = 3.0;  // B's size over A's, log-uniform in [1/ratio, ratio]
   std::vector<double> deltas{1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-10, -1e-10, 1e-12, -1e-12};
   Placement placement = Placement::touching;
   bool axis_aligned = false;  // every angle exactly 0 (a/b and half extents in either order)
@@ -64,13 +64,13 @@ struct Family {
 struct FamilyStats {
   int cases = 0;
   int verdicts_checked = 0;
-  int rounding_verdicts_checked = 0;     // default verdicts where |gap| <= 1e-10 size, asserted too
+  int rounding_verdicts_checked = 0;      // default verdicts where |gap| <= 1e-10 size, asserted too
   int plain_mismatches_below_target = 0;  // plain-double rect–ellipse tests there (allowed)
   int fallbacks = 0;                      // the filter (rect–ellipse, ellipse–ellipse) was `uncertain`
   double worst_distance_error = 0.0;      // |d - d_ref| / scale
   double worst_boundary_error = 0.0;      // the same for the boundary distance (circles, ellipses)
   double worst_point_error = 0.0;         // closest points beyond coordinate rounding, / scale
-  std::vector<int> robust_iterations;       // ellipse pairs: support evaluations of the distance
+  std::vector<int> robust_iterations;     // ellipse pairs: support evaluations of the distance
   // Ellipse pairs, per seed method (0 gradient, 1 polynomial), over the solid distance of separated
   // pairs and the boundary distance of every pair; errors relative to the scale:
   std::vector<double> method_errors[2];

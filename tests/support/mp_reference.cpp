@@ -4,9 +4,9 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <vector>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace collide2d::reference {
 namespace {
@@ -187,8 +187,8 @@ Real circle_distance(const Circle& c, const Shape& other) {
 // monotonically. Inside on the major axis the nearest point leaves the axis within the evolute.
 template <class R>
 R signed_curve_distance(R a, R b, R x, R y) {
-  using std::abs;
   using boost::multiprecision::abs;
+  using std::abs;
   if (b > a) std::swap(a, b), std::swap(x, y);
   const R y0 = abs(x), y1 = abs(y);
   const R q = (y0 / a) * (y0 / a) + (y1 / b) * (y1 / b);
@@ -256,7 +256,7 @@ Real circle_ellipse_boundary(const Circle& c, const Ellipse& e) {
   const Real r(c.radius);
   if (abs(near) >= r) return abs(near) - r;  // apart, or the circle inside the ellipse
   const Real far = farthest_curve_distance(Real(e.a), Real(e.b), p.x, p.y);
-  return far <= r ? r - far : Real(0);       // the ellipse inside the circle, or crossing curves
+  return far <= r ? r - far : Real(0);  // the ellipse inside the circle, or crossing curves
 }
 
 Real circle_circle_boundary(const Circle& a, const Circle& b) {
@@ -272,20 +272,20 @@ struct CurveOnCurve {
   R px, py, c, s, a0, b0, a1, b1;
 
   static CurveOnCurve of(const Ellipse& a, const Ellipse& b) {
-    using std::cos;
-    using std::sin;
     using boost::multiprecision::cos;
     using boost::multiprecision::sin;
+    using std::cos;
+    using std::sin;
     const R ca = cos(R(a.angle)), sa = sin(R(a.angle)), cb = cos(R(b.angle)), sb = sin(R(b.angle));
     const R dx = R(a.center.x()) - R(b.center.x()), dy = R(a.center.y()) - R(b.center.y());
-    return {cb * dx + sb * dy, -sb * dx + cb * dy, cb * ca + sb * sa, cb * sa - sb * ca,
-            R(a.a), R(a.b), R(b.a), R(b.b)};
+    return {
+        cb * dx + sb * dy, -sb * dx + cb * dy, cb * ca + sb * sa, cb * sa - sb * ca, R(a.a), R(a.b), R(b.a), R(b.b)};
   }
   R operator()(const R& t) const {
-    using std::cos;
-    using std::sin;
     using boost::multiprecision::cos;
     using boost::multiprecision::sin;
+    using std::cos;
+    using std::sin;
     const R u = a0 * cos(t), v = b0 * sin(t);
     return signed_curve_distance(a1, b1, px + c * u - s * v, py + s * u + c * v);
   }
@@ -439,7 +439,8 @@ std::pair<Real, Real> half_widths(const Shape& s) {
 Aabb bounding_box(const Shape& s) {
   const Point c = to_mp(center_of(s));
   const auto [wx, wy] = half_widths(s);
-  return {Vec2(rounded(c.x - wx, true), rounded(c.y - wy, true)), Vec2(rounded(c.x + wx, false), rounded(c.y + wy, false))};
+  return {Vec2(rounded(c.x - wx, true), rounded(c.y - wy, true)),
+          Vec2(rounded(c.x + wx, false), rounded(c.y + wy, false))};
 }
 
 Real distance_to(const Shape& s, const Point& p) {
@@ -528,7 +529,8 @@ R golden_maximum(const F& f, R lo, R hi, const R& width) {
 SignedDistance signed_distance(const Shape& a, const Shape& b) {
   const Point ca = to_mp(center_of(a)), cb = to_mp(center_of(b));
   const Frame fa = frame_of(center_of(a), angle_of(a)), fb = frame_of(center_of(b), angle_of(b));
-  const Dual<Real> exact{cb.x - ca.x, cb.y - ca.y, Dual<Real>::side_of(a, fa.c, fa.s), Dual<Real>::side_of(b, fb.c, fb.s)};
+  const Dual<Real> exact{cb.x - ca.x, cb.y - ca.y, Dual<Real>::side_of(a, fa.c, fa.s),
+                         Dual<Real>::side_of(b, fb.c, fb.s)};
   const Dual<double> rough{static_cast<double>(exact.dx), static_cast<double>(exact.dy),
                            Dual<double>::side_of(a, std::cos(angle_of(a)), std::sin(angle_of(a))),
                            Dual<double>::side_of(b, std::cos(angle_of(b)), std::sin(angle_of(b)))};
@@ -598,8 +600,10 @@ SignedDistance signed_distance(const Shape& a, const Shape& b) {
   std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
   const Real& t = found[0].second;
   const Real h(1e-12);
-  SignedDistance out{found[0].first, {boost::multiprecision::cos(t), boost::multiprecision::sin(t)},
-                     -std::numeric_limits<Real>::infinity(), (2 * exact(t) - exact(t + h) - exact(t - h)) / (h * h)};
+  SignedDistance out{found[0].first,
+                     {boost::multiprecision::cos(t), boost::multiprecision::sin(t)},
+                     -std::numeric_limits<Real>::infinity(),
+                     (2 * exact(t) - exact(t + h) - exact(t - h)) / (h * h)};
   for (std::size_t i = 1; i < found.size(); ++i) {
     const Real turn = abs(found[i].second - found[0].second);
     const Real apart = std::min(turn, Real(two_pi) - turn);

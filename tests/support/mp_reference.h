@@ -13,7 +13,8 @@
 //   support function, in closed form per shape) scanned in double at 4,096 even angles and at
 //   geometric offsets 10^-1 ... 10^-15 around every axis direction of both shapes (a needle's
 //   support function turns within b/a of its minor axis, a rectangle's has kinks on its axes), each
-//   of the six highest local maxima narrowed by golden section in 50 digits to 1e-22 rad. No Newton step and no curvature bound: nothing the kernels do.
+//   of the six highest local maxima narrowed by golden section in 50 digits to 1e-22 rad. No Newton step and no
+//   curvature bound: nothing the kernels do.
 // Inputs are the double shapes, taken exactly; angles become exact 50-digit cosines and sines.
 #pragma once
 
@@ -48,8 +49,8 @@ Real curve_distance(const Ellipse& e, const Point& p);
 
 struct EllipsePairReference {
   bool overlap = false;
-  Real distance;   // between the solids
-  Real boundary;   // between the boundary curves
+  Real distance;  // between the solids
+  Real boundary;  // between the boundary curves
 };
 EllipsePairReference ellipse_pair(const Ellipse& a, const Ellipse& b);
 

@@ -157,7 +157,8 @@ TEST(SweepAndPrune, CollinearSceneSweepsAlongTheLine) {
   EXPECT_LT(t.sap.last_update().axis_overlaps, 2000u);
   EXPECT_LE(t.sap.last_update().strips, 2u);
   // The scene turns to lie along x: the axis follows.
-  for (std::size_t k = 0; k < t.ids.size(); ++k) t.move(k, box_at(Vec2(0.5 * static_cast<double>(k), 3.0), Vec2(0.3, 0.3)));
+  for (std::size_t k = 0; k < t.ids.size(); ++k)
+    t.move(k, box_at(Vec2(0.5 * static_cast<double>(k), 3.0), Vec2(0.3, 0.3)));
   t.update_and_compare("collinear turned");
   EXPECT_EQ(t.sap.last_update().axis, 0);
   EXPECT_TRUE(t.sap.last_update().full_sort);
@@ -207,7 +208,8 @@ TEST(SweepAndPrune, HeavyChurnMatchesBruteForce) {
   const auto fresh = [&] { return box_at(Vec2(uniform(rng, 0, 10), uniform(rng, 0, 10)), Vec2(0.2, 0.2)); };
   for (int k = 0; k < 300; ++k) t.insert(fresh());
   for (int frame = 0; frame < 60; ++frame) {
-    for (int k = 0; k < 30 && !t.ids.empty(); ++k) t.remove(static_cast<std::size_t>(uniform(rng, 0, 1) * t.ids.size()));
+    for (int k = 0; k < 30 && !t.ids.empty(); ++k)
+      t.remove(static_cast<std::size_t>(uniform(rng, 0, 1) * t.ids.size()));
     if (frame % 2 == 0) {  // odd frames only remove and move: the incremental path with removals
       std::vector<Aabb> batch;
       for (int k = 0; k < 25; ++k) batch.push_back(fresh());

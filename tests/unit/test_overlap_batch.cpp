@@ -7,11 +7,11 @@
 #include "batch_testing.h"
 #include "hard_cases.h"
 
-#include "narrowphase/batch/lanes.h"
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
-#include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include <collide2d/query.h>
+#include "narrowphase/batch/lanes.h"
+#include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <gtest/gtest.h>
 
@@ -111,9 +111,11 @@ TEST(OverlapBatch, HardCaseRectanglePairsMatchTheOneOffKernel) {
   // The fuzzer's pair: a rectangle 2.4e35 wide whose corner rounds onto a small one's; the verdict
   // depends on whose frame the test runs in, so the batch must take the dispatcher's order, either
   // way round.
-  const Rect huge{{2.4173705217460969e+35, 2.4173705217460969e+35}, {2.4173705217460969e+35, 2.4173705217460969e+35}, 0};
+  const Rect huge{
+      {2.4173705217460969e+35, 2.4173705217460969e+35}, {2.4173705217460969e+35, 2.4173705217460969e+35}, 0};
   const Rect small{{-8, -8}, {8, 8}, -8};
-  ASSERT_NE(overlap_rect_rect(huge, small), overlap_rect_rect(small, huge)) << "the pair no longer tells the orders apart";
+  ASSERT_NE(overlap_rect_rect(huge, small), overlap_rect_rect(small, huge))
+      << "the pair no longer tells the orders apart";
   p.add(huge, small);
   p.add(small, huge);
   std::printf("%zu hard-case rectangle pairs\n", p.size());
@@ -136,7 +138,8 @@ TEST(OverlapBatch, HardCaseCirclePairsMatchTheOneOffKernel) {
   // Two circles at the rounding level of touching, where (n - ra) - rb and (n - rb) - ra round to
   // opposite signs: the batch must take the dispatcher's order, either way round.
   const Circle big{{0, 0}, 43.430986838512901}, small{{43.433120300761729, 0}, 0.0021334622488282024};
-  ASSERT_NE(overlap_circle_circle(big, small), overlap_circle_circle(small, big)) << "the pair no longer tells the orders apart";
+  ASSERT_NE(overlap_circle_circle(big, small), overlap_circle_circle(small, big))
+      << "the pair no longer tells the orders apart";
   Pairs<Circle, Circle> both_ways;
   both_ways.add(big, small);
   both_ways.add(small, big);

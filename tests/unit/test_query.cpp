@@ -5,17 +5,17 @@
 #include <collide2d/query.h>
 #include "tools/query_command.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <iterator>
 #include <limits>
-#include <cstdlib>
 #include <numbers>
-#include <random>
 #include <optional>
+#include <random>
 #include <sstream>
 
 namespace collide2d {
@@ -92,9 +92,9 @@ TEST(Dispatch, RejectsInvalidShapesAndUnsupportedPairs) {
 // Magnitudes beyond what a double can square and cube are refused, naming the field.
 TEST(Dispatch, RejectsAbsurdMagnitudes) {
   const Shape good = Circle{Vec2(0, 0), 1};
-  const Shape cases[] = {Circle{Vec2(2e50, 0), 1}, Circle{Vec2(0, 0), 1e51}, Circle{Vec2(0, 0), 1e-51},
-                         Ellipse{Vec2(0, -1e60), 1, 1, 0}, Ellipse{Vec2(0, 0), 1, 1e-300, 0},
-                         Rect{Vec2(0, 0), Vec2(1e200, 1), 0}};
+  const Shape cases[] = {Circle{Vec2(2e50, 0), 1},          Circle{Vec2(0, 0), 1e51},
+                         Circle{Vec2(0, 0), 1e-51},         Ellipse{Vec2(0, -1e60), 1, 1, 0},
+                         Ellipse{Vec2(0, 0), 1, 1e-300, 0}, Rect{Vec2(0, 0), Vec2(1e200, 1), 0}};
   const char* fields[] = {"circle cx", "circle radius", "circle radius", "ellipse cy", "ellipse b", "rect hx"};
   for (std::size_t k = 0; k < std::size(cases); ++k) {
     try {
@@ -142,7 +142,8 @@ struct CommandRun {
   std::string err;
 };
 
-CommandRun run(const std::string& input, const char* method = "minkowski", tool::Answer answer = tool::Answer::distance) {
+CommandRun run(const std::string& input, const char* method = "minkowski",
+               tool::Answer answer = tool::Answer::distance) {
   std::istringstream in(input);
   std::ostringstream out, err;
   tool::QueryOptions options;
@@ -163,7 +164,8 @@ TEST(QueryCommand, RoundTripsTheLibraryResults) {
   const auto word = [](const Shape& s) {
     std::ostringstream o;
     o.precision(17);
-    if (const auto* c = std::get_if<Circle>(&s)) o << "circle " << c->center.x() << ' ' << c->center.y() << ' ' << c->radius;
+    if (const auto* c = std::get_if<Circle>(&s))
+      o << "circle " << c->center.x() << ' ' << c->center.y() << ' ' << c->radius;
     if (const auto* e = std::get_if<Ellipse>(&s))
       o << "ellipse " << e->center.x() << ' ' << e->center.y() << ' ' << e->a << ' ' << e->b << ' ' << e->angle;
     if (const auto* r = std::get_if<Rect>(&s))
@@ -206,9 +208,11 @@ TEST(QueryCommand, EachBadLineGetsAnErrorInPlace) {
   const CommandRun r = run(input);
   EXPECT_EQ(r.status, 2);
   const std::vector<std::string> expected_errors = {
-      "unknown shape 'blob'", "circle takes 3 numbers (cx cy r), got 2", "'zero' is not a number",
-      "expected '<shape> ; <shape>', found no ';'", "expected one ';', found more", "circle radius must be finite",
-      "rect hx must be positive", "shape B is missing", "ellipse b must be finite", "'1e999' is out of range"};
+      "unknown shape 'blob'",         "circle takes 3 numbers (cx cy r), got 2",
+      "'zero' is not a number",       "expected '<shape> ; <shape>', found no ';'",
+      "expected one ';', found more", "circle radius must be finite",
+      "rect hx must be positive",     "shape B is missing",
+      "ellipse b must be finite",     "'1e999' is out of range"};
   ASSERT_EQ(r.out.size(), expected_errors.size() + 2);
   EXPECT_EQ(r.out.front(), "0 1 1 0 2 0");
   EXPECT_EQ(r.out.back(), "0 1 1 0 2 0");
@@ -253,7 +257,6 @@ TEST(QueryCommand, MethodsAndBoundaryForEllipses) {
   EXPECT_NE(r.out.at(0).find("error: the boundary distance covers circles and ellipses"), std::string::npos);
 }
 
-
 // The numbers of an answer line; empty when it does not hold N of them.
 template <std::size_t N>
 std::optional<std::array<double, N>> numbers_of(const std::string& text) {
@@ -277,9 +280,12 @@ TEST(QueryCommand, ContactLinesForEveryPair) {
       "circle 0 0 -1 ; circle 0 0 1\n";
   const CommandRun r = run(input, "minkowski", tool::Answer::contact);
   EXPECT_EQ(r.status, 2);
-  const std::vector<std::array<double, 7>> expected = {
-      {-0.5, 1, 0, 1, 0, 0.5, 0},   {-0.5, 0, 1, 0, 1, 0, 0.5},    {1.5 - std::sqrt(0.125), 1, 0, 1, 0, 2.5 - std::sqrt(0.125), 0},
-      {-0.25, 0, 1, 0, 1, 0, 0.75}, {-0.5, 1, 0, 1, 0, 0.5, 0},    {-1, 1, 0, 2, 0, 1, 0}};
+  const std::vector<std::array<double, 7>> expected = {{-0.5, 1, 0, 1, 0, 0.5, 0},
+                                                       {-0.5, 0, 1, 0, 1, 0, 0.5},
+                                                       {1.5 - std::sqrt(0.125), 1, 0, 1, 0, 2.5 - std::sqrt(0.125), 0},
+                                                       {-0.25, 0, 1, 0, 1, 0, 0.75},
+                                                       {-0.5, 1, 0, 1, 0, 0.5, 0},
+                                                       {-1, 1, 0, 2, 0, 1, 0}};
   ASSERT_EQ(r.out.size(), expected.size() + 1);
   for (std::size_t k = 0; k < expected.size(); ++k) {
     const auto got = numbers_of<7>(r.out[k]);

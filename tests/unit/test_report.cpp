@@ -25,7 +25,8 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   write_report_svg(results, svg);
   EXPECT_NE(table.str().find("| box2d circumscribed | 256 |"), std::string::npos);
   std::size_t points = 0;
-  for (std::size_t at = svg.str().find("r=\"4\""); at != std::string::npos; at = svg.str().find("r=\"4\"", at + 1)) ++points;
+  for (std::size_t at = svg.str().find("r=\"4\""); at != std::string::npos; at = svg.str().find("r=\"4\"", at + 1))
+    ++points;
   EXPECT_EQ(points, results.size() + 5);  // one per measurement, one per legend entry
 }
 
@@ -38,7 +39,8 @@ TEST(Report, MeasuresTheContactDepth) {
   EXPECT_LE(results[0].max_error, 1e-15);
   EXPECT_EQ(results[1].sides, 5);
   EXPECT_EQ(results[4].sides, 8);
-  for (const std::size_t circumscribed : {5u, 8u}) EXPECT_EQ(results[circumscribed].method, "box2d manifold circumscribed");
+  for (const std::size_t circumscribed : {5u, 8u})
+    EXPECT_EQ(results[circumscribed].method, "box2d manifold circumscribed");
   EXPECT_LT(results[8].median_error, results[5].median_error);
   std::ostringstream table;
   print_report(results, "contact depth", options, table);

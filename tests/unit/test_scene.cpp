@@ -1,7 +1,7 @@
 // Scene files for `collide2d run`: round trip, every kind of broken file named by its field, and a
 // run whose last frame agrees with an all-pairs check.
-#include "tools/scene/scene_run.h"
 #include "tools/scene/scene.h"
+#include "tools/scene/scene_run.h"
 #include "world_reference.h"
 
 #include <gtest/gtest.h>
@@ -47,19 +47,22 @@ TEST(SceneRun, BulletsHitWithinAFrame) {
   EXPECT_EQ(s.began, 0u);
   std::ostringstream out;
   print_summary(s, out);
-  EXPECT_NE(out.str().find("continuous bodies           1, 1 impacts within frames over the run"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("continuous bodies           1, 1 impacts within frames over the run"), std::string::npos)
+      << out.str();
 }
 
 // Two circles that overlap all run long: on layers that refuse each other, or sharing a negative
 // group although their masks accept each other, they never pair, and the summary counts the
 // candidate pair the filters dropped; on one layer they pair. The filter fields read back as written.
 TEST(SceneRun, FiltersKeepLayersApart) {
-  const std::pair<const char*, bool> cases[] = {
-      {R"("category": 1, "mask": 1)", false}, {R"("category": 2, "mask": 2, "group": -3)", false}, {R"("category": 2, "mask": 2)", true}};
+  const std::pair<const char*, bool> cases[] = {{R"("category": 1, "mask": 1)", false},
+                                                {R"("category": 2, "mask": 2, "group": -3)", false},
+                                                {R"("category": 2, "mask": 2)", true}};
   for (const auto& [filters, pair] : cases) {
     const std::string text = std::string(R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [
         {"shape": "circle", "center": [5, 5], "radius": 1, "category": 2, "mask": 2, "group": -3},
-        {"shape": "circle", "center": [5.5, 5], "radius": 1, )") + filters + "}]}";
+        {"shape": "circle", "center": [5.5, 5], "radius": 1, )") +
+                             filters + "}]}";
     const Scene scene = parse_scene(text);
     EXPECT_TRUE(parse_scene(write_scene(scene)) == scene);
     SceneRun run(scene);
@@ -68,7 +71,8 @@ TEST(SceneRun, FiltersKeepLayersApart) {
     EXPECT_EQ(s.filtered_per_frame, pair ? 0.0 : 1.0) << filters;
     std::ostringstream out;
     print_summary(s, out);
-    EXPECT_NE(out.str().find(pair ? "(broad phase), 0 of them" : "(broad phase), 1 of them dropped by filters"), std::string::npos)
+    EXPECT_NE(out.str().find(pair ? "(broad phase), 0 of them" : "(broad phase), 1 of them dropped by filters"),
+              std::string::npos)
         << out.str();
   }
 }
@@ -96,23 +100,32 @@ TEST(Scene, BrokenFilesNameTheField) {
       {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "bodies": []})", "frames: missing"},
       {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 0, "bodies": []})", "frames: expected an integer"},
       {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 2.5, "bodies": []})", "frames: expected an integer"},
-      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "dt": "fast", "bodies": []})", "dt: expected a number"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "dt": "fast", "bodies": []})",
+       "dt: expected a number"},
       {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "dt": -1, "bodies": []})", "dt: must be positive"},
       {R"({"arena": {"min": [0, 0], "max": [-1, 10]}, "frames": 3, "bodies": []})", "arena: max must exceed min"},
       {R"({"arena": {"min": [0, 0]}, "frames": 3, "bodies": []})", "arena.max: missing"},
-      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [], "gravity": 9.8})", "scene: unknown field 'gravity'"},
-      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "proximity_margin": -2, "bodies": []})", "proximity_margin: must not be negative"},
-      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": -1})"), "bodies[0].radius: must be positive (got -1)"},
-      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1}, {"shape": "ellipse", "center": [1, 1], "a": 0, "b": 1})"),
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [], "gravity": 9.8})",
+       "scene: unknown field 'gravity'"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "proximity_margin": -2, "bodies": []})",
+       "proximity_margin: must not be negative"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": -1})"),
+       "bodies[0].radius: must be positive (got -1)"},
+      {with_body(
+           R"({"shape": "circle", "center": [1, 1], "radius": 1}, {"shape": "ellipse", "center": [1, 1], "a": 0, "b": 1})"),
        "bodies[1].a: must be positive"},
-      {with_body(R"({"shape": "rect", "center": [1, 1], "half_extents": [1, -3]})"), "bodies[0].half_extents[1]: must be positive"},
+      {with_body(R"({"shape": "rect", "center": [1, 1], "half_extents": [1, -3]})"),
+       "bodies[0].half_extents[1]: must be positive"},
       {with_body(R"({"shape": "blob", "center": [1, 1]})"), "bodies[0].shape: unknown shape 'blob'"},
       {with_body(R"({"center": [1, 1], "radius": 1})"), "bodies[0].shape: missing"},
-      {with_body(R"({"shape": "circle", "center": [1, 1, 1], "radius": 1})"), "bodies[0].center: expected an array of 2 numbers"},
+      {with_body(R"({"shape": "circle", "center": [1, 1, 1], "radius": 1})"),
+       "bodies[0].center: expected an array of 2 numbers"},
       {with_body(R"({"shape": "circle", "center": [1, "x"], "radius": 1})"), "bodies[0].center[1]: expected a number"},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radus": 1})"), "bodies[0]: unknown field 'radus'"},
-      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1]})"), "bodies[0].velocity: expected an array"},
-      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": -4})"), "bodies[0].id: expected a non-negative integer"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1]})"),
+       "bodies[0].velocity: expected an array"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": -4})"),
+       "bodies[0].id: expected a non-negative integer"},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "continuous": "yes"})"),
        "bodies[0].continuous: expected true or false, got \"yes\""},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1e999})"), "number overflow parsing '1e999'"},
@@ -162,7 +175,8 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   EXPECT_EQ(listed, expected.sensing.size());
   std::ostringstream summary;
   print_summary(s, summary);
-  EXPECT_NE(summary.str().find("sensor " + std::to_string(s.sensor_contents[0].id) + " at the last frame: "), std::string::npos);
+  EXPECT_NE(summary.str().find("sensor " + std::to_string(s.sensor_contents[0].id) + " at the last frame: "),
+            std::string::npos);
   std::ostringstream svg;
   write_svg(run, svg);
   const std::string text = svg.str();

@@ -14,9 +14,11 @@ namespace {
 
 TEST(Settle, SmallPileComesToRestInsideTheBox) {
   const SettleResult r = settle({.bodies = 150, .width = 8.0, .seed = 3});
-  std::printf("[settle] %zu bodies at rest %d after %.2f s (%d steps): fastest %.2e, deepest %.2e = %.3f%% of %.3f, %d outside\n",
-              r.shapes.size(), r.at_rest, r.seconds, r.steps, r.max_speed, r.max_penetration,
-              100 * r.max_penetration / r.smallest, r.smallest, r.outside);
+  std::printf(
+      "[settle] %zu bodies at rest %d after %.2f s (%d steps): fastest %.2e, deepest %.2e = %.3f%% of %.3f, %d "
+      "outside\n",
+      r.shapes.size(), r.at_rest, r.seconds, r.steps, r.max_speed, r.max_penetration,
+      100 * r.max_penetration / r.smallest, r.smallest, r.outside);
   ASSERT_EQ(r.shapes.size(), 150u);
   EXPECT_TRUE(r.at_rest);
   EXPECT_LT(r.max_speed, 1e-2);

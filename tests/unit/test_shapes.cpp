@@ -5,15 +5,15 @@
 #include "mp_reference.h"
 #include "narrowphase/toi/quick_orientation.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 

@@ -1,9 +1,9 @@
 // The World against an all-pairs narrow phase over many frames, its queries against brute force,
 // and its refusal of bad input.
-#include "engine/thread_pool.h"
+#include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
-#include <collide2d/ray_cast.h>
+#include "engine/thread_pool.h"
 #include "mp_reference.h"
 #include "world_reference.h"
 
@@ -36,9 +36,12 @@ Shape random_shape(Rng& rng, double spread) {
   const Vec2 c(uniform(rng, 0, spread), uniform(rng, 0, spread));
   const double size = uniform(rng, 0.1, 1.0);
   switch (static_cast<int>(uniform(rng, 0, 3))) {
-    case 0: return Circle{c, size};
-    case 1: return Ellipse{c, size, size * uniform(rng, 0.05, 1.0), uniform(rng, 0, 6.3)};
-    default: return Rect{c, Vec2(size, size * uniform(rng, 0.1, 1.0)), uniform(rng, 0, 6.3)};
+    case 0:
+      return Circle{c, size};
+    case 1:
+      return Ellipse{c, size, size * uniform(rng, 0.05, 1.0), uniform(rng, 0, 6.3)};
+    default:
+      return Rect{c, Vec2(size, size * uniform(rng, 0.1, 1.0)), uniform(rng, 0, 6.3)};
   }
 }
 
@@ -193,7 +196,8 @@ TEST(World, RayCastFindsTheFirstExactHit) {
     ++hits;
     EXPECT_LE(hit->distance, first + 1e-12) << k;
     EXPECT_GE(hit->distance, first - 20.0 / 4000) << k;
-    const double off = static_cast<double>(reference::distance_to(world.shape(hit->body), reference::to_mp(hit->point)));
+    const double off =
+        static_cast<double>(reference::distance_to(world.shape(hit->body), reference::to_mp(hit->point)));
     EXPECT_LE(off, 1e-12) << k;
     if (hit->distance > 0) {
       const Vec2 before = hit->point - 1e-9 * dir;
@@ -226,7 +230,8 @@ TEST(RayCast, NeedlesAndRoundEllipsesMatchTheQuadraticIn50Digits) {
     const auto got = ray_cast(Shape(e), origin, unit, reach);
     const Real ox = Real(origin.x()) - e.center.x(), oy = Real(origin.y()) - e.center.y();
     const Real dx = unit.x(), dy = unit.y(), a2 = Real(a) * a, b2 = Real(b) * b;
-    const Real qa = b2 * dx * dx + a2 * dy * dy, qb = b2 * ox * dx + a2 * oy * dy, qc = b2 * ox * ox + a2 * oy * oy - a2 * b2;
+    const Real qa = b2 * dx * dx + a2 * dy * dy, qb = b2 * ox * dx + a2 * oy * dy,
+               qc = b2 * ox * ox + a2 * oy * oy - a2 * b2;
     const Real disc = qb * qb - qa * qc;
     if (qc <= 0) continue;  // the origin inside: a hit at 0, not this test's case
     const bool hit = qb < 0 && disc >= 0 && (-qb - sqrt(disc)) / qa <= reach;
@@ -437,12 +442,14 @@ TEST(World, ImpactsMatchAllPairs) {
         const bool ci = i % 3 == 0 && !(i == 3 && frame >= 5), cj = j % 3 == 0 && !(j == 3 && frame >= 5);
         if (!world.contains(ids[i]) || !world.contains(ids[j]) || !(ci || cj)) continue;
         const auto motion = [&](std::size_t k, bool c) {
-          return c ? Motion{center_of(world.shape(ids[k])) - center_of(start[k]), angle_of(world.shape(ids[k])) - angle_of(start[k])}
+          return c ? Motion{center_of(world.shape(ids[k])) - center_of(start[k]),
+                            angle_of(world.shape(ids[k])) - angle_of(start[k])}
                    : Motion{};
         };
         const TimeOfImpact r = time_of_impact(ci ? start[i] : world.shape(ids[i]), motion(i, ci),
                                               cj ? start[j] : world.shape(ids[j]), motion(j, cj));
-        if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
+        if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled)
+          expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
       }
     }
     ASSERT_EQ(world.impacts().size(), expected.size()) << "frame " << frame;
@@ -473,7 +480,8 @@ TEST(World, CastFindsTheFirstBody) {
     std::optional<BodyCastHit> best;
     for (const BodyId id : world.bodies()) {
       const auto hit = shape_cast(probe, translation, world.shape(id));
-      if (hit && (!best || hit->fraction < best->fraction)) best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
+      if (hit && (!best || hit->fraction < best->fraction))
+        best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
     }
     const auto got = world.cast(probe, translation);
     ASSERT_EQ(got.has_value(), best.has_value()) << k;
@@ -519,7 +527,8 @@ Filter random_filter(Rng& rng) {
 TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
   Rng rng(21);
   World world({.fat_margin = 0.05});
-  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = random_filter(rng)});
+  for (int k = 0; k < 200; ++k)
+    world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = random_filter(rng)});
   world.set_pair_predicate([&world](BodyId a, BodyId b) { return (world.user_id(a) + world.user_id(b)) % 5 != 0; });
   std::vector<BodyPair> previous;
   std::size_t refused = 0, ended_by_filters = 0;
@@ -530,7 +539,8 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
         if (id.index % 3 == 0) world.set_filter(id, random_filter(rng));
       }
     } else {
-      for (const BodyId id : world.bodies()) world.move_by(id, Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1)), 0.03);
+      for (const BodyId id : world.bodies())
+        world.move_by(id, Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1)), 0.03);
     }
     world.update();
     const std::vector<BodyId> ids = world.bodies();
@@ -566,7 +576,9 @@ TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
   Rng rng(22);
   World world;
   for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 10.0), {.filter = random_filter(rng)});
-  const auto through = [](const QueryFilter& q, const Filter& f) { return (f.category & q.mask) && (f.mask & q.category); };
+  const auto through = [](const QueryFilter& q, const Filter& f) {
+    return (f.category & q.mask) && (f.mask & q.category);
+  };
   for (int k = 0; k < 60; ++k) {
     const QueryFilter q{.category = std::uint64_t{1} << static_cast<int>(uniform(rng, 0, 3)),
                         .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
@@ -674,15 +686,20 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
   Rng rng(32);
   World world({.fat_margin = 0.1});
   for (int k = 0; k < 450; ++k) {
-    world.add(random_shape(rng, 12.0), {.user_id = 0, .filter = random_filter(rng), .is_static = k % 3 != 0, .sensor = k % 10 == 0});
+    world.add(random_shape(rng, 12.0),
+              {.user_id = 0, .filter = random_filter(rng), .is_static = k % 3 != 0, .sensor = k % 10 == 0});
   }
   world.update();
-  const auto through = [](const QueryFilter& q, const Filter& f) { return (f.category & q.mask) && (f.mask & q.category); };
+  const auto through = [](const QueryFilter& q, const Filter& f) {
+    return (f.category & q.mask) && (f.mask & q.category);
+  };
   for (int k = 0; k < 80; ++k) {
     if (k == 40) {
-      for (const BodyId id : world.bodies()) world.move_by(id, Vec2(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5)), 0.2);
+      for (const BodyId id : world.bodies())
+        world.move_by(id, Vec2(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5)), 0.2);
     }
-    const QueryFilter q = k % 2 == 0 ? QueryFilter{} : QueryFilter{.category = 1, .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
+    const QueryFilter q =
+        k % 2 == 0 ? QueryFilter{} : QueryFilter{.category = 1, .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
     const Shape probe = random_shape(rng, 12.0);
     const Vec2 point(uniform(rng, 0, 12), uniform(rng, 0, 12));
     const Aabb box{point, point + Vec2(uniform(rng, 0, 3), uniform(rng, 0, 3))};
@@ -725,7 +742,8 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
 
 TEST(WorldStatic, StaticBodiesCannotBeContinuous) {
   World world;
-  const BodyId wall = world.add(Rect{{0, 0}, {1, 5}, 0}, {.user_id = 4, .filter = {}, .is_static = true, .sensor = false});
+  const BodyId wall =
+      world.add(Rect{{0, 0}, {1, 5}, 0}, {.user_id = 4, .filter = {}, .is_static = true, .sensor = false});
   const BodyId ball = world.add(Circle{{0.5, 0}, 1});
   world.update();
   const auto pairs = world.overlapping();
@@ -753,8 +771,8 @@ TEST(WorldStatic, StaticBodiesCannotBeContinuous) {
 TEST(WorldThreads, EveryThreadCountReportsTheSame) {
   std::vector<World> worlds;
   for (const unsigned threads : {1u, 2u, 3u}) {
-    worlds.emplace_back(WorldOptions{.fat_margin = 0.1, .proximity_margin = 0.3, .contacts = true,
-                                     .speculative_margin = 0.1, .threads = threads});
+    worlds.emplace_back(WorldOptions{
+        .fat_margin = 0.1, .proximity_margin = 0.3, .contacts = true, .speculative_margin = 0.1, .threads = threads});
   }
   Rng rng(51);
   for (int k = 0; k < 1500; ++k) {
@@ -768,7 +786,8 @@ TEST(WorldThreads, EveryThreadCountReportsTheSame) {
   std::size_t candidates = 0;
   for (int frame = 0; frame < 10; ++frame) {
     std::vector<std::pair<Vec2, double>> moves;
-    for (const BodyId id : worlds[0].bodies()) moves.emplace_back(Vec2(uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3)), 0.05);
+    for (const BodyId id : worlds[0].bodies())
+      moves.emplace_back(Vec2(uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3)), 0.05);
     for (World& w : worlds) {
       std::size_t m = 0;
       for (const BodyId id : w.bodies()) {
@@ -817,7 +836,8 @@ TEST(WorldThreads, ThePoolRunsEveryTaskOnce) {
     EXPECT_EQ(pool.threads(), threads);
     std::vector<std::atomic<int>> calls(1000);
     for (int run = 0; run < 200; ++run) pool.run(run % 2 == 0 ? calls.size() : 7, [&](std::size_t k) { ++calls[k]; });
-    for (std::size_t k = 0; k < calls.size(); ++k) ASSERT_EQ(calls[k].load(), k < 7 ? 200 : 100) << threads << " threads, task " << k;
+    for (std::size_t k = 0; k < calls.size(); ++k)
+      ASSERT_EQ(calls[k].load(), k < 7 ? 200 : 100) << threads << " threads, task " << k;
   }
 }
 

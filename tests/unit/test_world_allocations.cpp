@@ -35,9 +35,12 @@ struct Scene {
     const auto shape = [&](const Vec2& c) -> Shape {
       const double half = 0.3 + 1.7 * u(rng);
       switch (rng() % 3) {
-        case 0: return Circle{c, half};
-        case 1: return Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), 6.0 * u(rng)};
-        default: return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), 6.0 * u(rng)};
+        case 0:
+          return Circle{c, half};
+        case 1:
+          return Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), 6.0 * u(rng)};
+        default:
+          return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), 6.0 * u(rng)};
       }
     };
     for (int k = 0; k < 200; ++k) world.add(shape(Vec2(u(rng) * side, u(rng) * side)), {.is_static = true});
@@ -83,7 +86,8 @@ TEST(WorldAllocations, SteadyFramesAllocateNothing) {
 }
 
 TEST(WorldAllocations, SteadyFramesWithContactsAndProximityAllocateNothing) {
-  EXPECT_EQ(allocations_in_steady_frames({.fat_margin = 0.1, .proximity_margin = 0.5, .contacts = true, .threads = 1}), 0);
+  EXPECT_EQ(allocations_in_steady_frames({.fat_margin = 0.1, .proximity_margin = 0.5, .contacts = true, .threads = 1}),
+            0);
 }
 
 }  // namespace

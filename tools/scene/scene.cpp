@@ -87,7 +87,8 @@ Shape parse_shape(const json& b, const std::string& field) {
 std::uint64_t bits(const json& object, const char* key, const std::string& field, std::uint64_t fallback) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
-  if (!it->is_number_unsigned()) fail(child(field, key), "expected a non-negative integer of 64 bits, got " + it->dump());
+  if (!it->is_number_unsigned())
+    fail(child(field, key), "expected a non-negative integer of 64 bits, got " + it->dump());
   return it->get<std::uint64_t>();
 }
 
@@ -101,11 +102,10 @@ bool flag(const json& object, const char* key, const std::string& field) {
 SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = "bodies[" + std::to_string(index) + "]";
   if (!b.is_object()) fail(field, "expected an object");
-  reject_unknown_keys(
-      b,
-      {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity", "id", "continuous",
-       "category", "mask", "group", "static", "sensor"},
-      field);
+  reject_unknown_keys(b,
+                      {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity",
+                       "id", "continuous", "category", "mask", "group", "static", "sensor"},
+                      field);
   SceneBody body;
   body.shape = parse_shape(b, field);
   if (const auto it = b.find("velocity"); it != b.end()) body.velocity = vec2(*it, field + ".velocity");
@@ -163,8 +163,10 @@ bool same_shape(const Shape& a, const Shape& b) {
         using T = std::decay_t<decltype(x)>;
         const T& y = std::get<T>(b);
         if constexpr (std::is_same_v<T, Circle>) return x.center == y.center && x.radius == y.radius;
-        if constexpr (std::is_same_v<T, Ellipse>) return x.center == y.center && x.a == y.a && x.b == y.b && x.angle == y.angle;
-        if constexpr (std::is_same_v<T, Rect>) return x.center == y.center && x.half_extents == y.half_extents && x.angle == y.angle;
+        if constexpr (std::is_same_v<T, Ellipse>)
+          return x.center == y.center && x.a == y.a && x.b == y.b && x.angle == y.angle;
+        if constexpr (std::is_same_v<T, Rect>)
+          return x.center == y.center && x.half_extents == y.half_extents && x.angle == y.angle;
       },
       a);
 }
@@ -232,12 +234,14 @@ std::string write_scene(const Scene& scene) {
     if (b.filter.group != pairs_with_all.group) j["group"] = b.filter.group;
     bodies.push_back(std::move(j));
   }
-  const json root{{"arena", {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
-                  {"frames", scene.frames},
-                  {"dt", scene.dt},
-                  {"fat_margin", scene.fat_margin},
-                  {"proximity_margin", scene.proximity_margin},
-                  {"bodies", bodies}};
+  const json root{
+      {"arena",
+       {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
+      {"frames", scene.frames},
+      {"dt", scene.dt},
+      {"fat_margin", scene.fat_margin},
+      {"proximity_margin", scene.proximity_margin},
+      {"bodies", bodies}};
   return root.dump(1);
 }
 
@@ -264,7 +268,8 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
     add(Rect{Vec2(v, mid.y()), Vec2(0.5, 0.5 * size.y()), 0.0}, false);
   }
   for (int k = 0; k < count / 200; ++k) {
-    const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8), uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));
+    const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8),
+                  uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));
     if (k % 2 == 0) {
       add(Rect{at, Vec2(uniform(6, 14), 0.8), uniform(-0.6, 0.6)}, false);
     } else {

@@ -31,8 +31,8 @@
 // (got -1)`, `frames: missing`, `bodies[0]: unknown field 'radus'`.
 #pragma once
 
-#include <collide2d/world.h>
 #include <collide2d/shapes.h>
+#include <collide2d/world.h>
 
 #include <cstdint>
 #include <stdexcept>

@@ -23,8 +23,9 @@ double percentile(std::vector<double> v, double q) {
 void draw_progress(std::ostream& out, int done, int total) {
   constexpr int kWidth = 40;
   const int filled = total > 0 ? done * kWidth / total : kWidth;
-  out << "\r  [" << std::string(static_cast<std::size_t>(filled), '#') << std::string(static_cast<std::size_t>(kWidth - filled), '.')
-      << "] " << (total > 0 ? 100 * done / total : 100) << "% (" << done << '/' << total << " frames)" << std::flush;
+  out << "\r  [" << std::string(static_cast<std::size_t>(filled), '#')
+      << std::string(static_cast<std::size_t>(kWidth - filled), '.') << "] " << (total > 0 ? 100 * done / total : 100)
+      << "% (" << done << '/' << total << " frames)" << std::flush;
 }
 
 }  // namespace
@@ -32,14 +33,16 @@ void draw_progress(std::ostream& out, int done, int total) {
 SceneRun::SceneRun(Scene scene)
     : scene_(std::move(scene)), world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin}) {
   for (const SceneBody& b : scene_.bodies) {
-    ids_.push_back(world_.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
+    ids_.push_back(
+        world_.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
 }
 
 RunSummary SceneRun::totals() const {
   const auto count = [this](bool SceneBody::*flag) {
-    return static_cast<std::size_t>(std::count_if(scene_.bodies.begin(), scene_.bodies.end(), [flag](const SceneBody& b) { return b.*flag; }));
+    return static_cast<std::size_t>(
+        std::count_if(scene_.bodies.begin(), scene_.bodies.end(), [flag](const SceneBody& b) { return b.*flag; }));
   };
   RunSummary s;
   s.frames = scene_.frames;
@@ -78,7 +81,8 @@ RunSummary SceneRun::run(std::ostream* progress) {
     s.sensing_per_frame += static_cast<double>(f.sensing);
     s.sensor_began += world_.sensor_began().size();
     s.sensor_ended += world_.sensor_ended().size();
-    if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames)) draw_progress(*progress, frame + 1, scene_.frames);
+    if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames))
+      draw_progress(*progress, frame + 1, scene_.frames);
   }
   if (progress) *progress << '\n';
   const double n = std::max(1, scene_.frames);
@@ -114,12 +118,15 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "static bodies               " << s.statics << " (level geometry; sensors included)\n"
       << "sensors                     " << s.sensors << ", " << s.sensing_per_frame << " bodies inside them per frame, "
       << s.sensor_began << " entries and " << s.sensor_ended << " exits over the run\n"
-      << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms << " ms\n"
-      << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms << " ms\n";
+      << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms
+      << " ms\n"
+      << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms
+      << " ms\n";
   for (const RunSummary::Sensor& sensor : s.sensor_contents) {
     out << "sensor " << sensor.id << " at the last frame: " << sensor.visitors.size() << " bodies";
     constexpr std::size_t kListed = 12;
-    for (std::size_t k = 0; k < std::min(kListed, sensor.visitors.size()); ++k) out << (k == 0 ? ": " : ", ") << sensor.visitors[k];
+    for (std::size_t k = 0; k < std::min(kListed, sensor.visitors.size()); ++k)
+      out << (k == 0 ? ": " : ", ") << sensor.visitors[k];
     out << (sensor.visitors.size() > kListed ? ", ...\n" : "\n");
   }
 }
@@ -133,9 +140,9 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   for (const SensorPair& p : world.sensing()) sensing.insert(p.sensor);
   std::ostringstream caption;
   const RunSummary totals = run.totals();
-  caption << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors << " sensors, dashed): "
-          << world.overlapping().size() << " overlapping pairs (red), " << world.proximity().size() << " pairs within "
-          << run.scene().proximity_margin << " (green segments)";
+  caption << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors
+          << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "
+          << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green segments)";
   // The caption spans at most 98% of the width at 0.6 em a character, more than a sans-serif font's
   // average, and is 14 pixels high where that allows (the picture is 1000 pixels wide), in a strip
   // below the arena twice its height. Sized at 3% of the arena's height, it ran a quarter past the
@@ -144,7 +151,8 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   const double font = std::min(0.98 * size.x() / (0.6 * chars), 0.014 * size.x());
   const double height = size.y() + 2 * font;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << arena.min.x() << ' ' << -arena.max.y() << ' '
-      << size.x() << ' ' << height << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * height / size.x()) << "\">\n"
+      << size.x() << ' ' << height << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * height / size.x())
+      << "\">\n"
       << "<style>.body{fill:#9db4cc;stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}"
          ".body.hit{fill:#e74c3c;stroke:#7b241c}"
          ".static{fill:#5d6d7e;stroke:#1c2833;vector-effect:non-scaling-stroke;stroke-width:0.5}"
@@ -160,8 +168,9 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   for (const bool sensors : {false, true}) {
     for (const BodyId id : world.bodies()) {
       if (world.is_sensor(id) != sensors) continue;
-      const std::string css = sensors ? (sensing.count(id) ? "sensor sensing" : "sensor")
-                                      : std::string(world.is_static(id) ? "static" : "body") + (hit.count(id) ? " hit" : "");
+      const std::string css =
+          sensors ? (sensing.count(id) ? "sensor sensing" : "sensor")
+                  : std::string(world.is_static(id) ? "static" : "body") + (hit.count(id) ? " hit" : "");
       svg_shape(out, world.shape(id), css.c_str());
     }
   }

@@ -20,12 +20,12 @@ struct RunSummary {
   double proximity_per_frame = 0.0;    // pairs apart but within the margin, mean
   std::size_t began = 0;               // overlap events over the run
   std::size_t ended = 0;
-  std::size_t continuous = 0;          // bullets
-  std::size_t impacts = 0;             // their first contacts within a frame, over the run
-  std::size_t statics = 0;             // static bodies
+  std::size_t continuous = 0;  // bullets
+  std::size_t impacts = 0;     // their first contacts within a frame, over the run
+  std::size_t statics = 0;     // static bodies
   std::size_t sensors = 0;
-  double sensing_per_frame = 0.0;      // sensor-visitor pairs, mean
-  std::size_t sensor_began = 0;        // entries into sensors over the run
+  double sensing_per_frame = 0.0;  // sensor-visitor pairs, mean
+  std::size_t sensor_began = 0;    // entries into sensors over the run
   std::size_t sensor_ended = 0;
   struct Sensor {
     std::uint64_t id = 0;

@@ -19,12 +19,12 @@ void svg_shape(std::ostream& out, const Shape& s, const char* css) {
         if constexpr (std::is_same_v<T, Circle>) {
           out << "<circle class=\"" << css << "\" cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << x.radius << "\"/>\n";
         } else if constexpr (std::is_same_v<T, Ellipse>) {
-          out << "<ellipse class=\"" << css << "\" cx=\"" << cx << "\" cy=\"" << cy << "\" rx=\"" << x.a << "\" ry=\"" << x.b
-              << "\" transform=\"rotate(" << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
+          out << "<ellipse class=\"" << css << "\" cx=\"" << cx << "\" cy=\"" << cy << "\" rx=\"" << x.a << "\" ry=\""
+              << x.b << "\" transform=\"rotate(" << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
         } else {
           out << "<rect class=\"" << css << "\" x=\"" << cx - x.half_extents.x() << "\" y=\"" << cy - x.half_extents.y()
-              << "\" width=\"" << 2 * x.half_extents.x() << "\" height=\"" << 2 * x.half_extents.y() << "\" transform=\"rotate("
-              << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
+              << "\" width=\"" << 2 * x.half_extents.x() << "\" height=\"" << 2 * x.half_extents.y()
+              << "\" transform=\"rotate(" << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
         }
       },
       s);
