@@ -101,7 +101,11 @@ def normalise(text):
 def dump():
     parts = []
     for header in sorted((ROOT / 'include' / 'collide2d').glob('*.h')):
-        text = normalise(strip_bodies(strip_comments(header.read_text())))
+        lines = normalise(strip_bodies(strip_comments(header.read_text()))).split('\n')
+        directives = [l for l in lines if l.startswith('#') and not l.startswith('#include')]
+        includes = sorted(l for l in lines if l.startswith('#include'))  # their order is formatting
+        code = [l for l in lines if not l.startswith('#')]
+        text = '\n'.join(directives + includes + code)
         parts.append('// ' + header.relative_to(ROOT).as_posix() + '\n' + text)
     return '\n\n'.join(parts) + '\n'
 
