@@ -131,7 +131,7 @@ void BroadPhaseBase::finish_update(std::vector<ProxyPair>& now) {
 // ---- sweep and prune ----
 
 // A strip's count wanders by a few boxes from frame to frame: growing it with room to spare lets it
-// do so without allocating (bench_world's 100,000-body crowd allocated 60 times a frame without).
+// do so without allocating.
 void SweepAndPrune::Strip::resize(std::size_t n) {
   if (n > keys.capacity()) {
     const std::size_t room = n + n / 4 + 8;

@@ -140,7 +140,7 @@ bool overlaps(const Shape& shape, const Aabb& box) {
   validate(box);
   // Only the part of the box within the shape's own box matters, and cutting it out is exact (min
   // and max): the rectangle made from that part then rounds like the shape's coordinates, not like
-  // the box's (a box 6e37 wide, its edge at 0, took in a circle 0.125 beyond it; the fuzzer).
+  // the box's (a box 6e37 wide, its edge at 0, would take in a circle 0.125 beyond it).
   const Aabb own = aabb(shape);
   const Aabb part{box.min.cwiseMax(own.min), box.max.cwiseMin(own.max)};
   if ((part.min.array() > part.max.array()).any()) return false;

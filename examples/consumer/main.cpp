@@ -1,4 +1,5 @@
-// The README's usage examples, built against an installed collide2d by the test suite.
+// A program that uses an installed collide2d, as a user's project does; the test suite builds it
+// against the package it installs (tests/package).
 #include <collide2d/collide2d.h>
 #include <cstdio>
 

@@ -1,14 +1,15 @@
-// Seed 000, reproduced as published: plain gradient descent on D^2(t1, t2) = |x1(t1) - x2(t2)|^2,
-// learning rate 0.04 exp(-0.002 k), stop when max |dD^2/dt| < 1e-8 or after 10,000 steps.
-// Not improved on purpose: it is the baseline the robust solver is measured against. Note that
+// M. Pewsey, "Minimum Distance Between Ellipses" (2021), reproduced as published: plain gradient
+// descent on D^2(t1, t2) = |x1(t1) - x2(t2)|^2, learning rate 0.04 exp(-0.002 k), stop when
+// max |dD^2/dt| < 1e-8 or after 10,000 steps. Not improved on purpose: it is a baseline the robust
+// solver is measured against. Note that
 // both the step and the stopping rule are absolute, so the method depends on the units (large
 // ellipses overshoot, tiny ones stop at once).
 //
 // Start rule: t1 and t2 point along the line of centres, unless a centre lies in the other ellipse;
 // then the best of the 24 x 24 pairs of evenly spaced parameter values (first minimum in the
-// post's order, t1 outer). The post's `contains` forgets to subtract the ellipse centre, which makes
-// it test the world origin; here it tests the centre as the text says. On the post's 19 samples
-// (first ellipse at the origin) the two differ only in which start they take.
+// article's order, t1 outer). The article's `contains` does not subtract the ellipse centre, which
+// makes it test the world origin; here it tests the centre as the text says. On the article's 19
+// sample pairs (first ellipse at the origin) the two differ only in which start they take.
 #include "narrowphase/baselines/ellipse_seed_solvers.h"
 
 #include "shapes/internal.h"
@@ -25,7 +26,7 @@ constexpr int kMaxIterations = 10000;
 constexpr double kLearningRate = 0.04;
 constexpr double kDecayRate = 0.002;
 
-// One curve in the post's terms: point and derivative at parameter t, relative to the centre.
+// One curve in the article's terms: point and derivative at parameter t, relative to the centre.
 struct Curve {
   Rotation<double> rot;
   double a;
@@ -36,7 +37,7 @@ struct Curve {
 
 Curve curve_of(const Ellipse& e) { return {Rotation<double>::of(e.angle), e.a, e.b}; }
 
-// The 24 x 24 vertex start of the post.
+// The article's 24 x 24 vertex start.
 Vec2 vertex_start(const Curve& c1, const Curve& c2, const Vec2& dx0) {
   constexpr int kVertices = 24;
   Vec2 best(0.0, 0.0);

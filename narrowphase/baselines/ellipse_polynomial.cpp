@@ -1,4 +1,4 @@
-// Seed 001 (D. Eberly, "Distance Between Ellipses in 2D"), a baseline to measure.
+// D. Eberly, "Distance Between Ellipses in 2D" (Geometric Tools): a baseline to measure.
 //
 // With X = C0 + A U, Y = C1 + B V (A = R0 diag(a0, b0), |U| = |V| = 1) and Delta = C0 - C1, the
 // Lagrange conditions make A^-T U, B^-T V and A U - B V + Delta parallel. With W = perp(A^-T U),

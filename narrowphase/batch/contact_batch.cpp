@@ -50,9 +50,8 @@ struct Vectors {
 };
 
 // The vectors of pairs at i, i + n, ... (n lanes each) stepping side by side until every lane has
-// stopped, each where the one-off root stops. A vector whose lanes have all stopped steps no more
-// (the three vectors had stepped until the slowest of their 24 lanes on AVX-512, 5.5 steps where
-// a lane needs 3.4 on average; 20.9-21.7 -> 20.0-20.5 ns per pair on bench_contact's candidates).
+// stopped, each where the one-off root stops. A vector whose lanes have all stopped steps no more,
+// rather than waiting for the slowest lane of the group.
 template <std::size_t... K>
 void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFields>& out, std::size_t i,
                   std::index_sequence<K...>) {
@@ -67,8 +66,7 @@ void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFiel
 
 // The contacts of the chunk's first `count` pairs, in whole vectors. A Newton step is a chain of
 // divisions and a square root, about 55 cycles, that leaves the dividers idle most of the time:
-// kTogether vectors step side by side to fill them (per pair on bench_contact's candidate pairs,
-// AVX2: one vector 32 ns, two 24 ns, three 23 ns, four 23 ns).
+// kTogether vectors step side by side to fill them; a fourth adds nothing.
 void contact_chunk(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFields>& out, std::size_t count) {
   constexpr std::size_t kTogether = 3;
   const std::size_t n = hn::Lanes(D());

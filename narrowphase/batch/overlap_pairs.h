@@ -1,8 +1,8 @@
 // Private: the batched overlap tests (overlap_batch.h) over pairs given by reference rather than as
 // lists of copies: pair(k) returns pair k as a PairRef. The World passes its bodies by index this
 // way, so that a batch entry is two indices and no shape is copied; the public functions are this
-// over their lists. A template, so that pair(k) inlines: through a function pointer, the rectangle
-// pairs' batch took 8.6 ns a pair instead of 5.8.
+// over their lists. A template, so that pair(k) inlines: a call through a function pointer would
+// cost as much as a rectangle pair's whole test.
 #pragma once
 
 #include <collide2d/shapes.h>

@@ -22,11 +22,7 @@
 // quarter stays shut unless its corner lies in the solid ellipse, in the hull of its evolute, or
 // delta in the Voronoi region of its arc, and unless the ellipse's tangents at the quarter's ends
 // (and their discs of curvature) allow a larger s; the open ones are settled in the order of their
-// bounds, and a maximum found in one may certify itself (disc_bound). The kernel before tried the
-// best face first and certified it by disc_bound, then the corner where s rose from it, then
-// bounded the other quarters from their ends: on bench_contact's scene pairs it took 134 ns on
-// average where this takes 116-118 (least of 41 passes), with the same contacts to 1e-15 of the
-// scale on two million random pairs, needles of aspect up to 1e9 among them.
+// bounds, and a maximum found in one may certify itself (disc_bound).
 #include "narrowphase/contact/curved_contact.h"
 
 #include "narrowphase/ellipse/distance_point_ellipse.h"
@@ -55,8 +51,7 @@ Direction<double> at_foot(const RectEllipse& p, const V2<double>& corner, const 
 // corner there (on the side of x + y: hx along x and hy along y where x is the rectangle's own x
 // axis or its opposite, else the other way round), the corner relative to B's centre in B's axes,
 // and an upper bound of s over the quarter (quarter_bound, below). The corner is RectSupport::at's
-// to the bit, without its branches on the signs of x + y: through it, for all four quarters, the
-// contact took 145.7 ns instead of 113.4 on the scene's pairs (least of 41 passes).
+// to the bit, without its branches on the signs of x + y, which would run for all four quarters.
 struct Quarter {
   V2<double> x, y;
   V2<double> corner;

@@ -50,8 +50,8 @@ std::array<Feature, 2> incident_face(const View& v, int k, double sigma) {
   const double tau = -sign_of(sigma * u[m][k]);
   std::array<Feature, 2> out;
   for (int e = 0; e < 2; ++e) {
-    // Built whole: written a coordinate at a time by index, the vector was stored in halves and
-    // read back whole, a stalled store forwarding that cost a tenth of the query.
+    // Built whole: written a coordinate at a time by index, the vector would be stored in halves
+    // and read back whole, a stalled store forwarding.
     const double along = e == 0 ? -1.0 : 1.0;
     const Vec2 local = m == 0 ? Vec2(tau * v.inc_half.x(), along * v.inc_half.y())
                               : Vec2(along * v.inc_half.x(), tau * v.inc_half.y());

@@ -59,7 +59,7 @@ struct Arc {
 // scale-free): most are outside, and each square root and division costs as much as the rest. Each
 // sinusoid is evaluated as n.gap - r |n - x|^2 / 2 (= n.(gap + r x) - r for unit n and x): on a
 // needle's flat side r is its length times its aspect, and n.(gap + r x) - r lost the bound to the
-// rounding of r (an ellipse of aspect 4,446, 2.9e47 long, ran the search to its cap; the fuzzer).
+// rounding of r (an ellipse of aspect 4,446 and 2.9e47 long ran the search to its cap that way).
 template <class Real, class P>
 Real arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y) {
   using std::sqrt;
@@ -88,9 +88,8 @@ Real arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y) {
 // each shape lies behind its tangent at the support point found at x, so s(n) <= n.gap_x, a
 // sinusoid whose largest value on the arc is |gap_x| if gap_x points into it, else at an end (s(x)
 // or y.gap_x). The same from y. Where it already lies within `floor` (the best value found plus
-// the margin) it is returned instead of arc_bound's. On bench_contact's candidate rectangle–ellipse
-// pairs it spared 2,324 of 3,173 quarter turns arc_bound's square roots and divisions, which took a
-// fifth of the contact's time, with the same contacts bit for bit.
+// the margin) it is returned instead of arc_bound's, whose square roots and divisions it spares
+// most quarter turns; the contact is the same bit for bit.
 template <class Real, class P>
 Real cheap_arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>& y, Real floor) {
   const auto along = [&](const V2<Real>& gap) {
@@ -179,10 +178,9 @@ Real disc_bound(const SupportPair<Real, SA, SB>& p, const V2<Real>& m, const Sep
 }
 
 // Of the line of centres n and the two ellipses' axes (each turned towards B), the direction where
-// s is largest, from support values alone (no points, no divisions): on bench_contact's candidate
-// ellipse pairs the climb from the line of centres was certified in 49% of them, from this one in
-// 83%, and the mean support evaluations fell from 9.28 to 7.38. Thin ellipses side by side are
-// separated across their axes, seldom along the line of centres. Along its own axes an ellipse's
+// s is largest, from support values alone (no points, no divisions): a climb from it is certified
+// far more often than one from the line of centres, as thin ellipses side by side are separated
+// across their axes, seldom along the line of centres. Along its own axes an ellipse's
 // support value is its semi-axis: one square root per axis.
 template <class Real>
 V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSupport<Real>>& p, V2<Real> n) {
@@ -200,10 +198,8 @@ V2<Real> best_of_axes(const SupportPair<Real, EllipseSupport<Real>, EllipseSuppo
 }
 
 // The rectangle's axis (x or y) whose face normal, turned towards B, has the largest s,
-// |delta.f| - h_A(f) - h_B(f), from two support values of each shape (no points): on
-// bench_contact's candidate rectangle–ellipse pairs the climb from the face normal nearest the line
-// of centres was certified in 54% of them, from this one in 72%, and the mean support evaluations
-// fell from 4.76 to 4.06.
+// |delta.f| - h_A(f) - h_B(f), from two support values of each shape (no points): a climb from it is
+// certified more often than one from the face normal nearest the line of centres.
 // `extent` receives the other shape's support value along it.
 template <class Real, class SA, class SB>
 V2<Real> best_face(const SupportPair<Real, SA, SB>& p, Real* extent = nullptr) {
@@ -241,7 +237,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   if (toward == V2<Real>::Zero()) return std::nullopt;
   const Real flat = margin / 2;
   // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
-  // denormal, and the direction divided by that norm came out 1e-9 off unit length (the fuzzer).
+  // denormal, and the direction divided by that norm comes out 1e-9 off unit length.
   // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
   // Without a guess a rectangle's face normal starts the climb, and takes only its sign from the
   // line of centres, which is then left as it is.
@@ -373,9 +369,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
     arcs.push_back(
         {starts[k], starts[k + 1], cheap_arc_bound(p, end(starts[k]), end(starts[k + 1]), best.at.s + margin)});
   // The climb's maximum, polished (s' = 0 to rounding) but not certified, splits its arc as an end:
-  // the search need not find it again, and the arcs beside it start flat there. The search used to
-  // find that maximum again in most of the pairs the bound left; on bench_contact's candidate pairs
-  // the mean support evaluations fell from 7.38 to 6.59.
+  // the search need not find it again, and the arcs beside it start flat there.
   if (reached) {
     for (Arc<Real>& arc : arcs) {
       if (!(cross(end(arc.x).n, reached->n) > 0 && cross(reached->n, end(arc.y).n) > 0)) continue;

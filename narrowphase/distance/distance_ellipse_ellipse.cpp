@@ -97,9 +97,9 @@ struct Extremes {
 // A's: bounds on |rho_B - rho_A| and on |g''| = |-n.delta + h_B'' - h_A''| (h'' = rho - h). The
 // end values of each radius on an arc (bend_between) bound the difference only by the variation of
 // either radius along the arc, which for nearly congruent pairs (a ring between an ellipse and its
-// slightly smaller copy) dwarfs the difference itself: halving until that bound fell below the
-// rounding took 1e5 evaluations for a copy scaled by 1 - 1e-12, and 4,097 for concentric circles,
-// whose g is constant. With a >= b, theta modulo pi, h^2 = a^2 cos^2 + b^2 sin^2 of the angle psi
+// slightly smaller copy) dwarfs the difference itself, and halving until that bound fell below the
+// rounding would take many thousands of evaluations (concentric circles, whose g is constant, the
+// most). With a >= b, theta modulo pi, h^2 = a^2 cos^2 + b^2 sin^2 of the angle psi
 // from the major axis and rho = (ab)^2 / h^3: |d rho / da| <= 2 rho / a <= 2 a / b, |d rho / db|
 // <= 2 rho / b <= 2 a^2 / b^2, |d rho / d theta| = 3 (ab)^2 (a^2 - b^2) |sin psi cos psi| / h^5
 // <= 3 a (a^2 - b^2) / b^2 (as |sin psi cos psi| / h <= |cos psi| / (a |cos psi|)), and |dh/da|,

@@ -21,11 +21,9 @@
 //   between its end values, which bounds g'' = -g + rho_B - rho_A: an arc where that bound keeps
 //   one sign holds at most one extremum (polished by the same safeguarded Newton), and any other
 //   arc is halved while g could still dip below the least value found (or rise above the greatest)
-//   by more than its rounding. No extremum can hide between samples: an earlier version bracketed
-//   sign changes of g' at 96 fixed directions and missed the least gap of a circle on an ellipse's
-//   axis near the cusp of its evolute (two minima beside a maximum at a sample where g' = 0:
-//   2.0199695559 for 2.0198941777, 106 of 480 such pairs off by up to 5.9e-6 of the size). It
-//   costs a median of 30 support evaluations on nested pairs (the sampler took 113); nearly
+//   by more than its rounding. No extremum can hide between samples, as it can for a sampler that
+//   brackets sign changes of g' at fixed directions: a circle on an ellipse's axis near the cusp
+//   of its evolute has two minima beside a maximum, and a sample where g' = 0 misses them. Nearly
 //   congruent pairs, where g is flat, are bounded separately (congruence_of in the .cpp).
 //   Accuracy (tests/test_ellipse_ellipse.cpp and test_circle_pairs.cpp, against a 50-digit
 //   reference, as a fraction of max(size, centre distance); asserted at 8 u = 8.9e-16, the target

@@ -1,5 +1,5 @@
-// Private: two solid ellipses seen through their exact support functions, generic over the scalar so
-// that the overlap test can repeat itself in long double when double cannot decide.
+// Private: two solid ellipses seen through their exact support functions, generic over the scalar
+// so that the overlap test can repeat itself in long double when double cannot decide.
 //
 // For an ellipse centred at the origin and a unit direction n, the support function is
 // h(n) = |(a n_u, b n_v)| (n_u, n_v the components of n on the ellipse axes), the support point is
@@ -95,9 +95,9 @@ Real newton_in_bracket(F f, Real lo, Real hi, int& iterations) {
   return newton_in_bracket(f, lo, hi, f(lo), iterations, [](Real x, Real y) { return (x + y) / 2; });
 }
 
-// The unit vector turned from n0 by the angle 2 atan(tau) (counter-clockwise for turn = 1, clockwise
-// for -1): rational in tau, so the Newton iteration below pays no cos/sin per step. Always inlined:
-// it sits in the climbs' inner loops, where a call costs more than its body.
+// The unit vector turned from n0 by the angle 2 atan(tau) (counter-clockwise for turn = 1,
+// clockwise for -1): rational in tau, so the Newton iteration below pays no cos/sin per step.
+// Always inlined: it sits in the climbs' inner loops, where a call costs more than its body.
 template <class Real>
 [[gnu::always_inline]] inline V2<Real> turned(const V2<Real>& n0, Real turn, Real tau) {
   const Real d = 1 + tau * tau;
@@ -105,29 +105,27 @@ template <class Real>
 }
 
 // Halley's correction to a Newton step on s' in tau = tan(angle / 2), at tau from the step's origin
-// (counted counter-clockwise): the step slope / s'' is divided by it. With
-// s''' = -(slope + rho_slope) (support_pair.h), the iteration converges with the cube of the error
-// instead of its square: on bench_contact's candidate ellipse pairs the contact's mean support
-// evaluations fell from 6.26 to 5.05. In tau, d2(s')/dtau2 = phi_tau^2 (bend tau - slope -
-// rho_slope) with phi_tau = 2 / (1 + tau^2), hence the factor below. Where it leaves [1/2, 2] (far
-// from the root, the cubic model no better than the quadratic), 1: the Newton step.
+// (counted counter-clockwise): the step slope / s'' is divided by it. With s''' = -(slope +
+// rho_slope) (support_pair.h), the iteration converges with the cube of the error instead of its
+// square, in fewer support evaluations than Newton's. In tau, d2(s')/dtau2 = phi_tau^2 (bend tau -
+// slope - rho_slope) with phi_tau = 2 / (1 + tau^2), hence the factor below. Where it leaves [1/2,
+// 2] (far from the root, the cubic model no better than the quadratic), 1: the Newton step.
 template <class Real>
 Real halley(const Separation<Real>& e, Real tau) {
   const Real d = 1 + e.slope * (e.slope + e.rho_slope - e.bend * tau) / (2 * e.bend * e.bend);
   return d >= Real(0.5) && d <= Real(2) ? d : Real(1);
 }
 
-// The direction maximising s near n0. On the arc of separating directions, and wherever
-// s > -(rho_A + rho_B), s is concave in the angle t (s'' = -(s + rho_A + rho_B)); the arc is
-// shorter than pi. Turning from n0 towards increasing s, the maximiser is the first sign change of
-// s', and every direction where s has fallen below s(n0) lies beyond it: safeguarded Halley steps
-// on s' with that bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is
-// the global maximum, the distance.
-// Whether n is at the maximum of s to rounding: the gap between the support points has no component
-// across n beyond the rounding of the gap itself (`tolerance`, the pair's margin). The closest
-// points are then exact to rounding too. Where the maximum is a kink finer than a double angle
-// resolves (ellipses thinner than about 1e-8 of their length, bend ~ a^2 / b), the slope stays
-// larger at the best representable angle, and this stays false.
+// The direction maximising s near n0. On the arc of separating directions, and wherever s > -(rho_A
+// + rho_B), s is concave in the angle t (s'' = -(s + rho_A + rho_B)); the arc is shorter than pi.
+// Turning from n0 towards increasing s, the maximiser is the first sign change of s', and every
+// direction where s has fallen below s(n0) lies beyond it: safeguarded Halley steps on s' with that
+// bracket, in tau = tan(t / 2) (t < pi: tau up to 1e9). From a separating n0 this is the global
+// maximum, the distance. Whether n is at the maximum of s to rounding: the gap between the support
+// points has no component across n beyond the rounding of the gap itself (`tolerance`, the pair's
+// margin). The closest points are then exact to rounding too. Where the maximum is a kink finer
+// than a double angle resolves (ellipses thinner than about 1e-8 of their length, bend ~ a^2 / b),
+// the slope stays larger at the best representable angle, and this stays false.
 template <class Real>
 bool at_maximum(const Separation<Real>& e, Real tolerance) {
   using std::abs;

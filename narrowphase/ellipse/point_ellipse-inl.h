@@ -14,9 +14,9 @@
 
 // The root of g for z0, z1 > 0 and r0 = (e0/e1)^2 >= 1, in t = s + 1 rather than Eberly's s:
 // g(t) = (r0 z0 / (t + r0 - 1))^2 + (z1 / t)^2 - 1. For a point inside near the major axis the root
-// sits at t ~ z1 / sqrt(1 - x^2), far below 1: as s = t - 1 it kept only the absolute precision of
-// s, and the closest point's y1 / (s + 1) came out wrong (a point 1e-17 off the axis near the
-// evolute's cusp got a distance off by 1.3e-2; the contact tests' rigid motions found it).
+// sits at t ~ z1 / sqrt(1 - x^2), far below 1: as s = t - 1 it would keep only the absolute
+// precision of s, and the closest point's y1 / (s + 1) would come out wrong (for a point 1e-17 off
+// the axis near the evolute's cusp, a distance off by 1.3e-2).
 //
 // Newton runs on q(t) = (g(t) + 1)^(-1/2) = 1 rather than on g = 0. q is a weighted power mean of
 // order -2 of t + r0 - 1 and t, hence concave and increasing (and exactly linear for a circle), so
@@ -27,10 +27,9 @@
 // would round away. Why that holds: with A_k = sum of w_i x_i^(-k) (x_i = t, t + r0 - 1, all >= t),
 // q''/q' = -3 (A2 A4 - A3^2) / (A2 A3), so |q''| <= 3 q' / t; q' falls as t grows, so the root
 // after a step from t to t + d lies within 1.5 (r - t)^2 / t, about 1.5 d^2 / t, of the new t:
-// below 2^-53 t once d <= 2^-27 t. From the bound max(z1, r0 z0 - (r0 - 1)) that takes 3.4
-// evaluations of q on average on bench_contact's candidate circle–ellipse pairs; checking instead
-// that one more step fails to climb took 4.4, and safeguarded Newton on g from the middle of its
-// bracket 7.8. Lanes that have ended keep their t while the others go on.
+// below 2^-53 t once d <= 2^-27 t. Started from the bound max(z1, r0 z0 - (r0 - 1)), that stop
+// saves the step that would only confirm the root; safeguarded Newton on g from the middle of its
+// bracket takes about twice the steps. Lanes that have ended keep their t while the others go on.
 template <class D, class V>
 class SecularRoot {
  public:

@@ -85,7 +85,8 @@ struct MetricClosest {
   V2<Real> point;
 };
 
-// Eberly's closest-features view (seed 004, sections 3 and 4): when the centre is outside the
+// Eberly's closest-features view ("Intersection of Rectangle and Ellipse", sections 3 and 4): when
+// the centre is outside the
 // rectangle, the minimiser lies on an edge facing the centre. On the line {p_i = sgn e_i} the
 // quadratic's minimum is (|x_i| - e_i)^2 / l_i^2 at p_j = x_j + (e_i - |x_i|) sgn m01 / l_i^2
 // (Lagrange); Q restricted to the edge is a convex parabola, so the constrained minimum is at that

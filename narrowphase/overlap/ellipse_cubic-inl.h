@@ -2,17 +2,17 @@
 // one-off kernel (overlap_ellipse_ellipse.cpp) runs it on one pair, the batch (overlap_batch.cpp)
 // on Highway vectors, with the same IEEE operations in the same order.
 //
-// An ellipse is the conic X^T Q X <= 0 in homogeneous coordinates, Q = [[M, -Mc], [-c^T M,
-// c^T M c - 1]]. The pencil's characteristic cubic f(l) = det(l Q_A - Q_B) has f(0) = det M_B > 0
-// and a negative leading coefficient, so at least one positive root; the ellipses are apart exactly
-// when its other two roots are real, distinct and negative, touch when they coincide, and overlap
+// An ellipse is the conic X^T Q X <= 0 in homogeneous coordinates, Q = [[M, -Mc], [-c^T M, c^T M c
+// - 1]]. The pencil's characteristic cubic f(l) = det(l Q_A - Q_B) has f(0) = det M_B > 0 and a
+// negative leading coefficient, so at least one positive root; the ellipses are apart exactly when
+// its other two roots are real, distinct and negative, touch when they coincide, and overlap
 // otherwise (a complex pair, or three positive roots). This is the planar case of Wang, Wang and
 // Kim's separation condition for ellipsoids ("An algebraic condition for the separation of two
-// ellipsoids", CAGD 2001; the sign convention here was checked against the GJK kernel on
-// bench_narrowphase's 4,096 candidate pairs: all agree). In A's frame, lengths in units of A's
-// semi-axis a, with B's centre at d there and at g in B's own axes, k = (a_A / b_A)^2,
-// delta_i = (a_A / B's semi-axis i)^2, B turned by (c, s) relative to A, and q_A, q_B each
-// ellipse's quadratic at the other's centre, expanding the determinant gives
+// ellipsoids", Computer Aided Geometric Design 18, 2001; the sign convention agrees with the GJK
+// kernel's verdicts, which the batch tests compare on random and hard-case pairs). In A's frame,
+// lengths in units of A's semi-axis a, with B's centre at d there and at g in B's own axes, k =
+// (a_A / b_A)^2, delta_i = (a_A / B's semi-axis i)^2, B turned by (c, s) relative to A, and q_A,
+// q_B each ellipse's quadratic at the other's centre, expanding the determinant gives
 //   f(l) = -k l^3 + (T - k q_B) l^2 + (delta_1 delta_2 q_A - T) l + delta_1 delta_2,
 //   T = delta_1 (s^2 + k c^2) + delta_2 (c^2 + k s^2)      (= trace(adj(M_A) M_B), no cancellation),
 //   q_A = d_0^2 + k d_1^2 - 1,   q_B = delta_1 g_0^2 + delta_2 g_1^2 - 1.
@@ -31,12 +31,10 @@
 //
 // Needles of aspect beyond 1e6 are left to that kernel, whatever the bound says: not for this
 // test's sake, but so that overlap and the distance query, which shares that kernel's path, agree.
-// For needles the two may differ within the rounding of the pair's scale: the fuzzer found a needle
-// of aspect 1.3e33 and half-length 6.4 with a speck 5e-33 across sitting 9.5e-34 above its side,
-// which this test calls apart, rightly, and that path overlapping (a gap of 2e-34 of the scale,
-// far below what either query promises). Before that it had found a pair that path got wrong by
-// far, for both queries (aspects 6.6e23 and 6.4e24, 0.56 apart across their axes, called
-// overlapping; fixed in boxes_apart, overlap_ellipse_ellipse.cpp).
+// For needles the two may differ within the rounding of the pair's scale: for a needle of aspect
+// 1.3e33 and half-length 6.4 with a speck 5e-33 across sitting 9.5e-34 above its side, this test
+// says apart, rightly, and that path overlapping (a gap of 2e-34 of the scale, far below what
+// either query promises; the fuzz corpus holds the pair).
 //
 // Included inside a namespace, once per Highway target (no #pragma once).
 #if defined(COLLIDE2D_ELLIPSE_CUBIC_INL_H_) == defined(HWY_TARGET_TOGGLE)

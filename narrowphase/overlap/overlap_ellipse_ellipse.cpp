@@ -38,14 +38,14 @@ bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
 // needles of aspect beyond about 1e16, whose separating directions are kinks finer than a double
 // angle. The rounding is that of the three terms of the gap, not of the pair's scale: a needle of
 // length 1e20 has a half-height known to a few ulps of its b in its own frame, and a gap of 0.5
-// beside it is certain (the fuzzer found such a pair called overlapping, at a scale where 0.5 is
-// below 8 u). delta's component carries a few u of its composition's magnitude (d the centres'
-// difference in world axes). The shorter ellipse's half-width sqrt((a c)^2 + (b s)^2) moves by at
-// most a dc + b ds where its cosine and sine carry dc and ds, a few u of their magnitudes
-// (EllipsePair::turn). That allowance was (a + b) u before, whatever the turn: for two needles
-// 2.4e24 and 5.1e25 long turned by 1e-297 from each other and 0.56 apart across their axes, 1e9
-// times the gap, so the pair went to GJK, whose long double pass called it overlapping (the fuzzer,
-// through the ellipse cubic, which called it apart).
+// beside it is certain (at a scale where 0.5 is below 8 u; LongNeedleKeepsALocalGap). delta's
+// component carries a few u of its composition's magnitude (d the centres' difference in world
+// axes). The shorter ellipse's half-width sqrt((a c)^2 + (b s)^2) moves by at most a dc + b ds
+// where its cosine and sine carry dc and ds, a few u of their magnitudes (EllipsePair::turn). An
+// allowance of (a + b) u, whatever the turn, would be far too wide for two needles turned by a tiny
+// angle from each other: for needles 2.4e24 and 5.1e25 long turned by 1e-297 and 0.56 apart across
+// their axes it is 1e9 times the gap, and the pair would go to GJK, whose long double pass cannot
+// decide it (NeedlesTurnedByTinyAnglesApartAcrossAxes).
 bool boxes_apart(const EllipsePair<double>& p, const Vec2& d, Vec2& axis) {
   const bool a_frame = std::max(p.A.a, p.A.b) >= std::max(p.B.a, p.B.b);
   for (int k = 0; k < 2; ++k) {
@@ -70,13 +70,13 @@ bool boxes_apart(const EllipsePair<double>& p, const Vec2& d, Vec2& axis) {
 }
 
 // Whether the two ellipses share a point of the segment between their centres: A holds it from c_A
-// up to s_A |d| along it, B back from c_B up to s_B |d|, and s_A + s_B > 1. For an ellipse,
-// s = ab / |(b l_u, a l_v)| with l the offset in its axes, so the test is W_A P_B + W_B P_A >
-// W_A W_B (1 + slack), P = ab, W = |(b l_u, a l_v)|: no division. It decides 930 of the 1,483
-// overlapping candidate pairs of bench_narrowphase that would otherwise run GJK (and is implied
-// by either centre lying inside the other ellipse). Slack: l's components carry up to 4 u |d| of
-// rounding (the pair's frame and each ellipse's rotation in it), which moves W relatively by at most
-// 8 u times the ellipse's aspect (W >= min(a, b) |d|), and the products add a few u more.
+// up to s_A |d| along it, B back from c_B up to s_B |d|, and s_A + s_B > 1. For an ellipse, s = ab
+// / |(b l_u, a l_v)| with l the offset in its axes, so the test is W_A P_B + W_B P_A > W_A W_B (1 +
+// slack), P = ab, W = |(b l_u, a l_v)|: no division. It decides most overlapping pairs that would
+// otherwise run GJK (and is implied by either centre lying inside the other ellipse). Slack: l's
+// components carry up to 4 u |d| of rounding (the pair's frame and each ellipse's rotation in it),
+// which moves W relatively by at most 8 u times the ellipse's aspect (W >= min(a, b) |d|), and the
+// products add a few u more.
 bool centre_segment_shared(const EllipsePair<double>& p) {
   const auto reach = [&p](const EllipseSupport<double>& e, double& aspect) {
     const Vec2 l = e.rot.apply_inverse(p.delta);

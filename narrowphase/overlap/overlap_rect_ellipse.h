@@ -24,12 +24,11 @@
 //   The fallback, closest features: the minimum of the ellipse quadratic over the one or two
 //   rectangle edges facing the ellipse centre, in closed form (Lagrange and a clamp).
 //
-// Accuracy (measured by tests/test_rect_ellipse.cpp against a 50-digit reference): no wrong default
-// verdict in any hard-case family (gaps +-1e-3 ... +-1e-12 of the size, aspect ratios to 1e6, sizes
-// 1e-6 and 1e6, offsets to 1e9), nor in 840 contacts at the rounding level (gap 0, +-1e-14 ...
-// +-1e-16 of the size), where the filter deferred 724 times and the fallback matched the exact
-// verdict of the rounded input every time. The plain-double tests it is measured against
-// (narrowphase/baselines/) err there.
+// Accuracy (tests/accuracy/test_rect_ellipse.cpp, against a 50-digit reference): the verdict is the
+// exact verdict of the rounded input in every hard-case family (gaps +-1e-3 ... +-1e-12 of the
+// size, aspect ratios to 1e6, sizes 1e-6 and 1e6, offsets to 1e9) and in contacts at the rounding
+// level (gap 0, +-1e-14 ... +-1e-16 of the size), where the filter defers and the fallback decides.
+// The plain-double tests it is measured against (narrowphase/baselines/) err there.
 // Limit: the rectangle's frame holds the ellipse centre to u times the centres' distance, so a
 // rectangle far along a needle (6.8e38 from the centre of an ellipse 3e48 long, 1.09 beside it)
 // can be called overlapping; that is within the stated target (1e-12 of the centre distance), and

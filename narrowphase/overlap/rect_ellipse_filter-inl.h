@@ -87,9 +87,8 @@ class RectEllipseFilter {
   // so that the coordinates' rounding (err) cannot move a point of the smaller shapes out of the
   // true ones: the rectangle's half extents by 2 err, the ellipse about its centre by
   // 2 err / min(a, b) (which erodes it by at least 2 err; shrinking its semi-axes by 2 err would
-  // not), and the last comparison keeps 16 u for its own rounding. It decides 2,061 of
-  // bench_narrowphase's 2,651 overlapping candidate pairs, which the corner pieces would all four
-  // have to see.
+  // not), and the last comparison keeps 16 u for its own rounding. It decides most overlapping
+  // pairs, which the corner pieces would all four have to see.
   M centre_segment_shared() const {
     const V two_err = k(2.0) * err_;
     const V e0 = f_.e0 - two_err, e1 = f_.e1 - two_err;

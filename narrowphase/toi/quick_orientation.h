@@ -8,9 +8,9 @@
 
 namespace collide2d::detail {
 
-// Orientation::of(angle) to within an ulp or two, for |angle| <= 8e5 (else nullopt), in a third of
-// the instructions of the C library's sincos, which took a sixth of a turning time of impact's
-// steps: the angle less the nearest multiple k of pi/2 (in two parts, the first of 33 bits, so that
+// Orientation::of(angle) to within an ulp or two, for |angle| <= 8e5 (else nullopt), in a fraction
+// of the instructions of the C library's sincos, which a turning time of impact calls every step:
+// the angle less the nearest multiple k of pi/2 (in two parts, the first of 33 bits, so that
 // k times it is exact for |k| < 2^19: Cody and Waite's reduction), then the Taylor polynomials of
 // the cosine and sine to x^18 and x^17, whose remainders are below 1e-19 on [-pi/4, pi/4]. Not a
 // replacement for Orientation::of, whose kept orientations must match the plain queries bit for

@@ -100,8 +100,8 @@ struct Parabola {
   double slope;
   double bend;
 };
-// Only the first `count` pieces are set: zeroing all four, and the axes' copies of them, took a
-// sixth of a turning rectangle–ellipse step's instructions.
+// Only the first `count` pieces are set: a turning step copies these often, and zeroing all four
+// would cost more than the bound itself.
 struct SupportBound {
   std::array<Parabola, 4> pieces;
   int count = 1;
@@ -183,11 +183,10 @@ double later_root(double step, double gap, const Axis& axis) {
 // The separation along a direction near the maximiser, a lower bound of d that serves a step far
 // from contact as well as d itself (the method, above), for pairs without a circle (whose contacts
 // are closed forms and cheap). With an ellipse, the contact's climb from the last normal, stopped
-// once its next gain is below 3% of the separation (the step is then within 3% of the exact one;
-// 1e-3 took 3 to 7% more instructions per time of impact on bench_toi's pairs for 0.04 to 0.09
-// fewer steps), where an exact contact certifies its maximum to rounding (two or three more
-// support evaluations); for two rectangles, and where the climb does not end apart, widest_gap
-// (below).
+// once its next gain is below 3% of the separation (the step is then within 3% of the exact one; a
+// tighter stop costs more evaluations than the steps it saves), where an exact contact certifies
+// its maximum to rounding (two or three more support evaluations); for two rectangles, and where
+// the climb does not end apart, widest_gap (below).
 // nullopt where neither finds the pair apart.
 struct Probe {
   double separation;
@@ -250,9 +249,7 @@ std::optional<Probe> probe(const Shape& a, const Orientation& oa, const Shape& b
 // rectangle, one turning with it, as a contact on its face needs (of two rectangles, the one whose
 // face normal lies nearest n, the contact's reference face); two ellipses, the slower one's, which
 // bends the centres' term least (omega^2 times their offset, several times the shapes' own terms).
-// On bench_toi's pairs the second turning axis saved 0.5 to 2% of the steps for 6 to 13% more
-// instructions, and the fixed one had saved 3% of the steps of rectangle pairs for a fifth more
-// time; the slower ellipse's axis took 5.07 steps, the faster one's 5.19, both 5.06.
+// A second turning axis saves a few steps but costs more than it saves.
 std::size_t leading_axis(const Shape& a, const Orientation& oa, double wa, const Shape& b, const Orientation& ob,
                          double wb, const Vec2& n) {
   const bool rect_a = std::holds_alternative<Rect>(a), rect_b = std::holds_alternative<Rect>(b);
@@ -298,8 +295,8 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
       std::abs(a_motion.angular_velocity) * turning_reach(a) + std::abs(b_motion.angular_velocity) * turning_reach(b);
   const double reaches = turning_reach(a) + turning_reach(b);
   // Shapes stay valid over the step (validate above), and only a turning one needs its cosine and
-  // sine again, from quick_orientation where the angle allows (the C library's took a sixth of a
-  // turning pair's time).
+  // sine again, from quick_orientation where the angle allows (the C library's sincos would be a
+  // large part of a turning pair's time).
   const auto orientation = [](const Shape& s, const Motion& m, const Orientation& start) {
     if (m.angular_velocity == 0) return start;
     const std::optional<Orientation> quick = detail::quick_orientation(angle_of(s));

@@ -355,9 +355,9 @@ TEST(ContactManifold, RectanglesResting) {
 }
 
 // A face 6.9e20 long as the incident face of a face 16 wide: the cut points must land on the side
-// planes (interpolated along the long face they carried its rounding, 3.5e4, past the other plane,
-// and the pair was taken for two corners 3.5e20 apart; the fuzzer found it). The distance is the
-// gap between the parallel long sides.
+// planes (interpolated along the long face they would carry its rounding, 3.5e4, past the other
+// plane, and the pair would be taken for two corners 3.5e20 apart). The distance is the gap between
+// the parallel long sides.
 TEST(ContactManifold, LongIncidentFaceClipsToAShortReferenceFace) {
   const Rect needle{{-3.8125, 10843966555981446}, {7.8125, 3.4621985169758506e+20}, -8};
   const Rect box{{-8, -8}, {8, 8}, -8};
@@ -369,8 +369,8 @@ TEST(ContactManifold, LongIncidentFaceClipsToAShortReferenceFace) {
 }
 
 // A box inside an ellipse 2.9e47 long of aspect 4,446: the bound on the ellipse's flat side (radius
-// of curvature 1.3e51) must not drown in the rounding of that radius (the search ran to its cap of
-// 4,096 evaluations; the fuzzer found it).
+// of curvature 1.3e51) must not drown in the rounding of that radius (the search would run to its
+// cap of 4,096 evaluations).
 TEST(ContactSearch, HugeFlatSideCertifiesWithinItsRounding) {
   const Rect box{{-2.25, -2.25}, {2.25, 2.25}, 8.5884776959808324e-275};
   const Ellipse needle{{8.3138050000613955e-275, 8.3138050000613955e-275},
@@ -384,9 +384,9 @@ TEST(ContactSearch, HugeFlatSideCertifiesWithinItsRounding) {
 }
 
 // A needle's flat side (aspect 9,440) facing a rectangle 8,604 away: s has a peak far sharper than
-// its surroundings, and Newton swung from side to side of it with steps of one size (every call ran
-// its 200 iterations, the search its cap, and the separation fell 1.1e-3 short; the fuzzer found
-// it). It now bisects whenever a step would not halve the last.
+// its surroundings, where plain Newton swings from side to side with steps of one size (every call
+// would run its 200 iterations, the search its cap, and the separation fall 1.1e-3 short). The
+// iteration bisects whenever a step would not halve the last.
 TEST(ContactSearch, SharpPeakBesideAFarRectangle) {
   const Rect box{{-8, 4}, {6.375, 5.6875}, 2};
   const Ellipse needle{{-7.75, 8616.3496323525906}, 4.5, 0.00047666206976579019, 0};

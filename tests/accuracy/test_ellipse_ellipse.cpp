@@ -1,5 +1,6 @@
 // Ellipse–ellipse: overlap, solid distance and boundary distance on the hard-case families against
-// the 50-digit reference; the seed-000 post's 19 sample pairs for all three methods; invariants.
+// the 50-digit reference; the 19 sample pairs of M. Pewsey's
+// "Minimum Distance Between Ellipses" for the kernel and both baselines; invariants.
 #include "hard_cases.h"
 #include "mp_reference.h"
 
@@ -93,7 +94,7 @@ TEST(EllipseRounding, FallbackDecidesRoundingLevelContacts) {
   }
 }
 
-// The sample pairs of seed 000: ellipse(x, y, width, height, degrees) against the post's first one.
+// The article's sample pairs: ellipse(x, y, width, height, degrees) against its first one.
 Ellipse seed_ellipse(double x, double y, double width, double height, double degrees) {
   return {Vec2(x, y), width / 2, height / 2, degrees * std::numbers::pi / 180};
 }
@@ -108,11 +109,11 @@ std::vector<Ellipse> seed_samples() {
           seed_ellipse(0.5, -0.5, 2, 4, 0)};
 }
 
-// The post reports success on all 19 and its distance is the gap between the curves. Gradient
+// The article reports success on all 19 and its distance is the gap between the curves. Gradient
 // descent stops when the gradient of D^2 is below 1e-8, so its distances are good to about 1e-9
 // where the curves cross (D^2 has a minimum of 0 there); elsewhere the seed methods must meet
 // 1e-12 and robust the 8 u of the scale that the families assert.
-TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
+TEST(ArticleSamples, AllMethodsAgreeWithTheReference) {
   const Ellipse first = seed_ellipse(0, 0, 6, 10, 15);
   int k = 0;
   for (const Ellipse& other : seed_samples()) {
@@ -129,7 +130,7 @@ TEST(SeedSamples, AllMethodsAgreeWithTheReference) {
       const double solid_error = std::abs(solid.result.distance - static_cast<double>(ref.distance));
       const double curve_error = std::abs(curve.result.distance - static_cast<double>(ref.boundary));
       std::printf(
-          "[seed-000] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n", k,
+          "[article] sample %2d method %d  solid error %.2e  boundary error %.2e  iterations %d  converged %d\n", k,
           method, solid_error, curve_error, curve.iterations, curve.converged);
       EXPECT_EQ(solid.result.overlapping, ref.overlap) << "sample " << k;
       const bool robust = method == 0;
@@ -225,8 +226,8 @@ TEST(EllipseDistance, CirclePathMatchesEllipsePath) {
 // Nearly congruent pairs (a ring between an ellipse and its copy scaled by 1 - e, moved across by up
 // to e of the minor axis, or turned by 2 e) and concentric circles: the boundary distance against
 // the reference, and the number of support evaluations its search spends, which the bounds of
-// congruence_of keep small: at most 572 measured, 1,000 asserted (before them: 1e5 for e = 1e-12,
-// 4,097 for concentric circles).
+// congruence_of keep small: at most 1,000 asserted (halving down to the arcs' own curvature
+// variation instead would take far more).
 TEST(EllipseBoundary, NearlyCongruentPairsCostBoundedWork) {
   int worst = 0;
   for (const double aspect : {1.0, 1 + 1e-12, 1.5, 4.0, 20.0}) {

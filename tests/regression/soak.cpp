@@ -9,7 +9,7 @@
 // use, half of them among the World's overlapping pairs.
 //
 //   collide2d_soak BODIES FRAMES CHECK_EVERY      (exit status 0 when every check passed)
-// The CI runs a short version; the README gives the long one (100,000 bodies, 10,000 frames).
+// ctest runs a short one (soak_short); docs/testing.md gives the long one.
 #include <collide2d/world.h>
 #include "mp_reference.h"
 #include "world_reference.h"

@@ -26,8 +26,8 @@ namespace {
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
-// The distance error the suite asserts, as a multiple of u of the pair's scale: the README reports
-// worst errors of 2 to 4 u over all families, so a regression past it fails CI long before it
+// The distance error the suite asserts, as a multiple of u of the pair's scale: a few u above the
+// worst error over all families (docs/accuracy.md), so that a regression fails long before it
 // reaches the target of 1e-12 (9,000 u). The points' bound is the family's point_bound.
 constexpr double kDistanceBound = 8 * kU;
 

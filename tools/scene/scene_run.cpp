@@ -145,8 +145,8 @@ void write_svg(const SceneRun& run, std::ostream& out) {
           << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green segments)";
   // The caption spans at most 98% of the width at 0.6 em a character, more than a sans-serif font's
   // average, and is 14 pixels high where that allows (the picture is 1000 pixels wide), in a strip
-  // below the arena twice its height. Sized at 3% of the arena's height, it ran a quarter past the
-  // right edge of the built-in square scene (rendered with rsvg, it now ends at 57% of the width).
+  // below the arena twice its height. Sized by the arena's height instead, it would run past the
+  // right edge of a square scene.
   const double chars = static_cast<double>(caption.str().size());
   const double font = std::min(0.98 * size.x() / (0.6 * chars), 0.014 * size.x());
   const double height = size.y() + 2 * font;
