@@ -6,14 +6,16 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 build=${BUILD_DIR:-$root/build}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON \
+  -DCOLLIDE2D_BOX2D_SOURCE="$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 
 # The sanitizer build (no benchmarks; the packaging tests build uninstrumented consumers against
 # the instrumented library, which cannot link, so it runs in the normal build only).
 sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
-cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_SANITIZE=ON -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
+cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_SANITIZE=ON -DCOLLIDE2D_BUILD_TESTS=ON \
+  -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
 cmake --build "$sanitize" -j "$(nproc)"
 ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -LE package
 
