@@ -139,6 +139,8 @@ def main():
     parser.add_argument('--cxx', default='c++')
     parser.add_argument('pages', nargs='+')
     args = parser.parse_args()
+    args.bin = [str(pathlib.Path(b).resolve()) for b in args.bin]
+    args.prefix = str(pathlib.Path(args.prefix).resolve())
     failures = []
     total = 0
     for page in args.pages:

@@ -43,7 +43,7 @@ void write_svg_file(const std::string& path, const char* what, Draw draw) {
 }
 
 // The body of a main: --help or -h prints the usage; otherwise `command()` runs, and any exception
-// becomes "<program>: <what>" and the usage on stderr, with exit status 2.
+// becomes "<program>: <what>" on stderr, followed by the usage for a UsageError, with exit status 2.
 template <class Command>
 int run_main(int argc, char** argv, const char* program, const char* usage, Command command) {
   if (argc >= 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h")) {
@@ -52,8 +52,11 @@ int run_main(int argc, char** argv, const char* program, const char* usage, Comm
   }
   try {
     return command();
-  } catch (const std::exception& e) {
+  } catch (const UsageError& e) {
     std::cerr << program << ": " << e.what() << '\n' << usage;
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << '\n';
     return 2;
   }
 }

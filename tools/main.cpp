@@ -20,10 +20,11 @@ constexpr const char* kUsage =
     "    circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta   (radians)\n"
     "  and writes 'overlap distance ax ay bx by' per line (errors as 'error: <reason>').\n"
     "  --method minkowski|closest-features|all-features\n"
-    "      the rectangle-ellipse overlap test (default minkowski)\n"
+    "      the rectangle-ellipse overlap test (default minkowski, the kernel; the others are\n"
+    "      reference methods in plain double)\n"
     "  --method robust|gradient|polynomial\n"
-    "      the ellipse-ellipse distance solver (default robust; gradient and polynomial are\n"
-    "      the seed baselines)\n"
+    "      the ellipse-ellipse distance solver (default robust, the kernel; gradient and\n"
+    "      polynomial are reference methods, to measure it)\n"
     "  --boundary  distance and closest points between the boundary curves instead of the\n"
     "      solids (circles and ellipses; nested shapes give their gap)\n"
     "  --contact   writes 'separation nx ny ax ay bx by' instead: the signed distance (minus\n"
@@ -51,17 +52,21 @@ int query(int argc, char** argv) {
   for (int i = 2; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--method") {
-      if (i + 1 == argc) throw collide2d::tool::ParseError("--method needs a name");
-      collide2d::tool::apply_method(argv[++i], options);
+      if (i + 1 == argc) throw collide2d::cli::UsageError("--method needs a name");
+      try {
+        collide2d::tool::apply_method(argv[++i], options);
+      } catch (const collide2d::tool::ParseError& e) {
+        throw collide2d::cli::UsageError(e.what());
+      }
     } else if (arg == "--boundary" || arg == "--contact" || arg == "--toi") {
       using collide2d::tool::Answer;
       const Answer chosen = arg == "--boundary" ? Answer::boundary : arg == "--contact" ? Answer::contact : Answer::toi;
       if (options.answer != Answer::distance && options.answer != chosen) {
-        throw collide2d::tool::ParseError("--boundary, --contact and --toi cannot be combined");
+        throw collide2d::cli::UsageError("--boundary, --contact and --toi cannot be combined");
       }
       options.answer = chosen;
     } else {
-      throw collide2d::tool::ParseError("unknown argument '" + std::string(arg) + "'");
+      throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
   }
   std::ios::sync_with_stdio(false);
@@ -88,7 +93,7 @@ int run(int argc, char** argv) {
     } else if (!arg.starts_with("--") && scene_path.empty()) {
       scene_path = arg;
     } else {
-      throw collide2d::tool::ParseError("unknown argument '" + std::string(arg) + "'");
+      throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
   }
   collide2d::tool::Scene scene =
