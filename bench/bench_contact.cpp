@@ -1,10 +1,10 @@
-// Contact kernels against Box2D 2.4.1's manifold functions on two workloads, named by the argument:
-// candidates:1, candidate pairs (boxes overlap, as a broad phase hands them over), and
-// candidates:0, the random pairs of bench_narrowphase (most far apart; bench/workload.h): b2CollidePolygons on the
-// rectangles' 4-gons and on the ellipses' inscribed 8-gons, b2CollidePolygonAndCircle, b2CollideCircles. Debian's Box2D
-// caps polygons at 8 vertices (b2_maxPolygonVertices); built as bench_contact16, against Box2D rebuilt with a cap of
-// 16, this also races the ellipses' 16-gons. Box2D's shapes are built beforehand (not timed), with radius 0, so its
-// manifold is empty for pairs apart while ours carries their exact distance.
+// Contact kernels against Box2D 2.4.1's manifold functions on the three workloads of bench/workload.h
+// (candidates:0 random pairs, most far apart; 1 the generator's candidate pairs, whose boxes
+// overlap; 2 the built-in scene's broad-phase pairs): b2CollidePolygons on the rectangles' 4-gons and
+// on the ellipses' inscribed 8- and 16-gons, b2CollidePolygonAndCircle, b2CollideCircles. Box2D is
+// built here with polygons of up to 16 vertices (its default cap is 8). Its shapes are built
+// beforehand (not timed), with radius 0, so its manifold is empty for pairs apart while ours carries
+// their exact distance.
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 
@@ -83,6 +83,20 @@ void box2d(benchmark::State& state) {
   });
 }
 
+// Box2D through a whole list per iteration, in one loop: the rival of the batched contacts.
+template <class A, class B, int Sides>
+void box2d_batch(benchmark::State& state) {
+  const auto& w = bench::pairs<A, B>(state);
+  std::vector<baseline::ShapePair> pairs;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    const Vec2 origin = w.a[k].center;
+    pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], Sides, baseline::Fit::inscribed, origin),
+                                              baseline::to_box2d(w.b[k], Sides, baseline::Fit::inscribed, origin)));
+  }
+  std::vector<b2Manifold> out(kPairs);
+  bench::time_batches(state, [&] { baseline::box2d_manifolds(pairs, out); });
+}
+
 BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::workloads);
 BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::workloads);
 BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::workloads);
@@ -103,13 +117,13 @@ BENCHMARK(box2d<Circle, Ellipse>)
 BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::workloads);
 BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::workloads);
 BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::workloads);
-#if b2_maxPolygonVertices >= 16
 BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::workloads);
 BENCHMARK(box2d<Circle, Ellipse, 16>)
     ->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")
     ->Apply(bench::workloads);
 BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::workloads);
-#endif
+BENCHMARK(box2d_batch<Circle, Ellipse, 8>)->Name("box2d_batch_contact/circle_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(box2d_batch<Circle, Ellipse, 16>)->Name("box2d_batch_contact/circle_ellipse_16gon")->Apply(bench::workloads);
 
 }  // namespace
 }  // namespace collide2d

@@ -113,13 +113,27 @@ std::vector<baseline::Polygon> polygons(const Workload<A, B>& w, int sides, bool
 }
 
 template <class A, class B>
-void box2d_overlap(benchmark::State& state) {
-  const Workload<A, B>& w = bench::pairs<A, B>(state);
+std::vector<baseline::ShapePair> box2d_pairs(const Workload<A, B>& w) {
   const auto a = polygons(w, 8, true);
   const auto b = polygons(w, 8, false);
   std::vector<baseline::ShapePair> shapes;
   for (std::size_t k = 0; k < kPairs; ++k) shapes.push_back(baseline::to_box2d_shapes(a[k], b[k]));
+  return shapes;
+}
+
+// One pair per call, as the one-off kernels run.
+template <class A, class B>
+void box2d_overlap(benchmark::State& state) {
+  const std::vector<baseline::ShapePair> shapes = box2d_pairs(bench::pairs<A, B>(state));
   bench::time_queries(state, [&](std::size_t k) { return baseline::box2d_overlap(shapes[k]); });
+}
+
+// The whole list per iteration in one loop, as the batches run.
+template <class A, class B>
+void box2d_batch_overlap(benchmark::State& state) {
+  const std::vector<baseline::ShapePair> shapes = box2d_pairs(bench::pairs<A, B>(state));
+  std::vector<std::uint8_t> out(kPairs);
+  bench::time_batches(state, [&] { baseline::box2d_overlaps(shapes, out); });
 }
 
 void box2d_distance_ellipse_ellipse(benchmark::State& state) {
@@ -151,15 +165,23 @@ void batch_overlap(benchmark::State& state) {
 BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::workloads);
 BENCHMARK(batch_overlap<Rect, Ellipse>)->Name("batch_overlap/rect_ellipse")->Apply(bench::workloads);
 BENCHMARK(box2d_overlap<Rect, Ellipse>)->Name("box2d_overlap/rect_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(box2d_batch_overlap<Rect, Ellipse>)->Name("box2d_batch_overlap/rect_ellipse_8gon")->Apply(bench::workloads);
 BENCHMARK(posed_overlap<Ellipse, Ellipse>)->Name("posed_overlap/ellipse_ellipse")->Apply(bench::workloads);
 BENCHMARK(batch_overlap<Ellipse, Ellipse>)->Name("batch_overlap/ellipse_ellipse")->Apply(bench::workloads);
 BENCHMARK(box2d_overlap<Ellipse, Ellipse>)->Name("box2d_overlap/ellipse_ellipse_8gons")->Apply(bench::workloads);
+BENCHMARK(box2d_batch_overlap<Ellipse, Ellipse>)
+    ->Name("box2d_batch_overlap/ellipse_ellipse_8gons")
+    ->Apply(bench::workloads);
 BENCHMARK(posed_overlap<Rect, Rect>)->Name("posed_overlap/rect_rect")->Apply(bench::workloads);
 BENCHMARK(batch_overlap<Rect, Rect>)->Name("batch_overlap/rect_rect")->Apply(bench::workloads);
 BENCHMARK(box2d_overlap<Rect, Rect>)->Name("box2d_overlap/rect_rect_4gons")->Apply(bench::workloads);
+BENCHMARK(box2d_batch_overlap<Rect, Rect>)->Name("box2d_batch_overlap/rect_rect_4gons")->Apply(bench::workloads);
 BENCHMARK(posed_overlap<Circle, Ellipse>)->Name("posed_overlap/circle_ellipse")->Apply(bench::workloads);
 BENCHMARK(batch_overlap<Circle, Ellipse>)->Name("batch_overlap/circle_ellipse")->Apply(bench::workloads);
 BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8gon")->Apply(bench::workloads);
+BENCHMARK(box2d_batch_overlap<Circle, Ellipse>)
+    ->Name("box2d_batch_overlap/circle_ellipse_8gon")
+    ->Apply(bench::workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {

@@ -88,6 +88,18 @@ bool box2d_overlap(const ShapePair& pair) {
   return b2TestOverlap(pair.shape(0), 0, pair.shape(1), 0, identity, identity);
 }
 
+void box2d_overlaps(std::span<const ShapePair> pairs, std::span<std::uint8_t> overlapping) {
+  b2Transform identity;
+  identity.SetIdentity();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    overlapping[k] = b2TestOverlap(pairs[k].shape(0), 0, pairs[k].shape(1), 0, identity, identity) ? 1 : 0;
+  }
+}
+
+void box2d_manifolds(std::span<const ShapePair> pairs, std::span<b2Manifold> manifolds) {
+  for (std::size_t k = 0; k < pairs.size(); ++k) box2d_manifold(pairs[k], &manifolds[k]);
+}
+
 void box2d_manifold(const ShapePair& pair, b2Manifold* manifold) {
   b2Transform identity;
   identity.SetIdentity();

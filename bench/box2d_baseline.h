@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <unordered_set>
 #include <vector>
 
@@ -61,11 +62,16 @@ struct ShapePair {
 };
 ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b);
 bool box2d_overlap(const ShapePair& pair);
+// b2TestOverlap on every pair of the list, in one loop: Box2D's fastest way through a list of
+// pairs, the rival of collide2d's batches. overlapping[i] is 1 or 0.
+void box2d_overlaps(std::span<const ShapePair> pairs, std::span<std::uint8_t> overlapping);
 
 // Box2D's contact manifold for the pair: b2CollidePolygons, b2CollidePolygonAndCircle or
 // b2CollideCircles by kind (a circle first is passed second, so the manifold is then B's against
 // A's). With radius-0 polygons Box2D keeps only points that overlap or touch.
 void box2d_manifold(const ShapePair& pair, b2Manifold* manifold);
+// box2d_manifold on every pair of the list, in one loop (the rival of the batched contacts).
+void box2d_manifolds(std::span<const ShapePair> pairs, std::span<b2Manifold> manifolds);
 
 // The manifold read through b2WorldManifold: its least point separation (the signed distance
 // along its normal) and the normal from A to B; nullopt when it has no point.

@@ -40,7 +40,8 @@ struct RunSummary {
 
 class SceneRun {
  public:
-  explicit SceneRun(Scene scene);
+  // The World runs on `threads` threads (0: every hardware thread).
+  explicit SceneRun(Scene scene, unsigned threads = 0);
 
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
   // when it is not null.
