@@ -66,8 +66,9 @@ void batch_circle_ellipse(benchmark::State& state) {
   bench::time_batches(state, [&] { contact_circle_ellipse(w.a, w.b, ob, out); });
 }
 
-template <class A, class B, int Sides = 8>
-void box2d(benchmark::State& state) {
+// The benchmark's pairs as Box2D shapes, ellipses as inscribed Sides-gons (not timed).
+template <class A, class B, int Sides>
+std::vector<baseline::ShapePair> box2d_pairs(const benchmark::State& state) {
   const auto& w = bench::pairs<A, B>(state);
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
@@ -75,6 +76,12 @@ void box2d(benchmark::State& state) {
     pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], Sides, baseline::Fit::inscribed, origin),
                                               baseline::to_box2d(w.b[k], Sides, baseline::Fit::inscribed, origin)));
   }
+  return pairs;
+}
+
+template <class A, class B, int Sides = 8>
+void box2d(benchmark::State& state) {
+  const std::vector<baseline::ShapePair> pairs = box2d_pairs<A, B, Sides>(state);
   b2Manifold manifold;
   // box2d_manifold is compiled apart (the baseline library): the call cannot be optimised away.
   bench::time_queries(state, [&](std::size_t k) {
@@ -86,13 +93,7 @@ void box2d(benchmark::State& state) {
 // Box2D through a whole list per iteration, in one loop: the rival of the batched contacts.
 template <class A, class B, int Sides>
 void box2d_batch(benchmark::State& state) {
-  const auto& w = bench::pairs<A, B>(state);
-  std::vector<baseline::ShapePair> pairs;
-  for (std::size_t k = 0; k < kPairs; ++k) {
-    const Vec2 origin = w.a[k].center;
-    pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], Sides, baseline::Fit::inscribed, origin),
-                                              baseline::to_box2d(w.b[k], Sides, baseline::Fit::inscribed, origin)));
-  }
+  const std::vector<baseline::ShapePair> pairs = box2d_pairs<A, B, Sides>(state);
   std::vector<b2Manifold> out(kPairs);
   bench::time_batches(state, [&] { baseline::box2d_manifolds(pairs, out); });
 }
