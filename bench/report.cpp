@@ -138,71 +138,27 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
   out << "errors are |d - d_ref| / max(size, centre distance); d_ref from 50-digit arithmetic\n";
 }
 
-void write_report_svg(const std::vector<MethodResult>& results, std::ostream& out) {
-  constexpr double kWidth = 820, kHeight = 560, kLeft = 90, kRight = 230, kTop = 40, kBottom = 60;
-  constexpr double kFloor = 1e-17;
-  double t_lo = 1e300, t_hi = 0, e_hi = kFloor;
-  for (const MethodResult& r : results) {
-    t_lo = std::min(t_lo, r.nanoseconds);
-    t_hi = std::max(t_hi, r.nanoseconds);
-    e_hi = std::max(e_hi, r.max_error);
-  }
-  const double x0 = std::floor(std::log10(t_lo)), x1 = std::ceil(std::log10(t_hi));
-  const double y0 = std::log10(kFloor), y1 = std::max(0.0, std::ceil(std::log10(e_hi)));
-  const auto px = [&](double t) { return kLeft + (std::log10(t) - x0) / (x1 - x0) * (kWidth - kLeft - kRight); };
-  const auto py = [&](double e) {
-    return kHeight - kBottom - (std::log10(std::max(e, kFloor)) - y0) / (y1 - y0) * (kHeight - kTop - kBottom);
-  };
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-      << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << kLeft
-      << "\" y=\"24\" font-size=\"15\">collide2d ellipse-ellipse distance: time per query "
-         "against error</text>\n";
-  for (double k = x0; k <= x1; ++k) {
-    const double x = px(std::pow(10.0, k));
-    out << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\"" << kHeight - kBottom
-        << "\" stroke=\"#ddd\"/>\n<text x=\"" << x << "\" y=\"" << kHeight - kBottom + 18
-        << "\" text-anchor=\"middle\">1e" << k << "</text>\n";
-  }
-  for (double k = y0; k <= y1; k += 2) {
-    const double y = py(std::pow(10.0, k));
-    out << "<line x1=\"" << kLeft << "\" y1=\"" << y << "\" x2=\"" << kWidth - kRight << "\" y2=\"" << y
-        << "\" stroke=\"#ddd\"/>\n<text x=\"" << kLeft - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e" << k
-        << "</text>\n";
-  }
-  out << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << kWidth - kLeft - kRight << "\" height=\""
-      << kHeight - kTop - kBottom << "\" fill=\"none\" stroke=\"#333\"/>\n"
-      << "<text x=\"" << (kLeft + kWidth - kRight) / 2 << "\" y=\"" << kHeight - 18
-      << "\" text-anchor=\"middle\">time per query (ns, log)</text>\n"
-      << "<text transform=\"rotate(-90)\" x=\"" << -(kTop + kHeight - kBottom) / 2
-      << "\" y=\"24\" text-anchor=\"middle\">"
-      << "median error / scale (log; max as a bar)</text>\n";
-  const char* colours[] = {"#c0392b", "#8e44ad", "#d68910", "#2471a3", "#17a589"};
-  std::vector<std::string> names;
-  for (const MethodResult& r : results) {
-    if (std::find(names.begin(), names.end(), r.method) == names.end()) names.push_back(r.method);
-  }
-  for (std::size_t m = 0; m < names.size(); ++m) {
-    const char* colour = colours[m % 5];
-    std::string curve;
-    for (const MethodResult& r : results) {
-      if (r.method != names[m]) continue;
-      const double x = px(r.nanoseconds), y = py(r.median_error), top = py(r.max_error);
-      curve += std::to_string(x) + "," + std::to_string(y) + " ";
-      out << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x << "\" y2=\"" << top << "\" stroke=\"" << colour
-          << "\" stroke-opacity=\"0.5\"/>\n<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"" << colour
-          << "\"/>\n";
-      if (r.sides)
-        out << "<text x=\"" << x + 5 << "\" y=\"" << y - 5 << "\" font-size=\"10\">" << r.sides << "</text>\n";
+void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
+                       const ReportOptions& options, std::ostream& out) {
+  const auto list = [&out](const char* name, const std::vector<MethodResult>& results) {
+    out << "  \"" << name << "\": [\n";
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      const MethodResult& r = results[k];
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %.6g, \"median_error\": %.6g, "
+                    "\"max_error\": %.6g}%s\n",
+                    r.method.c_str(), r.sides, r.nanoseconds, r.median_error, r.max_error,
+                    k + 1 < results.size() ? "," : "");
+      out << line;
     }
-    out << "<polyline points=\"" << curve << "\" fill=\"none\" stroke=\"" << colour << "\"/>\n";
-    const double ly = kTop + 20 + 22.0 * m;
-    out << "<circle cx=\"" << kWidth - kRight + 20 << "\" cy=\"" << ly - 4 << "\" r=\"4\" fill=\"" << colour << "\"/>\n"
-        << "<text x=\"" << kWidth - kRight + 30 << "\" y=\"" << ly << "\">" << names[m]
-        << (names[m].starts_with("box2d") ? " N-gons" : "") << "</text>\n";
-  }
-  out << "<text x=\"" << kWidth - kRight + 12 << "\" y=\"" << kTop + 30 + 22.0 * names.size()
-      << "\" font-size=\"10\">errors below 1e-17 sit on the floor</text>\n</svg>\n";
+    out << "  ]";
+  };
+  out << "{\n  \"pairs\": " << options.pairs << ",\n  \"repetitions\": " << options.repetitions << ",\n";
+  list("distance", distance);
+  out << ",\n";
+  list("contact", contact);
+  out << "\n}\n";
 }
 
 }  // namespace collide2d::report

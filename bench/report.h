@@ -1,5 +1,6 @@
-// `collide2d_report` as a library: speed against error for every ellipse–ellipse
-// distance method on one workload, as a table and as a log–log SVG plot.
+// `collide2d_report` as a library: speed against error for every ellipse–ellipse distance method on
+// one workload, and for the contact depth on another, as tables and as JSON (scripts/bench.sh keeps
+// it with the benchmarks' results, and scripts/performance.py plots it).
 //
 // Workload: `pairs` separated ellipse pairs (seeded; centres in a 4 x 4 square, semi-axes 0.05 to
 // 1, aspect up to 10). Reference: the 50-digit distance of tests/mp_reference.h. Methods: robust,
@@ -41,8 +42,9 @@ std::vector<MethodResult> measure_contact_methods(const ReportOptions& options);
 void print_report(const std::vector<MethodResult>& results, const std::string& title, const ReportOptions& options,
                   std::ostream& out);
 
-// Time per query against error, log-log, one point per method and one curve per Box2D fit over N.
-// Errors below 1e-17 are drawn at 1e-17 (the floor of the axis).
-void write_report_svg(const std::vector<MethodResult>& results, std::ostream& out);
+// Both measurements as one JSON object: {"pairs", "repetitions", "distance": [...], "contact": [...]},
+// each result {"method", "sides", "nanoseconds", "median_error", "max_error"}.
+void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
+                       const ReportOptions& options, std::ostream& out);
 
 }  // namespace collide2d::report

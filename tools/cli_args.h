@@ -32,9 +32,9 @@ inline const char* value_of(int& i, int argc, char** argv) {
   return argv[++i];
 }
 
-// Writes an SVG with `draw` when a path was given, and says where on stdout.
+// Writes a file with `draw` when a path was given, and says where on stdout.
 template <class Draw>
-void write_svg_file(const std::string& path, const char* what, Draw draw) {
+void write_file(const std::string& path, const char* what, Draw draw) {
   if (path.empty()) return;
   std::ofstream out(path);
   draw(out);

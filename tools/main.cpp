@@ -104,8 +104,8 @@ int run(int argc, char** argv) {
   collide2d::tool::SceneRun runner(std::move(scene));
   const collide2d::tool::RunSummary summary = runner.run(&std::cerr);
   collide2d::tool::print_summary(summary, std::cout);
-  collide2d::cli::write_svg_file(svg_path, "picture of the last frame",
-                                 [&runner](std::ostream& out) { collide2d::tool::write_svg(runner, out); });
+  collide2d::cli::write_file(svg_path, "picture of the last frame",
+                             [&runner](std::ostream& out) { collide2d::tool::write_svg(runner, out); });
   return 0;
 }
 

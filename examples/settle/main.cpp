@@ -40,8 +40,8 @@ int run(int argc, char** argv) {
             << " s (" << r.steps << " steps); fastest " << r.max_speed << "; deepest contact " << r.max_penetration
             << " = " << r.max_penetration / r.smallest * 100 << "% of the smallest half-size " << r.smallest << "; "
             << r.outside << " outside the box\n";
-  collide2d::cli::write_svg_file(svg_path, "pile",
-                                 [&r](std::ostream& out) { collide2d::settle::write_settle_svg(r, out); });
+  collide2d::cli::write_file(svg_path, "pile",
+                             [&r](std::ostream& out) { collide2d::settle::write_settle_svg(r, out); });
   return r.at_rest && r.outside == 0 ? 0 : 1;
 }
 

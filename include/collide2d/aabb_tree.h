@@ -49,6 +49,7 @@ class AabbTree {
   Leaf insert(const Aabb& box, std::uint32_t value);
   /// A new box for a leaf, re-inserted where it now fits best.
   void move(Leaf leaf, const Aabb& box);
+  /// Removes a leaf; its handle may be reused by a later insert().
   void remove(Leaf leaf);
   /// Builds the inner nodes again top-down (see the file comment).
   void rebuild();

@@ -61,6 +61,7 @@ class BroadPhaseBase {
   const Aabb& fat_box(ProxyId id) const;
   /// Live proxies.
   std::size_t size() const { return live_; }
+  /// The margin given to the constructor.
   double fat_margin() const { return margin_; }
 
   /// Every pair whose fat boxes overlap at the last update, sorted.

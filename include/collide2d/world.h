@@ -161,6 +161,7 @@ class World {
   /// Throws std::invalid_argument for a negative or non-finite margin.
   explicit World(const WorldOptions& options = {});
   ~World();
+  /// A World moves; it is not copied.
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
 
@@ -192,6 +193,8 @@ class World {
   bool contains(BodyId id) const;
   /// Bodies in the World.
   std::size_t size() const;
+  /// A body's shape at its current pose, its user id, filter and kind. Each throws
+  /// std::out_of_range for an unknown or stale handle.
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
   const Filter& filter(BodyId id) const;
@@ -214,6 +217,7 @@ class World {
   const std::vector<SensorPair>& sensing() const;
   const std::vector<SensorPair>& sensor_began() const;
   const std::vector<SensorPair>& sensor_ended() const;
+  /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
 
   /// The solid bodies the filter lets through whose shape overlaps `shape`, by index; on the

@@ -1,5 +1,5 @@
 // `collide2d_report`: every method measured on the same pairs, errors against the 50-digit
-// reference, and a plot with a point per measurement.
+// reference, and the JSON that keeps them with the benchmarks' results.
 #include "bench/report.h"
 
 #include <gtest/gtest.h>
@@ -20,14 +20,16 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   EXPECT_LT(results[8].median_error, 1e-2 * results[3].median_error);
   EXPECT_EQ(results[3].sides, 8);
   EXPECT_EQ(results[8].sides, 256);
-  std::ostringstream table, svg;
+  std::ostringstream table, json;
   print_report(results, "distance", options, table);
-  write_report_svg(results, svg);
   EXPECT_NE(table.str().find("| box2d circumscribed | 256 |"), std::string::npos);
-  std::size_t points = 0;
-  for (std::size_t at = svg.str().find("r=\"4\""); at != std::string::npos; at = svg.str().find("r=\"4\"", at + 1))
-    ++points;
-  EXPECT_EQ(points, results.size() + 5);  // one per measurement, one per legend entry
+  write_report_json(results, {}, options, json);
+  std::size_t records = 0;
+  for (std::size_t at = json.str().find("\"method\""); at != std::string::npos;
+       at = json.str().find("\"method\"", at + 1))
+    ++records;
+  EXPECT_EQ(records, results.size());  // one per measurement
+  EXPECT_NE(json.str().find("{\"method\": \"box2d circumscribed\", \"sides\": 256, "), std::string::npos);
 }
 
 // The contact depth: ours exact, Box2D's manifolds closer as N grows from 5 to 8.

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Runs the benchmark suite once and keeps the results as data: builds the benchmarks (Release, Box2D
+# 2.4.1 built from Debian's source with the same compiler and flags), runs each program with its
+# repetitions interleaved at random (Google Benchmark's --benchmark_enable_random_interleaving) and
+# the medians kept, runs the speed-against-error report, and writes
+# bench/results/<date>-<cpu>.json: every program's Google Benchmark JSON, the report's, and the
+# machine (CPU model, cores, compiler, flags). Then regenerates docs/performance.md and its plots from
+# bench/results/*.json alone (scripts/performance.py).
+#
+#   bash scripts/bench.sh                          # about 25 minutes on 2 cores
+#   BENCH_REPETITIONS=3 BENCH_MIN_TIME=0.05 bash scripts/bench.sh   # quicker, noisier
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/deps.sh"
+build=${BENCH_BUILD_DIR:-$root/build-bench}
+repetitions=${BENCH_REPETITIONS:-5}
+min_time=${BENCH_MIN_TIME:-0.1}
+source_dir=$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_TESTS=OFF \
+  -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" > /dev/null
+programs=(bench_narrowphase bench_contact bench_toi bench_broadphase bench_world bench_queries)
+cmake --build "$build" -j "$(nproc)" --target "${programs[@]}" collide2d_report
+
+runs=$(mktemp -d)
+trap 'rm -rf "$runs"' EXIT
+for program in "${programs[@]}"; do
+  echo "$program: $repetitions repetitions, interleaved" >&2
+  "$build/bench/$program" --benchmark_enable_random_interleaving=true --benchmark_repetitions="$repetitions" \
+    --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" \
+    --benchmark_out="$runs/$program.json" --benchmark_out_format=json > /dev/null
+done
+echo "collide2d_report" >&2
+"$build/bench/collide2d_report" --json "$runs/report.json" > /dev/null
+
+cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
+compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
+flags=$(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:[A-Z]*=//p' "$build/CMakeCache.txt")
+python3 "$root/scripts/performance.py" collect --runs "$runs" --results "$root/bench/results" \
+  --cpu "$cpu" --cores "$(nproc)" --compiler "$("$compiler" --version | head -n 1)" \
+  --flags "$flags -ffp-contract=off (collide2d and Box2D); collide2d with EIGEN_DONT_VECTORIZE" \
+  --repetitions "$repetitions" --min-time "$min_time"
+python3 "$root/scripts/performance.py" page --results "$root/bench/results" --out "$root/docs"

@@ -1,0 +1,386 @@
+#!/usr/bin/env python3
+"""Benchmark results as data, and the performance page made from them.
+
+  performance.py collect --runs DIR --results bench/results --cpu ... --cores ... --compiler ... --flags ...
+      merges one run of the suite (DIR: each program's Google Benchmark JSON and report.json) into
+      bench/results/<date>-<cpu>.json, with the machine;
+  performance.py page --results bench/results --out docs [--check]
+      writes docs/performance.md and docs/performance/*.svg from bench/results/*.json alone (the
+      newest file's figures; every file listed); --check compares instead of writing, for ctest.
+"""
+import argparse
+import datetime
+import html
+import json
+import math
+import pathlib
+import re
+import sys
+
+UNITS = {'ns': 1.0, 'us': 1e3, 'ms': 1e6, 's': 1e9}
+WORKLOADS = [('random', 0), ('candidate', 1), ('scene', 2)]
+
+# (label, ours, rival): `{w}` stands for the workload's number. Batches are timed over the whole list
+# per iteration (per_pair), against Box2D's loop over the same list.
+OVERLAP = [
+    ('rect–ellipse, one pair', 'posed_overlap/rect_ellipse/candidates:{w}', 'box2d_overlap/rect_ellipse_8gon/candidates:{w}'),
+    ('rect–ellipse, batch', 'batch_overlap/rect_ellipse/candidates:{w}', 'box2d_batch_overlap/rect_ellipse_8gon/candidates:{w}'),
+    ('rect–rect, one pair', 'posed_overlap/rect_rect/candidates:{w}', 'box2d_overlap/rect_rect_4gons/candidates:{w}'),
+    ('rect–rect, batch', 'batch_overlap/rect_rect/candidates:{w}', 'box2d_batch_overlap/rect_rect_4gons/candidates:{w}'),
+    ('ellipse–ellipse, one pair', 'posed_overlap/ellipse_ellipse/candidates:{w}', 'box2d_overlap/ellipse_ellipse_8gons/candidates:{w}'),
+    ('ellipse–ellipse, batch', 'batch_overlap/ellipse_ellipse/candidates:{w}', 'box2d_batch_overlap/ellipse_ellipse_8gons/candidates:{w}'),
+    ('circle–ellipse, one pair', 'posed_overlap/circle_ellipse/candidates:{w}', 'box2d_overlap/circle_ellipse_8gon/candidates:{w}'),
+    ('circle–ellipse, batch', 'batch_overlap/circle_ellipse/candidates:{w}', 'box2d_batch_overlap/circle_ellipse_8gon/candidates:{w}'),
+]
+DISTANCE = [
+    ('ellipse–ellipse vs 8-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:8'),
+    ('ellipse–ellipse vs 16-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:16'),
+    ('ellipse–ellipse vs 32-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:32'),
+]
+CONTACT = [
+    ('rect–rect, one pair', 'ours/rect_rect_oriented/candidates:{w}', 'box2d_collide_polygons/rect_rect_4gons/candidates:{w}'),
+    ('rect–circle, one pair', 'ours/rect_circle_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/rect_circle/candidates:{w}'),
+    ('circle–circle, one pair', 'ours/circle_circle/candidates:{w}', 'box2d_collide_circles/circle_circle/candidates:{w}'),
+    ('rect–ellipse vs 8-gon, one pair', 'ours/rect_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/rect_ellipse_8gon/candidates:{w}'),
+    ('rect–ellipse vs 16-gon, one pair', 'ours/rect_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/rect_ellipse_16gon/candidates:{w}'),
+    ('circle–ellipse vs 8-gon, one pair', 'ours/circle_ellipse_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/circle_ellipse_8gon/candidates:{w}'),
+    ('circle–ellipse vs 16-gon, one pair', 'ours/circle_ellipse_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/circle_ellipse_16gon/candidates:{w}'),
+    ('circle–ellipse vs 16-gon, batch', 'batch_contact/circle_ellipse/candidates:{w}', 'box2d_batch_contact/circle_ellipse_16gon/candidates:{w}'),
+    ('ellipse–ellipse vs 8-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_8gons/candidates:{w}'),
+    ('ellipse–ellipse vs 16-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_16gons/candidates:{w}'),
+]
+TOI = [
+    ('ellipse–ellipse translating vs 16-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_16gons'),
+    ('ellipse–ellipse turning vs 16-gons', 'ours/ellipse_ellipse_turning', 'box2d_toi/ellipse_ellipse_turning_16gons'),
+    ('rect–ellipse translating vs 16-gon', 'ours/rect_ellipse_translating', 'box2d_toi/rect_ellipse_translating_16gon'),
+    ('rect–ellipse turning vs 16-gon', 'ours/rect_ellipse_turning', 'box2d_toi/rect_ellipse_turning_16gon'),
+    ('rect–rect turning', 'ours/rect_rect_turning', 'box2d_toi/rect_rect_turning'),
+]
+BROAD = [(f'{n:,} boxes', f'moving_boxes<SweepAndPrune>/{n}{it}', f'moving_boxes<Box2dBroadPhase>/{n}{it}')
+         for n, it in ((1000, ''), (10000, ''), (100000, ''), (1000000, '/iterations:3'))]
+QUERIES = ([(f'box, {n:,} boxes (tree as built by insertion)', f'box/tree/{n}', f'box/box2d/{n}') for n in (1000, 10000, 100000, 1000000)] +
+           [(f'ray, {n:,} boxes (tree as built by insertion)', f'ray/tree/{n}', f'ray/box2d/{n}') for n in (1000, 10000, 100000, 1000000)])
+WORLD = [
+    ('1,000 moving bodies', 'frame/alone/1000/1', 'box2d_frame/alone/1000'),
+    ('100,000 moving bodies', 'frame/crowd/100000/1', 'box2d_frame/crowd/100000'),
+    ('the built-in scene (4,036 bodies)', 'frame/scene/4000/1', 'box2d_frame/scene/4000'),
+]
+
+
+def collect(args):
+    runs = pathlib.Path(args.runs)
+    programs = {}
+    for path in sorted(runs.glob('bench_*.json')):
+        programs[path.stem] = json.loads(path.read_text())
+    today = datetime.date.today().isoformat()
+    cpu_slug = re.sub(r'[^a-z0-9]+', '-', args.cpu.lower()).strip('-')
+    result = {
+        'date': today,
+        'machine': {'cpu': args.cpu, 'cores': int(args.cores), 'compiler': args.compiler, 'flags': args.flags},
+        'method': {'repetitions': int(args.repetitions), 'min_time_s': float(args.min_time),
+                   'interleaved': True, 'statistic': 'median of the repetitions'},
+        'benchmarks': programs,
+        'report': json.loads((runs / 'report.json').read_text()),
+    }
+    out = pathlib.Path(args.results) / f'{today}-{cpu_slug}.json'
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(result, indent=1) + '\n')
+    print(out)
+
+
+def medians(result):
+    """Each benchmark's median, in ns (per pair for the batches); a run of one repetition has no
+    aggregates, and its one measurement stands for the median."""
+    out = {}
+    for program in result['benchmarks'].values():
+        aggregated = any(b.get('aggregate_name') for b in program['benchmarks'])
+        for b in program['benchmarks']:
+            if b.get('aggregate_name', 'median' if not aggregated else None) != 'median':
+                continue
+            if 'per_pair' in b:
+                out[b['run_name']] = b['per_pair'] * 1e9
+            else:
+                out[b['run_name']] = b['real_time'] * UNITS[b.get('time_unit', 'ns')]
+    return out
+
+
+def fmt_time(ns):
+    if ns is None:
+        return '—'
+    for unit, scale in (('s', 1e9), ('ms', 1e6), ('µs', 1e3)):
+        if ns >= scale:
+            return f'{ns / scale:.3g} {unit}'
+    return f'{ns:.3g} ns'
+
+
+def fmt_ratio(ours, rival):
+    if ours is None or rival is None:
+        return '—'
+    return f'{ours / rival:.2f}x'
+
+
+def table(rows, med, workloads):
+    lines = []
+    if workloads:
+        head = '| pair | ' + ' | '.join(f'{w} pairs: collide2d / Box2D' for w, _ in WORKLOADS) + ' |'
+        lines += [head, '| --- |' + ' --- |' * len(WORKLOADS)]
+        for label, ours, rival in rows:
+            cells = []
+            for _, n in WORKLOADS:
+                o, r = med.get(ours.format(w=n)), med.get(rival.format(w=n))
+                cells.append(f'{fmt_time(o)} / {fmt_time(r)} = **{fmt_ratio(o, r)}**')
+            lines.append(f'| {label} | ' + ' | '.join(cells) + ' |')
+    else:
+        lines += ['| what | collide2d | Box2D | ratio |', '| --- | --- | --- | --- |']
+        for label, ours, rival in rows:
+            o, r = med.get(ours), med.get(rival)
+            lines.append(f'| {label} | {fmt_time(o)} | {fmt_time(r)} | **{fmt_ratio(o, r)}** |')
+    return '\n'.join(lines)
+
+
+def ratio_svg(groups, med):
+    """Horizontal bars of collide2d's time over Box2D's (log scale), one per row, candidate pairs
+    where the row has workloads."""
+    bars = []
+    for title, rows, workloads in groups:
+        for label, ours, rival in rows:
+            o = med.get(ours.format(w=1) if workloads else ours)
+            r = med.get(rival.format(w=1) if workloads else rival)
+            if o and r:
+                bars.append((f'{title}: {label}', o / r))
+    width, left, right, top, row = 900, 380, 40, 50, 20
+    height = top + row * len(bars) + 50
+    lo, hi = -2.0, 1.0  # 0.01x to 10x
+    x = lambda v: left + (math.log10(min(max(v, 10 ** lo), 10 ** hi)) - lo) / (hi - lo) * (width - left - right)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
+           '<rect width="100%" height="100%" fill="white"/>',
+           '<text x="20" y="24" font-size="15">collide2d time / Box2D time (candidate pairs; below 1: collide2d faster)</text>']
+    for k in range(int(lo), int(hi) + 1):
+        xx = x(10 ** k)
+        out.append(f'<line x1="{xx:.1f}" y1="{top - 8}" x2="{xx:.1f}" y2="{height - 40}" stroke="{"#333" if k == 0 else "#ddd"}"/>')
+        out.append(f'<text x="{xx:.1f}" y="{height - 22}" text-anchor="middle">{10.0 ** k:g}x</text>')
+    for i, (label, v) in enumerate(bars):
+        y = top + i * row
+        x0, x1 = sorted((x(1.0), x(v)))
+        colour = '#17a589' if v < 1 else '#c0392b'
+        out.append(f'<rect x="{x0:.1f}" y="{y:.1f}" width="{max(x1 - x0, 1):.1f}" height="{row - 6}" fill="{colour}"/>')
+        out.append(f'<text x="{left - 8}" y="{y + row - 9:.1f}" text-anchor="end">{html.escape(label)}</text>')
+        out.append(f'<text x="{x1 + 4 if v >= 1 else x0 - 4:.1f}" y="{y + row - 9:.1f}" font-size="10" '
+                   f'text-anchor="{"start" if v >= 1 else "end"}">{v:.2f}x</text>')
+    out.append('</svg>')
+    return '\n'.join(out) + '\n'
+
+
+def error_svg(results, title):
+    """Time per query against error, log-log: a point per method, a curve per Box2D fit over N."""
+    width, height, left, right, top, bottom, floor = 820, 520, 90, 230, 40, 60, 1e-17
+    times = [r['nanoseconds'] for r in results]
+    x0, x1 = math.floor(math.log10(min(times))), math.ceil(math.log10(max(times)))
+    y0 = math.log10(floor)
+    y1 = max(0, math.ceil(math.log10(max(max(r['max_error'] for r in results), floor))))
+    px = lambda t: left + (math.log10(t) - x0) / (x1 - x0) * (width - left - right)
+    py = lambda e: height - bottom - (math.log10(max(e, floor)) - y0) / (y1 - y0) * (height - top - bottom)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
+           '<rect width="100%" height="100%" fill="white"/>', f'<text x="{left}" y="24" font-size="15">{html.escape(title)}</text>']
+    for k in range(x0, x1 + 1):
+        xx = px(10 ** k)
+        out.append(f'<line x1="{xx:.1f}" y1="{top}" x2="{xx:.1f}" y2="{height - bottom}" stroke="#ddd"/>')
+        out.append(f'<text x="{xx:.1f}" y="{height - bottom + 18}" text-anchor="middle">1e{k}</text>')
+    for k in range(int(y0), y1 + 1, 2):
+        yy = py(10.0 ** k)
+        out.append(f'<line x1="{left}" y1="{yy:.1f}" x2="{width - right}" y2="{yy:.1f}" stroke="#ddd"/>')
+        out.append(f'<text x="{left - 8}" y="{yy + 4:.1f}" text-anchor="end">1e{k}</text>')
+    out.append(f'<text x="{(left + width - right) / 2}" y="{height - 18}" text-anchor="middle">time per query (ns, log)</text>')
+    out.append(f'<text transform="rotate(-90)" x="{-(top + height - bottom) / 2}" y="24" text-anchor="middle">'
+               'median error / scale (log; the bar reaches the largest; 1e-17 and below at the floor)</text>')
+    colours = ['#c0392b', '#8e44ad', '#d68910', '#2471a3', '#17a589']
+    names = []
+    for r in results:
+        if r['method'] not in names:
+            names.append(r['method'])
+    for m, name in enumerate(names):
+        colour = colours[m % len(colours)]
+        points = []
+        for r in results:
+            if r['method'] != name:
+                continue
+            xx, yy, top_y = px(r['nanoseconds']), py(r['median_error']), py(r['max_error'])
+            points.append(f'{xx:.1f},{yy:.1f}')
+            out.append(f'<line x1="{xx:.1f}" y1="{yy:.1f}" x2="{xx:.1f}" y2="{top_y:.1f}" stroke="{colour}" stroke-opacity="0.5"/>')
+            out.append(f'<circle cx="{xx:.1f}" cy="{yy:.1f}" r="4" fill="{colour}"/>')
+            if r['sides']:
+                out.append(f'<text x="{xx + 5:.1f}" y="{yy - 5:.1f}" font-size="10">{r["sides"]}</text>')
+        out.append(f'<polyline points="{" ".join(points)}" fill="none" stroke="{colour}"/>')
+        ly = top + 20 + 22 * m
+        out.append(f'<circle cx="{width - right + 20}" cy="{ly - 4}" r="4" fill="{colour}"/>')
+        out.append(f'<text x="{width - right + 30}" y="{ly}">{html.escape(name)}</text>')
+    out.append('</svg>')
+    return '\n'.join(out) + '\n'
+
+
+def report_table(results):
+    lines = ['| method | N | time per query | median error | max error |', '| --- | --- | --- | --- | --- |']
+    for r in results:
+        lines.append(f'| {r["method"]} | {r["sides"] or "—"} | {fmt_time(r["nanoseconds"])} | '
+                     f'{r["median_error"]:.1e} | {r["max_error"]:.1e} |')
+    return '\n'.join(lines)
+
+
+def page(args):
+    files = sorted(pathlib.Path(args.results).glob('*.json'))
+    if not files:
+        sys.exit('no results in ' + args.results)
+    newest = json.loads(files[-1].read_text())
+    med = medians(newest)
+    machine, method = newest['machine'], newest['method']
+    groups = [('overlap', OVERLAP, True), ('distance', DISTANCE, True), ('contact', CONTACT, True),
+              ('time of impact', TOI, False), ('broad phase', BROAD, False), ('World', WORLD, False)]
+    report = newest['report']
+    svgs = {
+        'ratios.svg': ratio_svg(groups, med),
+        'distance_error.svg': error_svg(report['distance'], 'ellipse–ellipse distance: time per query against error'),
+        'contact_error.svg': error_svg(report['contact'], 'ellipse–ellipse contact depth: time per query against error'),
+    }
+    text = f'''# Performance
+
+This page is generated: `bash scripts/bench.sh` runs the benchmark suite and writes its results to
+`bench/results/<date>-<cpu>.json`, and `python3 scripts/performance.py page --results bench/results
+--out docs` makes this page and its plots from those files alone. The figures below are from
+`{files[-1].name}`.
+
+## How the comparisons are made
+
+- **The rival** is Box2D 2.4.1 built from Debian's source by the same compiler with the same flags
+  as collide2d, linked statically into the same benchmark program. An ellipse is Box2D's polygon
+  inscribed in it, with the vertex count given (Box2D's default cap is 8; the contact benchmark
+  builds it with 16), so Box2D's answers carry the polygon's error, which collide2d's do not
+  ([accuracy](accuracy.md)); the speed-against-error tables below weigh both.
+- **One pair at a time against one pair at a time**: collide2d's kernel with each shape's
+  orientation kept, against Box2D's function with its transforms prepared, one call per pair,
+  cycling through 4,096 pre-generated pairs so that no input is cached.
+- **A batch against the rival's fastest loop**, labelled *batch*: collide2d's batched call over the
+  4,096 pairs against a loop of Box2D's function over the same list, both as time per pair.
+- **The same thread count**: every World figure compared with Box2D's pipeline runs the World on one
+  thread, as Box2D runs.
+- **Statistics**: each benchmark repeated {method['repetitions']} times, repetitions of all
+  benchmarks of a program interleaved at random, and the median kept; ratios compare medians of one
+  run. The ratio is collide2d's time over Box2D's: below 1, collide2d is faster.
+- **Workloads** for pairs (bench/workload.h): *random* pairs (centres in a 4 × 4 square, sizes 0.05
+  to 1, ellipse aspect up to 10; most far apart), *candidate* pairs (the same generator, only pairs
+  whose boxes overlap, as a broad phase hands them over), and *scene* pairs (those the built-in
+  scene's broad phase hands over, frame after frame).
+
+## The machine
+
+| | |
+| --- | --- |
+| CPU | {machine['cpu']} |
+| cores | {machine['cores']} |
+| compiler | {machine['compiler']} |
+| flags | `{machine['flags']}` |
+| date | {newest['date']} |
+
+![collide2d's time over Box2D's](performance/ratios.svg)
+
+## Overlap tests
+
+Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (a circle is a
+`b2CircleShape`).
+
+{table(OVERLAP, med, True)}
+
+## Distance
+
+Box2D: `b2Distance` on the ellipses' inscribed N-gons.
+
+{table(DISTANCE, med, True)}
+
+## Contacts
+
+Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons; its
+manifold is empty for pairs apart, where collide2d's contact carries the exact distance and normal.
+
+{table(CONTACT, med, True)}
+
+## Time of impact
+
+Pairs apart at t = 0 coming together over one step, translating or both turning up to 2 radians a
+step (bench/bench_toi.cpp); Box2D: `b2TimeOfImpact` on the inscribed polygons with the same sweeps.
+
+{table(TOI, med, False)}
+
+## Broad phase
+
+Every box moved, then one update (bench/bench_broadphase.cpp); Box2D's `b2BroadPhase` driven as
+`b2World` drives it (`MoveProxy` per box, `UpdatePairs`, a `TestOverlap` on every known pair).
+
+{table(BROAD, med, False)}
+
+## Queries through the box tree
+
+Every box a query box (half side 4) or a ray (30 long) meets, in a uniform scene 8% covered;
+Box2D's `b2DynamicTree::Query` and `RayCast` on the same boxes.
+
+{table(QUERIES, med, False)}
+
+## The World
+
+One frame: every moving body posed, then `update()`, on one thread (bench/bench_world.cpp); Box2D's
+pipeline on the same bodies (`b2BroadPhase`, then `b2TestOverlap` on its pairs, the filters applied
+as `b2ContactManager` applies them).
+
+{table(WORLD, med, False)}
+
+## Speed against error
+
+`collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
+{report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
+centre distance), median and largest over the pairs. The reference methods `gradient` and
+`polynomial` are in [two ellipses](algorithms/ellipse-ellipse.md).
+
+![distance: time against error](performance/distance_error.svg)
+
+{report_table(report['distance'])}
+
+The contact depth of overlapping pairs deeper than 2% of the size; a Box2D manifold without points
+counts as separation 0.
+
+![contact depth: time against error](performance/contact_error.svg)
+
+{report_table(report['contact'])}
+
+## Results on file
+
+{chr(10).join(f"- `bench/results/{f.name}`" for f in files)}
+'''
+    out = pathlib.Path(args.out)
+    wanted = {out / 'performance.md': text}
+    wanted.update({out / 'performance' / name: svg for name, svg in svgs.items()})
+    if args.check:
+        stale = [str(p) for p, content in wanted.items() if not p.exists() or p.read_text() != content]
+        if stale:
+            print('out of date with bench/results (python3 scripts/performance.py page --results bench/results '
+                  '--out docs): ' + ', '.join(stale))
+            sys.exit(1)
+        return
+    for path, content in wanted.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(content)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    sub = parser.add_subparsers(dest='command', required=True)
+    c = sub.add_parser('collect')
+    for name in ('runs', 'results', 'cpu', 'cores', 'compiler', 'flags', 'repetitions', 'min-time'):
+        c.add_argument('--' + name, required=True)
+    p = sub.add_parser('page')
+    p.add_argument('--results', required=True)
+    p.add_argument('--out', required=True)
+    p.add_argument('--check', action='store_true')
+    args = parser.parse_args()
+    collect(args) if args.command == 'collect' else page(args)
+
+
+if __name__ == '__main__':
+    main()
