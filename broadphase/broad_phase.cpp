@@ -16,11 +16,11 @@
 #include <collide2d/broad_phase.h>
 
 #include "broadphase/internal.h"
+#include "shapes/internal.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -34,10 +34,8 @@ void validate_box(const Aabb& box) {
       throw std::invalid_argument(std::string("box ") + names[k] + " bounds must be finite");
     }
     if (box.min[k] > box.max[k]) {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "box min." << names[k] << " > max." << names[k] << " (" << box.min[k] << " > " << box.max[k] << ')';
-      throw std::invalid_argument(msg.str());
+      throw std::invalid_argument(std::string("box min.") + names[k] + " > max." + names[k] + " (" +
+                                  detail::shortest(box.min[k]) + " > " + detail::shortest(box.max[k]) + ')');
     }
   }
 }

@@ -1,10 +1,10 @@
 // The World's bodies: their storage and ids, poses, kinds and filters, and their place in the broad
 // phase of their kind (the static tree, or the sweep and prune with the moving bodies' tree).
 #include "engine/world_state.h"
+#include "shapes/internal.h"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -28,11 +28,8 @@ Shape posed(Shape shape, const Vec2& center, double angle) {
 }  // namespace
 
 void require_finite(double value, const char* what) {
-  if (!std::isfinite(value)) {
-    std::ostringstream msg;
-    msg << what << " must be finite (got " << value << ')';
-    throw std::invalid_argument(msg.str());
-  }
+  if (!std::isfinite(value))
+    throw std::invalid_argument(std::string(what) + " must be finite (got " + detail::shortest(value) + ')');
 }
 
 void require_margin(double value, const char* what) {
@@ -154,6 +151,7 @@ BodyId WorldState::add(const Shape& shape, const BodyDef& def) {
   }
   Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
   b.shape = shape;
+  b.angle = angle_of(shape);
   b.orientation = Orientation::of(angle_of(shape));
   b.box = aabb(shape, b.orientation);
   b.user_id = def.user_id;
@@ -167,22 +165,37 @@ BodyId WorldState::add(const Shape& shape, const BodyDef& def) {
   return id_of(index);
 }
 
-void WorldState::set_pose(BodyId id, const Vec2& center, double angle) {
+void WorldState::move_to(BodyId id, const Vec2& position, double angle) {
+  pose(body(id), position, angle, "move_to");
+  place(id.index);
+}
+
+void WorldState::set_pose(BodyId id, const Vec2& position, double angle) {
   Body& b = body(id);
-  require_finite(center.x(), "pose x");
-  require_finite(center.y(), "pose y");
-  require_finite(angle, "pose angle");
-  const Shape moved = posed(b.shape, center, angle);
-  validate(moved);  // the range of the centre
-  b.shape = moved;
-  b.orientation = Orientation::of(angle_of(moved));
-  b.box = aabb(moved, b.orientation);
+  pose(b, position, angle, "set_pose");
+  if (b.continuous) b.start = b.shape;  // a teleport: the step starts here
   place(id.index);
 }
 
 void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
-  const Shape& s = body(id).shape;
-  set_pose(id, center_of(s) + shift, angle_of(s) + turn);
+  Body& b = body(id);
+  require_finite(shift.x(), "move_by shift x");
+  require_finite(shift.y(), "move_by shift y");
+  require_finite(turn, "move_by turn");
+  pose(b, center_of(b.shape) + shift, b.angle + turn, "move_by");
+  place(id.index);
+}
+
+// The body at a pose, checked first so that a refusal, named after the call, leaves it as it was.
+void WorldState::pose(Body& b, const Vec2& position, double angle, const char* call) {
+  // The names are built on a refusal only: poses are set every frame, and a frame allocates nothing.
+  if (!(std::abs(position.x()) <= kMaxMagnitude && std::abs(position.y()) <= kMaxMagnitude))
+    validate_point(position, (std::string(call) + " position").c_str());
+  if (!std::isfinite(angle)) require_finite(angle, (std::string(call) + " angle").c_str());
+  b.shape = posed(b.shape, position, angle);
+  b.angle = angle;
+  b.orientation = Orientation::of(angle_of(b.shape));
+  b.box = aabb(b.shape, b.orientation);
 }
 
 void WorldState::set_static(BodyId id, bool is_static) {

@@ -53,7 +53,7 @@ void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
   const auto motion = [](const Body& body) { return body.continuous ? step_of(body.start, body.shape) : Motion{}; };
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
-    out.impacts.push_back({id_of(a), id_of(b), r.t, r.normal, r.point});
+    out.impacts.push_back({id_of(a), id_of(b), x.user_id, y.user_id, r.t, r.normal, r.point});
   }
 }
 

@@ -10,8 +10,9 @@
 namespace collide2d::detail {
 
 void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
-  if (touching)
-    out.sensing.push_back(bodies_[a].sensor ? SensorPair{id_of(a), id_of(b)} : SensorPair{id_of(b), id_of(a)});
+  if (!touching) return;
+  const std::uint32_t sensor = bodies_[a].sensor ? a : b, visitor = sensor == a ? b : a;
+  out.sensing.push_back({id_of(sensor), id_of(visitor), bodies_[sensor].user_id, bodies_[visitor].user_id});
 }
 
 // The first `chunks` chunks' sensor pairs joined in chunk order and sorted, and what entered and

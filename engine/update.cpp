@@ -186,6 +186,12 @@ void WorldState::narrow_phase() {
   std::sort(impacts_.begin(), impacts_.end(), by_pair);
   replace_pairs(overlapping_, now_, began_, ended_);
   update_sensing(chunks);
+  mark_removed();
+}
+
+void WorldState::mark_removed() {
+  for (BodyPair& p : ended_) p.removed = !contains(p.a) || !contains(p.b);
+  for (SensorPair& p : sensor_ended_) p.removed = !contains(p.sensor) || !contains(p.visitor);
 }
 
 // The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
@@ -239,20 +245,25 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
   }
   const ContactOptions manifold{.margin = speculative_margin_};
   if (x.continuous || y.continuous) impact(a, b, out);
+  const BodyPair pair = pair_of(a, b);
+  const auto record = [&](bool solids_touch, const Contact& c) {
+    out.contacts.push_back({pair.a, pair.b, pair.user_a, pair.user_b, solids_touch, c});
+  };
   if (touching) {
-    out.overlapping.push_back({id_of(a), id_of(b)});
-    if (contacts_on_)
-      out.contacts.push_back({id_of(a), id_of(b), contact(x.shape, x.orientation, y.shape, y.orientation, manifold)});
+    out.overlapping.push_back(pair);
+    if (contacts_on_) record(true, contact(x.shape, x.orientation, y.shape, y.orientation, manifold));
     return;
   }
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);
-    if (!d.overlapping && d.distance <= proximity_margin_) out.proximity.push_back({id_of(a), id_of(b), d});
+    if (!d.overlapping && d.distance <= proximity_margin_) {
+      out.proximity.push_back({pair.a, pair.b, pair.user_a, pair.user_b, d});
+    }
   }
   if (speculative_margin_ > 0.0 &&
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
     const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
-    if (c.separation <= speculative_margin_) out.contacts.push_back({id_of(a), id_of(b), c});
+    if (c.separation <= speculative_margin_) record(false, c);
   }
 }
 

@@ -11,7 +11,8 @@ World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 BodyId World::add(const Shape& shape, const BodyDef& def) { return state_->add(shape, def); }
-void World::set_pose(BodyId id, const Vec2& center, double angle) { state_->set_pose(id, center, angle); }
+void World::set_pose(BodyId id, const Vec2& position, double angle) { state_->set_pose(id, position, angle); }
+void World::move_to(BodyId id, const Vec2& position, double angle) { state_->move_to(id, position, angle); }
 void World::move_by(BodyId id, const Vec2& shift, double turn) { state_->move_by(id, shift, turn); }
 void World::set_static(BodyId id, bool is_static) { state_->set_static(id, is_static); }
 void World::set_filter(BodyId id, const Filter& filter) { state_->set_filter(id, filter); }
@@ -25,11 +26,13 @@ void World::update() { state_->update(); }
 
 bool World::contains(BodyId id) const { return state_->contains(id); }
 std::size_t World::size() const { return state_->size(); }
+Pose World::pose(BodyId id) const { return state_->pose(id); }
 const Shape& World::shape(BodyId id) const { return state_->shape(id); }
 std::uint64_t World::user_id(BodyId id) const { return state_->user_id(id); }
 const Filter& World::filter(BodyId id) const { return state_->filter(id); }
 bool World::is_static(BodyId id) const { return state_->is_static(id); }
 bool World::is_sensor(BodyId id) const { return state_->is_sensor(id); }
+bool World::is_continuous(BodyId id) const { return state_->is_continuous(id); }
 std::vector<BodyId> World::bodies() const { return state_->bodies(); }
 
 const std::vector<BodyPair>& World::overlapping() const { return state_->overlapping_; }

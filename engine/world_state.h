@@ -46,7 +46,8 @@ class WorldState {
 
   // bodies.cpp
   BodyId add(const Shape& shape, const BodyDef& def);
-  void set_pose(BodyId id, const Vec2& center, double angle);
+  void set_pose(BodyId id, const Vec2& position, double angle);
+  void move_to(BodyId id, const Vec2& position, double angle);
   void move_by(BodyId id, const Vec2& shift, double turn);
   void set_static(BodyId id, bool is_static);
   void set_filter(BodyId id, const Filter& filter);
@@ -55,11 +56,13 @@ class WorldState {
   void set_proximity_margin(double margin);
   bool contains(BodyId id) const;
   std::size_t size() const { return live_; }
+  Pose pose(BodyId id) const { return {center_of(body(id).shape), body(id).angle}; }
   const Shape& shape(BodyId id) const { return body(id).shape; }
   std::uint64_t user_id(BodyId id) const { return body(id).user_id; }
   const Filter& filter(BodyId id) const { return body(id).filter; }
   bool is_static(BodyId id) const { return body(id).is_static; }
   bool is_sensor(BodyId id) const { return body(id).sensor; }
+  bool is_continuous(BodyId id) const { return body(id).continuous; }
   std::vector<BodyId> bodies() const;
 
   // continuous.cpp
@@ -96,6 +99,7 @@ class WorldState {
     Shape shape;
     Aabb box;                 // aabb(shape), kept with the pose
     Orientation orientation;  // of the shape's angle, kept with the pose
+    double angle = 0.0;       // the body's, as posed (a circle's shape keeps none)
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;
@@ -173,11 +177,16 @@ class WorldState {
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
   BodyId id_of(std::uint32_t index) const { return {index, bodies_[index].generation}; }
+  // The record of bodies a and b (a < b) as of now: handles and user ids.
+  BodyPair pair_of(std::uint32_t a, std::uint32_t b) const {
+    return {id_of(a), id_of(b), bodies_[a].user_id, bodies_[b].user_id};
+  }
   Aabb broad_box(const Aabb& box) const;
   Aabb broad_box(const Body& b) const;
   void enter(std::uint32_t index);
   void leave(std::uint32_t index);
   void place(std::uint32_t index);
+  void pose(Body& b, const Vec2& position, double angle, const char* call);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
 
@@ -192,6 +201,8 @@ class WorldState {
   // sensors.cpp
   void sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
   void update_sensing(std::size_t chunks);
+  // update.cpp: marks the ended pairs of bodies removed since the previous update.
+  void mark_removed();
 
   // continuous.cpp
   void impact(std::uint32_t a, std::uint32_t b, Found& out) const;

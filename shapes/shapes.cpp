@@ -3,9 +3,10 @@
 #include "shapes/internal.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <string>
 
 namespace collide2d {
 namespace {
@@ -39,10 +40,12 @@ Aabb around(const Vec2& center, const Vec2& half) {
 }  // namespace
 
 void detail::reject(const char* what, const char* field, double value, const char* rule) {
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << what << ' ' << field << ' ' << rule << " (got " << value << ')';
-  throw InvalidShape(msg.str());
+  throw InvalidShape(std::string(what) + ' ' + field + ' ' + rule + " (got " + shortest(value) + ')');
+}
+
+std::string detail::shortest(double value) {
+  char digits[32];
+  return {digits, std::to_chars(digits, digits + sizeof digits, value).ptr};
 }
 
 Orientation Orientation::of(double angle) {

@@ -6,7 +6,7 @@
 ///   BodyId id = world.add(Ellipse{Vec2(1, 2), 1.5, 0.4, 0.3}, {.user_id = 7});
 ///   world.add(Rect{Vec2(0, -1), Vec2(50, 1), 0.0}, {.is_static = true});  // the floor
 ///   world.add(Circle{Vec2(9, 0), 2.0}, {.sensor = true});                 // a trigger
-///   world.set_pose(id, Vec2(1.1, 2.0), 0.35);          // or move_by(id, shift, turn)
+///   world.move_to(id, Vec2(1.1, 2.0), 0.35);           // or move_by(id, shift, turn); set_pose teleports
 ///   world.update();                                   // once per frame
 ///   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
 ///
@@ -47,11 +47,22 @@ struct BodyId {
   friend auto operator<=>(const BodyId&, const BodyId&) = default;
 };
 
-/// Two bodies, a.index < b.index.
+/// Two bodies whose solids overlap, as of an update. A is the body of the lower slot (a.index <
+/// b.index): after a remove() and an add() the same two game objects may come the other way round,
+/// and user_a and user_b tell them apart without a lookup. The record is whole on its own: its
+/// handles may be stale (a body removed since), its user ids are as they were at the update.
+/// Records compare by their handles alone.
 struct BodyPair {
   BodyId a;
   BodyId b;
-  friend auto operator<=>(const BodyPair&, const BodyPair&) = default;
+  std::uint64_t user_a = 0;  ///< a's user id
+  std::uint64_t user_b = 0;  ///< b's user id
+  /// In ended() only: the pair ended because a or b was removed since the previous update.
+  bool removed = false;
+  friend bool operator==(const BodyPair& p, const BodyPair& q) { return p.a == q.a && p.b == q.b; }
+  friend std::strong_ordering operator<=>(const BodyPair& p, const BodyPair& q) {
+    return p.a != q.a ? p.a <=> q.a : p.b <=> q.b;
+  }
 };
 
 /// Which bodies may pair, with Box2D's semantics (b2Filter): two bodies of one non-zero group always
@@ -81,11 +92,22 @@ struct BodyDef {
   bool sensor = false;     ///< reports the solid bodies that overlap it, and is otherwise not solid
 };
 
-/// A sensor and a solid body that overlaps it.
+/// A sensor and a solid body that overlaps it, as of an update: whole on its own as BodyPair is, and
+/// compared by its handles alone.
 struct SensorPair {
   BodyId sensor;
   BodyId visitor;
-  friend auto operator<=>(const SensorPair&, const SensorPair&) = default;
+  std::uint64_t user_sensor = 0;   ///< the sensor's user id
+  std::uint64_t user_visitor = 0;  ///< the visitor's user id
+  /// In sensor_ended() only: the pair ended because the sensor or the visitor was removed since the
+  /// previous update.
+  bool removed = false;
+  friend bool operator==(const SensorPair& p, const SensorPair& q) {
+    return p.sensor == q.sensor && p.visitor == q.visitor;
+  }
+  friend std::strong_ordering operator<=>(const SensorPair& p, const SensorPair& q) {
+    return p.sensor != q.sensor ? p.sensor <=> q.sensor : p.visitor <=> q.visitor;
+  }
 };
 
 /// How a World works.
@@ -102,24 +124,34 @@ struct WorldOptions {
   unsigned threads = 0;
 };
 
-/// Two bodies apart by less than the proximity margin.
+/// Two bodies apart by less than the proximity margin (A the lower slot, as in BodyPair).
 struct Proximity {
   BodyId a;
   BodyId b;
+  std::uint64_t user_a = 0;
+  std::uint64_t user_b = 0;
   DistanceResult result;  ///< the distance and closest points, point_a on body a
 };
 
-/// The contact of an overlapping (or, with a speculative margin, nearly touching) pair.
+/// The contact of an overlapping pair, or with a speculative margin of a pair apart by at most the
+/// margin (A the lower slot, as in BodyPair).
 struct BodyContact {
-  BodyId a;  ///< a.index < b.index
+  BodyId a;
   BodyId b;
+  std::uint64_t user_a = 0;
+  std::uint64_t user_b = 0;
+  /// The solids overlap (touching included): the exact verdict of overlaps(), not the sign of a
+  /// separation within rounding. False for a speculative contact.
+  bool touching = true;
   Contact contact;  ///< of a's shape with b's: the normal points from a to b
 };
 
-/// A continuous body's first contact within the step.
+/// A continuous body's first contact within the step (A the lower slot, as in BodyPair).
 struct Impact {
-  BodyId a;  ///< a.index < b.index
+  BodyId a;
   BodyId b;
+  std::uint64_t user_a = 0;
+  std::uint64_t user_b = 0;
   double t = 0.0;               ///< the first time of contact within the step, in [0, 1]
   Vec2 normal = Vec2::UnitX();  ///< from a to b
   Vec2 point = Vec2::Zero();
@@ -155,6 +187,12 @@ struct FrameStats {
   double narrow_seconds = 0.0;  ///< with the moving bodies' query tree, kept up to date alongside
 };
 
+/// Where a body is: the position and angle of its origin (its shape's centre and angle).
+struct Pose {
+  Vec2 position = Vec2::Zero();
+  double angle = 0.0;
+};
+
 /// Bodies, their pairs frame by frame, and queries on them.
 class World {
  public:
@@ -167,9 +205,14 @@ class World {
 
   /// Adds a body; it pairs from the next update.
   BodyId add(const Shape& shape, const BodyDef& def = {});
-  /// Moves a body, static ones too (each moving body then looks its static neighbours up again).
-  void set_pose(BodyId id, const Vec2& center, double angle);
-  /// set_pose() to the current pose shifted and turned.
+  /// Puts a body at a pose: a teleport, as Box2D's b2Body_SetTransform. A continuous body's step
+  /// starts there, so nothing between the old pose and the new one is hit. Static bodies too (each
+  /// moving body then looks its static neighbours up again).
+  void set_pose(BodyId id, const Vec2& position, double angle);
+  /// Moves a body to a pose: a continuous body sweeps its way there, and the next update reports
+  /// what it meets on the way (impacts()). For other bodies the same as set_pose().
+  void move_to(BodyId id, const Vec2& position, double angle);
+  /// move_to() the current pose shifted and turned.
   void move_by(BodyId id, const Vec2& shift, double turn = 0.0);
   /// Makes a body static or moving; a continuous body stops being continuous when it becomes static.
   void set_static(BodyId id, bool is_static);
@@ -182,9 +225,9 @@ class World {
   void remove(BodyId id);
   /// A new proximity margin (>= 0), from the next update.
   void set_proximity_margin(double margin);
-  /// A continuous body's step runs from its pose at the last update (or at this call) to its pose at
-  /// the next update, and update() reports its first contacts within it in impacts(). Throws
-  /// std::invalid_argument for a static body.
+  /// A continuous body's step runs from its pose at the last update (or at this call, or at its last
+  /// set_pose()) to its pose at the next update, and update() reports its first contacts within it in
+  /// impacts(). Throws std::invalid_argument for a static body.
   void set_continuous(BodyId id, bool continuous = true);
   /// Finds the pairs of this frame: once per frame, after the poses are set.
   void update();
@@ -193,27 +236,33 @@ class World {
   bool contains(BodyId id) const;
   /// Bodies in the World.
   std::size_t size() const;
-  /// A body's shape at its current pose, its user id, filter and kind. Each throws
-  /// std::out_of_range for an unknown or stale handle.
+  /// A body's pose, its shape there, its user id, filter and kind. Each throws std::out_of_range for
+  /// an unknown or stale handle.
+  Pose pose(BodyId id) const;
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
   const Filter& filter(BodyId id) const;
   bool is_static(BodyId id) const;
   bool is_sensor(BodyId id) const;
+  bool is_continuous(BodyId id) const;
   /// Every body, by index.
   std::vector<BodyId> bodies() const;
 
-  /// The solid pairs that overlap at the last update, sorted; and those that began and ended then.
+  /// The solid pairs that overlap at the last update, sorted; and those that began and ended then (an
+  /// ended pair of a body removed since the previous update has `removed` set).
   const std::vector<BodyPair>& overlapping() const;
   const std::vector<BodyPair>& began() const;
   const std::vector<BodyPair>& ended() const;
   /// Pairs apart by less than the proximity margin, sorted by pair.
   const std::vector<Proximity>& proximity() const;
-  /// With contacts on: the overlapping pairs' contacts and the speculative ones, sorted by pair.
+  /// With contacts on: the overlapping pairs' contacts and, with a speculative margin, those of the
+  /// pairs apart by at most the margin (touching false), sorted by pair; without a speculative
+  /// margin, one for each pair of overlapping() in its order.
   const std::vector<BodyContact>& contacts() const;
   /// The continuous bodies' first contacts within the last step, sorted by pair.
   const std::vector<Impact>& impacts() const;
   /// Each sensor's visitors at the last update, and those that entered or left then; sorted.
+  /// sensor_ended() marks the pairs of a body removed since the previous update.
   const std::vector<SensorPair>& sensing() const;
   const std::vector<SensorPair>& sensor_began() const;
   const std::vector<SensorPair>& sensor_ended() const;

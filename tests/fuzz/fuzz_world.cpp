@@ -1,4 +1,4 @@
-// World fuzzer: a random sequence of add (with a filter, static or moving, sensor or solid), set_pose,
+// World fuzzer: a random sequence of add (with a filter, static or moving, sensor or solid), set_pose or move_to,
 // set_filter, set_static, set_continuous, remove, update and filtered queries from the bytes. Bad
 // input (an unknown body, a handle kept past its remove(), a static body made continuous) must throw
 // and leave the World as it was; after every update the overlapping pairs, the began/ended lists,
@@ -159,7 +159,7 @@ void check_impacts(const World& w, const Starts& starts) {
       const TimeOfImpact r = time_of_impact(si ? *si : w.shape(ids[i]), motion(si, ids[i]), sj ? *sj : w.shape(ids[j]),
                                             motion(sj, ids[j]));
       if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled)
-        expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
+        expected.push_back({ids[i], ids[j], w.user_id(ids[i]), w.user_id(ids[j]), r.t, r.normal, r.point});
     }
   }
   // A box inside the one the World gives a body over the step: its box now, or for a continuous
@@ -238,8 +238,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         case 1: {
           const BodyId id = target();
           const Vec2 centre = in.point();
-          world.set_pose(id, centre, in.number());
+          const bool teleport = in.byte() % 2 == 0;
+          if (teleport) {
+            world.set_pose(id, centre, in.number());
+          } else {
+            world.move_to(id, centre, in.number());
+          }
           check(std::find(removed.begin(), removed.end(), id) == removed.end(), "a stale handle is refused");
+          if (teleport) {  // a continuous body's step starts where it lands
+            for (auto& [c, start] : starts)
+              if (c == id) start = world.shape(id);
+          }
           break;
         }
         case 2: {

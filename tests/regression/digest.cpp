@@ -421,7 +421,7 @@ void worlds() {
       tool::step(scene);
       for (std::size_t k = 0; k < ids.size(); ++k) {
         if (!scene.bodies[k].is_static)
-          world.set_pose(ids[k], center_of(scene.bodies[k].shape), angle_of(scene.bodies[k].shape));
+          world.move_to(ids[k], center_of(scene.bodies[k].shape), angle_of(scene.bodies[k].shape));
       }
       world.update();
       add(h, world);

@@ -278,13 +278,20 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
           const Shape& a = world.shape(ids[i]);
           const Shape& b = world.shape(ids[j]);
           const Contact c = contact(a, b, {.margin = margin});
-          if (overlaps(a, b) || (margin > 0 && c.separation <= margin)) expected.push_back({ids[i], ids[j], c});
+          const bool touching = overlaps(a, b);
+          if (touching || (margin > 0 && c.separation <= margin)) {
+            expected.push_back({ids[i], ids[j], world.user_id(ids[i]), world.user_id(ids[j]), touching, c});
+          }
         }
       }
       ASSERT_EQ(world.contacts().size(), expected.size()) << "frame " << frame;
       for (std::size_t k = 0; k < expected.size(); ++k) {
         const BodyContact& got = world.contacts()[k];
         ASSERT_EQ(BodyPair(got.a, got.b), BodyPair(expected[k].a, expected[k].b)) << "frame " << frame;
+        // A speculative contact says so, from the exact verdict; the record carries both user ids.
+        ASSERT_EQ(got.touching, expected[k].touching) << "frame " << frame;
+        ASSERT_EQ(got.user_a, expected[k].user_a);
+        ASSERT_EQ(got.user_b, expected[k].user_b);
         ASSERT_EQ(got.contact.separation, expected[k].contact.separation);
         ASSERT_EQ(got.contact.normal, expected[k].contact.normal);
         ASSERT_EQ(got.contact.point_a, expected[k].contact.point_a);
@@ -333,8 +340,11 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
     }
     return "no error";
   };
-  const std::string pose = message([&] { world.set_pose(a, Vec2(nan, 0), 0); });
-  EXPECT_NE(pose.find("pose x must be finite"), std::string::npos) << pose;
+  EXPECT_EQ(message([&] { world.set_pose(a, Vec2(nan, 0), 0); }), "set_pose position x must be finite (got nan)");
+  EXPECT_EQ(message([&] { world.move_by(a, Vec2(nan, 0)); }), "move_by shift x must be finite (got nan)");
+  EXPECT_EQ(message([&] { world.move_by(a, Vec2(0, 1), INFINITY); }), "move_by turn must be finite (got inf)");
+  EXPECT_EQ(message([&] { world.move_to(b, Vec2(0, 1e51), 0); }),
+            "move_to position y is beyond the supported range of +-1e50 (got 1e+51)");
   const std::string point = message([&] { static_cast<void>(world.within(Vec2(nan, 0), 1)); });
   EXPECT_NE(point.find("point x must be finite"), std::string::npos) << point;
   const std::string box = message([&] { static_cast<void>(world.overlapping(Aabb{Vec2(1, 0), Vec2(0, 0)})); });
@@ -347,6 +357,37 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   world.update();
   EXPECT_EQ(world.overlapping(), pairs);
   EXPECT_TRUE(world.began().empty());
+}
+
+// Ended pairs of bodies removed mid-contact and mid-sensor are whole records: a handler reads their
+// user ids from the record, never from the World, and `removed` says which ended for that reason. A
+// slot reused since by a new body does not confuse them.
+TEST(World, EventsOfRemovedBodiesAreWholeRecords) {
+  World world;
+  const BodyId enemy = world.add(Circle{Vec2(0, 0), 1}, {.user_id = 10});
+  const BodyId player = world.add(Circle{Vec2(1.5, 0), 1}, {.user_id = 20});
+  const BodyId rock = world.add(Rect{Vec2(3, 0), Vec2(1, 1), 0}, {.user_id = 30});
+  world.add(Circle{Vec2(0, 0.5), 1.5}, {.user_id = 40, .sensor = true});
+  world.update();
+  ASSERT_EQ(world.overlapping().size(), 2u);  // enemy-player, player-rock
+  ASSERT_EQ(world.sensing().size(), 2u);      // enemy and player in the trigger
+  for (const BodyPair& p : world.overlapping()) EXPECT_EQ(p.user_a, world.user_id(p.a));
+  world.remove(enemy);
+  world.move_by(rock, Vec2(5, 0));  // ends player-rock without a removal
+  world.update();
+  world.add(Circle{Vec2(50, 50), 1}, {.user_id = 50});  // takes the enemy's slot
+  std::vector<std::string> log;
+  for (const BodyPair& p : world.ended()) {
+    log.push_back(std::to_string(p.user_a) + "-" + std::to_string(p.user_b) + (p.removed ? " removed" : " parted"));
+    if (!p.removed) EXPECT_EQ(world.user_id(p.a), p.user_a);
+  }
+  for (const SensorPair& s : world.sensor_ended()) {
+    log.push_back(std::to_string(s.user_sensor) + ">" + std::to_string(s.user_visitor) +
+                  (s.removed ? " removed" : " left"));
+  }
+  EXPECT_EQ(log, (std::vector<std::string>{"10-20 removed", "20-30 parted", "40>10 removed"}));
+  EXPECT_FALSE(world.contains(enemy));
+  EXPECT_TRUE(world.contains(player));
 }
 
 // A handle kept past remove() is refused, also once a new body has taken its slot, and the new
@@ -393,7 +434,7 @@ TEST(World, ContinuousBodiesDoNotTunnel) {
     const BodyId bullet = world.add(Circle{{-1, 0.3}, 0.001});
     if (flagged) world.set_continuous(bullet);
     world.update();
-    world.set_pose(bullet, {1, 0.3}, 0);
+    world.move_to(bullet, {1, 0.3}, 0);
     world.update();
     EXPECT_TRUE(world.overlapping().empty());
     if (!flagged) {
@@ -412,6 +453,33 @@ TEST(World, ContinuousBodiesDoNotTunnel) {
     world.update();  // the next step begins where this one ended: no motion, no impact
     EXPECT_TRUE(world.impacts().empty());
   }
+}
+
+// set_pose() teleports: a continuous bullet put across the wall, before or after a move_to() in the
+// same frame, hits nothing; move_to() from where it landed sweeps again. A body's pose reads back as
+// it was given, a circle's angle too.
+TEST(World, SetPoseTeleportsAndMoveToSweeps) {
+  World world;
+  world.add(Rect{{0, 0}, {0.005, 1}, 0});
+  const BodyId bullet = world.add(Circle{{-1, 0.3}, 0.001});
+  world.set_continuous(bullet);
+  EXPECT_TRUE(world.is_continuous(bullet));
+  world.update();
+  world.set_pose(bullet, {1, 0.3}, 2.5);
+  world.update();
+  EXPECT_TRUE(world.impacts().empty());
+  EXPECT_EQ(world.pose(bullet).position, Vec2(1, 0.3));
+  EXPECT_EQ(world.pose(bullet).angle, 2.5);
+  world.move_to(bullet, {0.5, 0.3}, 0);
+  world.set_pose(bullet, {-1, 0.3}, 0);  // the step starts again here
+  world.update();
+  EXPECT_TRUE(world.impacts().empty());
+  world.move_to(bullet, {0.5, 0.3}, 0);
+  world.move_by(bullet, {0.5, 0}, 1);
+  world.update();
+  ASSERT_EQ(world.impacts().size(), 1u);
+  EXPECT_EQ(world.pose(bullet).position, Vec2(1, 0.3));
+  EXPECT_EQ(world.pose(bullet).angle, 1.0);
 }
 
 // Over frames of random moves and turns, with a third of the bodies continuous (and some switched
@@ -449,7 +517,7 @@ TEST(World, ImpactsMatchAllPairs) {
         const TimeOfImpact r = time_of_impact(ci ? start[i] : world.shape(ids[i]), motion(i, ci),
                                               cj ? start[j] : world.shape(ids[j]), motion(j, cj));
         if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled)
-          expected.push_back({ids[i], ids[j], r.t, r.normal, r.point});
+          expected.push_back({ids[i], ids[j], world.user_id(ids[i]), world.user_id(ids[j]), r.t, r.normal, r.point});
       }
     }
     ASSERT_EQ(world.impacts().size(), expected.size()) << "frame " << frame;
@@ -457,6 +525,8 @@ TEST(World, ImpactsMatchAllPairs) {
       const Impact& got = world.impacts()[k];
       EXPECT_EQ(got.a, expected[k].a);
       EXPECT_EQ(got.b, expected[k].b);
+      EXPECT_EQ(got.user_a, expected[k].user_a);
+      EXPECT_EQ(got.user_b, expected[k].user_b);
       EXPECT_EQ(got.t, expected[k].t);
       EXPECT_EQ(got.normal, expected[k].normal);
     }

@@ -58,7 +58,7 @@ void SceneRun::frame() {
   step(scene_);
   for (std::size_t k = 0; k < ids_.size(); ++k) {
     const Shape& shape = scene_.bodies[k].shape;
-    if (!scene_.bodies[k].is_static) world_.set_pose(ids_[k], center_of(shape), angle_of(shape));
+    if (!scene_.bodies[k].is_static) world_.move_to(ids_[k], center_of(shape), angle_of(shape));
   }
   world_.update();
 }
