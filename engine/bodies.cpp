@@ -65,9 +65,13 @@ const WorldState::Body& WorldState::body(BodyId id) const {
 
 WorldState::Body& WorldState::body(BodyId id) { return const_cast<Body&>(std::as_const(*this).body(id)); }
 
-void WorldState::set_filter(BodyId id, const Filter& filter) { body(id).filter = filter; }
+void WorldState::set_filter(BodyId id, const Filter& filter) {
+  require_not_querying("set_filter");
+  body(id).filter = filter;
+}
 
 void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) {
+  require_not_querying("set_pair_predicate");
   pair_predicate_ = std::move(predicate);
 }
 
@@ -140,6 +144,7 @@ void WorldState::place(std::uint32_t index) {
 }
 
 BodyId WorldState::add(const Shape& shape, const BodyDef& def) {
+  require_not_querying("add");
   validate(shape);
   std::uint32_t index;
   if (free_.empty()) {
@@ -166,11 +171,13 @@ BodyId WorldState::add(const Shape& shape, const BodyDef& def) {
 }
 
 void WorldState::move_to(BodyId id, const Vec2& position, double angle) {
+  require_not_querying("move_to");
   pose(body(id), position, angle, "move_to");
   place(id.index);
 }
 
 void WorldState::set_pose(BodyId id, const Vec2& position, double angle) {
+  require_not_querying("set_pose");
   Body& b = body(id);
   pose(b, position, angle, "set_pose");
   if (b.continuous) b.start = b.shape;  // a teleport: the step starts here
@@ -178,6 +185,7 @@ void WorldState::set_pose(BodyId id, const Vec2& position, double angle) {
 }
 
 void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
+  require_not_querying("move_by");
   Body& b = body(id);
   require_finite(shift.x(), "move_by shift x");
   require_finite(shift.y(), "move_by shift y");
@@ -199,6 +207,7 @@ void WorldState::pose(Body& b, const Vec2& position, double angle, const char* c
 }
 
 void WorldState::set_static(BodyId id, bool is_static) {
+  require_not_querying("set_static");
   Body& b = body(id);
   if (b.is_static == is_static) return;
   if (b.continuous) set_continuous(id, false);
@@ -208,6 +217,7 @@ void WorldState::set_static(BodyId id, bool is_static) {
 }
 
 void WorldState::remove(BodyId id) {
+  require_not_querying("remove");
   Body& b = body(id);
   if (b.continuous) set_continuous(id, false);
   leave(id.index);
@@ -218,6 +228,7 @@ void WorldState::remove(BodyId id) {
 }
 
 void WorldState::set_proximity_margin(double margin) {
+  require_not_querying("set_proximity_margin");
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
   for (const BodyId id : bodies()) place(id.index);

@@ -28,6 +28,7 @@ Aabb swept(const Shape& start, const Shape& end) {
 }
 
 void WorldState::set_continuous(BodyId id, bool continuous) {
+  require_not_querying("set_continuous");
   Body& b = body(id);
   if (b.continuous == continuous) return;
   if (b.is_static) {

@@ -1,16 +1,16 @@
 // Queries on the current poses: each validates its input, looks up the boxes it meets in the moving
-// bodies' tree and the static tree, then tests the exact shapes, and returns body ids in increasing
-// order. The sweep-and-prune strips are not used for them: a strip's endpoints answer "which boxes
-// overlap along the sweep axis" well, but neither a ray nor a box far smaller than a strip, and a
-// tree answers both in O(log n + hits).
+// bodies' tree and the static tree, then tests the exact shapes, and calls back with what it finds
+// in the trees' order (world.cpp collects and sorts for the other forms). The sweep-and-prune strips are not used for
+// them: a strip's endpoints answer "which boxes overlap along the sweep axis" well, but neither a ray nor a box far
+// smaller than a strip, and a tree answers both in O(log n + hits).
 #include "engine/world_state.h"
 
 #include <collide2d/ray_cast.h>
 
-#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
-#include <tuple>
+#include <string>
 
 namespace collide2d::detail {
 namespace {
@@ -19,72 +19,102 @@ bool lets_through(const QueryFilter& q, const Filter& f) {
   return (f.category & q.mask) != 0 && (f.mask & q.category) != 0;
 }
 
+// Counts a callback query for as long as it runs, so that the World refuses changes meanwhile.
+class Querying {
+ public:
+  explicit Querying(std::atomic<int>& count) : count_(count) { count_.fetch_add(1, std::memory_order_relaxed); }
+  ~Querying() { count_.fetch_sub(1, std::memory_order_relaxed); }
+  Querying(const Querying&) = delete;
+  Querying& operator=(const Querying&) = delete;
+
+ private:
+  std::atomic<int>& count_;
+};
+
+// What a callback's answer does to the reach (Box2D v3's b2CastResultFcn): 0 stops the walk (a
+// negative reach, for the trees), a value within (0, reach) shortens it, anything else leaves it.
+double next_reach(double answer, double reach) {
+  if (answer == 0.0) return -1.0;
+  return answer > 0.0 && answer < reach ? answer : reach;
+}
+
 }  // namespace
 
-// The solid bodies the filter lets through whose tight box meets `box` and that pass `test`, by index.
+void WorldState::require_not_querying(const char* call) const {
+  if (querying_.load(std::memory_order_relaxed) > 0) {
+    throw std::logic_error(std::string(call) +
+                           " called from inside a query's callback: the World cannot change while a query walks it");
+  }
+}
+
+// visit(id) for the solid bodies the filter lets through whose tight box meets `box` and that pass
+// `test`, in the trees' order, until visit returns false.
 template <class Test>
-std::vector<BodyId> WorldState::select(const Aabb& box, const QueryFilter& filter, Test test) const {
-  std::vector<std::uint32_t> found;
-  const auto visit = [&](std::uint32_t index) {
+void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(BodyId)> visit) const {
+  const Querying guard(querying_);
+  bool go = true;
+  const auto consider = [&](std::uint32_t index) {
     const Body& b = bodies_[index];
-    if (!b.sensor && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape)) found.push_back(index);
+    if (!b.sensor && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape))
+      go = visit(id_of(index));
+    return go;
   };
-  moving_tree_.query(box, [&](std::uint32_t index) {
-    if (bodies_[index].loose < 0) visit(index);  // a loose body's leaf is out of date: see below
-  });
-  for (const std::uint32_t index : loose_) visit(index);
-  static_tree_.query(box, visit);
-  std::sort(found.begin(), found.end());
-  std::vector<BodyId> out;
-  out.reserve(found.size());
-  for (const std::uint32_t index : found) out.push_back(id_of(index));
-  return out;
+  // A loose body's leaf is out of date: it is tested from loose_ instead (see below).
+  moving_tree_.query(box, [&](std::uint32_t index) { return bodies_[index].loose >= 0 || consider(index); });
+  for (std::size_t k = 0; go && k < loose_.size(); ++k) consider(loose_[k]);
+  if (go) static_tree_.query(box, consider);
 }
 
-std::vector<BodyId> WorldState::overlapping(const Shape& shape, const QueryFilter& filter) const {
+void WorldState::overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
   validate(shape);
-  return select(aabb(shape), filter, [&shape](const Shape& s) { return overlaps(shape, s); });
+  each(
+      aabb(shape), filter, [&shape](const Shape& s) { return overlaps(shape, s); }, visit);
 }
 
-std::vector<BodyId> WorldState::overlapping(const Aabb& box, const QueryFilter& filter) const {
+void WorldState::overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
   validate(box);
-  return select(box, filter, [&box](const Shape& s) { return overlaps(s, box); });
+  each(
+      box, filter, [&box](const Shape& s) { return overlaps(s, box); }, visit);
 }
 
-std::vector<BodyId> WorldState::within(const Vec2& point, double d, const QueryFilter& filter) const {
+void WorldState::within(const Vec2& point, double d, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
   validate_point(point, "point");
   require_margin(d, "distance");
-  if (d > 0.0) return overlapping(Shape(Circle{point, d}), filter);
-  return select({point, point}, filter, [&point](const Shape& s) { return collide2d::contains(s, point); });
+  if (d > 0.0) return overlapping(Shape(Circle{point, d}), visit, filter);
+  each(
+      {point, point}, filter, [&point](const Shape& s) { return collide2d::contains(s, point); }, visit);
 }
 
-std::vector<BodyId> WorldState::within(const Shape& shape, double d, const QueryFilter& filter) const {
+void WorldState::within(const Shape& shape, double d, FunctionRef<bool(BodyId)> visit,
+                        const QueryFilter& filter) const {
   validate(shape);
   require_margin(d, "distance");
-  return select(grown(aabb(shape), d), filter, [&](const Shape& s) { return distance(shape, s).distance <= d; });
+  each(
+      grown(aabb(shape), d), filter, [&](const Shape& s) { return distance(shape, s).distance <= d; }, visit);
 }
 
-std::optional<BodyCastHit> WorldState::cast(const Shape& shape, const Vec2& translation,
-                                            const QueryFilter& filter) const {
+void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
+                      const QueryFilter& filter, const CastOptions& options) const {
   validate(shape);
   require_finite(translation.x(), "cast translation x");
   require_finite(translation.y(), "cast translation y");
   const Shape end = at_time(shape, {translation, 0.0}, 1.0);
   validate(end);  // the range of the centre
-  std::optional<BodyCastHit> best;
-  for (const BodyId id : select(swept(shape, end), filter, [](const Shape&) { return true; })) {
-    const auto hit = shape_cast(shape, translation, bodies_[id.index].shape);
-    if (hit && (!best || hit->fraction < best->fraction))
-      best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
-  }
-  return best;
+  double reach = 1.0;
+  const auto meet = [&](BodyId id) {
+    const Shape& body = bodies_[id.index].shape;
+    if (options.skip_initial_overlap && overlaps(shape, body)) return true;
+    const auto hit = shape_cast(shape, translation, body);
+    if (hit && hit->fraction <= reach) reach = next_reach(visit({id, hit->fraction, hit->point, hit->normal}), reach);
+    return reach >= 0.0;
+  };
+  each(
+      swept(shape, end), filter, [](const Shape&) { return true; }, meet);
 }
 
-// on_hit(hit) for each solid body the filter lets through that the ray hits within the reach, which
-// starts at max_distance and becomes what on_hit returns.
-template <class OnHit>
-void WorldState::rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter,
-                      OnHit on_hit) const {
+void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                          FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter,
+                          const RayOptions& options) const {
   validate_point(origin, "ray origin");
   require_finite(direction.x(), "ray direction x");
   require_finite(direction.y(), "ray direction y");
@@ -92,44 +122,21 @@ void WorldState::rays(const Vec2& origin, const Vec2& direction, double max_dist
   const double length = direction.norm();
   if (!(length > 0.0)) throw std::invalid_argument("ray direction must not be zero");
   const Vec2 unit = direction / length;
-  const auto visit = [&](std::uint32_t index, double reach) {
+  const Querying guard(querying_);
+  // The reach after body `index`; the kernel's zero normal marks a body that contains the origin.
+  const auto visit_body = [&](std::uint32_t index, double reach) {
     const Body& b = bodies_[index];
     if (b.sensor || !lets_through(filter, b.filter)) return reach;
     const auto hit = collide2d::ray_cast(b.shape, origin, unit, reach);
-    return hit ? on_hit(RayHit{id_of(index), hit->distance, hit->point, hit->normal}, reach) : reach;
+    if (!hit || (!options.from_inside && hit->normal == Vec2::Zero())) return reach;
+    return next_reach(visit(RayHit{id_of(index), hit->distance, hit->point, hit->normal}), reach);
   };
   double reach = max_distance;
   moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) {
-    return reach = bodies_[index].loose < 0 ? visit(index, r) : r;  // a loose body's leaf is out of date
+    return reach = bodies_[index].loose < 0 ? visit_body(index, r) : r;  // a loose body's leaf is out of date
   });
-  for (const std::uint32_t index : loose_) reach = visit(index, reach);
-  static_tree_.ray_cast(origin, unit, reach, visit);
-}
-
-std::optional<RayHit> WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
-                                           const QueryFilter& filter) const {
-  std::optional<RayHit> best;
-  rays(origin, direction, max_distance, filter, [&best](const RayHit& hit, double) {
-    if (!best || hit.distance < best->distance ||
-        (hit.distance == best->distance && hit.body.index < best->body.index)) {
-      best = hit;
-    }
-    return best->distance;
-  });
-  return best;
-}
-
-std::vector<RayHit> WorldState::ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
-                                             const QueryFilter& filter) const {
-  std::vector<RayHit> hits;
-  rays(origin, direction, max_distance, filter, [&hits](const RayHit& hit, double reach) {
-    hits.push_back(hit);
-    return reach;
-  });
-  std::sort(hits.begin(), hits.end(), [](const RayHit& p, const RayHit& q) {
-    return std::tie(p.distance, p.body.index) < std::tie(q.distance, q.body.index);
-  });
-  return hits;
+  for (std::size_t k = 0; reach >= 0.0 && k < loose_.size(); ++k) reach = visit_body(loose_[k], reach);
+  if (reach >= 0.0) static_tree_.ray_cast(origin, unit, reach, visit_body);
 }
 
 }  // namespace collide2d::detail

@@ -132,6 +132,7 @@ void WorldState::Batch<A, B>::clear() {
 }
 
 void WorldState::update() {
+  require_not_querying("update");
   const auto start = std::chrono::steady_clock::now();
   stats_ = {};
   find_candidates();

@@ -3,6 +3,12 @@
 
 #include "engine/world_state.h"
 
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <vector>
+
 namespace collide2d {
 
 World::World(const WorldOptions& options) : state_(std::make_unique<detail::WorldState>(options)) {}
@@ -46,28 +52,101 @@ const std::vector<SensorPair>& World::sensor_began() const { return state_->sens
 const std::vector<SensorPair>& World::sensor_ended() const { return state_->sensor_ended_; }
 const FrameStats& World::last_frame() const { return state_->stats_; }
 
+namespace {
+
+// The bodies a callback query finds, by index.
+template <class Query>
+std::vector<BodyId> collect(Query query) {
+  std::vector<BodyId> found;
+  query([&found](BodyId id) {
+    found.push_back(id);
+    return true;
+  });
+  std::sort(found.begin(), found.end(), [](BodyId p, BodyId q) { return p.index < q.index; });
+  return found;
+}
+
+// Whether a hit on `body` at `t` comes before the best so far: nearer, or as near on a lower index.
+template <class Hit>
+bool before(const std::optional<Hit>& best, double t, BodyId body, double best_t) {
+  return !best || t < best_t || (t == best_t && body.index < best->body.index);
+}
+
+// The reach that keeps only hits as near as `t`: the callback's 0 would stop the walk before a
+// lower index hit at 0 too is seen, so 0 clips to the least positive double instead.
+double clip_to(double t) { return std::max(t, std::numeric_limits<double>::denorm_min()); }
+
+}  // namespace
+
+void World::overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+  state_->overlapping(shape, visit, filter);
+}
 std::vector<BodyId> World::overlapping(const Shape& shape, const QueryFilter& filter) const {
-  return state_->overlapping(shape, filter);
+  return collect([&](FunctionRef<bool(BodyId)> visit) { overlapping(shape, visit, filter); });
+}
+void World::overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+  state_->overlapping(box, visit, filter);
 }
 std::vector<BodyId> World::overlapping(const Aabb& box, const QueryFilter& filter) const {
-  return state_->overlapping(box, filter);
+  return collect([&](FunctionRef<bool(BodyId)> visit) { overlapping(box, visit, filter); });
+}
+void World::within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit,
+                   const QueryFilter& filter) const {
+  state_->within(point, distance, visit, filter);
 }
 std::vector<BodyId> World::within(const Vec2& point, double distance, const QueryFilter& filter) const {
-  return state_->within(point, distance, filter);
+  return collect([&](FunctionRef<bool(BodyId)> visit) { within(point, distance, visit, filter); });
+}
+void World::within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit,
+                   const QueryFilter& filter) const {
+  state_->within(shape, distance, visit, filter);
 }
 std::vector<BodyId> World::within(const Shape& shape, double distance, const QueryFilter& filter) const {
-  return state_->within(shape, distance, filter);
+  return collect([&](FunctionRef<bool(BodyId)> visit) { within(shape, distance, visit, filter); });
+}
+
+void World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                     FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter,
+                     const RayOptions& options) const {
+  state_->ray_cast(origin, direction, max_distance, visit, filter, options);
 }
 std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
-                                      const QueryFilter& filter) const {
-  return state_->ray_cast(origin, direction, max_distance, filter);
+                                      const QueryFilter& filter, const RayOptions& options) const {
+  std::optional<RayHit> best;
+  const auto keep = [&best](const RayHit& hit) {
+    if (before(best, hit.distance, hit.body, best ? best->distance : 0.0)) best = hit;
+    return clip_to(best->distance);
+  };
+  ray_cast(origin, direction, max_distance, keep, filter, options);
+  return best;
 }
 std::vector<RayHit> World::ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
-                                        const QueryFilter& filter) const {
-  return state_->ray_cast_all(origin, direction, max_distance, filter);
+                                        const QueryFilter& filter, const RayOptions& options) const {
+  std::vector<RayHit> hits;
+  const auto keep = [&hits](const RayHit& hit) {
+    hits.push_back(hit);
+    return -1.0;
+  };
+  ray_cast(origin, direction, max_distance, keep, filter, options);
+  std::sort(hits.begin(), hits.end(), [](const RayHit& p, const RayHit& q) {
+    return std::tie(p.distance, p.body.index) < std::tie(q.distance, q.body.index);
+  });
+  return hits;
 }
-std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter) const {
-  return state_->cast(shape, translation, filter);
+
+void World::cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
+                 const QueryFilter& filter, const CastOptions& options) const {
+  state_->cast(shape, translation, visit, filter, options);
+}
+std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter,
+                                       const CastOptions& options) const {
+  std::optional<BodyCastHit> best;
+  const auto keep = [&best](const BodyCastHit& hit) {
+    if (before(best, hit.fraction, hit.body, best ? best->fraction : 0.0)) best = hit;
+    return clip_to(best->fraction);
+  };
+  cast(shape, translation, keep, filter, options);
+  return best;
 }
 
 }  // namespace collide2d

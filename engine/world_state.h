@@ -30,6 +30,7 @@
 
 #include "engine/thread_pool.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -71,16 +72,15 @@ class WorldState {
   // update.cpp
   void update();
 
-  // queries.cpp
-  std::vector<BodyId> overlapping(const Shape& shape, const QueryFilter& filter) const;
-  std::vector<BodyId> overlapping(const Aabb& box, const QueryFilter& filter) const;
-  std::vector<BodyId> within(const Vec2& point, double distance, const QueryFilter& filter) const;
-  std::vector<BodyId> within(const Shape& shape, double distance, const QueryFilter& filter) const;
-  std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
-                                 const QueryFilter& filter) const;
-  std::vector<RayHit> ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
-                                   const QueryFilter& filter) const;
-  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter) const;
+  // queries.cpp: the callback forms, on which world.cpp builds the others.
+  void overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
+  void overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
+  void within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
+  void within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
+  void ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter, const RayOptions& options) const;
+  void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
+            const QueryFilter& filter, const CastOptions& options) const;
 
   // The results of the last update.
   std::vector<BodyPair> overlapping_;
@@ -210,10 +210,12 @@ class WorldState {
 
   // queries.cpp
   template <class Test>
-  std::vector<BodyId> select(const Aabb& box, const QueryFilter& filter, Test test) const;
-  template <class OnHit>
-  void rays(const Vec2& origin, const Vec2& direction, double max_distance, const QueryFilter& filter,
-            OnHit on_hit) const;
+  void each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(BodyId)> visit) const;
+  // Throws std::logic_error naming `call` while a query's callback runs: the trees it walks must
+  // stay as they are.
+  void require_not_querying(const char* call) const;
+  // Callback queries running (several threads may query at once).
+  mutable std::atomic<int> querying_{0};
 };
 
 // Shared by the files of the World.

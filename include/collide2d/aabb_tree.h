@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -73,14 +74,16 @@ class AabbTree {
   /// The longest path from the root to a leaf; -1 for an empty tree.
   int height() const { return root_ < 0 ? -1 : nodes_[root_].height; }
 
-  /// visit(value) for each stored box that meets `box` (closed boxes: touching counts).
+  /// visit(value) for each stored box that meets `box` (closed boxes: touching counts), in the
+  /// order of the walk; a visit that returns a bool stops the walk by returning false.
   template <class Visit>
   void query(const Aabb& box, Visit&& visit) const;
 
   /// visit(value, reach) -> new reach, for each stored box the ray origin + t * direction, t in
   /// [0, reach], meets. The reach returned bounds the rest of the walk, and the nearer child of each
   /// node is walked first, so that a near hit skips the boxes behind it (the order is not sorted
-  /// overall). The direction need not be a unit vector: t is in its lengths.
+  /// overall); a negative reach stops the walk. The direction need not be a unit vector: t is in its
+  /// lengths.
   template <class Visit>
   void ray_cast(const Vec2& origin, const Vec2& direction, double reach, Visit&& visit) const;
 
@@ -134,7 +137,11 @@ void AabbTree::query(const Aabb& box, Visit&& visit) const {
     const Node& n = nodes_[stack[--top]];
     if (!overlap(n, lo, hi)) continue;
     if (n.leaf()) {
-      visit(n.value);
+      if constexpr (std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t>, bool>) {
+        if (!visit(n.value)) return;
+      } else {
+        visit(n.value);
+      }
     } else {
       stack[top++] = n.child[0];
       stack[top++] = n.child[1];
@@ -181,6 +188,7 @@ void AabbTree::ray_cast(const Vec2& origin, const Vec2& direction, double reach,
     const Node& n = nodes_[e.node];
     if (n.leaf()) {
       reach = visit(n.value, reach);
+      if (reach < 0.0) return;
       continue;
     }
     const Entry first{n.child[0], entry(nodes_[n.child[0]])};

@@ -18,10 +18,12 @@
 /// meet. docs/world.md describes each.
 ///
 /// Errors: an invalid shape throws InvalidShape; a NaN or infinite pose, margin or query argument
-/// std::invalid_argument; an unknown body or a stale handle (its body removed) std::out_of_range;
-/// each with a message that says which, and each leaves the World exactly as it was.
+/// std::invalid_argument; an unknown body or a stale handle (its body removed) std::out_of_range; a
+/// change to the World from inside a query's callback std::logic_error; each with a message that
+/// says which, and each leaves the World exactly as it was.
 #pragma once
 
+#include <collide2d/function_ref.h>
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
@@ -173,6 +175,19 @@ struct RayHit {
   Vec2 normal = Vec2::Zero();  ///< the body's outward unit normal there; zero when the ray starts inside
 };
 
+/// How a ray treats a body that contains its origin.
+struct RayOptions {
+  /// Report such a body, hit at distance 0 with a zero normal, instead of skipping it.
+  bool from_inside = false;
+};
+
+/// How a cast treats a body that the shape overlaps at the start.
+struct CastOptions {
+  /// Skip such a body, instead of reporting it hit at fraction 0 (a shape that starts in contact
+  /// with the ground then finds the wall it moves towards).
+  bool skip_initial_overlap = false;
+};
+
 /// What the last update did.
 struct FrameStats {
   std::size_t candidates = 0;   ///< pairs from the broad phase
@@ -269,25 +284,51 @@ class World {
   /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
 
-  /// The solid bodies the filter lets through whose shape overlaps `shape`, by index; on the
-  /// current poses (no update needed), as every query.
+  /// Queries on the current poses (no update needed). Each comes in two forms. The callback form
+  /// calls `visit` for each body found, in the order the trees are walked, allocates nothing, and
+  /// stops when `visit` says so; the World cannot be changed from inside `visit` (a call that would
+  /// change it throws std::logic_error). The other form collects the bodies found and sorts them.
+
+  /// The solid bodies the filter lets through whose shape overlaps `shape`, by index.
   std::vector<BodyId> overlapping(const Shape& shape, const QueryFilter& filter = {}) const;
+  /// visit(id) for each of them until it returns false.
+  void overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter = {}) const;
   /// The solid bodies whose shape meets the box (which may be a segment or a point).
   std::vector<BodyId> overlapping(const Aabb& box, const QueryFilter& filter = {}) const;
+  void overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter = {}) const;
   /// The solid bodies within `distance` (>= 0) of the point.
   std::vector<BodyId> within(const Vec2& point, double distance, const QueryFilter& filter = {}) const;
+  void within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit,
+              const QueryFilter& filter = {}) const;
   /// The solid bodies within `distance` (>= 0) of the shape.
   std::vector<BodyId> within(const Shape& shape, double distance, const QueryFilter& filter = {}) const;
+  void within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit,
+              const QueryFilter& filter = {}) const;
+
   /// The first body hit by the ray from `origin` along `direction` (any non-zero length) within
-  /// `max_distance`; a body containing the origin is hit at distance 0. Exact on curves.
+  /// `max_distance` (the lowest body index on a tie). Exact on curves. A body that contains the
+  /// origin is skipped, as in Box2D v3, unless `options.from_inside`.
   std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
-                                 const QueryFilter& filter = {}) const;
+                                 const QueryFilter& filter = {}, const RayOptions& options = {}) const;
+  /// visit(hit) for the bodies the ray hits within its reach, nearest boxes first but not sorted.
+  /// The reach starts at max_distance; visit returns what to do next, as Box2D v3's b2CastResultFcn
+  /// in units of max_distance: a negative value goes on, 0 stops, a value in (0, reach) shortens the
+  /// reach to it (return hit.distance to keep only nearer hits), a larger one goes on.
+  void ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
+                FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter = {},
+                const RayOptions& options = {}) const;
   /// Every body the ray hits within `max_distance`, nearest first (by body index on a tie).
   std::vector<RayHit> ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
-                                   const QueryFilter& filter = {}) const;
+                                   const QueryFilter& filter = {}, const RayOptions& options = {}) const;
+
   /// The first body the shape meets when translated by `translation` (the lowest body index on a
-  /// tie); a body it overlaps at the start is hit at fraction 0.
-  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {}) const;
+  /// tie). A body it overlaps at the start is hit at fraction 0, unless `options.skip_initial_overlap`.
+  std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {},
+                                  const CastOptions& options = {}) const;
+  /// visit(hit) for the bodies the translated shape meets, as ray_cast()'s callback form, in
+  /// fractions of the translation: the reach starts at 1.
+  void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
+            const QueryFilter& filter = {}, const CastOptions& options = {}) const;
 
  private:
   std::unique_ptr<detail::WorldState> state_;

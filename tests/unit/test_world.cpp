@@ -169,18 +169,21 @@ TEST(World, QueriesMatchBruteForce) {
 }
 
 // The first hit lies on the body's boundary (50-digit distance to the solid 0, to a point just
-// before it positive), and no body contains a point of the ray before it.
+// before it positive), and no body contains a point of the ray before it, among the bodies that do
+// not contain the origin (skipped by default) or among all of them (from_inside: those are hit at 0).
 TEST(World, RayCastFindsTheFirstExactHit) {
   Rng rng(9);
   const World world = random_world(rng, 150);
-  int hits = 0;
-  for (int k = 0; k < 300; ++k) {
+  int hits = 0, inside = 0;
+  for (int k = 0; k < 600; ++k) {
     const Vec2 origin(uniform(rng, -2, 12), uniform(rng, -2, 12));
     const double angle = uniform(rng, 0, 6.3);
     const Vec2 dir(std::cos(angle), std::sin(angle));
-    const auto hit = world.ray_cast(origin, 3.0 * dir, 20.0);
+    const RayOptions options{.from_inside = k % 2 == 1};
+    const auto hit = world.ray_cast(origin, 3.0 * dir, 20.0, {}, options);
     double first = 20.0;
     for (const BodyId id : world.bodies()) {
+      if (!options.from_inside && contains(world.shape(id), origin)) continue;
       for (int i = 0; i <= 4000; ++i) {
         const double t = 20.0 * i / 4000;
         if (contains(world.shape(id), origin + t * dir)) {
@@ -204,9 +207,15 @@ TEST(World, RayCastFindsTheFirstExactHit) {
       EXPECT_GT(static_cast<double>(reference::distance_to(world.shape(hit->body), reference::to_mp(before))), 0) << k;
       EXPECT_NEAR(hit->normal.norm(), 1.0, 1e-12);
       EXPECT_LT(hit->normal.dot(dir), 0.0) << k;
+    } else {
+      EXPECT_TRUE(options.from_inside) << k;
+      EXPECT_TRUE(contains(world.shape(hit->body), origin)) << k;
+      EXPECT_EQ(hit->normal, Vec2::Zero()) << k;
+      ++inside;
     }
   }
-  EXPECT_GT(hits, 50);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(inside, 20);
 }
 
 // The ray kernel on needles (an axis 1e-20 to 1e-4 of the other) and on round ellipses, from near
@@ -544,25 +553,147 @@ TEST(World, CastFindsTheFirstBody) {
   Rng rng(22);
   const World world = random_world(rng, 200);
   int hits = 0;
-  for (int k = 0; k < 200; ++k) {
+  int skipped = 0;
+  for (int k = 0; k < 400; ++k) {
     const Shape probe = random_shape(rng, 10.0);
     const Vec2 translation(uniform(rng, -4, 4), uniform(rng, -4, 4));
+    const CastOptions options{.skip_initial_overlap = k % 2 == 1};
     std::optional<BodyCastHit> best;
     for (const BodyId id : world.bodies()) {
+      if (options.skip_initial_overlap && overlaps(probe, world.shape(id))) {
+        ++skipped;
+        continue;
+      }
       const auto hit = shape_cast(probe, translation, world.shape(id));
       if (hit && (!best || hit->fraction < best->fraction))
         best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
     }
-    const auto got = world.cast(probe, translation);
+    const auto got = world.cast(probe, translation, {}, options);
     ASSERT_EQ(got.has_value(), best.has_value()) << k;
     if (!got) continue;
     ++hits;
     EXPECT_EQ(got->body, best->body) << k;
     EXPECT_EQ(got->fraction, best->fraction) << k;
   }
-  EXPECT_GT(hits, 50);
+  EXPECT_GT(hits, 100);
+  EXPECT_GT(skipped, 50);
   EXPECT_THROW(world.cast(Circle{{0, 0}, 1}, Vec2(NAN, 0)), std::invalid_argument);
   EXPECT_THROW(world.cast(Circle{{0, 0}, -1}, Vec2(1, 0)), InvalidShape);
+}
+
+// A ray from inside a ball skips it and hits the wall beyond (Box2D v3's rule); from_inside hits the
+// ball at 0 with a zero normal. A box resting on the floor and cast towards a wall hits the floor
+// at fraction 0; skip_initial_overlap finds the wall, at the fraction where the gap closes.
+TEST(World, RaysSkipTheBodiesTheyStartIn) {
+  World world;
+  const BodyId ball = world.add(Circle{{0, 0}, 1});
+  const BodyId wall = world.add(Rect{{5, 0}, {0.5, 3}, 0});
+  const BodyId floor = world.add(Rect{{0, -2}, {10, 1}, 0});
+  const auto first = world.ray_cast({0.25, 0}, {1, 0}, 10);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->body, wall);
+  EXPECT_EQ(first->distance, 4.25);
+  EXPECT_EQ(first->normal, Vec2(-1, 0));
+  const auto inside = world.ray_cast({0.25, 0}, {1, 0}, 10, {}, {.from_inside = true});
+  ASSERT_TRUE(inside);
+  EXPECT_EQ(inside->body, ball);
+  EXPECT_EQ(inside->distance, 0.0);
+  EXPECT_EQ(inside->normal, Vec2::Zero());
+  EXPECT_EQ(world.ray_cast_all({0.25, 0}, {1, 0}, 10).size(), 1u);
+  EXPECT_EQ(world.ray_cast_all({0.25, 0}, {1, 0}, 10, {}, {.from_inside = true}).size(), 2u);
+
+  const Shape crate = Rect{{2.5, -0.5}, {0.5, 0.5}, 0};  // on the floor, its right face 1.5 from the wall
+  const auto stuck = world.cast(crate, {7, 0});
+  ASSERT_TRUE(stuck);
+  EXPECT_EQ(stuck->body, floor);
+  EXPECT_EQ(stuck->fraction, 0.0);
+  const auto slides = world.cast(crate, {7, 0}, {}, {.skip_initial_overlap = true});
+  ASSERT_TRUE(slides);
+  EXPECT_EQ(slides->body, wall);
+  EXPECT_LE(slides->fraction, 1.5 / 7);
+  EXPECT_GT(slides->fraction, 1.5 / 7 - 1e-9);
+}
+
+// The callback forms find what the vector forms find, and stop when told: a visit that returns
+// false, or a ray's or a cast's that returns 0, is the last. A ray's visit that returns the hit's
+// distance keeps only nearer hits, and ends on the first one.
+TEST(World, CallbackQueriesStopWhenTold) {
+  Rng rng(31);
+  const World world = random_world(rng, 300);
+  int stopped = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Shape probe = random_shape(rng, 10.0);
+    const Vec2 origin(uniform(rng, -1, 11), uniform(rng, -1, 11));
+    const Vec2 direction(uniform(rng, -1, 1), uniform(rng, -1, 1));
+    std::vector<BodyId> seen;
+    world.within(probe, 0.5, [&seen](BodyId id) {
+      seen.push_back(id);
+      return true;
+    });
+    std::sort(seen.begin(), seen.end());
+    ASSERT_EQ(seen, world.within(probe, 0.5)) << k;
+    int calls = 0;
+    world.within(probe, 0.5, [&calls](BodyId) { return ++calls < 2; });
+    EXPECT_EQ(calls, std::min<int>(2, static_cast<int>(seen.size()))) << k;
+    stopped += seen.size() > 2;
+
+    const std::vector<RayHit> all = world.ray_cast_all(origin, direction, 20.0);
+    calls = 0;
+    world.ray_cast(origin, direction, 20.0, [&calls](const RayHit&) { return ++calls, 0.0; });
+    EXPECT_EQ(calls, all.empty() ? 0 : 1) << k;
+    std::optional<RayHit> nearest;
+    world.ray_cast(origin, direction, 20.0, [&nearest](const RayHit& hit) {
+      if (nearest) EXPECT_LE(hit.distance, nearest->distance);
+      nearest = hit;
+      return hit.distance;
+    });
+    ASSERT_EQ(nearest.has_value(), !all.empty()) << k;
+    if (nearest) EXPECT_EQ(nearest->distance, all.front().distance) << k;
+
+    calls = 0;
+    world.cast(probe, direction, [&calls](const BodyCastHit&) { return ++calls, 0.0; });
+    EXPECT_EQ(calls, world.cast(probe, direction) ? 1 : 0) << k;
+  }
+  EXPECT_GT(stopped, 20);
+}
+
+// Changing the World from inside a query's callback throws std::logic_error and changes nothing;
+// once the query is over (ended by the callback's own exception too), changes go through.
+TEST(World, ChangesFromInsideACallbackAreRefused) {
+  World world;
+  const BodyId a = world.add(Circle{{0, 0}, 1});
+  const BodyId b = world.add(Circle{{1, 0}, 1});
+  std::vector<std::string> refusals;
+  const auto refused = [&refusals](auto change) {
+    try {
+      change();
+    } catch (const std::logic_error& e) {
+      refusals.push_back(e.what());
+    }
+  };
+  world.overlapping(Circle{{0.5, 0}, 0.1}, [&](BodyId id) {
+    refused([&] { world.remove(id); });
+    refused([&] { world.add(Circle{{5, 5}, 1}); });
+    refused([&] { world.move_by(id, {1, 0}); });
+    refused([&] { world.set_filter(id, {.category = 2}); });
+    refused([&] { world.update(); });
+    return true;
+  });
+  world.ray_cast({-5, 0}, {1, 0}, 10, [&](const RayHit& hit) {
+    refused([&] { world.set_pose(hit.body, {9, 9}, 0); });
+    return -1.0;
+  });
+  ASSERT_EQ(refusals.size(), 2 * 5 + 2u);
+  EXPECT_EQ(refusals[0],
+            "remove called from inside a query's callback: the World cannot change while a query walks it");
+  EXPECT_EQ(world.size(), 2u);
+  EXPECT_EQ(world.pose(a).position, Vec2(0, 0));
+  EXPECT_EQ(world.filter(b).category, 1u);
+  EXPECT_THROW(world.overlapping(Aabb{{-1, -1}, {1, 1}}, [](BodyId) -> bool { throw std::runtime_error("game"); }),
+               std::runtime_error);
+  world.remove(b);
+  world.update();
+  EXPECT_EQ(world.size(), 1u);
 }
 
 // Box2D's rules, case by case: masks both ways, a shared positive group overriding masks that
@@ -663,7 +794,8 @@ TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
       if (overlaps(probe, world.shape(id))) hit.push_back(id);
       if (distance(probe, world.shape(id)).distance <= 0.5) near.push_back(id);
       const auto r = ray_cast(world.shape(id), origin, Vec2(dir / dir.norm()), 30.0);  // as the World scales it
-      if (r && (!first || r->distance < first->distance)) first = RayHit{id, r->distance, r->point, r->normal};
+      if (r && !contains(world.shape(id), origin) && (!first || r->distance < first->distance))
+        first = RayHit{id, r->distance, r->point, r->normal};
     }
     ASSERT_EQ(world.overlapping(probe, q), hit) << k;
     ASSERT_EQ(world.within(probe, 0.5, q), near) << k;
@@ -787,7 +919,8 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
       if (overlaps(probe, s)) hit.push_back(id);
       if (distance(probe, s).distance <= 0.4) near.push_back(id);
       if (overlaps(s, box)) in_box.push_back(id);
-      if (const auto r = ray_cast(s, origin, unit, 15.0)) all.push_back({id, r->distance, r->point, r->normal});
+      const auto r = contains(s, origin) ? std::nullopt : ray_cast(s, origin, unit, 15.0);
+      if (r) all.push_back({id, r->distance, r->point, r->normal});
       const auto c = shape_cast(probe, shift, s);
       if (c && (!cast || c->fraction < cast->fraction)) cast = BodyCastHit{id, c->fraction, c->point, c->normal};
     }
