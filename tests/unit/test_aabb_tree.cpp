@@ -181,6 +181,29 @@ TEST(AabbTree, NearestHitPrunesFartherBoxes) {
   EXPECT_EQ(visited, std::vector<std::uint32_t>{0});
 }
 
+TEST(AabbTree, VisitorsStopTheWalk) {
+  // A 10 x 10 grid of boxes that all meet the query box and the ray's slab: a query visitor that
+  // returns false and a ray visitor that returns a negative reach are each called once, where
+  // visitors that go on are called for every box met.
+  AabbTree tree;
+  for (std::uint32_t k = 0; k < 100; ++k) {
+    const Vec2 corner(k % 10, k / 10 * 0.01);
+    tree.insert({corner, corner + Vec2(0.5, 0.005)}, k);
+  }
+  int calls = 0;
+  tree.query({Vec2(0, 0), Vec2(10, 1)}, [&calls](std::uint32_t) { return ++calls < 1; });
+  EXPECT_EQ(calls, 1);
+  calls = 0;
+  tree.query({Vec2(0, 0), Vec2(10, 1)}, [&calls](std::uint32_t) { return ++calls > 0; });
+  EXPECT_EQ(calls, 100);
+  calls = 0;
+  tree.ray_cast(Vec2(-1, 0.002), Vec2(1, 0), 100.0, [&calls](std::uint32_t, double) { return ++calls, -1.0; });
+  EXPECT_EQ(calls, 1);
+  calls = 0;
+  tree.ray_cast(Vec2(-1, 0.002), Vec2(1, 0), 100.0, [&calls](std::uint32_t, double r) { return ++calls, r; });
+  EXPECT_EQ(calls, 10);
+}
+
 TEST(AabbTree, CoordinatesBeyondFloatStayConservative) {
   AabbTree tree;
   tree.insert({Vec2(1e45, 1e45), Vec2(2e45, 2e45)}, 0);
