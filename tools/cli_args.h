@@ -1,11 +1,12 @@
 // Command-line helpers shared by `collide2d` (tools/main.cpp) and `collide2d_report`
-// (bench/report_main.cpp). Each throws UsageError, which the mains turn into a message, the usage
-// text and exit status 2.
+// (bench/report_main.cpp). A mistake in the arguments throws UsageError, which the mains turn into
+// a message, the usage's synopsis and exit status 2.
 #pragma once
 
 #include <charconv>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -38,12 +39,13 @@ void write_file(const std::string& path, const char* what, Draw draw) {
   if (path.empty()) return;
   std::ofstream out(path);
   draw(out);
-  if (!out) throw UsageError("cannot write '" + path + "'");
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
   std::cout << what << ": " << path << '\n';
 }
 
 // The body of a main: --help or -h prints the usage; otherwise `command()` runs, and any exception
-// becomes "<program>: <what>" on stderr, followed by the usage for a UsageError, with exit status 2.
+// becomes one line, "<program>: <what>", on stderr with exit status 2. A UsageError adds the
+// usage's synopsis lines (those that start with "usage:") and where the rest is.
 template <class Command>
 int run_main(int argc, char** argv, const char* program, const char* usage, Command command) {
   if (argc >= 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h")) {
@@ -53,7 +55,12 @@ int run_main(int argc, char** argv, const char* program, const char* usage, Comm
   try {
     return command();
   } catch (const UsageError& e) {
-    std::cerr << program << ": " << e.what() << '\n' << usage;
+    std::cerr << program << ": " << e.what() << '\n';
+    std::istringstream lines(usage);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.starts_with("usage:")) std::cerr << line << '\n';
+    }
+    std::cerr << "(" << program << " --help says more)\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << '\n';

@@ -10,11 +10,12 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kQueryUsage =
     "usage: collide2d query [--method NAME]... [--boundary | --contact | --toi]\n"
     "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being\n"
     "    circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta   (radians)\n"
@@ -33,8 +34,9 @@ constexpr const char* kUsage =
     "  --toi       reads '<shapeA> @ vx vy w ; <shapeB> @ vx vy w' (velocity and turn per\n"
     "      step; a shape without '@' is at rest) and writes 'hit t nx ny px py': hit 1 and\n"
     "      the first time of contact in [0, 1] (0 if they overlap at the start), or hit 0\n"
-    "      and t 1; the normal from A to B and the midpoint of the closest points at t\n"
-    "\n"
+    "      and t 1; the normal from A to B and the midpoint of the closest points at t\n";
+
+constexpr const char* kRunUsage =
     "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
     "  rectangles on two layers that never pair, 8 continuous bullets, a static level of\n"
@@ -42,12 +44,27 @@ constexpr const char* kUsage =
     "  prune for moving bodies, a tree for static ones) and the narrow phase, frame by\n"
     "  frame, then prints what they found (bullets: their impacts within each frame; the\n"
     "  pairs the filters drop; each sensor's contents) and how long it took. --svg draws\n"
-    "  the last frame; --frames overrides the scene's frame count.\n"
-    "\n"
+    "  the last frame; --frames overrides the scene's frame count.\n";
+
+constexpr const char* kReportNote =
     "The speed-against-error report of the ellipse distance methods is a separate program\n"
     "of the build tree, bench/collide2d_report (it links Box2D; not installed).\n";
 
+const std::string kUsage = std::string(kQueryUsage) + "\n" + kRunUsage + "\n" + kReportNote;
+
+// `collide2d <command> --help` (or -h) anywhere among its arguments.
+bool wants_help(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i) {
+    if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h") return true;
+  }
+  return false;
+}
+
 int query(int argc, char** argv) {
+  if (wants_help(argc, argv)) {
+    std::cout << kQueryUsage;
+    return 0;
+  }
   collide2d::tool::QueryOptions options;
   for (int i = 2; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -82,6 +99,10 @@ std::string read_file(const std::string& path) {
 }
 
 int run(int argc, char** argv) {
+  if (wants_help(argc, argv)) {
+    std::cout << kRunUsage;
+    return 0;
+  }
   std::string scene_path, svg_path;
   int frames = 0;
   for (int i = 2; i < argc; ++i) {
@@ -112,7 +133,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return collide2d::cli::run_main(argc, argv, "collide2d", kUsage, [&] {
+  return collide2d::cli::run_main(argc, argv, "collide2d", kUsage.c_str(), [&] {
     const std::string_view command = argc >= 2 ? argv[1] : "";
     if (command == "query") return query(argc, argv);
     if (command == "run") return run(argc, argv);

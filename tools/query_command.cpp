@@ -24,15 +24,27 @@ std::vector<std::string_view> split_words(std::string_view text) {
   return words;
 }
 
-double parse_number(std::string_view word) {
-  double value = 0.0;
+// from_chars over the whole word (a leading '+' allowed, which from_chars rejects alone).
+std::from_chars_result read_number(std::string_view word, double& value) {
   const char* begin = word.data();
   const char* end = begin + word.size();
-  if (!word.empty() && *begin == '+') ++begin;  // from_chars rejects a leading '+'
-  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (!word.empty() && *begin == '+') ++begin;
+  std::from_chars_result r = std::from_chars(begin, end, value);
+  if (r.ec == std::errc() && r.ptr != end) r.ec = std::errc::invalid_argument;
+  return r;
+}
+
+double parse_number(std::string_view word) {
+  double value = 0.0;
+  const std::errc ec = read_number(word, value).ec;
   if (ec == std::errc::result_out_of_range) throw ParseError("'" + std::string(word) + "' is out of range");
-  if (ec != std::errc() || ptr != end) throw ParseError("'" + std::string(word) + "' is not a number");
+  if (ec != std::errc()) throw ParseError("'" + std::string(word) + "' is not a number");
   return value;
+}
+
+bool is_number(std::string_view word) {
+  double value = 0.0;
+  return read_number(word, value).ec != std::errc::invalid_argument;
 }
 
 struct ShapeGrammar {
@@ -57,12 +69,18 @@ Shape parse_shape(std::string_view text, const char* side) {
   if (words.empty()) throw ParseError(std::string("shape ") + side + " is missing");
   for (const ShapeGrammar& g : kGrammar) {
     if (words[0] != g.word) continue;
-    if (words.size() - 1 != g.count) {
-      throw ParseError(std::string(g.word) + " takes " + std::to_string(g.count) + " numbers (" +
-                       std::string(g.fields) + "), got " + std::to_string(words.size() - 1));
-    }
+    const std::string takes =
+        std::string(g.word) + " takes " + std::to_string(g.count) + " numbers (" + std::string(g.fields) + ")";
     std::vector<double> values;
-    for (std::size_t k = 1; k < words.size(); ++k) values.push_back(parse_number(words[k]));
+    for (std::size_t k = 1; k < words.size() && k <= g.count; ++k) values.push_back(parse_number(words[k]));
+    if (words.size() - 1 > g.count) {
+      const std::string_view extra = words[g.count + 1];
+      throw ParseError(is_number(extra)
+                           ? takes + ", got " + std::to_string(words.size() - 1)
+                           : "unexpected '" + std::string(extra) + "' after " + std::string(g.word) + "'s " +
+                                 std::to_string(g.count) + " numbers (" + std::string(g.fields) + ")");
+    }
+    if (values.size() != g.count) throw ParseError(takes + ", got " + std::to_string(values.size()));
     Shape shape = make_shape(g.word, values);
     validate(shape);
     return shape;

@@ -203,16 +203,24 @@ TEST(QueryCommand, EachBadLineGetsAnErrorInPlace) {
       "circle 0 0 1 ; \n"
       "ellipse 0 0 2 inf 0 ; ellipse 1 0 2 1 0\n"
       "circle 0 0 1e999 ; circle 1 1 1\n"
+      "circle 0 0 1 foo ; circle 1 1 1\n"
+      "circle 0 0 1 2 ; circle 1 1 1\n"
       "# fine again\n"
       "rect 0 0 1 1 0 ; circle 3 0 1\n";
   const CommandRun r = run(input);
   EXPECT_EQ(r.status, 2);
-  const std::vector<std::string> expected_errors = {
-      "unknown shape 'blob'",         "circle takes 3 numbers (cx cy r), got 2",
-      "'zero' is not a number",       "expected '<shape> ; <shape>', found no ';'",
-      "expected one ';', found more", "circle radius must be finite",
-      "rect hx must be positive",     "shape B is missing",
-      "ellipse b must be finite",     "'1e999' is out of range"};
+  const std::vector<std::string> expected_errors = {"unknown shape 'blob'",
+                                                    "circle takes 3 numbers (cx cy r), got 2",
+                                                    "'zero' is not a number",
+                                                    "expected '<shape> ; <shape>', found no ';'",
+                                                    "expected one ';', found more",
+                                                    "circle radius must be finite",
+                                                    "rect hx must be positive",
+                                                    "shape B is missing",
+                                                    "ellipse b must be finite",
+                                                    "'1e999' is out of range",
+                                                    "unexpected 'foo' after circle's 3 numbers (cx cy r)",
+                                                    "circle takes 3 numbers (cx cy r), got 4"};
   ASSERT_EQ(r.out.size(), expected_errors.size() + 2);
   EXPECT_EQ(r.out.front(), "0 1 1 0 2 0");
   EXPECT_EQ(r.out.back(), "0 1 1 0 2 0");

@@ -141,6 +141,32 @@ TEST(Scene, BrokenFilesNameTheField) {
        "bodies[0]: a static body cannot be continuous"},
       {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "sensor": 1})"),
        "bodies[0].sensor: expected true or false, got 1"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 3, "a": 3})"),
+       "bodies[0]: a circle has no field 'a' (its own are radius)"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 3, "angle": 0.5})"),
+       "bodies[0]: a circle has no field 'angle' (its own are radius)"},
+      {with_body(R"({"shape": "ellipse", "center": [1, 1], "a": 3, "b": 1, "half_extents": [1, 1]})"),
+       "bodies[0]: an ellipse has no field 'half_extents' (its own are a, b and angle)"},
+      {with_body(R"({"shape": "rect", "center": [1, 1], "half_extents": [1, 1], "radius": 2})"),
+       "bodies[0]: a rect has no field 'radius' (its own are half_extents and angle)"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1e-60})"),
+       "bodies[0]: circle radius is outside the supported range 1e-50 to 1e50 (got 1e-60)"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1e300, 0]})"),
+       "bodies[0].velocity: a frame's step of 1.6666666666666668e+298 would carry the body beyond the supported "
+       "range of +-1e50"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 100, "dt": 100, "bodies": [
+          {"shape": "rect", "center": [1, 1], "half_extents": [1, 1], "angular_velocity": 1e308}]})",
+       "bodies[0].angular_velocity: turns the body to an angle beyond the finite numbers over the run"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": 7},
+                    {"shape": "circle", "center": [5, 5], "radius": 1, "id": 7})"),
+       "bodies[1]: id 7 is also the id of bodies[0] (a body's id defaults to its index)"},
+      {with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "id": 1},
+                    {"shape": "circle", "center": [5, 5], "radius": 1})"),
+       "bodies[1]: id 1 is also the id of bodies[0]"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10], "margin": 1}, "frames": 3, "bodies": []})",
+       "arena: unknown field 'margin'"},
+      {R"({"arena": {"min": [0, 0], "max": [1e51, 10]}, "frames": 3, "bodies": []})",
+       "arena: beyond the supported range of +-1e50"},
   };
   for (const auto& [text, expected] : cases) {
     try {
@@ -149,6 +175,20 @@ TEST(Scene, BrokenFilesNameTheField) {
     } catch (const SceneError& e) {
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what() << "\n  for " << text;
     }
+  }
+}
+
+// A scene changed in code after parsing is checked again before its first frame.
+TEST(SceneRun, RefusesAMotionBeyondTheRangeBeforeTheFirstFrame) {
+  Scene scene = parse_scene(with_body(R"({"shape": "circle", "center": [1, 1], "radius": 1, "velocity": [1, 0]})"));
+  scene.bodies[0].velocity = Vec2(0, 1e300);
+  try {
+    SceneRun run(scene);
+    ADD_FAILURE() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "bodies[0].velocity: a frame's step of 1.6666666666666668e+298 would carry the body beyond the "
+                 "supported range of +-1e50");
   }
 }
 

@@ -2,8 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numbers>
 #include <random>
 #include <set>
@@ -57,10 +59,45 @@ void reject_unknown_keys(const json& object, std::initializer_list<const char*> 
   }
 }
 
+// The fields of a body, besides its shape's own.
+constexpr std::initializer_list<const char*> kBodyFields = {"shape", "center",     "velocity", "angular_velocity",
+                                                            "id",    "continuous", "category", "mask",
+                                                            "group", "static",     "sensor"};
+
+struct ShapeFields {
+  const char* kind;
+  std::initializer_list<const char*> fields;
+  const char* listed;  // for the message
+};
+constexpr ShapeFields kShapeFields[] = {{"circle", {"radius"}, "radius"},
+                                        {"ellipse", {"a", "b", "angle"}, "a, b and angle"},
+                                        {"rect", {"half_extents", "angle"}, "half_extents and angle"}};
+
+bool listed(std::initializer_list<const char*> names, const std::string& key) {
+  return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
+}
+
+// Each field of the body is one of its shape's or a body's: a circle's "a" is refused by name.
+void reject_unknown_fields(const json& b, const std::string& kind, const std::string& field) {
+  const ShapeFields* own = nullptr;
+  for (const ShapeFields& s : kShapeFields) own = kind == s.kind ? &s : own;
+  for (const auto& [key, value] : b.items()) {
+    if (listed(kBodyFields, key) || (own != nullptr && listed(own->fields, key))) continue;
+    const bool elsewhere = std::any_of(std::begin(kShapeFields), std::end(kShapeFields),
+                                       [&key](const ShapeFields& s) { return listed(s.fields, key); });
+    if (own != nullptr && elsewhere) {
+      const char* article = std::string_view("aeiou").find(kind[0]) == std::string_view::npos ? "a " : "an ";
+      fail(field, article + kind + " has no field '" + key + "' (its own are " + own->listed + ")");
+    }
+    fail(field, "unknown field '" + key + "'");
+  }
+}
+
 Shape parse_shape(const json& b, const std::string& field) {
   const json& word = member(b, "shape", field);
   if (!word.is_string()) fail(field + ".shape", "expected a string, got " + word.dump());
   const std::string kind = word.get<std::string>();
+  reject_unknown_fields(b, kind, field);
   const Vec2 center = vec2(member(b, "center", field), field + ".center");
   const double angle = optional_number(b, "angle", field, 0.0);
   if (kind == "circle") {
@@ -99,15 +136,18 @@ bool flag(const json& object, const char* key, const std::string& field) {
   return it->get<bool>();
 }
 
+std::string body_field(std::size_t index) { return "bodies[" + std::to_string(index) + "]"; }
+
 SceneBody parse_body(const json& b, std::size_t index) {
-  const std::string field = "bodies[" + std::to_string(index) + "]";
+  const std::string field = body_field(index);
   if (!b.is_object()) fail(field, "expected an object");
-  reject_unknown_keys(b,
-                      {"shape", "center", "radius", "a", "b", "angle", "half_extents", "velocity", "angular_velocity",
-                       "id", "continuous", "category", "mask", "group", "static", "sensor"},
-                      field);
   SceneBody body;
   body.shape = parse_shape(b, field);
+  try {
+    validate(body.shape);  // the ranges the library supports
+  } catch (const InvalidShape& e) {
+    fail(field, e.what());
+  }
   if (const auto it = b.find("velocity"); it != b.end()) body.velocity = vec2(*it, field + ".velocity");
   body.angular_velocity = optional_number(b, "angular_velocity", field, 0.0);
   body.id = index;
@@ -195,7 +235,12 @@ Scene parse_scene(std::string_view text) {
   Scene scene;
   const json& arena = member(root, "arena", "");
   if (!arena.is_object()) fail("arena", "expected an object with min and max");
+  reject_unknown_keys(arena, {"min", "max"}, "arena");
   scene.arena = {vec2(member(arena, "min", "arena"), "arena.min"), vec2(member(arena, "max", "arena"), "arena.max")};
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(scene.arena.min[k]) > kMaxMagnitude || std::abs(scene.arena.max[k]) > kMaxMagnitude)
+      fail("arena", "beyond the supported range of +-1e50");
+  }
   if (!(scene.arena.min.array() < scene.arena.max.array()).all()) fail("arena", "max must exceed min on both axes");
   const json& frames = member(root, "frames", "");
   if (!frames.is_number_integer() || frames.get<long long>() < 1 || frames.get<long long>() > 100000000) {
@@ -210,8 +255,42 @@ Scene parse_scene(std::string_view text) {
   if (scene.proximity_margin < 0) fail("proximity_margin", "must not be negative");
   const json& bodies = member(root, "bodies", "");
   if (!bodies.is_array()) fail("bodies", "expected an array");
-  for (std::size_t k = 0; k < bodies.size(); ++k) scene.bodies.push_back(parse_body(bodies[k], k));
+  std::map<std::uint64_t, std::size_t> owners;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    scene.bodies.push_back(parse_body(bodies[k], k));
+    const auto [at, fresh] = owners.emplace(scene.bodies.back().id, k);
+    if (!fresh) {
+      fail(body_field(k), "id " + std::to_string(at->first) + " is also the id of " + body_field(at->second) +
+                              " (a body's id defaults to its index)");
+    }
+  }
+  check_motion(scene);
   return scene;
+}
+
+// A moving body stays within the hull of its start and the arena, give or take its reach and one
+// frame's step (it turns back once its box crosses the arena's side), and its angle grows by at
+// most frames dt |w|: both must stay where the World computes.
+void check_motion(const Scene& scene) {
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const SceneBody& b = scene.bodies[k];
+    if (b.is_static) continue;
+    const Aabb box = aabb(b.shape);
+    const Vec2 reach = 0.5 * (box.max - box.min);
+    const Vec2 step = scene.dt * b.velocity.cwiseAbs();
+    for (int i = 0; i < 2; ++i) {
+      const double far = std::max({std::abs(center_of(b.shape)[i]), std::abs(scene.arena.min[i]) + reach[i],
+                                   std::abs(scene.arena.max[i]) + reach[i]});
+      if (!(far + step[i] <= kMaxMagnitude)) {
+        fail(body_field(k) + ".velocity", "a frame's step of " + json(step[i]).dump() +
+                                              " would carry the body beyond the supported range of +-1e50");
+      }
+    }
+    const double turn = static_cast<double>(scene.frames) * scene.dt * std::abs(b.angular_velocity);
+    if (!std::isfinite(std::abs(angle_of(b.shape)) + turn)) {
+      fail(body_field(k) + ".angular_velocity", "turns the body to an angle beyond the finite numbers over the run");
+    }
+  }
 }
 
 std::string write_scene(const Scene& scene) {

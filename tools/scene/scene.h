@@ -1,34 +1,15 @@
 // Scenes for `collide2d run`: an arena, bodies with simple kinematics, and how long to run.
 //
-// The file is JSON:
-//   {
-//     "arena": {"min": [0, 0], "max": [100, 100]},
-//     "frames": 600,                 // required, >= 1
-//     "dt": 0.016667,                // seconds per frame, default 1/60
-//     "fat_margin": 0.1,             // broad-phase margin, default 0.1
-//     "proximity_margin": 0.5,       // report pairs closer than this, default 0 (off)
-//     "bodies": [
-//       {"shape": "circle",  "center": [10, 20], "radius": 1.5},
-//       {"shape": "ellipse", "center": [30, 20], "a": 3, "b": 1, "angle": 0.4,
-//        "velocity": [2, -1], "angular_velocity": 0.5, "id": 7},
-//       {"shape": "rect",    "center": [50, 50], "half_extents": [2, 1], "angle": 0},
-//       {"shape": "circle",  "center": [5, 5], "radius": 0.1, "velocity": [300, 40], "continuous": true,
-//        "category": 2, "mask": 5, "group": -1},
-//       {"shape": "rect",    "center": [50, 1], "half_extents": [50, 1], "static": true},
-//       {"shape": "circle",  "center": [80, 80], "radius": 8, "static": true, "sensor": true}
-//     ]
-//   }
-// velocity (default [0, 0]), angular_velocity (default 0), angle (default 0), id (default: the
-// body's index), continuous (default false: a bullet, whose impacts within each frame the World
-// finds), static (default false: level geometry, which never moves; it has no velocity and is not
-// continuous), sensor (default false: reports the bodies inside it and is otherwise not solid) and
-// the collision filter's category, mask and group (engine/world.h; defaults 1, every bit, 0: the
-// body pairs with every other) are optional. Moving bodies move in straight lines and bounce off the
-// arena walls (the velocity component towards a wall flips when the body's box crosses it); there is
-// no physics: they pass through static bodies, which only report the overlaps.
+// The file is JSON; docs/command-line.md lists its fields, and examples/scene.json is a whole scene
+// (tested). "arena" (min and max corners) and "frames" are required; "dt", "fat_margin" and
+// "proximity_margin" are optional, and so is every body field but the shape's own ("shape",
+// "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents").
+// Moving bodies move in straight lines and bounce off the arena walls (the velocity component
+// towards a wall flips when the body's box crosses it); there is no physics: they pass through
+// static bodies, which only report the overlaps.
 //
 // Errors: parse_scene throws SceneError naming the field, e.g. `bodies[3].radius: must be positive
-// (got -1)`, `frames: missing`, `bodies[0]: unknown field 'radus'`.
+// (got -1)`, `frames: missing`, `bodies[0]: a circle has no field 'a' (its own are radius)`.
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -69,7 +50,12 @@ struct Scene {
   bool operator==(const Scene&) const;
 };
 
+// Throws SceneError for a broken scene, before any frame is run: a field the format lacks or a
+// shape kind does not take, a duplicate id, a value out of range, or a motion that would carry a
+// body beyond the range the library supports within the run.
 Scene parse_scene(std::string_view json);
+// The last of parse_scene's checks, for a scene built or changed in code (SceneRun makes it).
+void check_motion(const Scene& scene);
 std::string write_scene(const Scene& scene);  // JSON that parse_scene reads back to the same scene
 
 // The built-in scene: `count` mixed circles, ellipses (aspect up to 8) and rectangles, sizes 0.3 to

@@ -33,6 +33,7 @@ void draw_progress(std::ostream& out, int done, int total) {
 SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
       world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin, .threads = threads}) {
+  check_motion(scene_);
   for (const SceneBody& b : scene_.bodies) {
     ids_.push_back(
         world_.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));

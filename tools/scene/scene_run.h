@@ -40,7 +40,8 @@ struct RunSummary {
 
 class SceneRun {
  public:
-  // The World runs on `threads` threads (0: every hardware thread).
+  // The World runs on `threads` threads (0: every hardware thread). Throws SceneError, before any
+  // frame, for a motion check_motion() refuses.
   explicit SceneRun(Scene scene, unsigned threads = 0);
 
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
