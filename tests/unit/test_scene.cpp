@@ -89,6 +89,12 @@ TEST(Scene, ExampleFileParses) {
   EXPECT_TRUE(scene.bodies[10].is_static && scene.bodies[10].sensor);
 }
 
+std::size_t occurrences(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
 std::string with_body(const std::string& body) {
   return R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [)" + body + "]}";
 }
@@ -221,16 +227,48 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   write_svg(run, svg);
   const std::string text = svg.str();
   std::size_t shapes = 0;
-  for (const char* tag : {"<circle ", "<ellipse ", "<rect class"}) {
-    for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) ++shapes;
-  }
+  for (const char* css : {"class=\"body", "class=\"static", "class=\"sensor"}) shapes += occurrences(text, css);
   EXPECT_EQ(shapes, 309u);
-  EXPECT_NE(text.find("class=\"sensor"), std::string::npos);
-  EXPECT_NE(text.find("class=\"static"), std::string::npos);
+  EXPECT_GT(occurrences(text, "class=\"sensor"), 0u);
+  EXPECT_GT(occurrences(text, "class=\"static"), 0u);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
 }
 
-// The caption fits the picture's width at 0.6 em a character, for a wide, a square and a tall arena.
+// What the caption counts can be seen at 1000 pixels: each proximity pair is ringed 3 pixels
+// across its middle (the built-in scene's segments are about a pixel long), each continuous body
+// 6 pixels around; the two layers are filled differently and named in the legend; rotations stay
+// within (-180, 180] after bodies have turned for many frames.
+TEST(SceneRun, PictureShowsWhatTheCaptionCounts) {
+  SceneRun run(default_scene(1000, 200, 7));
+  run.run(nullptr);
+  std::ostringstream svg;
+  write_svg(run, svg);
+  const std::string text = svg.str();
+  const World& world = run.world();
+  const double pixel = run.scene().arena.max.x() / 1000;
+  ASSERT_GT(world.proximity().size(), 10u);
+  EXPECT_EQ(occurrences(text, "<line class=\"near\""), world.proximity().size());
+  EXPECT_EQ(occurrences(text, "<circle class=\"near\""), world.proximity().size());
+  EXPECT_EQ(occurrences(text, "<circle class=\"bullet\""), 2u);
+  const std::size_t ring = text.find("<circle class=\"near\"");
+  const std::size_t r = text.find(" r=\"", ring) + 4;
+  EXPECT_NEAR(std::stod(text.substr(r)), 3 * pixel, 1e-5 * pixel);  // 6 digits
+  EXPECT_GT(occurrences(text, "class=\"body layer0"), 500u);
+  EXPECT_GT(occurrences(text, "class=\"body layer1"), 200u);
+  EXPECT_NE(text.find("moving bodies by filter category: 1 blue, 2 violet, 2 continuous (magenta rings)"),
+            std::string::npos);
+  std::size_t rotations = 0;
+  for (std::size_t at = text.find("rotate("); at != std::string::npos; at = text.find("rotate(", at + 1)) {
+    const double degrees = std::stod(text.substr(at + 7));
+    EXPECT_GT(degrees, -180.0);
+    EXPECT_LE(degrees, 180.0);
+    ++rotations;
+  }
+  EXPECT_GT(rotations, 600u);
+}
+
+// Both caption lines fit the picture's width at 0.6 em a character, for a wide, a square and a tall
+// arena.
 TEST(Run, SvgCaptionFitsTheWidth) {
   for (const Vec2& extent : {Vec2(40, 10), Vec2(30, 30), Vec2(10, 40)}) {
     Scene scene = parse_scene(R"({"arena": {"min": [0, 0], "max": [1, 1]}, "frames": 1, "bodies": []})");
@@ -241,14 +279,17 @@ TEST(Run, SvgCaptionFitsTheWidth) {
     std::ostringstream svg;
     write_svg(run, svg);
     const std::string text = svg.str();
-    const std::size_t open = text.find("<text "), start = text.find('>', open) + 1, end = text.find("</text>");
-    const auto attribute = [&](const char* name) {
-      const std::size_t at = text.find(name, open) + std::strlen(name);
-      return std::stod(text.substr(at, text.find('"', at) - at));
-    };
-    const double x = attribute(" x=\""), font = attribute("font-size=\"");
-    EXPECT_LE(x + 0.6 * font * static_cast<double>(end - start), extent.x()) << extent.transpose();
-    EXPECT_GE(font * 1000 / extent.x(), 12.0) << "at least 12 pixels in the 1000-pixel-wide picture";
+    ASSERT_EQ(occurrences(text, "<text "), 2u);
+    for (std::size_t open = text.find("<text "); open != std::string::npos; open = text.find("<text ", open + 1)) {
+      const std::size_t start = text.find('>', open) + 1, end = text.find("</text>", open);
+      const auto attribute = [&](const char* name) {
+        const std::size_t at = text.find(name, open) + std::strlen(name);
+        return std::stod(text.substr(at, text.find('"', at) - at));
+      };
+      const double x = attribute(" x=\""), font = attribute("font-size=\"");
+      EXPECT_LE(x + 0.6 * font * static_cast<double>(end - start), extent.x()) << extent.transpose();
+      EXPECT_GE(font * 1000 / extent.x(), 12.0) << "at least 12 pixels in the 1000-pixel-wide picture";
+    }
   }
 }
 

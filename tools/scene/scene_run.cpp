@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <ostream>
 #include <set>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace collide2d::tool {
@@ -133,6 +135,31 @@ void print_summary(const RunSummary& s, std::ostream& out) {
   }
 }
 
+namespace {
+
+// The fills of the moving bodies' filter categories, in the order the categories sort.
+constexpr std::pair<const char*, const char*> kLayerColours[] = {
+    {"#9db4cc", "blue"}, {"#c39bd3", "violet"}, {"#82e0aa", "green"}, {"#f7dc6f", "yellow"}, {"#f0b27a", "orange"}};
+
+// What the picture's lines and markers need: the pixel (1/1000 of the arena's width) and a caption
+// of at most two lines sized to the width.
+struct SvgLayout {
+  double pixel;
+  double font;
+  double height;
+};
+
+// The caption spans at most 98% of the width at 0.6 em a character, more than a sans-serif font's
+// average, and is 14 pixels high where that allows, in a strip below the arena. Sized by the
+// arena's height instead, it would run past the right edge of a square scene.
+SvgLayout layout(const Vec2& size, const std::string& line1, const std::string& line2) {
+  const double chars = static_cast<double>(std::max(line1.size(), line2.size()));
+  const double font = std::min(0.98 * size.x() / (0.6 * chars), 0.014 * size.x());
+  return {size.x() / 1000, font, size.y() + 3.5 * font};
+}
+
+}  // namespace
+
 void write_svg(const SceneRun& run, std::ostream& out) {
   const Aabb& arena = run.scene().arena;
   const Vec2 size = arena.max - arena.min;
@@ -140,28 +167,37 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   std::set<BodyId> hit, sensing;
   for (const BodyPair& p : world.overlapping()) hit.insert({p.a, p.b});
   for (const SensorPair& p : world.sensing()) sensing.insert(p.sensor);
-  std::ostringstream caption;
+  std::set<std::uint64_t> categories;
+  std::size_t bullets = 0;
+  for (const BodyId id : world.bodies()) {
+    if (!world.is_static(id) && !world.is_sensor(id)) categories.insert(world.filter(id).category);
+    bullets += world.is_continuous(id);
+  }
+  const auto layer = [&categories](std::uint64_t category) {
+    const auto rank = static_cast<std::size_t>(std::distance(categories.begin(), categories.find(category)));
+    return rank % std::size(kLayerColours);
+  };
   const RunSummary totals = run.totals();
-  caption << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors
-          << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "
-          << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green segments)";
-  // The caption spans at most 98% of the width at 0.6 em a character, more than a sans-serif font's
-  // average, and is 14 pixels high where that allows (the picture is 1000 pixels wide), in a strip
-  // below the arena twice its height. Sized by the arena's height instead, it would run past the
-  // right edge of a square scene.
-  const double chars = static_cast<double>(caption.str().size());
-  const double font = std::min(0.98 * size.x() / (0.6 * chars), 0.014 * size.x());
-  const double height = size.y() + 2 * font;
+  std::ostringstream line1, line2;
+  line1 << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors
+        << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "
+        << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green, ringed)";
+  line2 << "moving bodies by filter category:";
+  for (const std::uint64_t c : categories) line2 << ' ' << c << ' ' << kLayerColours[layer(c)].second << ',';
+  line2 << ' ' << bullets << " continuous (magenta rings)";
+  const SvgLayout at = layout(size, line1.str(), line2.str());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << arena.min.x() << ' ' << -arena.max.y() << ' '
-      << size.x() << ' ' << height << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * height / size.x())
-      << "\">\n"
-      << "<style>.body{fill:#9db4cc;stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}"
-         ".body.hit{fill:#e74c3c;stroke:#7b241c}"
+      << size.x() << ' ' << at.height << "\" width=\"1000\" height=\"" << static_cast<int>(1000 * at.height / size.x())
+      << "\">\n<style>.body{stroke:#34495e;vector-effect:non-scaling-stroke;stroke-width:0.5}";
+  for (std::size_t k = 0; k < std::size(kLayerColours); ++k)
+    out << ".layer" << k << "{fill:" << kLayerColours[k].first << '}';
+  out << ".body.hit{fill:#e74c3c;stroke:#7b241c}"
          ".static{fill:#5d6d7e;stroke:#1c2833;vector-effect:non-scaling-stroke;stroke-width:0.5}"
          ".static.hit{fill:#943126}"
          ".sensor{fill:none;stroke:#b9770e;vector-effect:non-scaling-stroke;stroke-width:1.5;stroke-dasharray:6 4}"
          ".sensor.sensing{fill:#f8c471;fill-opacity:0.35}"
-         ".near{stroke:#1e8449;vector-effect:non-scaling-stroke;stroke-width:1}"
+         ".near{fill:none;stroke:#1e8449;vector-effect:non-scaling-stroke;stroke-width:1}"
+         ".bullet{fill:none;stroke:#c0399b;vector-effect:non-scaling-stroke;stroke-width:1.5}"
          "text{font-family:sans-serif}</style>\n"
       << "<rect x=\"" << arena.min.x() << "\" y=\"" << -arena.max.y() << "\" width=\"" << size.x() << "\" height=\""
       << size.y() << "\" fill=\"#fbfcfc\" stroke=\"#566573\" vector-effect=\"non-scaling-stroke\"/>\n"
@@ -170,18 +206,33 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   for (const bool sensors : {false, true}) {
     for (const BodyId id : world.bodies()) {
       if (world.is_sensor(id) != sensors) continue;
-      const std::string css =
-          sensors ? (sensing.count(id) ? "sensor sensing" : "sensor")
-                  : std::string(world.is_static(id) ? "static" : "body") + (hit.count(id) ? " hit" : "");
+      std::string css = sensors               ? (sensing.count(id) ? "sensor sensing" : "sensor")
+                        : world.is_static(id) ? "static"
+                                              : "body layer" + std::to_string(layer(world.filter(id).category));
+      if (!sensors && hit.count(id)) css += " hit";
       svg_shape(out, world.shape(id), css.c_str());
     }
+  }
+  // Markers a few pixels across, so that what the caption counts shows at any scale: a ring around
+  // each continuous body (a bullet may be smaller than a pixel), and around the middle of each
+  // proximity segment (a pair a pixel apart draws a segment a pixel long).
+  const auto ring = [&](const char* css, const Vec2& centre, double pixels) {
+    out << "<circle class=\"" << css << "\" cx=\"" << centre.x() << "\" cy=\"" << centre.y() << "\" r=\""
+        << pixels * at.pixel << "\"/>\n";
+  };
+  for (const BodyId id : world.bodies()) {
+    if (world.is_continuous(id)) ring("bullet", world.pose(id).position, 6);
   }
   for (const Proximity& p : world.proximity()) {
     out << "<line class=\"near\" x1=\"" << p.result.point_a.x() << "\" y1=\"" << p.result.point_a.y() << "\" x2=\""
         << p.result.point_b.x() << "\" y2=\"" << p.result.point_b.y() << "\"/>\n";
+    ring("near", 0.5 * (p.result.point_a + p.result.point_b), 3);
   }
-  out << "</g>\n<text x=\"" << arena.min.x() + 0.01 * size.x() << "\" y=\"" << -arena.min.y() + 1.5 * font
-      << "\" font-size=\"" << font << "\">" << caption.str() << "</text>\n</svg>\n";
+  out << "</g>\n";
+  const double x = arena.min.x() + 0.01 * size.x();
+  out << "<text x=\"" << x << "\" y=\"" << -arena.min.y() + 1.5 * at.font << "\" font-size=\"" << at.font << "\">"
+      << line1.str() << "</text>\n<text x=\"" << x << "\" y=\"" << -arena.min.y() + 3 * at.font << "\" font-size=\""
+      << at.font << "\">" << line2.str() << "</text>\n</svg>\n";
 }
 
 }  // namespace collide2d::tool

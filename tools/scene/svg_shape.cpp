@@ -1,5 +1,6 @@
 #include "tools/scene/svg_shape.h"
 
+#include <cmath>
 #include <numbers>
 #include <ostream>
 #include <type_traits>
@@ -7,7 +8,11 @@
 namespace collide2d::tool {
 namespace {
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+// In (-180, 180]: a scene's angles grow without bound as bodies turn.
+double degrees(double radians) {
+  const double d = std::remainder(radians * 180.0 / std::numbers::pi, 360.0);
+  return d == -180.0 ? 180.0 : d;
+}
 
 }  // namespace
 
