@@ -1,6 +1,7 @@
 #include <collide2d/query.h>
 
 #include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
@@ -43,22 +44,24 @@ DistanceResult distance_kernel(const Circle& a, const Circle& b) { return distan
 DistanceResult distance_kernel(const Circle& a, const Ellipse& b) { return distance_circle_ellipse(a, b); }
 DistanceResult distance_kernel(const Ellipse& a, const Ellipse& b) { return distance_ellipse_ellipse(a, b); }
 
-Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, const ContactOptions& o) {
-  return contact_rect_rect(a, oa, b, ob, o);
+// `prefer_b`: the kernel's B is the caller's A, whose face a rectangle pair's manifold prefers.
+Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, const ContactOptions& o, bool prefer_b) {
+  return detail::contact_rect_rect(a, oa, b, ob, o,
+                                   prefer_b ? detail::PreferredFace::of_b : detail::PreferredFace::of_a);
 }
-Contact contact_kernel(const Rect& a, const O& oa, const Circle& b, const O&, const ContactOptions&) {
+Contact contact_kernel(const Rect& a, const O& oa, const Circle& b, const O&, const ContactOptions&, bool) {
   return contact_rect_circle(a, oa, b);
 }
-Contact contact_kernel(const Rect& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o) {
+Contact contact_kernel(const Rect& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o, bool) {
   return contact_rect_ellipse(a, oa, b, ob, o);
 }
-Contact contact_kernel(const Circle& a, const O&, const Circle& b, const O&, const ContactOptions&) {
+Contact contact_kernel(const Circle& a, const O&, const Circle& b, const O&, const ContactOptions&, bool) {
   return contact_circle_circle(a, b);
 }
-Contact contact_kernel(const Circle& a, const O&, const Ellipse& b, const O& ob, const ContactOptions&) {
+Contact contact_kernel(const Circle& a, const O&, const Ellipse& b, const O& ob, const ContactOptions&, bool) {
   return contact_circle_ellipse(a, b, ob);
 }
-Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o) {
+Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o, bool) {
   return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
 
@@ -167,10 +170,10 @@ Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
 Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
                 const ContactOptions& options) {
   return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
-    if (!swapped) return contact_kernel(x, a_orientation, y, b_orientation, options);
+    if (!swapped) return contact_kernel(x, a_orientation, y, b_orientation, options, false);
     ContactOptions reversed = options;
     reversed.guess = -options.guess;
-    return contact_kernel(x, b_orientation, y, a_orientation, reversed).swapped();
+    return contact_kernel(x, b_orientation, y, a_orientation, reversed, true).swapped();
   });
 }
 

@@ -93,7 +93,9 @@ struct Contact {
   Vec2 point_b = Vec2::Zero();
   /// The manifold: one point for curved pairs (the one above); for two rectangles the points of the
   /// incident face clipped to the reference face (Box2D's b2CollidePolygons), deepest first, each
-  /// with its own separation (two for a face resting on a face).
+  /// with its own separation (two for a face resting on a face). The reference face is A's deepest
+  /// unless B's is deeper by more than 1e-9 of the sum of the half extents, so that ids hold where
+  /// the faces tie; separation and normal stay the exact maximum.
   std::array<ContactPoint, 2> manifold{};
   int manifold_size = 1;
   int evaluations = 0;  ///< support evaluations of a curved pair's search (0 for closed forms)

@@ -1,3 +1,4 @@
+#include "narrowphase/contact/contact_rect_rect.h"
 #include <collide2d/kernels.h>
 #include "narrowphase/frames/rect_pair_frame.h"
 
@@ -101,34 +102,9 @@ Feature nearest_corners(const View& v) {
   return best;
 }
 
-}  // namespace
-
-// Separating axes give the signed distance wherever a face is involved: overlapping convex polygons
-// always (the deepest way out is along a face normal of one of them), apart ones unless their
-// nearest features are two corners. The reference face is the face of greatest separation (A's on
-// a tie), the incident face the other rectangle's face most opposed to it, clipped to the
-// reference face's side planes as in Box2D's b2CollidePolygons. Unlike Box2D no tolerance favours
-// A's faces: the separation is the exact maximum, and the ids change only where the geometry's
-// deepest face does.
-Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options) {
-  return contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle), options);
-}
-
-Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
-                          const Orientation& b_orientation, const ContactOptions& options) {
-  const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
-  const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
-  const View* view = &from_a;
-  int k = 0;
-  double best = -std::numeric_limits<double>::infinity();
-  for (const View* v : {&from_a, &from_b}) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const double s = v->face_separation(axis);
-      if (s > best) best = s, view = v, k = axis;
-    }
-  }
-  const View& v = *view;
+// The contact with the reference face k of view v, whose separation is `best`.
+Contact contact_on(const detail::RectPairFrame& f, const Rect& a, const View& v, int k, double best,
+                   const ContactOptions& options) {
   const auto to_a = [&](const Vec2& p) -> Vec2 { return v.ref_is_a ? p : Vec2(f.b_center + f.b_rel.apply(p)); };
   const auto to_world = [&](const Vec2& p) -> Vec2 { return a.center + f.a_rot.apply(to_a(p)); };
   const auto direction_to_world = [&](const Vec2& n) -> Vec2 {
@@ -187,6 +163,65 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
     if (x.separation <= keep) out.manifold[size++] = on_face(x);
   }
   out.manifold_size = std::max(size, 1);
+  return out;
+}
+
+// The deepest face of v's reference rectangle: its axis and separation.
+struct Face {
+  int k = 0;
+  double separation = -std::numeric_limits<double>::infinity();
+};
+Face deepest_face(const View& v) {
+  Face out;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double s = v.face_separation(axis);
+    if (s > out.separation) out = {axis, s};
+  }
+  return out;
+}
+
+}  // namespace
+
+// Separating axes give the signed distance wherever a face is involved: overlapping convex polygons
+// always (the deepest way out is along a face normal of one of them), apart ones unless their
+// nearest features are two corners. The separation and the normal are those of the face of
+// greatest separation, the exact maximum (A's on a tie). The manifold's reference face is the
+// preferred side's deepest face (A's for the kernel, the first argument's for the queries) unless
+// the other side's is deeper by more than 1e-9 of the pair's size, as Box2D's b2CollidePolygons
+// prefers A's by 0.1 linearSlop (absolute there; relative here, to hold at every scale): a box
+// sliding on a box of equal face separation keeps its feature ids where rounding, or the kernel
+// order of the two, would swap the faces. The incident face is the other rectangle's face most opposed
+// to the reference face, clipped to its side planes.
+Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options) {
+  return contact_rect_rect(a, Orientation::of(a.angle), b, Orientation::of(b.angle), options);
+}
+
+Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                          const Orientation& b_orientation, const ContactOptions& options) {
+  return detail::contact_rect_rect(a, a_orientation, b, b_orientation, options, detail::PreferredFace::of_a);
+}
+
+Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
+                                  const Orientation& b_orientation, const ContactOptions& options,
+                                  PreferredFace preferred) {
+  const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
+  const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
+  const Face on_a = deepest_face(from_a), on_b = deepest_face(from_b);
+  const bool b_deepest = on_b.separation > on_a.separation;
+  Contact out = b_deepest ? contact_on(f, a, from_b, on_b.k, on_b.separation, options)
+                          : contact_on(f, a, from_a, on_a.k, on_a.separation, options);
+  const bool on_preferred = b_deepest == (preferred == PreferredFace::of_b);
+  const double bias = 1e-9 * (a.half_extents.sum() + b.half_extents.sum());
+  if (on_preferred || std::abs(on_b.separation - on_a.separation) > bias ||
+      feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) {
+    return out;
+  }
+  const Contact kept = b_deepest ? contact_on(f, a, from_a, on_a.k, on_a.separation, options)
+                                 : contact_on(f, a, from_b, on_b.k, on_b.separation, options);
+  if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
+  out.manifold = kept.manifold;
+  out.manifold_size = kept.manifold_size;
   return out;
 }
 
