@@ -24,7 +24,8 @@ struct Motion {
 /// What a time of impact may use beyond the shapes and motions.
 struct ToiOptions {
   /// The separation at which contact counts; 0 means 1e-9 of the two shapes' reaches summed. It is
-  /// raised to 8 u of the largest coordinates the step reaches, below which poses are not resolved.
+  /// raised to 8 u of the pair's coordinates relative to A (|c_B - c_A| + |v_B - v_A|), below which
+  /// poses are not resolved; the pair's offset from the origin does not count.
   double tolerance = 0.0;
   /// Steps at most (each a contact or a climb); then the status is stalled.
   int max_iterations = 1000;
@@ -32,8 +33,9 @@ struct ToiOptions {
 
 /// How a time of impact ended.
 enum class ToiStatus {
-  hit,          ///< the separation at t is within (0, tolerance]: they first touch at or after t, at
-                ///< most tolerance / (closing speed) later
+  hit,          ///< the separation of the exact poses at t is within (0, tolerance]: they first touch
+                ///< at or after t, at most tolerance / (closing speed) later. Poses computed in
+                ///< double add their rounding, u |c + t v| per coordinate.
   miss,         ///< they do not touch during the step
   overlapping,  ///< they overlap at t = 0
   stalled,      ///< max_iterations steps did not decide (a grazing spin); they do not touch before t

@@ -276,16 +276,14 @@ Shape at_time(const Shape& s, const Motion& m, double t) {
       s);
 }
 
-TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion,
-                            const ToiOptions& options) {
-  validate(a, a_motion, "A");
-  validate(b, b_motion, "B");
-  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
-    detail::reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
-  }
+namespace {
+
+// The first contact of a pair in A's frame of translation (A's centre at the origin, at rest).
+TimeOfImpact relative_time_of_impact(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion,
+                                     const ToiOptions& options) {
   // Poses along the step are rounded to their coordinates' ulps, and a separation below that cannot
-  // be kept: a step aimed closer could land on a rounded pose that overlaps (a bullet 1e6 from the
-  // origin, with a tolerance of 1e-12, did). The tolerance is at least 8 u of the coordinates.
+  // be kept: a step aimed closer could land on a rounded pose that overlaps. The tolerance is at
+  // least 8 u of the coordinates (relative to A's centre, so of the pair's own extent and motion).
   const double coordinates = center_of(a).cwiseAbs().maxCoeff() + a_motion.velocity.cwiseAbs().maxCoeff() +
                              center_of(b).cwiseAbs().maxCoeff() + b_motion.velocity.cwiseAbs().maxCoeff();
   const double tolerance = std::max(options.tolerance > 0 ? options.tolerance : 1e-9 * (reach_of(a) + reach_of(b)),
@@ -349,6 +347,26 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
     if (k == options.max_iterations) return result(ToiStatus::stalled, t, exact(), k);
     t += step;
   }
+}
+
+}  // namespace
+
+// Solved relative to A: the poses along the step then round to the pair's own coordinates, not to
+// its offset from the origin, which at 1e6 would cost more than the default tolerance.
+TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion,
+                            const ToiOptions& options) {
+  validate(a, a_motion, "A");
+  validate(b, b_motion, "B");
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
+    detail::reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
+  }
+  const Vec2 origin = center_of(a);
+  const auto relative = [&origin](const Shape& s) { return at_time(s, {Vec2(-origin), 0.0}, 1.0); };
+  TimeOfImpact r =
+      relative_time_of_impact(relative(a), {Vec2::Zero(), a_motion.angular_velocity}, relative(b),
+                              {Vec2(b_motion.velocity - a_motion.velocity), b_motion.angular_velocity}, options);
+  r.point += origin + r.t * a_motion.velocity;
+  return r;
 }
 
 std::optional<CastHit> shape_cast(const Shape& shape, const Vec2& translation, const Shape& target,

@@ -157,6 +157,72 @@ TEST(TimeOfImpact, NeverAfterTheFirstContact) {
               checked, most);
 }
 
+// The separation, in 50 digits, of two circles, or of two axis-aligned rectangles, at time t of
+// their motions: the poses c + t v exact, not rounded to doubles.
+reference::Real separation_at(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, double t) {
+  using reference::Real;
+  const auto at = [t](const Shape& s, const Motion& m, int k) {
+    return Real(center_of(s)[k]) + Real(t) * Real(m.velocity[k]);
+  };
+  const Real dx = at(b, mb, 0) - at(a, ma, 0), dy = at(b, mb, 1) - at(a, ma, 1);
+  if (const auto* ca = std::get_if<Circle>(&a)) {
+    return boost::multiprecision::sqrt(dx * dx + dy * dy) - Real(ca->radius) - Real(std::get<Circle>(b).radius);
+  }
+  const Vec2 ha = std::get<Rect>(a).half_extents, hb = std::get<Rect>(b).half_extents;
+  const Real gx = abs(dx) - Real(ha.x()) - Real(hb.x()), gy = abs(dy) - Real(ha.y()) - Real(hb.y());
+  if (gx > 0 && gy > 0) return boost::multiprecision::sqrt(gx * gx + gy * gy);
+  return gx > gy ? gx : gy;
+}
+
+// Far from the origin the pair is solved relative to A, so the documented bound holds where the
+// poses are exact: at the time reported, the exact separation of the exact poses lies in
+// (0, tolerance], tolerance 1e-9 of the reaches, up to the rounding of the pair's relative
+// coordinates (16 u of them). Circles and axis-aligned rectangles (their separation in closed form)
+// at offsets of 1e6 and 1e9, closing at random speeds, and the pair near (-1e6, -7e5) that landed
+// at 2.3 tolerances.
+TEST(TimeOfImpact, FarFromTheOriginKeepsItsBound) {
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> u(-1, 1);
+  struct Pair {
+    Shape a, b;
+    Motion ma, mb;
+  };
+  std::vector<Pair> pairs = {{Circle{{-1000000.0, -700000.0}, 0.2678036854418022},
+                              Circle{{-1000003.036265183, -699998.7082726184}, 0.745590260396122},
+                              {},
+                              {{2.634324061738085, -2.183742880388848}, 0.0}}};
+  for (const double offset : {1e6, 1e9}) {
+    for (int k = 0; k < 300; ++k) {
+      const Vec2 at(offset * u(rng), offset * u(rng)), gap(3 * u(rng), 3 * u(rng));
+      const Motion ma{{2 * u(rng), 2 * u(rng)}, 0.0}, mb{Vec2(-gap * (1.2 + u(rng) * 0.1) + ma.velocity), 0.0};
+      if (k % 2 == 0) {
+        pairs.push_back({Circle{at, 0.1 + 0.5 * (u(rng) + 1)}, Circle{at + gap, 0.1 + 0.5 * (u(rng) + 1)}, ma, mb});
+      } else {
+        pairs.push_back({Rect{at, {0.2 + 0.3 * (u(rng) + 1), 0.2 + 0.3 * (u(rng) + 1)}, 0},
+                         Rect{at + gap, {0.2 + 0.3 * (u(rng) + 1), 0.2 + 0.3 * (u(rng) + 1)}, 0}, ma, mb});
+      }
+    }
+  }
+  int hits = 0;
+  double worst = 0;  // of the tolerance
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const Pair& p = pairs[k];
+    if (overlaps(p.a, p.b)) continue;
+    const TimeOfImpact got = time_of_impact(p.a, p.ma, p.b, p.mb);
+    if (got.status != ToiStatus::hit) continue;
+    ++hits;
+    const double tolerance = 1e-9 * (reach_of(p.a) + reach_of(p.b));
+    const Vec2 relative = center_of(p.b) - center_of(p.a), closing = p.mb.velocity - p.ma.velocity;
+    const double rounding = 16 * kU * (relative.norm() + closing.norm() + reach_of(p.a) + reach_of(p.b));
+    const double d = static_cast<double>(separation_at(p.a, p.ma, p.b, p.mb, got.t));
+    worst = std::max(worst, d / tolerance);
+    EXPECT_GT(d, -rounding) << "pair " << k;
+    EXPECT_LE(d, tolerance + rounding) << "pair " << k << ": " << d / tolerance << " tolerances";
+  }
+  EXPECT_GT(hits, 500);
+  std::printf("[toi] far from the origin: %d hits, worst separation %.2f of the tolerance\n", hits, worst);
+}
+
 // A circle of radius 0.5 cast 4 to the right at a box whose face is 2.5 away from its edge: the
 // fraction 2.5 / 4, the point on the face, the box's outward normal (towards the circle); a cast
 // that stops short misses; one that starts in overlap hits at 0.
@@ -332,12 +398,13 @@ TEST(TimeOfImpact, MatchesTheReferenceOnEveryFamily) {
       }
       ++hits;
       ASSERT_TRUE(got.status == ToiStatus::hit || got.status == ToiStatus::overlapping) << what;
-      EXPECT_LE(got.t, ref->touching + 1e-15) << what;
-      // Where the coordinates are large, time resolves only to their ulps over the closing speed.
+      // Where the coordinates are large, the reference's poses (rounded doubles) resolve time only to
+      // their ulps over the closing speed; FarFromTheOriginKeepsItsBound checks exact poses there.
       const double coordinates = center_of(c.a).cwiseAbs().maxCoeff() + center_of(c.b).cwiseAbs().maxCoeff() +
                                  c.ma.velocity.cwiseAbs().maxCoeff() + c.mb.velocity.cwiseAbs().maxCoeff();
       const double speed = (c.mb.velocity - c.ma.velocity).norm();
       const double resolution = speed > 0 ? 16 * kU * coordinates / speed : 0.0;
+      EXPECT_LE(got.t, ref->touching + 1e-15 + resolution) << what;
       if (!c.grazing) EXPECT_GE(got.t, ref->apart - 1e-9 - resolution) << what;
       earliest = std::max(earliest, ref->apart - got.t);
     }
