@@ -399,6 +399,34 @@ TEST(World, EventsOfRemovedBodiesAreWholeRecords) {
   EXPECT_TRUE(world.contains(player));
 }
 
+// A is the lower slot: a player re-added into a lower slot than the crate's comes first, and its
+// contact's normal turns round; the user ids in the record say which is which.
+TEST(World, RecordsNameTheirBodiesByUserId) {
+  World world({.contacts = true});
+  const BodyId spare = world.add(Circle{Vec2(50, 50), 1});
+  const BodyId crate = world.add(Rect{Vec2(0, 0), Vec2(1, 1), 0}, {.user_id = 7});
+  BodyId player = world.add(Circle{Vec2(0, 1.5), 1}, {.user_id = 3});
+  world.update();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const BodyContact before = world.contacts()[0];
+  EXPECT_EQ(before.user_a, 7u);
+  EXPECT_EQ(before.user_b, 3u);
+  world.remove(player);
+  world.remove(spare);
+  player = world.add(Circle{Vec2(0, 1.5), 1}, {.user_id = 3});  // into the spare's slot, below the crate's
+  world.update();
+  ASSERT_EQ(world.contacts().size(), 1u);
+  const BodyContact after = world.contacts()[0];
+  EXPECT_EQ(after.a, player);
+  EXPECT_EQ(after.b, crate);
+  EXPECT_EQ(after.user_a, 3u);
+  EXPECT_EQ(after.user_b, 7u);
+  EXPECT_EQ(after.contact.normal, Vec2(-before.contact.normal));
+  // Oriented by the user ids, crate to player, the normal is the same as before.
+  const Vec2 crate_to_player = after.user_a == 7 ? after.contact.normal : Vec2(-after.contact.normal);
+  EXPECT_EQ(crate_to_player, before.contact.normal);
+}
+
 // A handle kept past remove() is refused, also once a new body has taken its slot, and the new
 // body is untouched by calls made with it.
 TEST(World, StaleHandlesAreRefusedAfterTheirSlotIsReused) {
