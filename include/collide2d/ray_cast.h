@@ -13,12 +13,12 @@ namespace collide2d {
 struct RayShapeHit {
   double distance = 0.0;  ///< t at the hit
   Vec2 point = Vec2::Zero();
-  Vec2 normal = Vec2::Zero();  ///< outward unit normal at the hit; zero when the ray starts inside
+  Vec2 normal = Vec2::Zero();  ///< outward unit normal at the hit; zero exactly when contains(shape, origin)
 };
 
 /// The first point of the shape on the ray origin + t direction, 0 <= t <= max_distance, or nullopt.
-/// A ray that starts inside the shape hits it at t = 0. Contract: a valid shape, a finite origin, a
-/// unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
+/// A ray that starts in the shape (contains(shape, origin)) hits it at t = 0. Contract: a valid shape, a finite origin,
+/// a unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
 std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction, double max_distance);
 
 }  // namespace collide2d

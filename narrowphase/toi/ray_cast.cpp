@@ -16,32 +16,33 @@ std::optional<RayShapeHit> hit_at(double t, const Vec2& origin, const Vec2& dire
   return RayShapeHit{t, origin + t * direction, normal};
 }
 
-// In the ellipse frame the ray o + t d meets the curve where b^2 (o.x + t d.x)^2 + a^2 (o.y + t d.y)^2
-// = a^2 b^2: A t^2 + 2 B t + C = 0 with A = b^2 d.x^2 + a^2 d.y^2, B = b^2 o.x d.x + a^2 o.y d.y and
-// C = b^2 o.x^2 + a^2 o.y^2 - a^2 b^2. Its discriminant B^2 - A C equals a^2 b^2 (A - (o x d)^2): the
-// line meets the ellipse when its distance from the centre, |o x d| / |d|, is within the ellipse's
-// half-width across it, sqrt(A) / |d|. The discriminant is computed in that form: B^2 - A C itself
-// cancels to rounding noise for a needle seen from afar (a = 1e-20, b = 3.7, 12 away: both terms
-// near 1e81, their difference 1e39), which the World fuzzer caught as a hit 15 beyond the needle's
-// end. The entering root is taken as C / (-B + a b sqrt(A - (o x d)^2)), which does not cancel
-// (B < 0 for a ray that approaches).
+// In the ellipse frame the ray o + t d (|d| = 1) meets the curve where b^2 (o.x + t d.x)^2 + a^2 (o.y +
+// t d.y)^2 = a^2 b^2: A t^2 + 2 B t + C = 0 with A = b^2 d.x^2 + a^2 d.y^2, B = b^2 o.x d.x + a^2 o.y d.y
+// and C = b^2 o.x^2 + a^2 o.y^2 - a^2 b^2. Its discriminant B^2 - A C equals a^2 b^2 (A - (o x d)^2):
+// the line meets the ellipse when its distance from the centre, |o x d|, is within the ellipse's
+// half-width across it, sqrt(A). The discriminant is computed in that form because B^2 - A C cancels
+// to rounding noise for a needle seen from afar (a = 1e-20, b = 3.7, 12 away: both terms near 1e81,
+// their difference 1e39). The entering root is taken as C / (-B + a b sqrt(A - (o x d)^2)), which does
+// not cancel (B < 0 for a ray that approaches). The normal comes from the hit measured from the
+// line's closest point to the centre, m = (o x d) (d.y, -d.x), not from o + t d: for an ellipse far
+// smaller than its distance, o + t d rounds to the centre itself and has no direction.
 std::optional<RayShapeHit> cast(const Ellipse& e, const Vec2& origin, const Vec2& direction, double max_distance) {
   const Rot rot = Rot::of(e.angle);
   const Vec2 o = rot.apply_inverse(Vec2(origin - e.center));
   const Vec2 d = rot.apply_inverse(direction);
   const double a2 = e.a * e.a, b2 = e.b * e.b;
-  if ((o.x() / e.a) * (o.x() / e.a) + (o.y() / e.b) * (o.y() / e.b) <= 1.0) {
-    return hit_at(0.0, origin, direction, Vec2::Zero(), max_distance);
-  }
   const double a_coef = b2 * d.x() * d.x() + a2 * d.y() * d.y();
   const double b_coef = b2 * o.x() * d.x() + a2 * o.y() * d.y();
   const double cross = o.x() * d.y() - o.y() * d.x();
   const double gap = a_coef - cross * cross;
   if (b_coef >= 0.0 || gap < 0.0) return std::nullopt;
+  const double root = e.a * e.b * std::sqrt(gap);
   const double c_coef = b2 * o.x() * o.x() + a2 * o.y() * o.y() - a2 * b2;
-  const double t = c_coef / (-b_coef + e.a * e.b * std::sqrt(gap));
-  const Vec2 local = o + t * d;
-  const Vec2 normal = rot.apply(Vec2(local.x() / a2, local.y() / b2)).normalized();
+  const double t = std::max(c_coef / (-b_coef + root), 0.0);
+  const Vec2 m = cross * Vec2(d.y(), -d.x());
+  const double m_coef = b2 * m.x() * d.x() + a2 * m.y() * d.y();
+  const Vec2 local = m - ((m_coef + root) / a_coef) * d;
+  const Vec2 normal = rot.apply(Vec2(local.x() / e.a / e.a, local.y() / e.b / e.b)).stableNormalized();
   return hit_at(t, origin, direction, normal, max_distance);
 }
 
@@ -49,7 +50,8 @@ std::optional<RayShapeHit> cast(const Circle& c, const Vec2& origin, const Vec2&
   return cast(Ellipse{c.center, c.radius, c.radius, 0.0}, origin, direction, max_distance);
 }
 
-// Slabs in the rectangle frame: the ray enters at the largest of the per-axis entry parameters.
+// Slabs in the rectangle frame: the ray enters at the largest of the per-axis entry parameters. The
+// origin is outside (ray_cast tests that first), so one slab has an entry and gives the normal.
 std::optional<RayShapeHit> cast(const Rect& r, const Vec2& origin, const Vec2& direction, double max_distance) {
   const Rot rot = Rot::of(r.angle);
   const Vec2 o = rot.apply_inverse(Vec2(origin - r.center));
@@ -74,14 +76,16 @@ std::optional<RayShapeHit> cast(const Rect& r, const Vec2& origin, const Vec2& d
     leave = std::min(leave, std::max(t0, t1));
   }
   if (enter > leave || leave < 0.0) return std::nullopt;
-  if (enter <= 0.0) return hit_at(0.0, origin, direction, Vec2::Zero(), max_distance);
-  return hit_at(enter, origin, direction, rot.apply(normal), max_distance);
+  return hit_at(std::max(enter, 0.0), origin, direction, rot.apply(normal), max_distance);
 }
 
 }  // namespace
 
 std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction,
                                     double max_distance) {
+  // Inside is decided by contains() alone, so a caller that skips the shapes holding the origin and
+  // a zero normal agree to the last bit.
+  if (contains(shape, origin)) return hit_at(0.0, origin, direction, Vec2::Zero(), max_distance);
   return std::visit([&](const auto& s) { return cast(s, origin, direction, max_distance); }, shape);
 }
 

@@ -256,6 +256,41 @@ TEST(RayCast, NeedlesAndRoundEllipsesMatchTheQuadraticIn50Digits) {
   EXPECT_GT(misses, 500);
 }
 
+// A shape far smaller than its distance from the origin: the hit point o + t d rounds to the centre
+// itself, so the normal has to come from elsewhere. Aimed along an axis at a circle or an axis-aligned
+// ellipse, the answer is exact: the normal is -d. Aimed at a shape of any size and turn from any
+// distance, a hit beyond the origin has a unit normal facing the ray, since a zero normal means the ray
+// starts inside (the World's skip rule reads it).
+TEST(RayCast, TinyShapesFarAwayHaveAUnitNormal) {
+  const Vec2 axes[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (const double size : {1e-50, 1e-30, 1e-12, 1.0}) {
+    for (const Vec2& d : axes) {
+      for (const Shape& s : {Shape(Circle{{0, 0}, size}), Shape(Ellipse{{0, 0}, size, 3 * size, 0.0})}) {
+        const auto hit = ray_cast(s, Vec2(-5e3 * d), d, 1e4);
+        ASSERT_TRUE(hit.has_value()) << size;
+        EXPECT_EQ(hit->normal, Vec2(-d)) << size << ' ' << d.transpose();
+      }
+    }
+  }
+  Rng rng(43);
+  int hits = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double size = std::pow(10.0, -uniform(rng, 0, 50));
+    const double angle = uniform(rng, -3.2, 3.2);
+    const Vec2 c(uniform(rng, -2, 2), uniform(rng, -2, 2));
+    const Shape shapes[] = {Circle{c, size}, Ellipse{c, size, size * uniform(rng, 0.01, 100), angle},
+                            Rect{c, Vec2(size, size * uniform(rng, 0.01, 100)), angle}};
+    const Shape& s = shapes[k % 3];
+    const Vec2 origin = c + std::pow(10.0, uniform(rng, 0, 8)) * Vec2(uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const Vec2 unit = Vec2(c - origin).normalized();
+    const auto hit = ray_cast(s, origin, unit, 1e9);
+    if (!hit || contains(s, origin)) continue;
+    ++hits;
+    EXPECT_NEAR(hit->normal.norm(), 1.0, 1e-15) << k;
+    EXPECT_LE(hit->normal.dot(unit), 1e-12) << k;
+  }
+  EXPECT_GT(hits, 5000);
+}
 // Contacts: off by default and then empty; on, exactly the overlapping pairs (and, with a
 // speculative margin, the pairs whose contact separation is within it), each the contact the
 // narrow phase gives for the pair, in the order of overlapping(), over frames of motion.
