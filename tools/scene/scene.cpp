@@ -81,7 +81,8 @@ bool listed(std::initializer_list<const char*> names, const std::string& key) {
 void reject_unknown_fields(const json& b, const std::string& kind, const std::string& field) {
   const ShapeFields* own = nullptr;
   for (const ShapeFields& s : kShapeFields) own = kind == s.kind ? &s : own;
-  for (const auto& [key, value] : b.items()) {
+  for (const auto& item : b.items()) {
+    const std::string& key = item.key();
     if (listed(kBodyFields, key) || (own != nullptr && listed(own->fields, key))) continue;
     const bool elsewhere = std::any_of(std::begin(kShapeFields), std::end(kShapeFields),
                                        [&key](const ShapeFields& s) { return listed(s.fields, key); });
