@@ -13,8 +13,6 @@
 
 namespace collide2d {
 namespace detail {
-namespace {
-
 Shape posed(Shape shape, const Vec2& center, double angle) {
   std::visit(
       [&](auto& s) {
@@ -24,8 +22,6 @@ Shape posed(Shape shape, const Vec2& center, double angle) {
       shape);
   return shape;
 }
-
-}  // namespace
 
 void require_finite(double value, const char* what) {
   if (!std::isfinite(value))
@@ -54,20 +50,67 @@ bool WorldState::contains(BodyId id) const {
   return id.index < bodies_.size() && bodies_[id.index].alive && bodies_[id.index].generation == id.generation;
 }
 
+bool WorldState::contains(ShapeId id) const {
+  return id.index < parts_.size() && parts_[id.index].alive && parts_[id.index].generation == id.generation;
+}
+
+namespace {
+
+// A free slot of `slots`, the last one freed, or a new one at the end.
+template <class Slot>
+std::uint32_t take_slot(std::vector<Slot>& slots, std::vector<std::uint32_t>& free) {
+  if (free.empty()) {
+    slots.emplace_back();
+    return static_cast<std::uint32_t>(slots.size() - 1);
+  }
+  const std::uint32_t index = free.back();
+  free.pop_back();
+  return index;
+}
+
+// The error for a handle that names nothing: unknown, or stale (its slot has moved on since).
+[[noreturn]] void refuse(const char* what, std::uint32_t index, std::uint32_t generation, bool in_range,
+                         std::uint32_t slot_generation) {
+  const std::string name =
+      std::string(what) + ' ' + std::to_string(index) + " (generation " + std::to_string(generation) + ")";
+  if (!(in_range && generation != 0 && generation < slot_generation)) throw std::out_of_range("unknown " + name);
+  throw std::out_of_range("stale " + name + ": that " + what + " was removed; its slot is at generation " +
+                          std::to_string(slot_generation));
+}
+
+}  // namespace
+
 const WorldState::Body& WorldState::body(BodyId id) const {
   if (contains(id)) return bodies_[id.index];
-  const std::string name = "body " + std::to_string(id.index) + " (generation " + std::to_string(id.generation) + ")";
-  const bool stale = id.index < bodies_.size() && id.generation != 0 && id.generation < bodies_[id.index].generation;
-  if (!stale) throw std::out_of_range("unknown " + name);
-  throw std::out_of_range("stale " + name + ": that body was removed; its slot is at generation " +
-                          std::to_string(bodies_[id.index].generation));
+  const bool in_range = id.index < bodies_.size();
+  refuse("body", id.index, id.generation, in_range, in_range ? bodies_[id.index].generation : 0);
 }
 
 WorldState::Body& WorldState::body(BodyId id) { return const_cast<Body&>(std::as_const(*this).body(id)); }
 
+const WorldState::Part& WorldState::part(ShapeId id) const {
+  if (contains(id)) return parts_[id.index];
+  const bool in_range = id.index < parts_.size();
+  refuse("shape", id.index, id.generation, in_range, in_range ? parts_[id.index].generation : 0);
+}
+
+WorldState::Part& WorldState::part(ShapeId id) { return const_cast<Part&>(std::as_const(*this).part(id)); }
+
 void WorldState::set_filter(BodyId id, const Filter& filter) {
   require_not_querying("set_filter");
-  body(id).filter = filter;
+  Body& b = body(id);
+  b.filter = filter;
+  each_part(b, [&](std::uint32_t k) { parts_[k].filter = filter; });
+}
+
+void WorldState::set_filter(ShapeId id, const Filter& filter) {
+  require_not_querying("set_filter");
+  part(id).filter = filter;
+}
+
+void WorldState::set_sensor(ShapeId id, bool sensor) {
+  require_not_querying("set_sensor");
+  part(id).sensor = sensor;
 }
 
 void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) {
@@ -76,14 +119,22 @@ void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicat
 }
 
 bool WorldState::passes(std::uint32_t a, std::uint32_t b) const {
-  return should_pair(bodies_[a].filter, bodies_[b].filter) && (!pair_predicate_ || pair_predicate_(id_of(a), id_of(b)));
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
+  return should_pair(x.filter, y.filter) && (!pair_predicate_ || pair_predicate_(body_id(x.body), body_id(y.body)));
 }
 
 std::vector<BodyId> WorldState::bodies() const {
   std::vector<BodyId> out;
   for (std::uint32_t index = 0; index < bodies_.size(); ++index) {
-    if (bodies_[index].alive) out.push_back(id_of(index));
+    if (bodies_[index].alive) out.push_back(body_id(index));
   }
+  return out;
+}
+
+std::vector<ShapeId> WorldState::shapes(BodyId id) const {
+  std::vector<ShapeId> out;
+  each_part(body(id), [&](std::uint32_t k) { out.push_back(shape_id(k)); });
   return out;
 }
 
@@ -91,97 +142,171 @@ Aabb WorldState::broad_box(const Aabb& box) const {
   return grown(box, 0.5 * std::max(proximity_margin_, speculative_margin_));
 }
 
-Aabb WorldState::broad_box(const Body& b) const { return broad_box(b.continuous ? swept(b.start, b.shape) : b.box); }
+Aabb WorldState::broad_box(const Part& p) const { return broad_box(p.continuous ? swept(p.start, p.shape) : p.box); }
 
-// Into the broad phase of its kind: the static tree, or the sweep and prune and the moving tree.
+// Into the broad phase of its body's kind: the static tree, or the sweep and prune and the moving tree.
 void WorldState::enter(std::uint32_t index) {
-  Body& b = bodies_[index];
-  if (b.is_static) {
-    b.leaf = static_tree_.insert(broad_box(b), index);
+  Part& p = parts_[index];
+  if (p.is_static) {
+    p.leaf = static_tree_.insert(broad_box(p), index);
     statics_changed_ = true;
     return;
   }
-  b.proxy = broad_.insert(broad_box(b));
-  if (b.proxy >= body_of_.size()) body_of_.resize(static_cast<std::size_t>(b.proxy) + 1, kNoBody);
-  body_of_[b.proxy] = index;
-  b.leaf = moving_tree_.insert(broad_.fat_box(b.proxy), index);
-  b.loose = -1;
-  b.queried = kNowhere;
+  p.proxy = broad_.insert(broad_box(p));
+  if (p.proxy >= part_of_.size()) part_of_.resize(static_cast<std::size_t>(p.proxy) + 1, kNone);
+  part_of_[p.proxy] = index;
+  p.leaf = moving_tree_.insert(broad_.fat_box(p.proxy), index);
+  p.loose = -1;
+  p.queried = kNowhere;
 }
 
 void WorldState::leave(std::uint32_t index) {
-  Body& b = bodies_[index];
-  if (b.is_static) {
-    static_tree_.remove(b.leaf);
+  Part& p = parts_[index];
+  if (p.is_static) {
+    static_tree_.remove(p.leaf);
     statics_changed_ = true;
     return;
   }
-  broad_.remove(b.proxy);
-  body_of_[b.proxy] = kNoBody;
-  moving_tree_.remove(b.leaf);
-  if (b.loose >= 0) unloose(index);
-  b.statics.clear();
+  broad_.remove(p.proxy);
+  part_of_[p.proxy] = kNone;
+  moving_tree_.remove(p.leaf);
+  if (p.loose >= 0) unloose(index);
+  p.statics.clear();
 }
 
 void WorldState::unloose(std::uint32_t index) {
-  const auto at = static_cast<std::size_t>(bodies_[index].loose);
+  const auto at = static_cast<std::size_t>(parts_[index].loose);
   loose_[at] = loose_.back();
-  bodies_[loose_[at]].loose = static_cast<std::int32_t>(at);
+  parts_[loose_[at]].loose = static_cast<std::int32_t>(at);
   loose_.pop_back();
-  bodies_[index].loose = -1;
+  parts_[index].loose = -1;
 }
 
 // Its broad-phase box, after a new pose or margin.
 void WorldState::place(std::uint32_t index) {
-  Body& b = bodies_[index];
-  if (b.is_static) {
-    static_tree_.move(b.leaf, broad_box(b));
+  Part& p = parts_[index];
+  if (p.is_static) {
+    static_tree_.move(p.leaf, broad_box(p));
     statics_changed_ = true;
-  } else if (broad_.move(b.proxy, broad_box(b)) && b.loose < 0) {
-    b.loose = static_cast<std::int32_t>(loose_.size());
+  } else if (broad_.move(p.proxy, broad_box(p)) && p.loose < 0) {
+    p.loose = static_cast<std::int32_t>(loose_.size());
     loose_.push_back(index);
   }
 }
 
-BodyId WorldState::add(const Shape& shape, const BodyDef& def) {
-  require_not_querying("add");
-  validate(shape);
-  std::uint32_t index;
-  if (free_.empty()) {
-    index = static_cast<std::uint32_t>(bodies_.size());
-    bodies_.emplace_back();
+// A shape where its body's pose puts it: its world angle is the body's plus its own, and its
+// orientation that angle's (the kernels' contract), not the two rotations composed.
+void WorldState::pose_part(Part& p, const Pose& at, const Orientation& turn) {
+  if (p.at_origin) {
+    p.shape = posed(p.local, at.position, at.angle);
   } else {
-    index = free_.back();
-    free_.pop_back();
+    const Vec2 offset = center_of(p.local);
+    const Vec2 center =
+        at.position + Vec2(turn.c * offset.x() - turn.s * offset.y(), turn.s * offset.x() + turn.c * offset.y());
+    p.shape = posed(p.local, center, at.angle + angle_of(p.local));
   }
+  p.orientation = Orientation::of(angle_of(p.shape));
+  p.box = aabb(p.shape, p.orientation);
+}
+
+// A new shape of body `body`, last in its list, posed and in the broad phase; def.shape is valid.
+std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
+  const std::uint32_t index = take_slot(parts_, free_parts_);
+  Body& b = bodies_[body];
+  Part& p = parts_[index];  // a reused slot keeps the generation free_part() gave it
+  p.local = def.shape;
+  p.at_origin = center_of(def.shape) == Vec2::Zero() && angle_of(def.shape) == 0.0;
+  p.body = body;
+  p.next = kNone;
+  p.user_id = def.user_id.value_or(b.user_id);
+  p.filter = def.filter.value_or(b.filter);
+  p.sensor = def.sensor.value_or(b.sensor);
+  p.is_static = b.is_static;
+  p.continuous = b.continuous;
+  p.alive = true;
+  pose_part(p, b.pose, Orientation::of(b.pose.angle));
+  p.start = p.shape;
+  if (b.continuous) continuous_.push_back(index);
+  std::uint32_t* link = &b.first;
+  while (*link != kNone) link = &parts_[*link].next;
+  *link = index;
+  ++b.count;
+  enter(index);
+  return index;
+}
+
+void WorldState::free_part(std::uint32_t index) {
+  Part& p = parts_[index];
+  if (p.continuous) continuous_.erase(std::find(continuous_.begin(), continuous_.end(), index));
+  leave(index);
+  p.alive = false;
+  p.generation = p.generation == UINT32_MAX ? 1 : p.generation + 1;  // 0 names no shape
+  free_parts_.push_back(index);
+}
+
+BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
+  require_not_querying("add");
+  validate_point(pose.position, "add position");
+  require_finite(pose.angle, "add angle");
+  if (shapes.empty()) throw std::invalid_argument("add needs at least one shape for the body");
+  for (const ShapeDef& s : shapes) validate(s.shape);
+  const std::uint32_t index = take_slot(bodies_, free_bodies_);
   Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
-  b.shape = shape;
-  b.angle = angle_of(shape);
-  b.orientation = Orientation::of(angle_of(shape));
-  b.box = aabb(shape, b.orientation);
+  b.pose = pose;
   b.user_id = def.user_id;
   b.filter = def.filter;
   b.is_static = def.is_static;
   b.sensor = def.sensor;
   b.continuous = false;
   b.alive = true;
-  enter(index);
+  b.first = kNone;
+  b.count = 0;
+  for (const ShapeDef& s : shapes) new_part(index, s);
   ++live_;
-  return id_of(index);
+  return body_id(index);
+}
+
+ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
+  require_not_querying("add_shape");
+  body(id);
+  validate(def.shape);
+  return shape_id(new_part(id.index, def));
+}
+
+void WorldState::remove_shape(ShapeId id) {
+  require_not_querying("remove_shape");
+  Body& b = bodies_[part(id).body];
+  if (b.count == 1) {
+    throw std::invalid_argument("remove_shape: shape " + std::to_string(id.index) +
+                                " is its body's last; remove the body instead");
+  }
+  std::uint32_t* link = &b.first;
+  while (*link != id.index) link = &parts_[*link].next;
+  *link = parts_[id.index].next;
+  --b.count;
+  free_part(id.index);
+}
+
+void WorldState::set_local_shape(ShapeId id, const Shape& local) {
+  require_not_querying("set_local_shape");
+  Part& p = part(id);
+  validate(local);
+  const Body& b = bodies_[p.body];
+  p.local = local;
+  p.at_origin = center_of(local) == Vec2::Zero() && angle_of(local) == 0.0;
+  pose_part(p, b.pose, Orientation::of(b.pose.angle));
+  p.start = p.shape;  // its step starts at its new place
+  place(id.index);
 }
 
 void WorldState::move_to(BodyId id, const Vec2& position, double angle) {
   require_not_querying("move_to");
-  pose(body(id), position, angle, "move_to");
-  place(id.index);
+  pose(body(id), position, angle, "move_to", false);
 }
 
 void WorldState::set_pose(BodyId id, const Vec2& position, double angle) {
   require_not_querying("set_pose");
-  Body& b = body(id);
-  pose(b, position, angle, "set_pose");
-  if (b.continuous) b.start = b.shape;  // a teleport: the step starts here
-  place(id.index);
+  pose(body(id), position, angle, "set_pose", true);
 }
 
 void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
@@ -190,20 +315,26 @@ void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
   require_finite(shift.x(), "move_by shift x");
   require_finite(shift.y(), "move_by shift y");
   require_finite(turn, "move_by turn");
-  pose(b, center_of(b.shape) + shift, b.angle + turn, "move_by");
-  place(id.index);
+  pose(b, b.pose.position + shift, b.pose.angle + turn, "move_by", false);
 }
 
-// The body at a pose, checked first so that a refusal, named after the call, leaves it as it was.
-void WorldState::pose(Body& b, const Vec2& position, double angle, const char* call) {
+// The body and its shapes at a pose, checked first so that a refusal, named after the call, leaves
+// it as it was. A teleport starts a continuous body's step there.
+void WorldState::pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport) {
   // The names are built on a refusal only: poses are set every frame, and a frame allocates nothing.
   if (!(std::abs(position.x()) <= kMaxMagnitude && std::abs(position.y()) <= kMaxMagnitude))
     validate_point(position, (std::string(call) + " position").c_str());
   if (!std::isfinite(angle)) require_finite(angle, (std::string(call) + " angle").c_str());
-  b.shape = posed(b.shape, position, angle);
-  b.angle = angle;
-  b.orientation = Orientation::of(angle_of(b.shape));
-  b.box = aabb(b.shape, b.orientation);
+  b.pose = {position, angle};
+  bool offset = false;
+  each_part(b, [&](std::uint32_t k) { offset = offset || !parts_[k].at_origin; });
+  const Orientation turn = offset ? Orientation::of(angle) : Orientation{};
+  each_part(b, [&](std::uint32_t k) {
+    Part& p = parts_[k];
+    pose_part(p, b.pose, turn);
+    if (teleport && p.continuous) p.start = p.shape;
+    place(k);
+  });
 }
 
 void WorldState::set_static(BodyId id, bool is_static) {
@@ -211,19 +342,22 @@ void WorldState::set_static(BodyId id, bool is_static) {
   Body& b = body(id);
   if (b.is_static == is_static) return;
   if (b.continuous) set_continuous(id, false);
-  leave(id.index);
+  each_part(b, [&](std::uint32_t k) {
+    leave(k);
+    parts_[k].is_static = is_static;
+    enter(k);
+  });
   b.is_static = is_static;
-  enter(id.index);
 }
 
 void WorldState::remove(BodyId id) {
   require_not_querying("remove");
   Body& b = body(id);
   if (b.continuous) set_continuous(id, false);
-  leave(id.index);
+  each_part(b, [&](std::uint32_t k) { free_part(k); });
   b.alive = false;
   b.generation = b.generation == UINT32_MAX ? 1 : b.generation + 1;  // 0 names no body
-  free_.push_back(id.index);
+  free_bodies_.push_back(id.index);
   --live_;
 }
 
@@ -231,7 +365,9 @@ void WorldState::set_proximity_margin(double margin) {
   require_not_querying("set_proximity_margin");
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
-  for (const BodyId id : bodies()) place(id.index);
+  for (std::uint32_t k = 0; k < parts_.size(); ++k) {
+    if (parts_[k].alive) place(k);
+  }
 }
 
 }  // namespace detail

@@ -1,7 +1,8 @@
 // Continuous bodies (bullets): a continuous body's step, from its pose at the last update to its
-// pose now, counts. Its broad-phase box covers the whole path, and update() reports, for each of its
-// candidate pairs that starts the step apart, the first time of impact within the step; a body not
-// flagged is taken at its current pose. Bodies not flagged cost one flag test per pair.
+// pose now, counts. Each of its shapes' broad-phase boxes covers the shape's whole path, and update()
+// reports, for each pair of bodies with a candidate pair of shapes that starts the step apart, the
+// first time of impact within the step over their shapes' pairs; a body not flagged is taken at its
+// current pose. Bodies not flagged cost one flag test per pair.
 #include "engine/world_state.h"
 
 #include <algorithm>
@@ -35,33 +36,55 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
     throw std::invalid_argument("body " + std::to_string(id.index) +
                                 " is static: only moving bodies can be continuous");
   }
-  if (continuous) {
-    continuous_.push_back(id.index);
-  } else {
-    continuous_.erase(std::find(continuous_.begin(), continuous_.end(), id.index));
-  }
   b.continuous = continuous;
-  b.start = b.shape;
-  place(id.index);
+  each_part(b, [&](std::uint32_t k) {
+    Part& p = parts_[k];
+    if (continuous) {
+      continuous_.push_back(k);
+    } else {
+      continuous_.erase(std::find(continuous_.begin(), continuous_.end(), k));
+    }
+    p.continuous = continuous;
+    p.start = p.shape;
+    place(k);
+  });
 }
 
 // A pair with a continuous body, over the step: each continuous body from its start pose, any other
 // at rest where it is now. Pairs that start the step overlapping are the overlap test's.
 void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
-  const Body& x = bodies_[a];
-  const Body& y = bodies_[b];
-  const auto from = [](const Body& body) { return body.continuous ? body.start : body.shape; };
-  const auto motion = [](const Body& body) { return body.continuous ? step_of(body.start, body.shape) : Motion{}; };
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
+  const auto from = [](const Part& p) { return p.continuous ? p.start : p.shape; };
+  const auto motion = [](const Part& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
-    out.impacts.push_back({id_of(a), id_of(b), x.user_id, y.user_id, r.t, r.normal, r.point});
+    Impact& i = out.impacts.emplace_back(record_of<Impact>(a, b));
+    i.t = r.t;
+    i.normal = r.normal;
+    i.point = r.point;
   }
+}
+
+// One impact per pair of bodies, the earliest of their shapes' (the first pair of shapes on a tie);
+// impacts_ is sorted by bodies, then shapes.
+void WorldState::keep_earliest_impacts() {
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < impacts_.size(); ++k) {
+    const Impact& i = impacts_[k];
+    if (kept > 0 && impacts_[kept - 1].a == i.a && impacts_[kept - 1].b == i.b) {
+      if (i.t < impacts_[kept - 1].t) impacts_[kept - 1] = i;
+    } else {
+      impacts_[kept++] = i;
+    }
+  }
+  impacts_.resize(kept);
 }
 
 // The next step of every continuous body begins at its pose now.
 void WorldState::begin_steps() {
   for (const std::uint32_t index : continuous_) {
-    bodies_[index].start = bodies_[index].shape;
+    parts_[index].start = parts_[index].shape;
     place(index);
   }
 }

@@ -47,37 +47,41 @@ void WorldState::require_not_querying(const char* call) const {
   }
 }
 
-// visit(id) for the solid bodies the filter lets through whose tight box meets `box` and that pass
-// `test`, in the trees' order, until visit returns false.
+// visit(found) for the solid shapes the filter lets through whose tight box meets `box` and that
+// pass `test`, in the trees' order, until visit returns false.
 template <class Test>
-void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(BodyId)> visit) const {
+void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
+                      FunctionRef<bool(const BodyShape&)> visit) const {
   const Querying guard(querying_);
   bool go = true;
   const auto consider = [&](std::uint32_t index) {
-    const Body& b = bodies_[index];
-    if (!b.sensor && lets_through(filter, b.filter) && intersects(b.box, box) && test(b.shape))
-      go = visit(id_of(index));
+    const Part& p = parts_[index];
+    if (!p.sensor && lets_through(filter, p.filter) && intersects(p.box, box) && test(p.shape))
+      go = visit({body_id(p.body), shape_id(index)});
     return go;
   };
-  // A loose body's leaf is out of date: it is tested from loose_ instead (see below).
-  moving_tree_.query(box, [&](std::uint32_t index) { return bodies_[index].loose >= 0 || consider(index); });
+  // A loose shape's leaf is out of date: it is tested from loose_ instead (see below).
+  moving_tree_.query(box, [&](std::uint32_t index) { return parts_[index].loose >= 0 || consider(index); });
   for (std::size_t k = 0; go && k < loose_.size(); ++k) consider(loose_[k]);
   if (go) static_tree_.query(box, consider);
 }
 
-void WorldState::overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+void WorldState::overlapping(const Shape& shape, FunctionRef<bool(const BodyShape&)> visit,
+                             const QueryFilter& filter) const {
   validate(shape);
   each(
       aabb(shape), filter, [&shape](const Shape& s) { return overlaps(shape, s); }, visit);
 }
 
-void WorldState::overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+void WorldState::overlapping(const Aabb& box, FunctionRef<bool(const BodyShape&)> visit,
+                             const QueryFilter& filter) const {
   validate(box);
   each(
       box, filter, [&box](const Shape& s) { return overlaps(s, box); }, visit);
 }
 
-void WorldState::within(const Vec2& point, double d, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+void WorldState::within(const Vec2& point, double d, FunctionRef<bool(const BodyShape&)> visit,
+                        const QueryFilter& filter) const {
   validate_point(point, "point");
   require_margin(d, "distance");
   if (d > 0.0) return overlapping(Shape(Circle{point, d}), visit, filter);
@@ -85,7 +89,7 @@ void WorldState::within(const Vec2& point, double d, FunctionRef<bool(BodyId)> v
       {point, point}, filter, [&point](const Shape& s) { return collide2d::contains(s, point); }, visit);
 }
 
-void WorldState::within(const Shape& shape, double d, FunctionRef<bool(BodyId)> visit,
+void WorldState::within(const Shape& shape, double d, FunctionRef<bool(const BodyShape&)> visit,
                         const QueryFilter& filter) const {
   validate(shape);
   require_margin(d, "distance");
@@ -101,11 +105,12 @@ void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<d
   const Shape end = at_time(shape, {translation, 0.0}, 1.0);
   validate(end);  // the range of the centre
   double reach = 1.0;
-  const auto meet = [&](BodyId id) {
-    const Shape& body = bodies_[id.index].shape;
-    if (options.skip_initial_overlap && overlaps(shape, body)) return true;
-    const auto hit = shape_cast(shape, translation, body);
-    if (hit && hit->fraction <= reach) reach = next_reach(visit({id, hit->fraction, hit->point, hit->normal}), reach);
+  const auto meet = [&](const BodyShape& found) {
+    const Shape& target = parts_[found.shape.index].shape;
+    if (options.skip_initial_overlap && overlaps(shape, target)) return true;
+    const auto hit = shape_cast(shape, translation, target);
+    if (hit && hit->fraction <= reach)
+      reach = next_reach(visit({found.body, found.shape, hit->fraction, hit->point, hit->normal}), reach);
     return reach >= 0.0;
   };
   each(
@@ -123,20 +128,20 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
   if (!(length > 0.0)) throw std::invalid_argument("ray direction must not be zero");
   const Vec2 unit = direction / length;
   const Querying guard(querying_);
-  // The reach after body `index`; the kernel's zero normal marks a body that contains the origin.
-  const auto visit_body = [&](std::uint32_t index, double reach) {
-    const Body& b = bodies_[index];
-    if (b.sensor || !lets_through(filter, b.filter)) return reach;
-    const auto hit = collide2d::ray_cast(b.shape, origin, unit, reach);
+  // The reach after shape `index`; the kernel's zero normal marks a shape that contains the origin.
+  const auto visit_shape = [&](std::uint32_t index, double reach) {
+    const Part& p = parts_[index];
+    if (p.sensor || !lets_through(filter, p.filter)) return reach;
+    const auto hit = collide2d::ray_cast(p.shape, origin, unit, reach);
     if (!hit || (!options.from_inside && hit->normal == Vec2::Zero())) return reach;
-    return next_reach(visit(RayHit{id_of(index), hit->distance, hit->point, hit->normal}), reach);
+    return next_reach(visit(RayHit{body_id(p.body), shape_id(index), hit->distance, hit->point, hit->normal}), reach);
   };
   double reach = max_distance;
   moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) {
-    return reach = bodies_[index].loose < 0 ? visit_body(index, r) : r;  // a loose body's leaf is out of date
+    return reach = parts_[index].loose < 0 ? visit_shape(index, r) : r;  // a loose shape's leaf is out of date
   });
-  for (std::size_t k = 0; reach >= 0.0 && k < loose_.size(); ++k) reach = visit_body(loose_[k], reach);
-  if (reach >= 0.0) static_tree_.ray_cast(origin, unit, reach, visit_body);
+  for (std::size_t k = 0; reach >= 0.0 && k < loose_.size(); ++k) reach = visit_shape(loose_[k], reach);
+  if (reach >= 0.0) static_tree_.ray_cast(origin, unit, reach, visit_shape);
 }
 
 }  // namespace collide2d::detail

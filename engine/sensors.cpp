@@ -1,6 +1,7 @@
-// Sensors: a sensor reports the solid bodies that overlap it, in lists of its own, and is otherwise
-// not solid. It never appears in the solid pairs, proximity, contacts, impacts or queries, and
-// sensors do not sense each other (Box2D v3's rules); filters apply to sensor pairs too.
+// Sensors: a sensor shape reports the solid shapes of other bodies that overlap it, in lists of its
+// own, and is otherwise not solid. It never appears in the solid pairs, proximity, contacts, impacts
+// or queries, and sensors do not sense each other (Box2D v3's rules); filters apply to sensor pairs
+// too.
 #include "engine/world_state.h"
 
 #include "broadphase/internal.h"
@@ -11,8 +12,8 @@ namespace collide2d::detail {
 
 void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
   if (!touching) return;
-  const std::uint32_t sensor = bodies_[a].sensor ? a : b, visitor = sensor == a ? b : a;
-  out.sensing.push_back({id_of(sensor), id_of(visitor), bodies_[sensor].user_id, bodies_[visitor].user_id});
+  const std::uint32_t sensor = parts_[a].sensor ? a : b, visitor = sensor == a ? b : a;
+  out.sensing.push_back(record_of<SensorPair>(sensor, visitor));
 }
 
 // The first `chunks` chunks' sensor pairs joined in chunk order and sorted, and what entered and

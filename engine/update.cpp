@@ -1,6 +1,6 @@
-// The World's update: the broad phase (the sweep and prune of the moving bodies, and each moving
-// body's static neighbours), then the narrow phase over the candidate pairs in chunks, each chunk's
-// overlap tests batched by pair kind, on the thread pool.
+// The World's update: the broad phase (the sweep and prune of the moving shapes, and each moving
+// shape's static neighbours), then the narrow phase over the candidate pairs of shapes in chunks,
+// each chunk's overlap tests batched by pair kind, on the thread pool.
 #include "engine/world_state.h"
 
 #include "broadphase/internal.h"
@@ -32,9 +32,9 @@ bool fresh(const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted
 void WorldState::refresh_moving_tree() {
   tree_boxes_.clear();
   for (const std::uint32_t index : loose_) {
-    Body& b = bodies_[index];
-    tree_boxes_.emplace_back(b.leaf, broad_.fat_box(b.proxy));
-    b.loose = -1;
+    Part& p = parts_[index];
+    tree_boxes_.emplace_back(p.leaf, broad_.fat_box(p.proxy));
+    p.loose = -1;
   }
   moving_tree_.set_boxes(tree_boxes_);
   const bool moved = !loose_.empty();
@@ -46,10 +46,11 @@ void WorldState::refresh_moving_tree() {
   }
 }
 
-// The pairs of moving bodies from the sweep and prune, and each moving body's pairs with the static
-// bodies it keeps, looked up again where its fat box or the statics changed.
+// The pairs of moving shapes from the sweep and prune, and each moving shape's pairs with the static
+// shapes it keeps, looked up again where its fat box or the statics changed; never two shapes of one
+// body. Each pair comes with the shape of the lower body first.
 void WorldState::find_candidates() {
-  // A few thousand moving bodies sort and sweep in less time than waking the pool takes.
+  // A few thousand moving shapes sort and sweep in less time than waking the pool takes.
   constexpr std::size_t kParallelBodies = 4096;
   broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) {
     if (broad_.size() < kParallelBodies) {
@@ -60,13 +61,16 @@ void WorldState::find_candidates() {
   });
   if (fresh(static_tree_)) static_tree_.rebuild();
   candidates_.clear();
-  const auto ordered = [](std::uint32_t a, std::uint32_t b) { return a < b ? std::pair(a, b) : std::pair(b, a); };
-  for (const ProxyPair& p : broad_.pairs()) candidates_.push_back(ordered(body_of_[p.a], body_of_[p.b]));
-  const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every body's list is empty
-  for (ProxyId proxy = 0; statics && proxy < body_of_.size(); ++proxy) {
-    const std::uint32_t index = body_of_[proxy];
-    if (index == kNoBody) continue;
-    Body& b = bodies_[index];
+  const auto add = [this](std::uint32_t x, std::uint32_t y) {
+    const std::uint32_t bx = parts_[x].body, by = parts_[y].body;
+    if (bx != by) candidates_.push_back(bx < by ? std::pair(x, y) : std::pair(y, x));
+  };
+  for (const ProxyPair& p : broad_.pairs()) add(part_of_[p.a], part_of_[p.b]);
+  const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every shape's list is empty
+  for (ProxyId proxy = 0; statics && proxy < part_of_.size(); ++proxy) {
+    const std::uint32_t index = part_of_[proxy];
+    if (index == kNone) continue;
+    Part& b = parts_[index];
     const Aabb& fat = broad_.fat_box(proxy);
     if (statics_changed_ || !encloses(b.queried, fat)) {
       // Looked up around the fat box, half its larger side further, so that the next few frames'
@@ -75,12 +79,12 @@ void WorldState::find_candidates() {
       b.queried = grown(fat, 0.5 * (fat.max - fat.min).maxCoeff());
       b.statics.clear();
       static_tree_.query(b.queried, [&](std::uint32_t s) {
-        if (intersects(broad_box(bodies_[s]), b.queried)) b.statics.push_back(s);
+        if (intersects(broad_box(parts_[s]), b.queried)) b.statics.push_back(s);
       });
       ++stats_.requeried;
     }
     for (const std::uint32_t s : b.statics) {
-      if (intersects(broad_box(bodies_[s]), fat)) candidates_.push_back(ordered(index, s));
+      if (intersects(broad_box(parts_[s]), fat)) add(index, s);
     }
   }
   statics_changed_ = false;
@@ -98,7 +102,7 @@ void WorldState::Found::clear() {
 }
 
 template <class A, class B>
-void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_body, std::uint32_t b_body) {
+void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_part, std::uint32_t b_part) {
   if (places.capacity() < kPairsPerChunk) {
     places.reserve(kPairsPerChunk);
     a.reserve(kPairsPerChunk);
@@ -106,17 +110,17 @@ void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_body, std
     verdicts.reserve(kPairsPerChunk);
   }
   places.push_back(place);
-  a.push_back(a_body);
-  b.push_back(b_body);
+  a.push_back(a_part);
+  b.push_back(b_part);
 }
 
 template <class A, class B>
-void WorldState::Batch<A, B>::run(const std::vector<Body>& bodies, std::vector<Verdict>& chunk_verdicts) {
+void WorldState::Batch<A, B>::run(const std::vector<Part>& parts, std::vector<Verdict>& chunk_verdicts) {
   verdicts.resize(places.size());
   overlap_pairs<A, B>(
       [&](std::size_t k) {
-        const Body& x = bodies[a[k]];
-        const Body& y = bodies[b[k]];
+        const Part& x = parts[a[k]];
+        const Part& y = parts[b[k]];
         return PairRef<A, B>{std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
       },
       verdicts);
@@ -180,19 +184,37 @@ void WorldState::narrow_phase() {
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
     stats_.filtered += f.filtered;
   }
-  const auto by_pair = [](const auto& p, const auto& q) { return std::tie(p.a, p.b) < std::tie(q.a, q.b); };
+  const auto by_pair = [](const auto& p, const auto& q) {
+    return std::tie(p.a, p.b, p.shape_a, p.shape_b) < std::tie(q.a, q.b, q.shape_a, q.shape_b);
+  };
   std::sort(now_.begin(), now_.end());
   std::sort(proximity_.begin(), proximity_.end(), by_pair);
   std::sort(contacts_.begin(), contacts_.end(), by_pair);
   std::sort(impacts_.begin(), impacts_.end(), by_pair);
+  keep_earliest_impacts();
   replace_pairs(overlapping_, now_, began_, ended_);
+  update_body_pairs();
   update_sensing(chunks);
   mark_removed();
 }
 
+// The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
+void WorldState::update_body_pairs() {
+  bodies_now_.clear();
+  for (const ShapePair& p : overlapping_) {
+    if (bodies_now_.empty() || bodies_now_.back().a != p.a || bodies_now_.back().b != p.b)
+      bodies_now_.push_back({p.a, p.b, p.user_a, p.user_b});
+  }
+  replace_pairs(body_overlapping_, bodies_now_, body_began_, body_ended_);
+}
+
 void WorldState::mark_removed() {
-  for (BodyPair& p : ended_) p.removed = !contains(p.a) || !contains(p.b);
-  for (SensorPair& p : sensor_ended_) p.removed = !contains(p.sensor) || !contains(p.visitor);
+  for (ShapePair& p : ended_)
+    p.removed = !contains(p.a) || !contains(p.b) || !contains(p.shape_a) || !contains(p.shape_b);
+  for (BodyPair& p : body_ended_) p.removed = !contains(p.a) || !contains(p.b);
+  for (SensorPair& p : sensor_ended_) {
+    p.removed = !contains(p.sensor) || !contains(p.visitor) || !contains(p.sensor_shape) || !contains(p.visitor_shape);
+  }
 }
 
 // The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
@@ -201,7 +223,7 @@ void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) co
   out.clear();
   for (std::size_t i = begin; i < end; ++i)
     out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  std::apply([&](auto&... batch) { (batch.run(bodies_, out.verdicts), ...); }, out.batches);
+  std::apply([&](auto&... batch) { (batch.run(parts_, out.verdicts), ...); }, out.batches);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
@@ -215,8 +237,8 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
     ++out.filtered;
     return Verdict::skipped;
   }
-  const Body& x = bodies_[a];
-  const Body& y = bodies_[b];
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
   if (x.sensor && y.sensor) return Verdict::skipped;
   if (!intersects(x.box, y.box)) return Verdict::apart;
   const auto place = static_cast<std::uint32_t>(out.verdicts.size());
@@ -238,28 +260,28 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
 // One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
 // solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
 void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
-  const Body& x = bodies_[a];
-  const Body& y = bodies_[b];
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
   if (x.sensor || y.sensor) {
     sense(a, b, touching, out);
     return;
   }
   const ContactOptions manifold{.margin = speculative_margin_};
   if (x.continuous || y.continuous) impact(a, b, out);
-  const BodyPair pair = pair_of(a, b);
   const auto record = [&](bool solids_touch, const Contact& c) {
-    out.contacts.push_back({pair.a, pair.b, pair.user_a, pair.user_b, solids_touch, c});
+    BodyContact& r = out.contacts.emplace_back(record_of<BodyContact>(a, b));
+    r.touching = solids_touch;
+    r.contact = c;
   };
   if (touching) {
-    out.overlapping.push_back(pair);
+    out.overlapping.push_back(record_of<ShapePair>(a, b));
     if (contacts_on_) record(true, contact(x.shape, x.orientation, y.shape, y.orientation, manifold));
     return;
   }
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);
-    if (!d.overlapping && d.distance <= proximity_margin_) {
-      out.proximity.push_back({pair.a, pair.b, pair.user_a, pair.user_b, d});
-    }
+    if (!d.overlapping && d.distance <= proximity_margin_)
+      out.proximity.emplace_back(record_of<Proximity>(a, b)).result = d;
   }
   if (speculative_margin_ > 0.0 &&
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {

@@ -16,12 +16,24 @@ World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-BodyId World::add(const Shape& shape, const BodyDef& def) { return state_->add(shape, def); }
+BodyId World::add(const Shape& shape, const BodyDef& def) {
+  validate(shape);  // so that a refusal names the shape's own fields
+  const ShapeDef at_origin{.shape = detail::posed(shape, Vec2::Zero(), 0.0)};
+  return state_->add({center_of(shape), angle_of(shape)}, std::span(&at_origin, 1), def);
+}
+BodyId World::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
+  return state_->add(pose, shapes, def);
+}
+ShapeId World::add_shape(BodyId body, const ShapeDef& shape) { return state_->add_shape(body, shape); }
+void World::remove_shape(ShapeId id) { state_->remove_shape(id); }
 void World::set_pose(BodyId id, const Vec2& position, double angle) { state_->set_pose(id, position, angle); }
 void World::move_to(BodyId id, const Vec2& position, double angle) { state_->move_to(id, position, angle); }
 void World::move_by(BodyId id, const Vec2& shift, double turn) { state_->move_by(id, shift, turn); }
 void World::set_static(BodyId id, bool is_static) { state_->set_static(id, is_static); }
 void World::set_filter(BodyId id, const Filter& filter) { state_->set_filter(id, filter); }
+void World::set_filter(ShapeId id, const Filter& filter) { state_->set_filter(id, filter); }
+void World::set_sensor(ShapeId id, bool sensor) { state_->set_sensor(id, sensor); }
+void World::set_local_shape(ShapeId id, const Shape& local) { state_->set_local_shape(id, local); }
 void World::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) {
   state_->set_pair_predicate(std::move(predicate));
 }
@@ -31,6 +43,7 @@ void World::set_continuous(BodyId id, bool continuous) { state_->set_continuous(
 void World::update() { state_->update(); }
 
 bool World::contains(BodyId id) const { return state_->contains(id); }
+bool World::contains(ShapeId id) const { return state_->contains(id); }
 std::size_t World::size() const { return state_->size(); }
 Pose World::pose(BodyId id) const { return state_->pose(id); }
 const Shape& World::shape(BodyId id) const { return state_->shape(id); }
@@ -39,11 +52,21 @@ const Filter& World::filter(BodyId id) const { return state_->filter(id); }
 bool World::is_static(BodyId id) const { return state_->is_static(id); }
 bool World::is_sensor(BodyId id) const { return state_->is_sensor(id); }
 bool World::is_continuous(BodyId id) const { return state_->is_continuous(id); }
+std::vector<ShapeId> World::shapes(BodyId id) const { return state_->shapes(id); }
+const Shape& World::shape(ShapeId id) const { return state_->shape(id); }
+const Shape& World::local_shape(ShapeId id) const { return state_->local_shape(id); }
+BodyId World::body(ShapeId id) const { return state_->body_of(id); }
+std::uint64_t World::user_id(ShapeId id) const { return state_->user_id(id); }
+const Filter& World::filter(ShapeId id) const { return state_->filter(id); }
+bool World::is_sensor(ShapeId id) const { return state_->is_sensor(id); }
 std::vector<BodyId> World::bodies() const { return state_->bodies(); }
 
-const std::vector<BodyPair>& World::overlapping() const { return state_->overlapping_; }
-const std::vector<BodyPair>& World::began() const { return state_->began_; }
-const std::vector<BodyPair>& World::ended() const { return state_->ended_; }
+const std::vector<ShapePair>& World::overlapping() const { return state_->overlapping_; }
+const std::vector<ShapePair>& World::began() const { return state_->began_; }
+const std::vector<ShapePair>& World::ended() const { return state_->ended_; }
+const std::vector<BodyPair>& World::body_overlapping() const { return state_->body_overlapping_; }
+const std::vector<BodyPair>& World::body_began() const { return state_->body_began_; }
+const std::vector<BodyPair>& World::body_ended() const { return state_->body_ended_; }
 const std::vector<Proximity>& World::proximity() const { return state_->proximity_; }
 const std::vector<BodyContact>& World::contacts() const { return state_->contacts_; }
 const std::vector<Impact>& World::impacts() const { return state_->impacts_; }
@@ -54,22 +77,29 @@ const FrameStats& World::last_frame() const { return state_->stats_; }
 
 namespace {
 
-// The bodies a callback query finds, by index.
+// The bodies of the shapes a callback query finds, each once, by index.
 template <class Query>
 std::vector<BodyId> collect(Query query) {
   std::vector<BodyId> found;
-  query([&found](BodyId id) {
-    found.push_back(id);
+  query([&found](const BodyShape& s) {
+    found.push_back(s.body);
     return true;
   });
   std::sort(found.begin(), found.end(), [](BodyId p, BodyId q) { return p.index < q.index; });
+  found.erase(std::unique(found.begin(), found.end()), found.end());
   return found;
 }
 
-// Whether a hit on `body` at `t` comes before the best so far: nearer, or as near on a lower index.
+// A hit's place in the order of hits: by `t`, then body index, then shape index.
 template <class Hit>
-bool before(const std::optional<Hit>& best, double t, BodyId body, double best_t) {
-  return !best || t < best_t || (t == best_t && body.index < best->body.index);
+auto rank_of(const Hit& hit, double t) {
+  return std::tuple(t, hit.body.index, hit.shape.index);
+}
+
+// Whether `hit` at `t` comes before the best so far.
+template <class Hit>
+bool before(const std::optional<Hit>& best, const Hit& hit, double t, double best_t) {
+  return !best || rank_of(hit, t) < rank_of(*best, best_t);
 }
 
 // The reach that keeps only hits as near as `t`: the callback's 0 would stop the walk before a
@@ -78,31 +108,32 @@ double clip_to(double t) { return std::max(t, std::numeric_limits<double>::denor
 
 }  // namespace
 
-void World::overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+void World::overlapping(const Shape& shape, FunctionRef<bool(const BodyShape&)> visit,
+                        const QueryFilter& filter) const {
   state_->overlapping(shape, visit, filter);
 }
 std::vector<BodyId> World::overlapping(const Shape& shape, const QueryFilter& filter) const {
-  return collect([&](FunctionRef<bool(BodyId)> visit) { overlapping(shape, visit, filter); });
+  return collect([&](FunctionRef<bool(const BodyShape&)> visit) { overlapping(shape, visit, filter); });
 }
-void World::overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const {
+void World::overlapping(const Aabb& box, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter) const {
   state_->overlapping(box, visit, filter);
 }
 std::vector<BodyId> World::overlapping(const Aabb& box, const QueryFilter& filter) const {
-  return collect([&](FunctionRef<bool(BodyId)> visit) { overlapping(box, visit, filter); });
+  return collect([&](FunctionRef<bool(const BodyShape&)> visit) { overlapping(box, visit, filter); });
 }
-void World::within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit,
+void World::within(const Vec2& point, double distance, FunctionRef<bool(const BodyShape&)> visit,
                    const QueryFilter& filter) const {
   state_->within(point, distance, visit, filter);
 }
 std::vector<BodyId> World::within(const Vec2& point, double distance, const QueryFilter& filter) const {
-  return collect([&](FunctionRef<bool(BodyId)> visit) { within(point, distance, visit, filter); });
+  return collect([&](FunctionRef<bool(const BodyShape&)> visit) { within(point, distance, visit, filter); });
 }
-void World::within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit,
+void World::within(const Shape& shape, double distance, FunctionRef<bool(const BodyShape&)> visit,
                    const QueryFilter& filter) const {
   state_->within(shape, distance, visit, filter);
 }
 std::vector<BodyId> World::within(const Shape& shape, double distance, const QueryFilter& filter) const {
-  return collect([&](FunctionRef<bool(BodyId)> visit) { within(shape, distance, visit, filter); });
+  return collect([&](FunctionRef<bool(const BodyShape&)> visit) { within(shape, distance, visit, filter); });
 }
 
 void World::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
@@ -114,7 +145,7 @@ std::optional<RayHit> World::ray_cast(const Vec2& origin, const Vec2& direction,
                                       const QueryFilter& filter, const RayOptions& options) const {
   std::optional<RayHit> best;
   const auto keep = [&best](const RayHit& hit) {
-    if (before(best, hit.distance, hit.body, best ? best->distance : 0.0)) best = hit;
+    if (before(best, hit, hit.distance, best ? best->distance : 0.0)) best = hit;
     return clip_to(best->distance);
   };
   ray_cast(origin, direction, max_distance, keep, filter, options);
@@ -128,9 +159,8 @@ std::vector<RayHit> World::ray_cast_all(const Vec2& origin, const Vec2& directio
     return -1.0;
   };
   ray_cast(origin, direction, max_distance, keep, filter, options);
-  std::sort(hits.begin(), hits.end(), [](const RayHit& p, const RayHit& q) {
-    return std::tie(p.distance, p.body.index) < std::tie(q.distance, q.body.index);
-  });
+  std::sort(hits.begin(), hits.end(),
+            [](const RayHit& p, const RayHit& q) { return rank_of(p, p.distance) < rank_of(q, q.distance); });
   return hits;
 }
 
@@ -142,7 +172,7 @@ std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translati
                                        const CastOptions& options) const {
   std::optional<BodyCastHit> best;
   const auto keep = [&best](const BodyCastHit& hit) {
-    if (before(best, hit.fraction, hit.body, best ? best->fraction : 0.0)) best = hit;
+    if (before(best, hit, hit.fraction, best ? best->fraction : 0.0)) best = hit;
     return clip_to(best->fraction);
   };
   cast(shape, translation, keep, filter, options);

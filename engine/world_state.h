@@ -3,23 +3,27 @@
 // phase, the narrow phase's chunks and batches), sensors.cpp, continuous.cpp (steps and impacts) and
 // queries.cpp.
 //
-// Each body keeps the cosine and sine of its angle from its last pose (as Box2D keeps b2Rot), and
-// its pairs' overlap tests and contacts use them and skip the validation done when it was posed.
+// A body is a pose and a list of shapes; each shape (a Part, named by a ShapeId) is what the broad
+// and the narrow phase work on. A shape keeps itself where it is in the world, and the cosine and
+// sine of its world angle (as Box2D keeps b2Rot), from its body's last pose: its pairs' overlap
+// tests and contacts use them and skip the validation done when it was posed. A shape placed at its
+// body's origin with no angle of its own takes the body's pose as it is, so that a body of one shape
+// added as a shape is posed to the bit as that shape alone.
 // With a proximity or speculative margin m, the broad-phase boxes are the shapes' boxes grown by
 // m / 2 (two shapes within m have boxes within m on each axis). A candidate pair's tight boxes must
 // meet before its overlap test: that settles the pairs the fat margin alone brought in, and makes
 // every reported overlap one whose boxes meet, so that a kernel's rounding (u times a needle's
 // length) never reports a pair a box test excludes.
 //
-// Static bodies live in a tree of their own (AabbTree) instead of the sweep and prune, so a level
-// of 100,000 of them costs its insertion once and not a sort every frame. Each moving body keeps
-// the static bodies near its fat box (within half the box's larger side) and looks them up again
-// only when the fat box leaves that neighbourhood or the statics changed. Either tree is rebuilt
-// top-down at an update when a quarter or more of its bodies were added since the last rebuild.
-// The moving bodies' tree is not re-shaped as they move: the leaves whose fat box changed take
-// their new box and their ancestors are refitted (re-inserting each moved leaf, as Box2D does,
+// Static bodies' shapes live in a tree of their own (AabbTree) instead of the sweep and prune, so a
+// level of 100,000 of them costs its insertion once and not a sort every frame. Each moving shape
+// keeps the static shapes near its fat box (within half the box's larger side) and looks them up
+// again only when the fat box leaves that neighbourhood or the statics changed. Either tree is
+// rebuilt top-down at an update when a quarter or more of its shapes were added since the last
+// rebuild. The moving shapes' tree is not re-shaped as they move: the leaves whose fat box changed
+// take their new box and their ancestors are refitted (re-inserting each moved leaf, as Box2D does,
 // costs far more), and it is rebuilt once its inner perimeters have grown 1.5 times since the last
-// rebuild. Between set_pose() and update(), queries test the bodies moved out of their fat box one
+// rebuild. Between set_pose() and update(), queries test the shapes moved out of their fat box one
 // by one.
 #pragma once
 
@@ -35,6 +39,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <span>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -46,24 +51,37 @@ class WorldState {
   explicit WorldState(const WorldOptions& options);
 
   // bodies.cpp
-  BodyId add(const Shape& shape, const BodyDef& def);
+  BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def);
+  ShapeId add_shape(BodyId id, const ShapeDef& def);
+  void remove_shape(ShapeId id);
   void set_pose(BodyId id, const Vec2& position, double angle);
   void move_to(BodyId id, const Vec2& position, double angle);
   void move_by(BodyId id, const Vec2& shift, double turn);
   void set_static(BodyId id, bool is_static);
   void set_filter(BodyId id, const Filter& filter);
+  void set_filter(ShapeId id, const Filter& filter);
+  void set_sensor(ShapeId id, bool sensor);
+  void set_local_shape(ShapeId id, const Shape& local);
   void set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate);
   void remove(BodyId id);
   void set_proximity_margin(double margin);
   bool contains(BodyId id) const;
+  bool contains(ShapeId id) const;
   std::size_t size() const { return live_; }
-  Pose pose(BodyId id) const { return {center_of(body(id).shape), body(id).angle}; }
-  const Shape& shape(BodyId id) const { return body(id).shape; }
+  Pose pose(BodyId id) const { return body(id).pose; }
+  const Shape& shape(BodyId id) const { return parts_[body(id).first].shape; }
   std::uint64_t user_id(BodyId id) const { return body(id).user_id; }
   const Filter& filter(BodyId id) const { return body(id).filter; }
   bool is_static(BodyId id) const { return body(id).is_static; }
   bool is_sensor(BodyId id) const { return body(id).sensor; }
   bool is_continuous(BodyId id) const { return body(id).continuous; }
+  std::vector<ShapeId> shapes(BodyId id) const;
+  const Shape& shape(ShapeId id) const { return part(id).shape; }
+  const Shape& local_shape(ShapeId id) const { return part(id).local; }
+  BodyId body_of(ShapeId id) const { return body_id(part(id).body); }
+  std::uint64_t user_id(ShapeId id) const { return part(id).user_id; }
+  const Filter& filter(ShapeId id) const { return part(id).filter; }
+  bool is_sensor(ShapeId id) const { return part(id).sensor; }
   std::vector<BodyId> bodies() const;
 
   // continuous.cpp
@@ -73,19 +91,24 @@ class WorldState {
   void update();
 
   // queries.cpp: the callback forms, on which world.cpp builds the others.
-  void overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
-  void overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
-  void within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
-  void within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter) const;
+  void overlapping(const Shape& shape, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter) const;
+  void overlapping(const Aabb& box, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter) const;
+  void within(const Vec2& point, double distance, FunctionRef<bool(const BodyShape&)> visit,
+              const QueryFilter& filter) const;
+  void within(const Shape& shape, double distance, FunctionRef<bool(const BodyShape&)> visit,
+              const QueryFilter& filter) const;
   void ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                 FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter, const RayOptions& options) const;
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter, const CastOptions& options) const;
 
   // The results of the last update.
-  std::vector<BodyPair> overlapping_;
-  std::vector<BodyPair> began_;
-  std::vector<BodyPair> ended_;
+  std::vector<ShapePair> overlapping_;
+  std::vector<ShapePair> began_;
+  std::vector<ShapePair> ended_;
+  std::vector<BodyPair> body_overlapping_;
+  std::vector<BodyPair> body_began_;
+  std::vector<BodyPair> body_ended_;
   std::vector<Proximity> proximity_;
   std::vector<BodyContact> contacts_;
   std::vector<Impact> impacts_;
@@ -95,27 +118,44 @@ class WorldState {
   FrameStats stats_;
 
  private:
+  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  // A body: its pose, what it is, and its shapes as a list through Part::next.
   struct Body {
-    Shape shape;
-    Aabb box;                 // aabb(shape), kept with the pose
-    Orientation orientation;  // of the shape's angle, kept with the pose
-    double angle = 0.0;       // the body's, as posed (a circle's shape keeps none)
+    Pose pose;
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;
     bool alive = false;
     bool is_static = false;
-    bool sensor = false;
+    bool sensor = false;  // its shapes' default
     bool continuous = false;
+    std::uint32_t first = kNone;  // its first shape
+    std::uint32_t count = 0;      // its shapes
+  };
+  // A shape of a body, where the broad and the narrow phase work.
+  struct Part {
+    Shape shape;              // where it is in the world
+    Aabb box;                 // aabb(shape), kept with the pose
+    Orientation orientation;  // of the shape's world angle, kept with the pose
+    Shape local;              // in its body's frame
+    bool at_origin = true;    // local centre zero and local angle zero: the body's pose as it is
+    std::uint32_t body = 0;
+    std::uint32_t next = kNone;  // its body's next shape
+    std::uint64_t user_id = 0;
+    Filter filter;
+    std::uint32_t generation = 1;
+    bool alive = false;
+    bool is_static = false;  // its body's kind, kept here for the pair loops
+    bool sensor = false;
+    bool continuous = false;             // its body's
     ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
     AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
     std::int32_t loose = -1;             // moving: its place in loose_ while its tree leaf is out of date
     Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
-    std::vector<std::uint32_t> statics;  // moving: those neighbours (body indices)
-    Shape start;                         // continuous: the pose at the last update, where the step begins
+    std::vector<std::uint32_t> statics;  // moving: those neighbours (shape indices)
+    Shape start;                         // continuous: the place at the last update, where the step begins
   };
-  static constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
-  // An empty box, which encloses no fat box: a body entering the sweep and prune looks up its static
+  // An empty box, which encloses no fat box: a shape entering the sweep and prune looks up its static
   // neighbours at the next update.
   static inline const Aabb kNowhere{Vec2::Constant(std::numeric_limits<double>::infinity()),
                                     Vec2::Constant(-std::numeric_limits<double>::infinity())};
@@ -123,22 +163,22 @@ class WorldState {
   // A candidate pair's overlap test, decided at once or left for the chunk's batch.
   enum class Verdict : std::uint8_t { skipped, apart, touching, batched };
   static constexpr std::size_t kPairsPerChunk = 256;
-  // The pairs of one kind in a chunk, gathered for the batched overlap test (batch.h) as body
-  // indices, A's body first. Each list holds a whole chunk from the start, so that no frame grows it.
+  // The pairs of one kind in a chunk, gathered for the batched overlap test (batch.h) as shape
+  // indices, A's first. Each list holds a whole chunk from the start, so that no frame grows it.
   template <class A, class B>
   struct Batch {
     std::vector<std::uint32_t> places;  // in the chunk
     std::vector<std::uint32_t> a;
     std::vector<std::uint32_t> b;
     std::vector<std::uint8_t> verdicts;
-    void add(std::uint32_t place, std::uint32_t a_body, std::uint32_t b_body);
-    void run(const std::vector<Body>& bodies, std::vector<Verdict>& chunk_verdicts);
+    void add(std::uint32_t place, std::uint32_t a_part, std::uint32_t b_part);
+    void run(const std::vector<Part>& parts, std::vector<Verdict>& chunk_verdicts);
     void clear();
   };
   // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
   // verdict, and the batches.
   struct Found {
-    std::vector<BodyPair> overlapping;
+    std::vector<ShapePair> overlapping;
     std::vector<SensorPair> sensing;
     std::vector<Proximity> proximity;
     std::vector<BodyContact> contacts;
@@ -152,23 +192,26 @@ class WorldState {
   };
 
   std::vector<Body> bodies_;  // by BodyId::index
-  std::vector<std::uint32_t> free_;
+  std::vector<std::uint32_t> free_bodies_;
   std::size_t live_ = 0;
-  SweepAndPrune broad_;                 // the moving bodies
-  std::vector<std::uint32_t> body_of_;  // by sweep-and-prune proxy: its body, or kNoBody
-  AabbTree moving_tree_;                // the moving bodies' fat boxes as of the last update
+  std::vector<Part> parts_;  // by ShapeId::index
+  std::vector<std::uint32_t> free_parts_;
+  SweepAndPrune broad_;                 // the moving shapes
+  std::vector<std::uint32_t> part_of_;  // by sweep-and-prune proxy: its shape, or kNone
+  AabbTree moving_tree_;                // the moving shapes' fat boxes as of the last update
   double moving_perimeter_ = 0.0;       // its inner boxes' perimeters right after its last rebuild
-  std::vector<std::uint32_t> loose_;    // moving bodies whose fat box changed since the last update
+  std::vector<std::uint32_t> loose_;    // moving shapes whose fat box changed since the last update
   std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
-  AabbTree static_tree_;                                     // the static bodies' broad-phase boxes
+  AabbTree static_tree_;                                     // the static shapes' broad-phase boxes
   bool statics_changed_ = false;
   double proximity_margin_;
   bool contacts_on_;
   double speculative_margin_;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a < b
-  std::vector<BodyPair> now_;  // the narrow phase's pairs joined: storage kept between frames
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a's body < b's
+  std::vector<ShapePair> now_;  // the narrow phase's pairs joined: storage kept between frames
+  std::vector<BodyPair> bodies_now_;
   std::vector<SensorPair> sensed_;
-  std::vector<std::uint32_t> continuous_;  // the continuous bodies' indices
+  std::vector<std::uint32_t> continuous_;  // the continuous bodies' shapes
   std::function<bool(BodyId, BodyId)> pair_predicate_;
   std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing
   std::unique_ptr<ThreadPool> pool_;
@@ -176,19 +219,34 @@ class WorldState {
   // bodies.cpp
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
-  BodyId id_of(std::uint32_t index) const { return {index, bodies_[index].generation}; }
-  // The record of bodies a and b (a < b) as of now: handles and user ids.
-  BodyPair pair_of(std::uint32_t a, std::uint32_t b) const {
-    return {id_of(a), id_of(b), bodies_[a].user_id, bodies_[b].user_id};
+  Part& part(ShapeId id);
+  const Part& part(ShapeId id) const;
+  BodyId body_id(std::uint32_t index) const { return {index, bodies_[index].generation}; }
+  ShapeId shape_id(std::uint32_t index) const { return {index, parts_[index].generation}; }
+  // The record of shapes a and b (a's body < b's) as of now: handles and user ids.
+  template <class Record>
+  Record record_of(std::uint32_t a, std::uint32_t b) const {
+    const Part& x = parts_[a];
+    const Part& y = parts_[b];
+    return {body_id(x.body),         body_id(y.body),         shape_id(a), shape_id(b),
+            bodies_[x.body].user_id, bodies_[y.body].user_id, x.user_id,   y.user_id};
   }
+  std::uint32_t new_part(std::uint32_t body, const ShapeDef& def);
+  void free_part(std::uint32_t index);
   Aabb broad_box(const Aabb& box) const;
-  Aabb broad_box(const Body& b) const;
+  Aabb broad_box(const Part& p) const;
   void enter(std::uint32_t index);
   void leave(std::uint32_t index);
   void place(std::uint32_t index);
-  void pose(Body& b, const Vec2& position, double angle, const char* call);
+  void pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
+  void pose_part(Part& p, const Pose& at, const Orientation& turn);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
+  // f(index) for each shape of the body.
+  template <class F>
+  void each_part(const Body& b, F f) const {
+    for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) f(k);
+  }
 
   // update.cpp
   void refresh_moving_tree();
@@ -197,20 +255,22 @@ class WorldState {
   void narrow_chunk(std::size_t begin, std::size_t end, Found& out) const;
   Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const;
   void narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
+  void update_body_pairs();
 
   // sensors.cpp
   void sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
   void update_sensing(std::size_t chunks);
-  // update.cpp: marks the ended pairs of bodies removed since the previous update.
+  // update.cpp: marks the ended pairs of shapes or bodies removed since the previous update.
   void mark_removed();
 
   // continuous.cpp
   void impact(std::uint32_t a, std::uint32_t b, Found& out) const;
+  void keep_earliest_impacts();
   void begin_steps();
 
   // queries.cpp
   template <class Test>
-  void each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(BodyId)> visit) const;
+  void each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(const BodyShape&)> visit) const;
   // Throws std::logic_error naming `call` while a query's callback runs: the trees it walks must
   // stay as they are.
   void require_not_querying(const char* call) const;
@@ -219,6 +279,8 @@ class WorldState {
 };
 
 // Shared by the files of the World.
+// The shape with its centre and angle replaced (a circle keeps no angle).
+Shape posed(Shape shape, const Vec2& center, double angle);
 void require_finite(double value, const char* what);
 void require_margin(double value, const char* what);
 Aabb grown(const Aabb& box, double by);

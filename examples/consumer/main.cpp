@@ -24,7 +24,7 @@ int main() {
   for (int frame = 0; frame < 3; ++frame) {
     world.move_by(ship, Vec2(0.5, 0.0), 0.1);
     world.update();
-    for (const BodyPair& p : world.began()) {
+    for (const ShapePair& p : world.began()) {
       std::printf("frame %d: bodies %llu and %llu touch\n", frame, static_cast<unsigned long long>(world.user_id(p.a)),
                   static_cast<unsigned long long>(world.user_id(p.b)));
     }

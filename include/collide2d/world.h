@@ -1,21 +1,25 @@
 /// @file
-/// The World: bodies that move every frame, the broad phase that finds candidate pairs, and the
-/// narrow phase that confirms them.
+/// The World: bodies of one or more shapes that move every frame, the broad phase that finds
+/// candidate pairs of shapes, and the narrow phase that confirms them.
 ///
 ///   World world({.fat_margin = 0.1, .proximity_margin = 0.5});
 ///   BodyId id = world.add(Ellipse{Vec2(1, 2), 1.5, 0.4, 0.3}, {.user_id = 7});
 ///   world.add(Rect{Vec2(0, -1), Vec2(50, 1), 0.0}, {.is_static = true});  // the floor
 ///   world.add(Circle{Vec2(9, 0), 2.0}, {.sensor = true});                 // a trigger
+///   const ShapeDef ship[] = {{.shape = Ellipse{Vec2(0, 0), 2.0, 0.5, 0.0}},
+///                            {.shape = Rect{Vec2(0, 1), Vec2(0.3, 1.0), 0.0}}};
+///   world.add(Pose{Vec2(5, 5), 0.0}, ship);           // one body, two shapes placed in its frame
 ///   world.move_to(id, Vec2(1.1, 2.0), 0.35);           // or move_by(id, shift, turn); set_pose teleports
 ///   world.update();                                   // once per frame
-///   for (const BodyPair& p : world.overlapping()) ...  // confirmed overlaps; began()/ended() too
+///   for (const ShapePair& p : world.overlapping()) ... // confirmed overlaps; began()/ended() too
 ///
 /// What is computed is what was asked: every candidate pair gets the overlap test; a distance only
-/// with a proximity margin, for pairs apart; a contact only with contacts on. Static bodies are
-/// level geometry, kept in a tree of their own and never paired with each other. Sensors report the
-/// solid bodies that overlap them and are otherwise not solid. Continuous bodies sweep their step and
-/// report their first time of impact. Queries test the exact shapes of the bodies whose boxes they
-/// meet. docs/world.md describes each.
+/// with a proximity margin, for pairs apart; a contact only with contacts on. Pairs are of shapes
+/// and name both shapes and both bodies; the shapes of one body never pair. Static bodies are level
+/// geometry, kept in a tree of their own and never paired with each other. Sensor shapes report the
+/// solid shapes that overlap them and are otherwise not solid. Continuous bodies sweep their step
+/// and report their first time of impact. Queries test the exact shapes whose boxes they meet.
+/// docs/world.md describes each.
 ///
 /// Errors: an invalid shape throws InvalidShape; a NaN or infinite pose, margin or query argument
 /// std::invalid_argument; an unknown body or a stale handle (its body removed) std::out_of_range; a
@@ -33,6 +37,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace collide2d {
@@ -49,11 +54,19 @@ struct BodyId {
   friend auto operator<=>(const BodyId&, const BodyId&) = default;
 };
 
-/// Two bodies whose solids overlap, as of an update. A is the body of the lower slot (a.index <
-/// b.index): after a remove() and an add() the same two game objects may come the other way round,
-/// and user_a and user_b tell them apart without a lookup. The record is whole on its own: its
-/// handles may be stale (a body removed since), its user ids are as they were at the update.
-/// Records compare by their handles alone.
+/// A shape's handle: its slot and the generation of that slot, as BodyId. A body's shapes have
+/// handles of their own; remove_shape() and remove() make them stale.
+struct ShapeId {
+  std::uint32_t index = 0;
+  std::uint32_t generation = 0;
+  friend auto operator<=>(const ShapeId&, const ShapeId&) = default;
+};
+
+/// Two bodies some of whose solid shapes overlap, as of an update (body_overlapping()). A is the
+/// body of the lower slot (a.index < b.index): after a remove() and an add() the same two game
+/// objects may come the other way round, and user_a and user_b tell them apart without a lookup. The
+/// record is whole on its own: its handles may be stale (a body removed since), its user ids are as
+/// they were at the update. Records compare by their handles alone.
 struct BodyPair {
   BodyId a;
   BodyId b;
@@ -67,7 +80,32 @@ struct BodyPair {
   }
 };
 
-/// Which bodies may pair, with Box2D's semantics (b2Filter): two bodies of one non-zero group always
+/// Two solid shapes that overlap, as of an update: a shape of body a and one of body b, a the body
+/// of the lower slot as in BodyPair, with the bodies' user ids and the shapes'. Whole on its own as
+/// BodyPair is; ordered by bodies, then shapes; compared by its handles alone.
+struct ShapePair {
+  BodyId a;
+  BodyId b;
+  ShapeId shape_a;                 ///< a's shape
+  ShapeId shape_b;                 ///< b's shape
+  std::uint64_t user_a = 0;        ///< body a's user id
+  std::uint64_t user_b = 0;        ///< body b's user id
+  std::uint64_t shape_user_a = 0;  ///< shape_a's user id
+  std::uint64_t shape_user_b = 0;  ///< shape_b's user id
+  /// In ended() only: the pair ended because one of its shapes or bodies was removed since the
+  /// previous update.
+  bool removed = false;
+  friend bool operator==(const ShapePair& p, const ShapePair& q) {
+    return p.a == q.a && p.b == q.b && p.shape_a == q.shape_a && p.shape_b == q.shape_b;
+  }
+  friend std::strong_ordering operator<=>(const ShapePair& p, const ShapePair& q) {
+    if (p.a != q.a) return p.a <=> q.a;
+    if (p.b != q.b) return p.b <=> q.b;
+    return p.shape_a != q.shape_a ? p.shape_a <=> q.shape_a : p.shape_b <=> q.shape_b;
+  }
+};
+
+/// Which shapes may pair, with Box2D's semantics (b2Filter): two shapes of one non-zero group always
 /// pair when it is positive and never when it is negative; otherwise each one's category must meet
 /// the other's mask.
 struct Filter {
@@ -76,39 +114,56 @@ struct Filter {
   std::int32_t group = 0;
   friend bool operator==(const Filter&, const Filter&) = default;
 };
-/// Whether two filters let their bodies pair.
+/// Whether two filters let their shapes pair.
 bool should_pair(const Filter& a, const Filter& b);
 
-/// Which bodies a query reports (Box2D v3's b2QueryFilter): those whose category meets the query's
-/// mask and whose mask meets the query's category. The default reports every body.
+/// Which shapes a query reports (Box2D v3's b2QueryFilter): those whose category meets the query's
+/// mask and whose mask meets the query's category. The default reports every shape.
 struct QueryFilter {
   std::uint64_t category = 1;
   std::uint64_t mask = ~std::uint64_t{0};
 };
 
-/// What a body is, besides its shape.
+/// What a body is, besides its shapes; its filter and sensor flag are its shapes' defaults.
 struct BodyDef {
   std::uint64_t user_id = 0;  ///< the caller's, returned by user_id()
   Filter filter{};
   bool is_static = false;  ///< level geometry: never moves by itself, never pairs with a static body
-  bool sensor = false;     ///< reports the solid bodies that overlap it, and is otherwise not solid
+  bool sensor = false;     ///< its shapes report the solid shapes that overlap them, and are not solid
 };
 
-/// A sensor and a solid body that overlaps it, as of an update: whole on its own as BodyPair is, and
-/// compared by its handles alone.
+/// One shape of a body: `shape` is placed in the body's frame (its centre and angle are its offset
+/// and angle from the body's origin). The fields left unset take the body's (BodyDef).
+struct ShapeDef {
+  Shape shape{};
+  std::optional<std::uint64_t> user_id{};  ///< the caller's, returned by user_id(ShapeId)
+  std::optional<Filter> filter{};
+  std::optional<bool> sensor{};
+};
+
+/// A sensor shape and a solid shape of another body that overlaps it, as of an update: the bodies,
+/// the shapes and their user ids; whole on its own as ShapePair is, ordered by bodies then shapes,
+/// and compared by its handles alone.
 struct SensorPair {
-  BodyId sensor;
-  BodyId visitor;
-  std::uint64_t user_sensor = 0;   ///< the sensor's user id
-  std::uint64_t user_visitor = 0;  ///< the visitor's user id
-  /// In sensor_ended() only: the pair ended because the sensor or the visitor was removed since the
-  /// previous update.
+  BodyId sensor;   ///< the sensor shape's body
+  BodyId visitor;  ///< the visiting shape's body
+  ShapeId sensor_shape;
+  ShapeId visitor_shape;
+  std::uint64_t user_sensor = 0;         ///< the sensor body's user id
+  std::uint64_t user_visitor = 0;        ///< the visitor body's user id
+  std::uint64_t shape_user_sensor = 0;   ///< the sensor shape's user id
+  std::uint64_t shape_user_visitor = 0;  ///< the visiting shape's user id
+  /// In sensor_ended() only: the pair ended because one of its shapes or bodies was removed since
+  /// the previous update.
   bool removed = false;
   friend bool operator==(const SensorPair& p, const SensorPair& q) {
-    return p.sensor == q.sensor && p.visitor == q.visitor;
+    return p.sensor == q.sensor && p.visitor == q.visitor && p.sensor_shape == q.sensor_shape &&
+           p.visitor_shape == q.visitor_shape;
   }
   friend std::strong_ordering operator<=>(const SensorPair& p, const SensorPair& q) {
-    return p.sensor != q.sensor ? p.sensor <=> q.sensor : p.visitor <=> q.visitor;
+    if (p.sensor != q.sensor) return p.sensor <=> q.sensor;
+    if (p.visitor != q.visitor) return p.visitor <=> q.visitor;
+    return p.sensor_shape != q.sensor_shape ? p.sensor_shape <=> q.sensor_shape : p.visitor_shape <=> q.visitor_shape;
   }
 };
 
@@ -126,83 +181,105 @@ struct WorldOptions {
   unsigned threads = 0;
 };
 
-/// Two bodies apart by less than the proximity margin (A the lower slot, as in BodyPair).
+/// Two solid shapes apart by less than the proximity margin (named as in ShapePair).
 struct Proximity {
   BodyId a;
   BodyId b;
+  ShapeId shape_a;
+  ShapeId shape_b;
   std::uint64_t user_a = 0;
   std::uint64_t user_b = 0;
-  DistanceResult result;  ///< the distance and closest points, point_a on body a
+  std::uint64_t shape_user_a = 0;
+  std::uint64_t shape_user_b = 0;
+  DistanceResult result{};  ///< the distance and closest points, point_a on shape_a
 };
 
-/// The contact of an overlapping pair, or with a speculative margin of a pair apart by at most the
-/// margin (A the lower slot, as in BodyPair).
+/// The contact of an overlapping pair of shapes, or with a speculative margin of a pair apart by at
+/// most the margin (named as in ShapePair).
 struct BodyContact {
   BodyId a;
   BodyId b;
+  ShapeId shape_a;
+  ShapeId shape_b;
   std::uint64_t user_a = 0;
   std::uint64_t user_b = 0;
+  std::uint64_t shape_user_a = 0;
+  std::uint64_t shape_user_b = 0;
   /// The solids overlap (touching included): the exact verdict of overlaps(), not the sign of a
   /// separation within rounding. False for a speculative contact.
   bool touching = true;
-  Contact contact;  ///< of a's shape with b's: the normal points from a to b
+  Contact contact{};  ///< of shape_a with shape_b: the normal points from a to b
 };
 
-/// A continuous body's first contact within the step (A the lower slot, as in BodyPair).
+/// A continuous body's first contact with another body within the step: one per pair of bodies, the
+/// earliest over their shapes' pairs, naming the two shapes that meet (as in ShapePair).
 struct Impact {
   BodyId a;
   BodyId b;
+  ShapeId shape_a;
+  ShapeId shape_b;
   std::uint64_t user_a = 0;
   std::uint64_t user_b = 0;
+  std::uint64_t shape_user_a = 0;
+  std::uint64_t shape_user_b = 0;
   double t = 0.0;               ///< the first time of contact within the step, in [0, 1]
   Vec2 normal = Vec2::UnitX();  ///< from a to b
   Vec2 point = Vec2::Zero();
 };
 
-/// The first body a cast shape meets.
+/// A shape a query finds, and its body.
+struct BodyShape {
+  BodyId body;
+  ShapeId shape;
+};
+
+/// The first shape a cast shape meets.
 struct BodyCastHit {
   BodyId body;
+  ShapeId shape;
   double fraction = 0.0;  ///< of the translation, at the first contact
   Vec2 point = Vec2::Zero();
   Vec2 normal = Vec2::UnitX();  ///< the body's outward normal there, towards the cast shape
 };
 
-/// A body a ray meets.
+/// A shape a ray meets.
 struct RayHit {
   BodyId body;
+  ShapeId shape;
   double distance = 0.0;  ///< from the ray's origin to the hit point
   Vec2 point = Vec2::Zero();
-  Vec2 normal = Vec2::Zero();  ///< the body's outward unit normal there; zero when the ray starts inside
+  Vec2 normal = Vec2::Zero();  ///< the shape's outward unit normal there; zero when the ray starts inside
 };
 
-/// How a ray treats a body that contains its origin.
+/// How a ray treats a shape that contains its origin.
 struct RayOptions {
-  /// Report such a body, hit at distance 0 with a zero normal, instead of skipping it.
+  /// Report such a shape, hit at distance 0 with a zero normal, instead of skipping it.
   bool from_inside = false;
 };
 
-/// How a cast treats a body that the shape overlaps at the start.
+/// How a cast treats a shape that the cast shape overlaps at the start.
 struct CastOptions {
-  /// Skip such a body, instead of reporting it hit at fraction 0 (a shape that starts in contact
+  /// Skip such a shape, instead of reporting it hit at fraction 0 (a shape that starts in contact
   /// with the ground then finds the wall it moves towards).
   bool skip_initial_overlap = false;
 };
 
 /// What the last update did.
 struct FrameStats {
-  std::size_t candidates = 0;   ///< pairs from the broad phase
+  std::size_t candidates = 0;   ///< pairs of shapes from the broad phase
   std::size_t filtered = 0;     ///< of them, dropped by the filters or the pair predicate
   std::size_t overlapping = 0;  ///< confirmed by the narrow phase
   std::size_t proximity = 0;
   std::size_t contacts = 0;
   std::size_t impacts = 0;
   std::size_t sensing = 0;    ///< sensor pairs
-  std::size_t requeried = 0;  ///< moving bodies whose static neighbours were looked up again
+  std::size_t requeried = 0;  ///< moving shapes whose static neighbours were looked up again
   double broad_seconds = 0.0;
   double narrow_seconds = 0.0;  ///< with the moving bodies' query tree, kept up to date alongside
 };
 
-/// Where a body is: the position and angle of its origin (its shape's centre and angle).
+/// Where a body is: the position and angle of its origin. A body added with one shape has its origin
+/// at that shape's centre and angle.
 struct Pose {
   Vec2 position = Vec2::Zero();
   double angle = 0.0;
@@ -218,11 +295,19 @@ class World {
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
 
-  /// Adds a body; it pairs from the next update.
+  /// Adds a body of one shape, its origin at the shape's centre and angle; it pairs from the next
+  /// update.
   BodyId add(const Shape& shape, const BodyDef& def = {});
+  /// Adds a body at `pose` with the shapes (at least one), each placed in the body's frame.
+  BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def = {});
+  /// Adds a shape to a body, placed in its frame; it pairs from the next update.
+  ShapeId add_shape(BodyId body, const ShapeDef& shape);
+  /// Removes a shape; its pairs end at the next update, and its handle is stale from now on. A
+  /// body's last shape is refused (std::invalid_argument): remove the body instead.
+  void remove_shape(ShapeId id);
   /// Puts a body at a pose: a teleport, as Box2D's b2Body_SetTransform. A continuous body's step
   /// starts there, so nothing between the old pose and the new one is hit. Static bodies too (each
-  /// moving body then looks its static neighbours up again).
+  /// moving shape then looks its static neighbours up again).
   void set_pose(BodyId id, const Vec2& position, double angle);
   /// Moves a body to a pose: a continuous body sweeps its way there, and the next update reports
   /// what it meets on the way (impacts()). For other bodies the same as set_pose().
@@ -231,53 +316,81 @@ class World {
   void move_by(BodyId id, const Vec2& shift, double turn = 0.0);
   /// Makes a body static or moving; a continuous body stops being continuous when it becomes static.
   void set_static(BodyId id, bool is_static);
-  /// A new filter; pairs that no longer pass end at the next update, in ended().
+  /// A new filter for the body and each of its shapes; pairs that no longer pass end at the next
+  /// update, in ended().
   void set_filter(BodyId id, const Filter& filter);
-  /// A test of the caller's, called for the candidate pairs that pass both filters (a.index <
-  /// b.index) before any narrow-phase work; false drops the pair. An empty function passes all.
+  /// A new filter for one shape.
+  void set_filter(ShapeId id, const Filter& filter);
+  /// Makes a shape a sensor or solid; its pairs of the other kind end at the next update.
+  void set_sensor(ShapeId id, bool sensor);
+  /// Places a shape anew in its body's frame (its centre and angle are the offset and angle). On a
+  /// continuous body the shape's step starts at its new place.
+  void set_local_shape(ShapeId id, const Shape& local);
+  /// A test of the caller's, called for the candidate pairs of shapes that pass both filters, with
+  /// their bodies (a.index < b.index), before any narrow-phase work; false drops the pair. An empty
+  /// function passes all.
   void set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate);
-  /// Removes a body; its pairs end at the next update, and its handle is stale from now on.
+  /// Removes a body and its shapes; their pairs end at the next update, and their handles are stale
+  /// from now on.
   void remove(BodyId id);
   /// A new proximity margin (>= 0), from the next update.
   void set_proximity_margin(double margin);
   /// A continuous body's step runs from its pose at the last update (or at this call, or at its last
   /// set_pose()) to its pose at the next update, and update() reports its first contacts within it in
-  /// impacts(). Throws std::invalid_argument for a static body.
+  /// impacts(). Each of its shapes moves from its place at the start to its place at the end along a
+  /// straight line, turning at a steady rate about its own centre. Throws std::invalid_argument for
+  /// a static body.
   void set_continuous(BodyId id, bool continuous = true);
   /// Finds the pairs of this frame: once per frame, after the poses are set.
   void update();
 
-  /// Whether the handle names a body of this World.
+  /// Whether the handle names a body (a shape) of this World.
   bool contains(BodyId id) const;
+  bool contains(ShapeId id) const;
   /// Bodies in the World.
   std::size_t size() const;
-  /// A body's pose, its shape there, its user id, filter and kind. Each throws std::out_of_range for
-  /// an unknown or stale handle.
+  /// A body's pose, its user id, filter and kind, its first shape where it is (its only one when it
+  /// was added with one), and its shapes in the order added. Each throws std::out_of_range for an
+  /// unknown or stale handle.
   Pose pose(BodyId id) const;
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
   const Filter& filter(BodyId id) const;
   bool is_static(BodyId id) const;
-  bool is_sensor(BodyId id) const;
+  bool is_sensor(BodyId id) const;  ///< the body's default for its shapes
   bool is_continuous(BodyId id) const;
+  std::vector<ShapeId> shapes(BodyId id) const;
+  /// A shape where it is in the world, as placed in its body's frame, its body, user id, filter and
+  /// kind. Each throws std::out_of_range for an unknown or stale handle.
+  const Shape& shape(ShapeId id) const;
+  const Shape& local_shape(ShapeId id) const;
+  BodyId body(ShapeId id) const;
+  std::uint64_t user_id(ShapeId id) const;
+  const Filter& filter(ShapeId id) const;
+  bool is_sensor(ShapeId id) const;
   /// Every body, by index.
   std::vector<BodyId> bodies() const;
 
-  /// The solid pairs that overlap at the last update, sorted; and those that began and ended then (an
-  /// ended pair of a body removed since the previous update has `removed` set).
-  const std::vector<BodyPair>& overlapping() const;
-  const std::vector<BodyPair>& began() const;
-  const std::vector<BodyPair>& ended() const;
-  /// Pairs apart by less than the proximity margin, sorted by pair.
+  /// The solid shape pairs that overlap at the last update, sorted; and those that began and ended
+  /// then (an ended pair of a shape or body removed since the previous update has `removed` set).
+  const std::vector<ShapePair>& overlapping() const;
+  const std::vector<ShapePair>& began() const;
+  const std::vector<ShapePair>& ended() const;
+  /// The same by bodies: the pairs of bodies with at least one overlapping pair of shapes, sorted,
+  /// and those that began and ended then.
+  const std::vector<BodyPair>& body_overlapping() const;
+  const std::vector<BodyPair>& body_began() const;
+  const std::vector<BodyPair>& body_ended() const;
+  /// Shape pairs apart by less than the proximity margin, sorted by pair.
   const std::vector<Proximity>& proximity() const;
-  /// With contacts on: the overlapping pairs' contacts and, with a speculative margin, those of the
-  /// pairs apart by at most the margin (touching false), sorted by pair; without a speculative
+  /// With contacts on: the overlapping shape pairs' contacts and, with a speculative margin, those of
+  /// the pairs apart by at most the margin (touching false), sorted by pair; without a speculative
   /// margin, one for each pair of overlapping() in its order.
   const std::vector<BodyContact>& contacts() const;
-  /// The continuous bodies' first contacts within the last step, sorted by pair.
+  /// The continuous bodies' first contacts within the last step, one per pair of bodies, sorted.
   const std::vector<Impact>& impacts() const;
-  /// Each sensor's visitors at the last update, and those that entered or left then; sorted.
-  /// sensor_ended() marks the pairs of a body removed since the previous update.
+  /// Each sensor shape's visitors at the last update, and those that entered or left then; sorted.
+  /// sensor_ended() marks the pairs of a shape or body removed since the previous update.
   const std::vector<SensorPair>& sensing() const;
   const std::vector<SensorPair>& sensor_began() const;
   const std::vector<SensorPair>& sensor_ended() const;
@@ -285,47 +398,50 @@ class World {
   const FrameStats& last_frame() const;
 
   /// Queries on the current poses (no update needed). Each comes in two forms. The callback form
-  /// calls `visit` for each body found, in the order the trees are walked, allocates nothing, and
-  /// stops when `visit` says so; the World cannot be changed from inside `visit` (a call that would
-  /// change it throws std::logic_error). The other form collects the bodies found and sorts them.
+  /// calls `visit` for each shape found, with its body, in the order the trees are walked, allocates
+  /// nothing, and stops when `visit` says so; the World cannot be changed from inside `visit` (a
+  /// call that would change it throws std::logic_error). The other form collects what was found and
+  /// sorts it: each body once, by index.
 
-  /// The solid bodies the filter lets through whose shape overlaps `shape`, by index.
+  /// The bodies with a solid shape the filter lets through that overlaps `shape`.
   std::vector<BodyId> overlapping(const Shape& shape, const QueryFilter& filter = {}) const;
-  /// visit(id) for each of them until it returns false.
-  void overlapping(const Shape& shape, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter = {}) const;
-  /// The solid bodies whose shape meets the box (which may be a segment or a point).
+  /// visit(found) for each such shape until it returns false.
+  void overlapping(const Shape& shape, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter = {}) const;
+  /// The bodies with a solid shape that meets the box (which may be a segment or a point).
   std::vector<BodyId> overlapping(const Aabb& box, const QueryFilter& filter = {}) const;
-  void overlapping(const Aabb& box, FunctionRef<bool(BodyId)> visit, const QueryFilter& filter = {}) const;
-  /// The solid bodies within `distance` (>= 0) of the point.
+  void overlapping(const Aabb& box, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter = {}) const;
+  /// The bodies with a solid shape within `distance` (>= 0) of the point.
   std::vector<BodyId> within(const Vec2& point, double distance, const QueryFilter& filter = {}) const;
-  void within(const Vec2& point, double distance, FunctionRef<bool(BodyId)> visit,
+  void within(const Vec2& point, double distance, FunctionRef<bool(const BodyShape&)> visit,
               const QueryFilter& filter = {}) const;
-  /// The solid bodies within `distance` (>= 0) of the shape.
+  /// The bodies with a solid shape within `distance` (>= 0) of the shape.
   std::vector<BodyId> within(const Shape& shape, double distance, const QueryFilter& filter = {}) const;
-  void within(const Shape& shape, double distance, FunctionRef<bool(BodyId)> visit,
+  void within(const Shape& shape, double distance, FunctionRef<bool(const BodyShape&)> visit,
               const QueryFilter& filter = {}) const;
 
-  /// The first body hit by the ray from `origin` along `direction` (any non-zero length) within
-  /// `max_distance` (the lowest body index on a tie). Exact on curves. A body that contains the
-  /// origin is skipped, as in Box2D v3, unless `options.from_inside`.
+  /// The first shape hit by the ray from `origin` along `direction` (any non-zero length) within
+  /// `max_distance` (the lowest body index, then shape index, on a tie). Exact on curves. A shape
+  /// that contains the origin is skipped, as in Box2D v3, unless `options.from_inside`.
   std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                                  const QueryFilter& filter = {}, const RayOptions& options = {}) const;
-  /// visit(hit) for the bodies the ray hits within its reach, nearest boxes first but not sorted.
+  /// visit(hit) for the shapes the ray hits within its reach, nearest boxes first but not sorted.
   /// The reach starts at max_distance; visit returns what to do next, as Box2D v3's b2CastResultFcn
   /// in units of max_distance: a negative value goes on, 0 stops, a value in (0, reach) shortens the
   /// reach to it (return hit.distance to keep only nearer hits), a larger one goes on.
   void ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                 FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter = {},
                 const RayOptions& options = {}) const;
-  /// Every body the ray hits within `max_distance`, nearest first (by body index on a tie).
+  /// Every shape the ray hits within `max_distance`, nearest first (by body index, then shape index,
+  /// on a tie).
   std::vector<RayHit> ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
                                    const QueryFilter& filter = {}, const RayOptions& options = {}) const;
 
-  /// The first body the shape meets when translated by `translation` (the lowest body index on a
-  /// tie). A body it overlaps at the start is hit at fraction 0, unless `options.skip_initial_overlap`.
+  /// The first shape the cast shape meets when translated by `translation` (the lowest body index,
+  /// then shape index, on a tie). A shape it overlaps at the start is hit at fraction 0, unless
+  /// `options.skip_initial_overlap`.
   std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {},
                                   const CastOptions& options = {}) const;
-  /// visit(hit) for the bodies the translated shape meets, as ray_cast()'s callback form, in
+  /// visit(hit) for the shapes the translated shape meets, as ray_cast()'s callback form, in
   /// fractions of the translation: the reach starts at 1.
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter = {}, const CastOptions& options = {}) const;

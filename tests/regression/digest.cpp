@@ -316,15 +316,15 @@ void corpus(const std::filesystem::path& root) {
 }
 
 void add(Hash& h, const World& world) {
-  for (const BodyPair& p : world.overlapping()) {
+  for (const ShapePair& p : world.overlapping()) {
     h.add(std::uint64_t(p.a.index));
     h.add(std::uint64_t(p.b.index));
   }
-  for (const BodyPair& p : world.began()) {
+  for (const ShapePair& p : world.began()) {
     h.add(std::uint64_t(p.a.index));
     h.add(std::uint64_t(p.b.index));
   }
-  for (const BodyPair& p : world.ended()) {
+  for (const ShapePair& p : world.ended()) {
     h.add(std::uint64_t(p.a.index));
     h.add(std::uint64_t(p.b.index));
   }

@@ -42,24 +42,26 @@ std::size_t heap_in_use() {
 // overlap lies inside both boxes, so the box test only saves time). At 100,000 bodies this is 5e9
 // box tests. Also returns the pairs whose boxes meet, for sampling.
 struct BruteForce {
-  std::vector<BodyPair> overlapping;
+  std::vector<ShapePair> overlapping;
   std::vector<SensorPair> sensing;
-  std::vector<BodyPair> boxes_meet;  // the solid pairs the World pairs
+  std::vector<ShapePair> boxes_meet;  // the solid pairs the World pairs
 };
 
 BruteForce all_pairs(const World& world) {
   BruteForce out;
-  for (const BodyPair& p : reference::exact_box_pairs(world, 0.0)) {
+  for (const ShapePair& p : reference::exact_box_pairs(world, 0.0)) {
     if (world.is_static(p.a) && world.is_static(p.b)) continue;
-    const bool sa = world.is_sensor(p.a), sb = world.is_sensor(p.b);
+    const bool sa = world.is_sensor(p.shape_a), sb = world.is_sensor(p.shape_b);
     if (sa && sb) continue;
+    const bool touch = overlaps(world.shape(p.shape_a), world.shape(p.shape_b));
     if (sa || sb) {
-      if (overlaps(world.shape(p.a), world.shape(p.b)))
-        out.sensing.push_back(sa ? SensorPair{p.a, p.b} : SensorPair{p.b, p.a});
+      if (touch)
+        out.sensing.push_back(sa ? SensorPair{p.a, p.b, p.shape_a, p.shape_b}
+                                 : SensorPair{p.b, p.a, p.shape_b, p.shape_a});
       continue;
     }
     out.boxes_meet.push_back(p);
-    if (overlaps(world.shape(p.a), world.shape(p.b))) out.overlapping.push_back(p);
+    if (touch) out.overlapping.push_back(p);
   }
   std::sort(out.sensing.begin(), out.sensing.end());
   return out;
@@ -72,9 +74,9 @@ int reference_disagreements(const World& world, const BruteForce& all, std::mt19
   for (int k = 0; k < samples; ++k) {
     const auto& from = k % 2 == 0 && !all.overlapping.empty() ? all.overlapping : all.boxes_meet;
     if (from.empty()) continue;
-    const BodyPair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
+    const ShapePair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
     const bool reported = std::binary_search(world.overlapping().begin(), world.overlapping().end(), p);
-    if (reported != reference::overlap(world.shape(p.a), world.shape(p.b))) {
+    if (reported != reference::overlap(world.shape(p.shape_a), world.shape(p.shape_b))) {
       std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a.index, p.b.index, reported,
                   !reported);
       ++wrong;

@@ -51,10 +51,10 @@ void expect_matches_all_pairs(const World& world, double margin, const std::stri
   const reference::AllPairs expected = reference::all_pairs(world, margin);
   ASSERT_EQ(world.overlapping(), expected.overlapping) << what;
   ASSERT_EQ(world.sensing(), expected.sensing) << what;
-  std::vector<BodyPair> reported;
+  std::vector<ShapePair> reported;
   for (const Proximity& p : world.proximity()) {
-    reported.push_back({p.a, p.b});
-    ASSERT_EQ(p.result.distance, distance(world.shape(p.a), world.shape(p.b)).distance);
+    reported.push_back({p.a, p.b, p.shape_a, p.shape_b});
+    ASSERT_EQ(p.result.distance, distance(world.shape(p.shape_a), world.shape(p.shape_b)).distance);
   }
   ASSERT_EQ(reported, expected.near) << what;
 }
@@ -70,7 +70,10 @@ void expect_changes(const std::vector<Pair>& previous, const std::vector<Pair>& 
   ASSERT_EQ(ended, lost) << what;
 }
 
-bool has(const std::vector<BodyPair>& sorted, const BodyPair& p) {
+// The pair of two bodies of one shape each.
+ShapePair solo_pair(const World& world, BodyId x, BodyId y) { return {x, y, world.shapes(x)[0], world.shapes(y)[0]}; }
+
+bool has(const std::vector<ShapePair>& sorted, const ShapePair& p) {
   return std::binary_search(sorted.begin(), sorted.end(), p);
 }
 
@@ -79,23 +82,23 @@ bool has(const std::vector<BodyPair>& sorted, const BodyPair& p) {
 // and a sample of them, half from the World's overlapping pairs, is checked against the 50-digit
 // reference: the verdict, and with a margin, the distance and membership of the proximity list.
 void expect_sample_matches_reference(const World& world, double margin, Rng& rng, const std::string& what) {
-  const std::vector<BodyPair> near = reference::exact_box_pairs(world, margin / 2);
-  for (const BodyPair& p : world.overlapping()) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
-  std::vector<BodyPair> proximity;
-  for (const Proximity& p : world.proximity()) proximity.push_back({p.a, p.b});
-  for (const BodyPair& p : proximity) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
-  const auto pick = [&rng](const std::vector<BodyPair>& from) {
+  const std::vector<ShapePair> near = reference::exact_box_pairs(world, margin / 2);
+  for (const ShapePair& p : world.overlapping()) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
+  for (const Proximity& p : world.proximity())
+    ASSERT_TRUE(has(near, {p.a, p.b, p.shape_a, p.shape_b})) << what << ": exact boxes apart";
+  const auto pick = [&rng](const std::vector<ShapePair>& from) {
     return from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
   };
   for (int k = 0; k < 12; ++k) {
-    const BodyPair p = k % 2 == 0 && !world.overlapping().empty() ? pick(world.overlapping()) : pick(near);
-    const Shape& a = world.shape(p.a);
-    const Shape& b = world.shape(p.b);
+    const ShapePair p = k % 2 == 0 && !world.overlapping().empty() ? pick(world.overlapping()) : pick(near);
+    const Shape& a = world.shape(p.shape_a);
+    const Shape& b = world.shape(p.shape_b);
     ASSERT_EQ(has(world.overlapping(), p), reference::overlap(a, b)) << what << ": " << p.a.index << "-" << p.b.index;
     if (margin == 0 || has(world.overlapping(), p)) continue;
     const double d = static_cast<double>(reference::distance(a, b));
-    const auto reported = std::find_if(world.proximity().begin(), world.proximity().end(),
-                                       [&p](const Proximity& q) { return q.a == p.a && q.b == p.b; });
+    const auto reported = std::find_if(world.proximity().begin(), world.proximity().end(), [&p](const Proximity& q) {
+      return q.shape_a == p.shape_a && q.shape_b == p.shape_b;
+    });
     // Within rounding of the margin either answer is right.
     const double scale = 20.0, tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
     if (std::abs(d - margin) > tolerance) ASSERT_EQ(reported != world.proximity().end(), d <= margin) << what;
@@ -109,7 +112,7 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
     World world({.fat_margin = 0.05, .proximity_margin = margin});
     std::vector<Vec2> velocity(400);
     for (int k = 0; k < 250; ++k) world.add(random_shape(rng, 15.0), {.user_id = static_cast<std::uint64_t>(k)});
-    std::vector<BodyPair> previous;
+    std::vector<ShapePair> previous;
     for (int frame = 0; frame < 40; ++frame) {
       for (const BodyId id : world.bodies()) {
         if (id.index >= velocity.size()) velocity.resize(id.index + 1);
@@ -324,7 +327,8 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
           const Contact c = contact(a, b, {.margin = margin});
           const bool touching = overlaps(a, b);
           if (touching || (margin > 0 && c.separation <= margin)) {
-            expected.push_back({ids[i], ids[j], world.user_id(ids[i]), world.user_id(ids[j]), touching, c});
+            expected.push_back({ids[i], ids[j], world.shapes(ids[i])[0], world.shapes(ids[j])[0], world.user_id(ids[i]),
+                                world.user_id(ids[j]), world.user_id(ids[i]), world.user_id(ids[j]), touching, c});
           }
         }
       }
@@ -415,13 +419,13 @@ TEST(World, EventsOfRemovedBodiesAreWholeRecords) {
   world.update();
   ASSERT_EQ(world.overlapping().size(), 2u);  // enemy-player, player-rock
   ASSERT_EQ(world.sensing().size(), 2u);      // enemy and player in the trigger
-  for (const BodyPair& p : world.overlapping()) EXPECT_EQ(p.user_a, world.user_id(p.a));
+  for (const ShapePair& p : world.overlapping()) EXPECT_EQ(p.user_a, world.user_id(p.a));
   world.remove(enemy);
   world.move_by(rock, Vec2(5, 0));  // ends player-rock without a removal
   world.update();
   world.add(Circle{Vec2(50, 50), 1}, {.user_id = 50});  // takes the enemy's slot
   std::vector<std::string> log;
-  for (const BodyPair& p : world.ended()) {
+  for (const ShapePair& p : world.ended()) {
     log.push_back(std::to_string(p.user_a) + "-" + std::to_string(p.user_b) + (p.removed ? " removed" : " parted"));
     if (!p.removed) EXPECT_EQ(world.user_id(p.a), p.user_a);
   }
@@ -589,7 +593,9 @@ TEST(World, ImpactsMatchAllPairs) {
         const TimeOfImpact r = time_of_impact(ci ? start[i] : world.shape(ids[i]), motion(i, ci),
                                               cj ? start[j] : world.shape(ids[j]), motion(j, cj));
         if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled)
-          expected.push_back({ids[i], ids[j], world.user_id(ids[i]), world.user_id(ids[j]), r.t, r.normal, r.point});
+          expected.push_back({ids[i], ids[j], world.shapes(ids[i])[0], world.shapes(ids[j])[0], world.user_id(ids[i]),
+                              world.user_id(ids[j]), world.user_id(ids[i]), world.user_id(ids[j]), r.t, r.normal,
+                              r.point});
       }
     }
     ASSERT_EQ(world.impacts().size(), expected.size()) << "frame " << frame;
@@ -629,7 +635,7 @@ TEST(World, CastFindsTheFirstBody) {
       }
       const auto hit = shape_cast(probe, translation, world.shape(id));
       if (hit && (!best || hit->fraction < best->fraction))
-        best = BodyCastHit{id, hit->fraction, hit->point, hit->normal};
+        best = BodyCastHit{id, world.shapes(id)[0], hit->fraction, hit->point, hit->normal};
     }
     const auto got = world.cast(probe, translation, {}, options);
     ASSERT_EQ(got.has_value(), best.has_value()) << k;
@@ -689,14 +695,14 @@ TEST(World, CallbackQueriesStopWhenTold) {
     const Vec2 origin(uniform(rng, -1, 11), uniform(rng, -1, 11));
     const Vec2 direction(uniform(rng, -1, 1), uniform(rng, -1, 1));
     std::vector<BodyId> seen;
-    world.within(probe, 0.5, [&seen](BodyId id) {
-      seen.push_back(id);
+    world.within(probe, 0.5, [&seen](const BodyShape& found) {
+      seen.push_back(found.body);
       return true;
     });
     std::sort(seen.begin(), seen.end());
     ASSERT_EQ(seen, world.within(probe, 0.5)) << k;
     int calls = 0;
-    world.within(probe, 0.5, [&calls](BodyId) { return ++calls < 2; });
+    world.within(probe, 0.5, [&calls](const BodyShape&) { return ++calls < 2; });
     EXPECT_EQ(calls, std::min<int>(2, static_cast<int>(seen.size()))) << k;
     stopped += seen.size() > 2;
 
@@ -734,7 +740,8 @@ TEST(World, ChangesFromInsideACallbackAreRefused) {
       refusals.push_back(e.what());
     }
   };
-  world.overlapping(Circle{{0.5, 0}, 0.1}, [&](BodyId id) {
+  world.overlapping(Circle{{0.5, 0}, 0.1}, [&](const BodyShape& found) {
+    const BodyId id = found.body;
     refused([&] { world.remove(id); });
     refused([&] { world.add(Circle{{5, 5}, 1}); });
     refused([&] { world.move_by(id, {1, 0}); });
@@ -752,8 +759,9 @@ TEST(World, ChangesFromInsideACallbackAreRefused) {
   EXPECT_EQ(world.size(), 2u);
   EXPECT_EQ(world.pose(a).position, Vec2(0, 0));
   EXPECT_EQ(world.filter(b).category, 1u);
-  EXPECT_THROW(world.overlapping(Aabb{{-1, -1}, {1, 1}}, [](BodyId) -> bool { throw std::runtime_error("game"); }),
-               std::runtime_error);
+  EXPECT_THROW(
+      world.overlapping(Aabb{{-1, -1}, {1, 1}}, [](const BodyShape&) -> bool { throw std::runtime_error("game"); }),
+      std::runtime_error);
   world.remove(b);
   world.update();
   EXPECT_EQ(world.size(), 1u);
@@ -794,7 +802,7 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
   for (int k = 0; k < 200; ++k)
     world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = random_filter(rng)});
   world.set_pair_predicate([&world](BodyId a, BodyId b) { return (world.user_id(a) + world.user_id(b)) % 5 != 0; });
-  std::vector<BodyPair> previous;
+  std::vector<ShapePair> previous;
   std::size_t refused = 0, ended_by_filters = 0;
   for (int frame = 0; frame < 20; ++frame) {
     std::vector<BodyPair> moved_apart;
@@ -808,14 +816,14 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
     }
     world.update();
     const std::vector<BodyId> ids = world.bodies();
-    std::vector<BodyPair> expected;
+    std::vector<ShapePair> expected;
     for (std::size_t i = 0; i < ids.size(); ++i) {
       for (std::size_t j = i + 1; j < ids.size(); ++j) {
         if (!overlaps(world.shape(ids[i]), world.shape(ids[j]))) continue;
         const bool pass = should_pair(world.filter(ids[i]), world.filter(ids[j])) &&
                           (world.user_id(ids[i]) + world.user_id(ids[j])) % 5 != 0;
         if (pass) {
-          expected.push_back({ids[i], ids[j]});
+          expected.push_back(solo_pair(world, ids[i], ids[j]));
         } else {
           ++refused;
         }
@@ -858,7 +866,7 @@ TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
       if (distance(probe, world.shape(id)).distance <= 0.5) near.push_back(id);
       const auto r = ray_cast(world.shape(id), origin, Vec2(dir / dir.norm()), 30.0);  // as the World scales it
       if (r && !contains(world.shape(id), origin) && (!first || r->distance < first->distance))
-        first = RayHit{id, r->distance, r->point, r->normal};
+        first = RayHit{id, world.shapes(id)[0], r->distance, r->point, r->normal};
     }
     ASSERT_EQ(world.overlapping(probe, q), hit) << k;
     ASSERT_EQ(world.within(probe, 0.5, q), near) << k;
@@ -883,7 +891,7 @@ TEST(WorldStatic, PairsMatchAllPairsWithStaticsAndSensors) {
     };
     for (int k = 0; k < 150; ++k) add(true, k % 15 == 0);
     for (int k = 0; k < 120; ++k) add(false, k % 20 == 0);
-    std::vector<BodyPair> previous;
+    std::vector<ShapePair> previous;
     std::vector<SensorPair> previous_sensing;
     std::size_t static_overlaps = 0, sensor_began = 0, sensor_ended = 0;
     for (int frame = 0; frame < 30; ++frame) {
@@ -983,9 +991,10 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
       if (distance(probe, s).distance <= 0.4) near.push_back(id);
       if (overlaps(s, box)) in_box.push_back(id);
       const auto r = contains(s, origin) ? std::nullopt : ray_cast(s, origin, unit, 15.0);
-      if (r) all.push_back({id, r->distance, r->point, r->normal});
+      const ShapeId only = world.shapes(id)[0];
+      if (r) all.push_back({id, only, r->distance, r->point, r->normal});
       const auto c = shape_cast(probe, shift, s);
-      if (c && (!cast || c->fraction < cast->fraction)) cast = BodyCastHit{id, c->fraction, c->point, c->normal};
+      if (c && (!cast || c->fraction < cast->fraction)) cast = BodyCastHit{id, only, c->fraction, c->point, c->normal};
     }
     std::stable_sort(all.begin(), all.end(), [](const RayHit& a, const RayHit& b) { return a.distance < b.distance; });
     ASSERT_EQ(world.overlapping(probe, q), hit) << k;

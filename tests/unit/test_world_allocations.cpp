@@ -105,9 +105,9 @@ TEST(WorldAllocations, CallbackQueriesAllocateNothing) {
   std::size_t found = 0, index_sum = 0;
   std::uint32_t last = 0;
   double reach_sum = 0.0;
-  const auto count = [&found, &index_sum, &last](BodyId id) {
-    index_sum += id.index;
-    last = id.index;
+  const auto count = [&found, &index_sum, &last](const BodyShape& s) {
+    index_sum += s.body.index;
+    last = s.body.index;
     return ++found > 0;
   };
   const auto hit = [&found, &index_sum, &reach_sum](const auto& h) {

@@ -165,7 +165,7 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   const Vec2 size = arena.max - arena.min;
   const World& world = run.world();
   std::set<BodyId> hit, sensing;
-  for (const BodyPair& p : world.overlapping()) hit.insert({p.a, p.b});
+  for (const ShapePair& p : world.overlapping()) hit.insert({p.a, p.b});
   for (const SensorPair& p : world.sensing()) sensing.insert(p.sensor);
   std::set<std::uint64_t> categories;
   std::size_t bullets = 0;
