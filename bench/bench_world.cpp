@@ -11,6 +11,11 @@
 //   level_moving:  with the n level bodies added as moving bodies that never move (a World without
 //                  static bodies)
 //   alone_contacts: the moving bodies alone (1,000 or 10,000) with contacts on, one thread
+//   compound:      n ships of four shapes each (a hull, two wings, a nose), one body each, posed
+//                  once a frame (the moving bodies' motion), one thread
+//   lockstep:      the same ships as 4 n bodies of one shape, each posed by hand every frame where
+//                  its ship puts it, the four of a ship in one negative filter group so that they do
+//                  not pair: what a game without bodies of several shapes does
 //
 // Counters: the frame's broad and narrow phase milliseconds (FrameStats), candidate pairs,
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
@@ -159,6 +164,56 @@ void frame(benchmark::State& state) {
   totals.report(state);
 }
 
+// A ship in its own frame: a hull, two wings and a nose.
+const Shape kShip[] = {Ellipse{Vec2(0, 0), 0.8, 0.3, 0.0}, Rect{Vec2(0, 0.6), Vec2(0.25, 0.4), 0.0},
+                       Rect{Vec2(0, -0.6), Vec2(0.25, 0.4), 0.0}, Circle{Vec2(0.9, 0), 0.25}};
+
+// The ships' scene, one iteration a frame, in either form (the lockstep poses each shape with
+// placed(), as the World does: test_world_shapes checks that both find the same pairs).
+template <bool compound>
+void ships(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::mt19937_64 rng(13);
+  Movers movers(n, Vec2::Zero(), rng);
+  World world({.fat_margin = 0.1, .threads = 1});
+  std::vector<BodyId> ids;
+  std::vector<ShapeDef> defs;
+  for (const Shape& s : kShip) defs.push_back({.shape = s});
+  for (int k = 0; k < n; ++k) {
+    if (compound) {
+      ids.push_back(world.add(Pose{movers.centre[k], movers.angle[k]}, defs));
+      continue;
+    }
+    const Orientation turn = Orientation::of(movers.angle[k]);
+    for (const Shape& s : kShip) {
+      const BodyDef def{.filter = {.group = -(k + 1)}};
+      ids.push_back(world.add(placed(s, {movers.centre[k], movers.angle[k]}, turn), def));
+    }
+  }
+  const auto step = [&] {
+    movers.step(rng);
+    for (int k = 0; k < n; ++k) {
+      if (compound) {
+        world.move_to(ids[k], movers.centre[k], movers.angle[k]);
+        continue;
+      }
+      const Orientation turn = Orientation::of(movers.angle[k]);
+      for (int j = 0; j < 4; ++j) {
+        const Shape s = placed(kShip[j], {movers.centre[k], movers.angle[k]}, turn);
+        world.set_pose(ids[4 * k + j], center_of(s), angle_of(s));
+      }
+    }
+    world.update();
+  };
+  for (int k = 0; k < 20; ++k) step();
+  FrameTotals totals;
+  for (auto _ : state) {
+    step();
+    totals.add(world.last_frame());
+  }
+  totals.report(state);
+}
+
 // Box2D 2.4.1's pipeline on the same moving bodies, the rival: each body a Box2D shape in its own
 // frame (an ellipse its inscribed 8-gon, a rectangle its 4-gon, a circle exact) with a b2Transform.
 // A frame poses every body (its transform, b2Shape::ComputeAABB, MoveProxy: b2Body's
@@ -279,15 +334,15 @@ void box2d_scene_frame(benchmark::State& state) {
   std::vector<Shape> shapes;
   std::vector<Filter> filters;
   for (const tool::SceneBody& b : scene.bodies) {
-    shapes.push_back(b.shape);
+    shapes.push_back(tool::placed_shapes(b).front());  // the built-in scene's bodies are of one shape
     filters.push_back(b.filter);
   }
   Box2dWorld world(shapes, filters);
   const auto pose = [&] {
     tool::step(scene);
     for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
-      const Shape& shape = scene.bodies[k].shape;
-      if (!scene.bodies[k].is_static) world.set_pose(k, center_of(shape), angle_of(shape));
+      const tool::SceneBody& b = scene.bodies[k];
+      if (!b.is_static) world.set_pose(k, b.pose.position, b.pose.angle);
     }
     world.update_broad_phase();
   };
@@ -297,6 +352,8 @@ void box2d_scene_frame(benchmark::State& state) {
 // Args: the level's size (for "alone", the number of moving bodies), then the World's threads: one,
 // as Box2D runs, wherever the two are compared.
 BENCHMARK(frame<Level::none>)->Name("frame/alone")->Args({1000, 1})->Unit(benchmark::kMicrosecond);
+BENCHMARK(ships<true>)->Name("frame/compound")->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(ships<false>)->Name("frame/lockstep")->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(frame<Level::none, true>)
     ->Name("frame/alone_contacts")
     ->Args({1000, 1})

@@ -21,7 +21,9 @@ const Workload<A, B>& scene_workload() {
     tool::Scene scene = tool::default_scene();
     SweepAndPrune broad(scene.fat_margin);
     std::vector<ProxyId> ids;
-    for (const tool::SceneBody& body : scene.bodies) ids.push_back(broad.insert(aabb(body.shape)));
+    // The built-in scene's bodies are of one shape each.
+    const auto shape_of = [](const tool::SceneBody& body) { return tool::placed_shapes(body).front(); };
+    for (const tool::SceneBody& body : scene.bodies) ids.push_back(broad.insert(aabb(shape_of(body))));
     Workload<A, B> out;
     const auto take = [&](const Shape& x, const Shape& y) {
       if (std::holds_alternative<A>(x) && std::holds_alternative<B>(y)) {
@@ -37,10 +39,10 @@ const Workload<A, B>& scene_workload() {
       for (const ProxyPair& p : broad.pairs()) {
         const tool::SceneBody &x = scene.bodies[p.a], &y = scene.bodies[p.b];
         if ((x.is_static && y.is_static) || x.sensor || y.sensor || !should_pair(x.filter, y.filter)) continue;
-        if (out.a.size() < kPairs) take(x.shape, y.shape);
+        if (out.a.size() < kPairs) take(shape_of(x), shape_of(y));
       }
       tool::step(scene);
-      for (std::size_t k = 0; k < ids.size(); ++k) broad.move(ids[k], aabb(scene.bodies[k].shape));
+      for (std::size_t k = 0; k < ids.size(); ++k) broad.move(ids[k], aabb(shape_of(scene.bodies[k])));
     }
     if (out.a.empty()) throw std::logic_error("the built-in scene pairs no bodies of this kind");
     for (std::size_t k = 0; out.a.size() < kPairs; ++k) {

@@ -13,16 +13,6 @@
 
 namespace collide2d {
 namespace detail {
-Shape posed(Shape shape, const Vec2& center, double angle) {
-  std::visit(
-      [&](auto& s) {
-        s.center = center;
-        if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle = angle;
-      },
-      shape);
-  return shape;
-}
-
 void require_finite(double value, const char* what) {
   if (!std::isfinite(value))
     throw std::invalid_argument(std::string(what) + " must be finite (got " + detail::shortest(value) + ')');
@@ -121,7 +111,7 @@ void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicat
 bool WorldState::passes(std::uint32_t a, std::uint32_t b) const {
   const Part& x = parts_[a];
   const Part& y = parts_[b];
-  return should_pair(x.filter, y.filter) && (!pair_predicate_ || pair_predicate_(body_id(x.body), body_id(y.body)));
+  return should_pair(x.filter, y.filter) && (!pair_predicate_ || pair_predicate_(x.body, y.body));
 }
 
 std::vector<BodyId> WorldState::bodies() const {
@@ -197,14 +187,7 @@ void WorldState::place(std::uint32_t index) {
 // A shape where its body's pose puts it: its world angle is the body's plus its own, and its
 // orientation that angle's (the kernels' contract), not the two rotations composed.
 void WorldState::pose_part(Part& p, const Pose& at, const Orientation& turn) {
-  if (p.at_origin) {
-    p.shape = posed(p.local, at.position, at.angle);
-  } else {
-    const Vec2 offset = center_of(p.local);
-    const Vec2 center =
-        at.position + Vec2(turn.c * offset.x() - turn.s * offset.y(), turn.s * offset.x() + turn.c * offset.y());
-    p.shape = posed(p.local, center, at.angle + angle_of(p.local));
-  }
+  p.shape = p.at_origin ? posed(p.shape, at.position, at.angle) : placed(p.local, at, turn);
   p.orientation = Orientation::of(angle_of(p.shape));
   p.box = aabb(p.shape, p.orientation);
 }
@@ -215,8 +198,10 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   Body& b = bodies_[body];
   Part& p = parts_[index];  // a reused slot keeps the generation free_part() gave it
   p.local = def.shape;
+  p.shape = def.shape;  // its sizes: pose_part() moves a shape at the origin as it is
   p.at_origin = center_of(def.shape) == Vec2::Zero() && angle_of(def.shape) == 0.0;
-  p.body = body;
+  p.body = body_id(body);
+  p.body_user_id = b.user_id;
   p.next = kNone;
   p.user_id = def.user_id.value_or(b.user_id);
   p.filter = def.filter.value_or(b.filter);
@@ -275,7 +260,7 @@ ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
 
 void WorldState::remove_shape(ShapeId id) {
   require_not_querying("remove_shape");
-  Body& b = bodies_[part(id).body];
+  Body& b = bodies_[part(id).body.index];
   if (b.count == 1) {
     throw std::invalid_argument("remove_shape: shape " + std::to_string(id.index) +
                                 " is its body's last; remove the body instead");
@@ -291,8 +276,9 @@ void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   require_not_querying("set_local_shape");
   Part& p = part(id);
   validate(local);
-  const Body& b = bodies_[p.body];
+  const Body& b = bodies_[p.body.index];
   p.local = local;
+  p.shape = local;
   p.at_origin = center_of(local) == Vec2::Zero() && angle_of(local) == 0.0;
   pose_part(p, b.pose, Orientation::of(b.pose.angle));
   p.start = p.shape;  // its step starts at its new place
@@ -371,6 +357,16 @@ void WorldState::set_proximity_margin(double margin) {
 }
 
 }  // namespace detail
+
+// A shape at the origin with no angle of its own takes the pose as it is: a body of one shape is
+// then posed to the bit as that shape alone (adding a zero offset or angle could flip a zero's sign).
+Shape placed(const Shape& local, const Pose& pose, const Orientation& turn) {
+  const Vec2 offset = center_of(local);
+  if (offset == Vec2::Zero() && angle_of(local) == 0.0) return detail::posed(local, pose.position, pose.angle);
+  const Vec2 center =
+      pose.position + Vec2(turn.c * offset.x() - turn.s * offset.y(), turn.s * offset.x() + turn.c * offset.y());
+  return detail::posed(local, center, pose.angle + angle_of(local));
+}
 
 bool should_pair(const Filter& a, const Filter& b) {
   if (a.group == b.group && a.group != 0) return a.group > 0;

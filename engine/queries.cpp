@@ -57,7 +57,7 @@ void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
   const auto consider = [&](std::uint32_t index) {
     const Part& p = parts_[index];
     if (!p.sensor && lets_through(filter, p.filter) && intersects(p.box, box) && test(p.shape))
-      go = visit({body_id(p.body), shape_id(index)});
+      go = visit({p.body, shape_id(index)});
     return go;
   };
   // A loose shape's leaf is out of date: it is tested from loose_ instead (see below).
@@ -134,7 +134,7 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
     if (p.sensor || !lets_through(filter, p.filter)) return reach;
     const auto hit = collide2d::ray_cast(p.shape, origin, unit, reach);
     if (!hit || (!options.from_inside && hit->normal == Vec2::Zero())) return reach;
-    return next_reach(visit(RayHit{body_id(p.body), shape_id(index), hit->distance, hit->point, hit->normal}), reach);
+    return next_reach(visit(RayHit{p.body, shape_id(index), hit->distance, hit->point, hit->normal}), reach);
   };
   double reach = max_distance;
   moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) {

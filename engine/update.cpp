@@ -62,7 +62,7 @@ void WorldState::find_candidates() {
   if (fresh(static_tree_)) static_tree_.rebuild();
   candidates_.clear();
   const auto add = [this](std::uint32_t x, std::uint32_t y) {
-    const std::uint32_t bx = parts_[x].body, by = parts_[y].body;
+    const std::uint32_t bx = parts_[x].body.index, by = parts_[y].body.index;
     if (bx != by) candidates_.push_back(bx < by ? std::pair(x, y) : std::pair(y, x));
   };
   for (const ProxyPair& p : broad_.pairs()) add(part_of_[p.a], part_of_[p.b]);
@@ -184,10 +184,16 @@ void WorldState::narrow_phase() {
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
     stats_.filtered += f.filtered;
   }
+  // By bodies, then shapes: this frame's handles are live, so their slots alone order them as the
+  // handles do, in two integer comparisons.
   const auto by_pair = [](const auto& p, const auto& q) {
-    return std::tie(p.a, p.b, p.shape_a, p.shape_b) < std::tie(q.a, q.b, q.shape_a, q.shape_b);
+    const auto key = [](const auto& r) {
+      return std::pair(std::uint64_t{r.a.index} << 32 | r.b.index,
+                       std::uint64_t{r.shape_a.index} << 32 | r.shape_b.index);
+    };
+    return key(p) < key(q);
   };
-  std::sort(now_.begin(), now_.end());
+  std::sort(now_.begin(), now_.end(), by_pair);
   std::sort(proximity_.begin(), proximity_.end(), by_pair);
   std::sort(contacts_.begin(), contacts_.end(), by_pair);
   std::sort(impacts_.begin(), impacts_.end(), by_pair);

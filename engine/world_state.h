@@ -41,6 +41,7 @@
 #include <memory>
 #include <span>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -78,7 +79,7 @@ class WorldState {
   std::vector<ShapeId> shapes(BodyId id) const;
   const Shape& shape(ShapeId id) const { return part(id).shape; }
   const Shape& local_shape(ShapeId id) const { return part(id).local; }
-  BodyId body_of(ShapeId id) const { return body_id(part(id).body); }
+  BodyId body_of(ShapeId id) const { return part(id).body; }
   std::uint64_t user_id(ShapeId id) const { return part(id).user_id; }
   const Filter& filter(ShapeId id) const { return part(id).filter; }
   bool is_sensor(ShapeId id) const { return part(id).sensor; }
@@ -134,13 +135,14 @@ class WorldState {
   };
   // A shape of a body, where the broad and the narrow phase work.
   struct Part {
-    Shape shape;              // where it is in the world
-    Aabb box;                 // aabb(shape), kept with the pose
-    Orientation orientation;  // of the shape's world angle, kept with the pose
-    Shape local;              // in its body's frame
-    bool at_origin = true;    // local centre zero and local angle zero: the body's pose as it is
-    std::uint32_t body = 0;
-    std::uint32_t next = kNone;  // its body's next shape
+    Shape shape;                     // where it is in the world
+    Aabb box;                        // aabb(shape), kept with the pose
+    Orientation orientation;         // of the shape's world angle, kept with the pose
+    Shape local;                     // in its body's frame
+    bool at_origin = true;           // local centre and angle zero: the shape takes the body's pose as it is
+    BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
+    std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
+    std::uint32_t next = kNone;      // its body's next shape
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;
@@ -228,8 +230,7 @@ class WorldState {
   Record record_of(std::uint32_t a, std::uint32_t b) const {
     const Part& x = parts_[a];
     const Part& y = parts_[b];
-    return {body_id(x.body),         body_id(y.body),         shape_id(a), shape_id(b),
-            bodies_[x.body].user_id, bodies_[y.body].user_id, x.user_id,   y.user_id};
+    return {x.body, y.body, shape_id(a), shape_id(b), x.body_user_id, y.body_user_id, x.user_id, y.user_id};
   }
   std::uint32_t new_part(std::uint32_t body, const ShapeDef& def);
   void free_part(std::uint32_t index);
@@ -279,8 +280,17 @@ class WorldState {
 };
 
 // Shared by the files of the World.
-// The shape with its centre and angle replaced (a circle keeps no angle).
-Shape posed(Shape shape, const Vec2& center, double angle);
+// The shape with its centre and angle replaced (a circle keeps no angle); inline, as it runs for
+// every shape posed.
+inline Shape posed(Shape shape, const Vec2& center, double angle) {
+  std::visit(
+      [&](auto& s) {
+        s.center = center;
+        if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle = angle;
+      },
+      shape);
+  return shape;
+}
 void require_finite(double value, const char* what);
 void require_margin(double value, const char* what);
 Aabb grown(const Aabb& box, double by);

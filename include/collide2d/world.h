@@ -285,6 +285,12 @@ struct Pose {
   double angle = 0.0;
 };
 
+/// Where a body at `pose` puts a shape placed in its frame (its centre and angle are its offset and
+/// angle from the body's origin): the offset turned by `turn` and moved to the position, the angles
+/// added. `turn` is Orientation::of(pose.angle), computed once for all of a body's shapes. The World
+/// places its bodies' shapes so, to the bit.
+Shape placed(const Shape& local, const Pose& pose, const Orientation& turn);
+
 /// Bodies, their pairs frame by frame, and queries on them.
 class World {
  public:

@@ -412,8 +412,9 @@ void worlds() {
         {.fat_margin = 0.1, .proximity_margin = 0.4, .contacts = true, .speculative_margin = 0.2, .threads = 1});
     std::vector<BodyId> ids;
     for (const tool::SceneBody& b : scene.bodies) {
-      ids.push_back(
-          world.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
+      // The built-in scene's bodies are of one shape each.
+      ids.push_back(world.add(tool::placed_shapes(b).front(),
+                              {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
       if (b.continuous) world.set_continuous(ids.back());
     }
     Hash& h = at("world", "contacts_scene");
@@ -421,7 +422,7 @@ void worlds() {
       tool::step(scene);
       for (std::size_t k = 0; k < ids.size(); ++k) {
         if (!scene.bodies[k].is_static)
-          world.move_to(ids[k], center_of(scene.bodies[k].shape), angle_of(scene.bodies[k].shape));
+          world.move_to(ids[k], scene.bodies[k].pose.position, scene.bodies[k].pose.angle);
       }
       world.update();
       add(h, world);

@@ -16,10 +16,14 @@ namespace {
 TEST(Scene, WrittenSceneReadsBackTheSame) {
   // The level: 4 walls, a slope or a rock per 200 bodies, and 4 sensors, all static.
   const auto level = [](int n) { return 4u + static_cast<std::size_t>(n / 200) + 4u; };
-  const Scene scene = default_scene(60, 10, 3);
+  Scene scene = default_scene(60, 10, 3);
+  scene.bodies.push_back({.pose = {Vec2(30, 30), 0.4},
+                          .shapes = {Ellipse{Vec2(0, 0), 2, 0.5, 0.0}, Rect{Vec2(0, 1), Vec2(0.3, 0.8), 0.2}},
+                          .velocity = Vec2(1, 2),
+                          .id = 999});
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
-  EXPECT_EQ(back.bodies.size(), 60u + level(60));
+  EXPECT_EQ(back.bodies.size(), 60u + level(60) + 1u);  // and the ship
   // One bullet per 500 bodies, continuous, and read back so.
   const Scene big = default_scene(1000, 10, 3);
   ASSERT_EQ(big.bodies.size(), 1002u + level(1000));
@@ -82,7 +86,8 @@ TEST(Scene, ExampleFileParses) {
   std::stringstream text;
   text << in.rdbuf();
   const Scene scene = parse_scene(text.str());
-  EXPECT_EQ(scene.bodies.size(), 11u);
+  EXPECT_EQ(scene.bodies.size(), 12u);
+  EXPECT_EQ(scene.bodies[11].shapes.size(), 3u);  // a ship: a hull and two wings
   EXPECT_EQ(scene.bodies[6].id, 42u);
   EXPECT_EQ(scene.bodies[5].id, 5u);
   EXPECT_TRUE(scene.bodies[8].is_static && !scene.bodies[8].sensor);
@@ -173,6 +178,15 @@ TEST(Scene, BrokenFilesNameTheField) {
        "arena: unknown field 'margin'"},
       {R"({"arena": {"min": [0, 0], "max": [1e51, 10]}, "frames": 3, "bodies": []})",
        "arena: beyond the supported range of +-1e50"},
+      {with_body(R"({"center": [1, 1], "shapes": []})"), "bodies[0].shapes: expected an array of one or more shapes"},
+      {with_body(R"({"shapes": [{"shape": "circle", "center": [0, 0], "radius": 1}]})"), "bodies[0].center: missing"},
+      {with_body(R"({"center": [1, 1], "radius": 1, "shapes": [{"shape": "circle", "center": [0, 0], "radius": 1}]})"),
+       "bodies[0]: unknown field 'radius'"},
+      {with_body(R"({"center": [1, 1], "shapes": [{"shape": "circle", "center": [0, 0], "radius": 1, "id": 3}]})"),
+       "bodies[0].shapes[0]: unknown field 'id'"},
+      {with_body(R"({"center": [1, 1], "shapes": [{"shape": "rect", "center": [0, 0], "half_extents": [1, -1]}]})"),
+       "bodies[0].shapes[0].half_extents[1]: must be positive (got -1)"},
+      {with_body(R"({"center": [1, 1], "shapes": [3]})"), "bodies[0].shapes[0]: expected an object"},
   };
   for (const auto& [text, expected] : cases) {
     try {
@@ -273,7 +287,10 @@ TEST(Run, SvgCaptionFitsTheWidth) {
   for (const Vec2& extent : {Vec2(40, 10), Vec2(30, 30), Vec2(10, 40)}) {
     Scene scene = parse_scene(R"({"arena": {"min": [0, 0], "max": [1, 1]}, "frames": 1, "bodies": []})");
     scene.arena = Aabb{Vec2(0, 0), extent};
-    for (int k = 0; k < 20; ++k) scene.bodies.push_back({Circle{Vec2(1 + k, 1 + k) / 2, 0.5}, Vec2::Zero(), 0.0, 0});
+    for (int k = 0; k < 20; ++k) {
+      const Shape ball = Circle{Vec2(1 + k, 1 + k) / 2, 0.5};
+      scene.bodies.push_back({.pose = pose_of(ball), .shapes = at_origin(ball), .id = static_cast<std::uint64_t>(k)});
+    }
     SceneRun run(scene);
     run.run(nullptr);
     std::ostringstream svg;

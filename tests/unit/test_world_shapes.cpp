@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <map>
@@ -193,6 +194,58 @@ TEST(WorldShapes, ShapesArePlacedInTheirBodysFrame) {
     EXPECT_EQ(angle_of(at_origin), angle);
   }
   EXPECT_LT(worst, 4 * std::numeric_limits<double>::epsilon());
+}
+
+// Ships of four shapes as bodies of four shapes, and as four bodies of one shape posed by hand with
+// placed() (one negative group a ship, so that a ship's shapes do not pair): the same pairs of
+// ships' shapes every frame.
+TEST(WorldShapes, ABodyOfSeveralShapesPairsAsItsShapesPosedByHand) {
+  Rng rng(53);
+  const Shape ship[] = {Ellipse{Vec2(0, 0), 0.8, 0.3, 0.0}, Rect{Vec2(0, 0.6), Vec2(0.25, 0.4), 0.3},
+                        Circle{Vec2(0.9, 0), 0.25}, Rect{Vec2(-0.7, 0), Vec2(0.3, 0.2), 0.0}};
+  std::vector<ShapeDef> defs;
+  for (const Shape& s : ship) defs.push_back({.shape = s});
+  World compound, lockstep;
+  std::vector<Pose> poses;
+  std::vector<BodyId> bodies, parts;
+  for (int k = 0; k < 300; ++k) {
+    poses.push_back({Vec2(uniform(rng, 0, 25), uniform(rng, 0, 25)), uniform(rng, -3, 3)});
+    bodies.push_back(compound.add(poses.back(), defs));
+    for (const Shape& s : ship)
+      parts.push_back(
+          lockstep.add(placed(s, poses.back(), Orientation::of(poses.back().angle)), {.filter = {.group = -(k + 1)}}));
+  }
+  std::size_t pairs = 0;
+  for (int frame = 0; frame < 30; ++frame) {
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      poses[k].position += Vec2(uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2));
+      poses[k].angle += uniform(rng, -0.1, 0.1);
+      compound.move_to(bodies[k], poses[k].position, poses[k].angle);
+      const Orientation turn = Orientation::of(poses[k].angle);
+      for (std::size_t j = 0; j < 4; ++j) {
+        const Shape s = placed(ship[j], poses[k], turn);
+        lockstep.set_pose(parts[4 * k + j], center_of(s), angle_of(s));
+      }
+    }
+    compound.update();
+    lockstep.update();
+    // Both as (ship, part, ship, part); a body's shapes are listed in the order added.
+    std::vector<std::array<std::uint32_t, 4>> got, expected;
+    for (const ShapePair& p : compound.overlapping()) {
+      const auto part = [&](BodyId b, ShapeId s) {
+        const std::vector<ShapeId> shapes = compound.shapes(b);
+        return static_cast<std::uint32_t>(std::find(shapes.begin(), shapes.end(), s) - shapes.begin());
+      };
+      got.push_back({p.a.index, part(p.a, p.shape_a), p.b.index, part(p.b, p.shape_b)});
+    }
+    for (const ShapePair& p : lockstep.overlapping())
+      expected.push_back({p.a.index / 4, p.a.index % 4, p.b.index / 4, p.b.index % 4});
+    std::sort(got.begin(), got.end());
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(got, expected) << "frame " << frame;
+    pairs += got.size();
+  }
+  EXPECT_GT(pairs, 1000u);
 }
 
 // A continuous body of two shapes swept past a wall and a post: one impact per pair of bodies, the

@@ -59,10 +59,15 @@ void reject_unknown_keys(const json& object, std::initializer_list<const char*> 
   }
 }
 
-// The fields of a body, besides its shape's own.
+// The fields of a body of one shape, besides its shape's own; of a body of several; and of each of
+// its shapes, besides the shape's own.
 constexpr std::initializer_list<const char*> kBodyFields = {"shape", "center",     "velocity", "angular_velocity",
                                                             "id",    "continuous", "category", "mask",
                                                             "group", "static",     "sensor"};
+constexpr std::initializer_list<const char*> kCompoundFields = {
+    "shapes",     "center",   "angle", "velocity", "angular_velocity", "id",
+    "continuous", "category", "mask",  "group",    "static",           "sensor"};
+constexpr std::initializer_list<const char*> kPartFields = {"shape", "center"};
 
 struct ShapeFields {
   const char* kind;
@@ -77,13 +82,15 @@ bool listed(std::initializer_list<const char*> names, const std::string& key) {
   return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
 }
 
-// Each field of the body is one of its shape's or a body's: a circle's "a" is refused by name.
-void reject_unknown_fields(const json& b, const std::string& kind, const std::string& field) {
+// Each field is one of its shape's or one of `others` (a body's, or a placed shape's): a circle's
+// "a" is refused by name.
+void reject_unknown_fields(const json& b, const std::string& kind, const std::string& field,
+                           std::initializer_list<const char*> others) {
   const ShapeFields* own = nullptr;
   for (const ShapeFields& s : kShapeFields) own = kind == s.kind ? &s : own;
   for (const auto& item : b.items()) {
     const std::string& key = item.key();
-    if (listed(kBodyFields, key) || (own != nullptr && listed(own->fields, key))) continue;
+    if (listed(others, key) || (own != nullptr && listed(own->fields, key))) continue;
     const bool elsewhere = std::any_of(std::begin(kShapeFields), std::end(kShapeFields),
                                        [&key](const ShapeFields& s) { return listed(s.fields, key); });
     if (own != nullptr && elsewhere) {
@@ -94,11 +101,12 @@ void reject_unknown_fields(const json& b, const std::string& kind, const std::st
   }
 }
 
-Shape parse_shape(const json& b, const std::string& field) {
+Shape parse_shape(const json& b, const std::string& field, std::initializer_list<const char*> others) {
+  if (!b.is_object()) fail(field, "expected an object");
   const json& word = member(b, "shape", field);
   if (!word.is_string()) fail(field + ".shape", "expected a string, got " + word.dump());
   const std::string kind = word.get<std::string>();
-  reject_unknown_fields(b, kind, field);
+  reject_unknown_fields(b, kind, field, others);
   const Vec2 center = vec2(member(b, "center", field), field + ".center");
   const double angle = optional_number(b, "angle", field, 0.0);
   if (kind == "circle") {
@@ -122,6 +130,31 @@ Shape parse_shape(const json& b, const std::string& field) {
   fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse or rect)");
 }
 
+// A shape the library takes: the ranges it supports.
+Shape valid_shape(const Shape& shape, const std::string& field) {
+  try {
+    validate(shape);
+  } catch (const InvalidShape& e) {
+    fail(field, e.what());
+  }
+  return shape;
+}
+
+// A body of several shapes: its pose, and its shapes placed in its frame.
+void parse_shapes(const json& b, const std::string& field, SceneBody& body) {
+  reject_unknown_keys(b, kCompoundFields, field);
+  body.pose.position = vec2(member(b, "center", field), field + ".center");
+  body.pose.angle = optional_number(b, "angle", field, 0.0);
+  if (body.pose.position.cwiseAbs().maxCoeff() > kMaxMagnitude)
+    fail(field + ".center", "beyond the supported range of +-1e50");
+  const json& shapes = member(b, "shapes", field);
+  if (!shapes.is_array() || shapes.empty()) fail(field + ".shapes", "expected an array of one or more shapes");
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const std::string part = field + ".shapes[" + std::to_string(k) + "]";
+    body.shapes.push_back(valid_shape(parse_shape(shapes[k], part, kPartFields), part));
+  }
+}
+
 std::uint64_t bits(const json& object, const char* key, const std::string& field, std::uint64_t fallback) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
@@ -143,11 +176,12 @@ SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = body_field(index);
   if (!b.is_object()) fail(field, "expected an object");
   SceneBody body;
-  body.shape = parse_shape(b, field);
-  try {
-    validate(body.shape);  // the ranges the library supports
-  } catch (const InvalidShape& e) {
-    fail(field, e.what());
+  if (b.contains("shapes")) {
+    parse_shapes(b, field, body);
+  } else {
+    const Shape shape = valid_shape(parse_shape(b, field, kBodyFields), field);
+    body.pose = pose_of(shape);
+    body.shapes = at_origin(shape);
   }
   if (const auto it = b.find("velocity"); it != b.end()) body.velocity = vec2(*it, field + ".velocity");
   body.angular_velocity = optional_number(b, "angular_velocity", field, 0.0);
@@ -214,9 +248,37 @@ bool same_shape(const Shape& a, const Shape& b) {
 
 }  // namespace
 
+Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
+
+std::vector<Shape> at_origin(const Shape& shape) {
+  return {std::visit(
+      [](auto s) -> Shape {
+        s.center = Vec2::Zero();
+        if constexpr (!std::is_same_v<decltype(s), Circle>) s.angle = 0.0;
+        return s;
+      },
+      shape)};
+}
+
+std::vector<Shape> placed_shapes(const SceneBody& body) {
+  std::vector<Shape> out;
+  const Orientation turn = Orientation::of(body.pose.angle);
+  for (const Shape& s : body.shapes) out.push_back(placed(s, body.pose, turn));
+  return out;
+}
+
+Aabb box_of(const SceneBody& body) {
+  const std::vector<Shape> shapes = placed_shapes(body);
+  Aabb box = aabb(shapes.front());
+  for (const Shape& s : shapes) box = {box.min.cwiseMin(aabb(s).min), box.max.cwiseMax(aabb(s).max)};
+  return box;
+}
+
 bool SceneBody::operator==(const SceneBody& o) const {
-  return same_shape(shape, o.shape) && velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id &&
-         continuous == o.continuous && filter == o.filter && is_static == o.is_static && sensor == o.sensor;
+  return pose.position == o.pose.position && pose.angle == o.pose.angle &&
+         std::equal(shapes.begin(), shapes.end(), o.shapes.begin(), o.shapes.end(), same_shape) &&
+         velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id && continuous == o.continuous &&
+         filter == o.filter && is_static == o.is_static && sensor == o.sensor;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -276,11 +338,11 @@ void check_motion(const Scene& scene) {
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const SceneBody& b = scene.bodies[k];
     if (b.is_static) continue;
-    const Aabb box = aabb(b.shape);
-    const Vec2 reach = 0.5 * (box.max - box.min);
+    const Aabb box = box_of(b);
+    const Vec2 reach = (box.max - b.pose.position).cwiseMax(b.pose.position - box.min);
     const Vec2 step = scene.dt * b.velocity.cwiseAbs();
     for (int i = 0; i < 2; ++i) {
-      const double far = std::max({std::abs(center_of(b.shape)[i]), std::abs(scene.arena.min[i]) + reach[i],
+      const double far = std::max({std::abs(b.pose.position[i]), std::abs(scene.arena.min[i]) + reach[i],
                                    std::abs(scene.arena.max[i]) + reach[i]});
       if (!(far + step[i] <= kMaxMagnitude)) {
         fail(body_field(k) + ".velocity", "a frame's step of " + json(step[i]).dump() +
@@ -288,7 +350,7 @@ void check_motion(const Scene& scene) {
       }
     }
     const double turn = static_cast<double>(scene.frames) * scene.dt * std::abs(b.angular_velocity);
-    if (!std::isfinite(std::abs(angle_of(b.shape)) + turn)) {
+    if (!std::isfinite(std::abs(b.pose.angle) + turn)) {
       fail(body_field(k) + ".angular_velocity", "turns the body to an angle beyond the finite numbers over the run");
     }
   }
@@ -297,7 +359,14 @@ void check_motion(const Scene& scene) {
 std::string write_scene(const Scene& scene) {
   json bodies = json::array();
   for (const SceneBody& b : scene.bodies) {
-    json j = shape_json(b.shape);
+    json j;
+    if (b.shapes.size() == 1 && center_of(b.shapes[0]) == Vec2::Zero() && angle_of(b.shapes[0]) == 0.0) {
+      j = shape_json(placed_shapes(b).front());
+    } else {
+      j["center"] = {b.pose.position.x(), b.pose.position.y()};
+      j["angle"] = b.pose.angle;
+      for (const Shape& s : b.shapes) j["shapes"].push_back(shape_json(s));
+    }
     j["velocity"] = {b.velocity.x(), b.velocity.y()};
     j["angular_velocity"] = b.angular_velocity;
     j["id"] = b.id;
@@ -339,7 +408,12 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
   const Vec2 size = scene.arena.max - scene.arena.min, mid = 0.5 * (scene.arena.min + scene.arena.max);
   auto next_id = static_cast<std::uint64_t>(scene.bodies.size());
   const auto add = [&](const Shape& shape, bool sensor) {
-    scene.bodies.push_back({.shape = shape, .id = next_id++, .filter = both, .is_static = true, .sensor = sensor});
+    scene.bodies.push_back({.pose = pose_of(shape),
+                            .shapes = at_origin(shape),
+                            .id = next_id++,
+                            .filter = both,
+                            .is_static = true,
+                            .sensor = sensor});
   };
   for (int side = 0; side < 2; ++side) {
     const double h = side == 0 ? scene.arena.min.y() + 0.5 : scene.arena.max.y() - 0.5;
@@ -383,7 +457,8 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
     }();
     const double heading = uniform(0, 2 * std::numbers::pi);
     const double speed = uniform(0, 6);
-    scene.bodies.push_back({.shape = shape,
+    scene.bodies.push_back({.pose = pose_of(shape),
+                            .shapes = at_origin(shape),
                             .velocity = speed * Vec2(std::cos(heading), std::sin(heading)),
                             .angular_velocity = uniform(-1, 1),
                             .id = static_cast<std::uint64_t>(k),
@@ -391,7 +466,9 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
   }
   for (int k = 0; k < count / 500; ++k) {
     const double heading = uniform(0, 2 * std::numbers::pi);
-    scene.bodies.push_back({.shape = Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1},
+    const Shape bullet = Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1};
+    scene.bodies.push_back({.pose = pose_of(bullet),
+                            .shapes = at_origin(bullet),
                             .velocity = 300 * Vec2(std::cos(heading), std::sin(heading)),
                             .id = static_cast<std::uint64_t>(count + k),
                             .continuous = true,
@@ -404,13 +481,9 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
 void step(Scene& scene) {
   for (SceneBody& b : scene.bodies) {
     if (b.is_static) continue;
-    std::visit(
-        [&](auto& s) {
-          s.center += scene.dt * b.velocity;
-          if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle += scene.dt * b.angular_velocity;
-        },
-        b.shape);
-    const Aabb box = aabb(b.shape);
+    b.pose.position += scene.dt * b.velocity;
+    b.pose.angle += scene.dt * b.angular_velocity;
+    const Aabb box = box_of(b);
     for (int k = 0; k < 2; ++k) {
       if (box.min[k] < scene.arena.min[k] && b.velocity[k] < 0) b.velocity[k] = -b.velocity[k];
       if (box.max[k] > scene.arena.max[k] && b.velocity[k] > 0) b.velocity[k] = -b.velocity[k];

@@ -3,7 +3,8 @@
 // The file is JSON; docs/command-line.md lists its fields, and examples/scene.json is a whole scene
 // (tested). "arena" (min and max corners) and "frames" are required; "dt", "fat_margin" and
 // "proximity_margin" are optional, and so is every body field but the shape's own ("shape",
-// "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents").
+// "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents"). A body
+// of several shapes gives its pose ("center", "angle") and "shapes", each placed in its frame.
 // Moving bodies move in straight lines and bounce off the arena walls (the velocity component
 // towards a wall flips when the body's box crosses it); there is no physics: they pass through
 // static bodies, which only report the overlaps.
@@ -29,7 +30,8 @@ class SceneError : public std::runtime_error {
 };
 
 struct SceneBody {
-  Shape shape;
+  Pose pose;                  // where the body's origin is
+  std::vector<Shape> shapes;  // in its frame; a body of one shape has it at the origin
   Vec2 velocity = Vec2::Zero();
   double angular_velocity = 0.0;
   std::uint64_t id = 0;
@@ -49,6 +51,13 @@ struct Scene {
   std::vector<SceneBody> bodies;
   bool operator==(const Scene&) const;
 };
+
+// The body of one shape: its origin at the shape's centre and angle, the shape at the origin.
+Pose pose_of(const Shape& shape);
+std::vector<Shape> at_origin(const Shape& shape);
+// Each of the body's shapes where its pose puts it, and the box around them all.
+std::vector<Shape> placed_shapes(const SceneBody& body);
+Aabb box_of(const SceneBody& body);
 
 // Throws SceneError for a broken scene, before any frame is run: a field the format lacks or a
 // shape kind does not take, a duplicate id, a value out of range, or a motion that would carry a

@@ -36,9 +36,12 @@ SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
       world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin, .threads = threads}) {
   check_motion(scene_);
+  std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
-    ids_.push_back(
-        world_.add(b.shape, {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
+    shapes.clear();
+    for (const Shape& s : b.shapes) shapes.push_back({.shape = s});
+    ids_.push_back(world_.add(b.pose, shapes,
+                              {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
 }
@@ -60,8 +63,8 @@ RunSummary SceneRun::totals() const {
 void SceneRun::frame() {
   step(scene_);
   for (std::size_t k = 0; k < ids_.size(); ++k) {
-    const Shape& shape = scene_.bodies[k].shape;
-    if (!scene_.bodies[k].is_static) world_.move_to(ids_[k], center_of(shape), angle_of(shape));
+    const SceneBody& b = scene_.bodies[k];
+    if (!b.is_static) world_.move_to(ids_[k], b.pose.position, b.pose.angle);
   }
   world_.update();
 }
@@ -210,7 +213,7 @@ void write_svg(const SceneRun& run, std::ostream& out) {
                         : world.is_static(id) ? "static"
                                               : "body layer" + std::to_string(layer(world.filter(id).category));
       if (!sensors && hit.count(id)) css += " hit";
-      svg_shape(out, world.shape(id), css.c_str());
+      for (const ShapeId s : world.shapes(id)) svg_shape(out, world.shape(s), css.c_str());
     }
   }
   // Markers a few pixels across, so that what the caption counts shows at any scale: a ring around
