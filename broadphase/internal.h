@@ -1,8 +1,7 @@
 // The broad phase module's interface to the rest of the library (not installed).
 #pragma once
 
-#include <algorithm>
-#include <iterator>
+#include <compare>
 #include <vector>
 
 namespace collide2d::detail {
@@ -16,8 +15,22 @@ void replace_pairs(std::vector<Pair>& pairs, std::vector<Pair>& now, std::vector
                    std::vector<Pair>& ended) {
   began.clear();
   ended.clear();
-  std::set_difference(now.begin(), now.end(), pairs.begin(), pairs.end(), std::back_inserter(began));
-  std::set_difference(pairs.begin(), pairs.end(), now.begin(), now.end(), std::back_inserter(ended));
+  // One merge of the two lists, each pair compared once.
+  auto was = pairs.begin();
+  auto is = now.begin();
+  while (was != pairs.end() && is != now.end()) {
+    const auto order = *is <=> *was;
+    if (order < 0) {
+      began.push_back(*is++);
+    } else if (order > 0) {
+      ended.push_back(*was++);
+    } else {
+      ++is;
+      ++was;
+    }
+  }
+  began.insert(began.end(), is, now.end());
+  ended.insert(ended.end(), was, pairs.end());
   pairs.swap(now);
 }
 

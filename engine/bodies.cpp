@@ -186,8 +186,13 @@ void WorldState::place(std::uint32_t index) {
 
 // A shape where its body's pose puts it: its world angle is the body's plus its own, and its
 // orientation that angle's (the kernels' contract), not the two rotations composed.
-void WorldState::pose_part(Part& p, const Pose& at, const Orientation& turn) {
-  p.shape = p.at_origin ? posed(p.shape, at.position, at.angle) : placed(p.local, at, turn);
+void WorldState::pose_part(std::uint32_t index, const Pose& at, const Orientation& turn) {
+  Part& p = parts_[index];
+  if (p.at_origin) {
+    move_shape(p.shape, at.position, at.angle);
+  } else {
+    p.shape = placed(locals_[index], at, turn);
+  }
   p.orientation = Orientation::of(angle_of(p.shape));
   p.box = aabb(p.shape, p.orientation);
 }
@@ -197,7 +202,8 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   const std::uint32_t index = take_slot(parts_, free_parts_);
   Body& b = bodies_[body];
   Part& p = parts_[index];  // a reused slot keeps the generation free_part() gave it
-  p.local = def.shape;
+  locals_.resize(parts_.size());
+  locals_[index] = def.shape;
   p.shape = def.shape;  // its sizes: pose_part() moves a shape at the origin as it is
   p.at_origin = center_of(def.shape) == Vec2::Zero() && angle_of(def.shape) == 0.0;
   p.body = body_id(body);
@@ -209,7 +215,7 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   p.is_static = b.is_static;
   p.continuous = b.continuous;
   p.alive = true;
-  pose_part(p, b.pose, Orientation::of(b.pose.angle));
+  pose_part(index, b.pose, Orientation::of(b.pose.angle));
   p.start = p.shape;
   if (b.continuous) continuous_.push_back(index);
   std::uint32_t* link = &b.first;
@@ -277,10 +283,10 @@ void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   Part& p = part(id);
   validate(local);
   const Body& b = bodies_[p.body.index];
-  p.local = local;
+  locals_[id.index] = local;
   p.shape = local;
   p.at_origin = center_of(local) == Vec2::Zero() && angle_of(local) == 0.0;
-  pose_part(p, b.pose, Orientation::of(b.pose.angle));
+  pose_part(id.index, b.pose, Orientation::of(b.pose.angle));
   p.start = p.shape;  // its step starts at its new place
   place(id.index);
 }
@@ -312,15 +318,16 @@ void WorldState::pose(Body& b, const Vec2& position, double angle, const char* c
     validate_point(position, (std::string(call) + " position").c_str());
   if (!std::isfinite(angle)) require_finite(angle, (std::string(call) + " angle").c_str());
   b.pose = {position, angle};
-  bool offset = false;
-  each_part(b, [&](std::uint32_t k) { offset = offset || !parts_[k].at_origin; });
-  const Orientation turn = offset ? Orientation::of(angle) : Orientation{};
-  each_part(b, [&](std::uint32_t k) {
+  // A body of one shape at its origin needs no turn of its own (the shape's orientation is computed
+  // anyway).
+  const bool alone = b.count == 1 && parts_[b.first].at_origin;
+  const Orientation turn = alone ? Orientation{} : Orientation::of(angle);
+  for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) {
     Part& p = parts_[k];
-    pose_part(p, b.pose, turn);
+    pose_part(k, b.pose, turn);
     if (teleport && p.continuous) p.start = p.shape;
     place(k);
-  });
+  }
 }
 
 void WorldState::set_static(BodyId id, bool is_static) {

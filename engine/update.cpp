@@ -193,10 +193,15 @@ void WorldState::narrow_phase() {
     };
     return key(p) < key(q);
   };
-  std::sort(now_.begin(), now_.end(), by_pair);
-  std::sort(proximity_.begin(), proximity_.end(), by_pair);
-  std::sort(contacts_.begin(), contacts_.end(), by_pair);
-  std::sort(impacts_.begin(), impacts_.end(), by_pair);
+  // The sweep and prune gives its pairs in the order of its proxies, which is often the shapes'
+  // order already: a list found sorted is not sorted again.
+  const auto sort = [&by_pair](auto& list) {
+    if (!std::is_sorted(list.begin(), list.end(), by_pair)) std::sort(list.begin(), list.end(), by_pair);
+  };
+  sort(now_);
+  sort(proximity_);
+  sort(contacts_);
+  sort(impacts_);
   keep_earliest_impacts();
   replace_pairs(overlapping_, now_, began_, ended_);
   update_body_pairs();

@@ -78,7 +78,10 @@ class WorldState {
   bool is_continuous(BodyId id) const { return body(id).continuous; }
   std::vector<ShapeId> shapes(BodyId id) const;
   const Shape& shape(ShapeId id) const { return part(id).shape; }
-  const Shape& local_shape(ShapeId id) const { return part(id).local; }
+  const Shape& local_shape(ShapeId id) const {
+    part(id);  // refuses an unknown or stale handle
+    return locals_[id.index];
+  }
   BodyId body_of(ShapeId id) const { return part(id).body; }
   std::uint64_t user_id(ShapeId id) const { return part(id).user_id; }
   const Filter& filter(ShapeId id) const { return part(id).filter; }
@@ -133,23 +136,23 @@ class WorldState {
     std::uint32_t first = kNone;  // its first shape
     std::uint32_t count = 0;      // its shapes
   };
-  // A shape of a body, where the broad and the narrow phase work.
+  // A shape of a body, where the broad and the narrow phase work: what a pair's test and record read
+  // first, together, then what posing and the broad phase keep.
   struct Part {
-    Shape shape;                     // where it is in the world
-    Aabb box;                        // aabb(shape), kept with the pose
-    Orientation orientation;         // of the shape's world angle, kept with the pose
-    Shape local;                     // in its body's frame
-    bool at_origin = true;           // local centre and angle zero: the shape takes the body's pose as it is
+    Shape shape;              // where it is in the world
+    Aabb box;                 // aabb(shape), kept with the pose
+    Orientation orientation;  // of the shape's world angle, kept with the pose
+    Filter filter;
+    bool sensor = false;
+    bool is_static = false;   // its body's kind, kept here for the pair loops
+    bool continuous = false;  // its body's
+    bool alive = false;
+    std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
-    std::uint32_t next = kNone;      // its body's next shape
     std::uint64_t user_id = 0;
-    Filter filter;
-    std::uint32_t generation = 1;
-    bool alive = false;
-    bool is_static = false;  // its body's kind, kept here for the pair loops
-    bool sensor = false;
-    bool continuous = false;             // its body's
+    bool at_origin = true;               // local centre and angle zero: the shape takes the body's pose as it is
+    std::uint32_t next = kNone;          // its body's next shape
     ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
     AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
     std::int32_t loose = -1;             // moving: its place in loose_ while its tree leaf is out of date
@@ -196,7 +199,9 @@ class WorldState {
   std::vector<Body> bodies_;  // by BodyId::index
   std::vector<std::uint32_t> free_bodies_;
   std::size_t live_ = 0;
-  std::vector<Part> parts_;  // by ShapeId::index
+  std::vector<Part> parts_;    // by ShapeId::index
+  std::vector<Shape> locals_;  // by ShapeId::index: each shape in its body's frame, apart from the
+                               // parts that every frame reads
   std::vector<std::uint32_t> free_parts_;
   SweepAndPrune broad_;                 // the moving shapes
   std::vector<std::uint32_t> part_of_;  // by sweep-and-prune proxy: its shape, or kNone
@@ -240,7 +245,7 @@ class WorldState {
   void leave(std::uint32_t index);
   void place(std::uint32_t index);
   void pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
-  void pose_part(Part& p, const Pose& at, const Orientation& turn);
+  void pose_part(std::uint32_t index, const Pose& at, const Orientation& turn);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
   // f(index) for each shape of the body.
@@ -280,15 +285,19 @@ class WorldState {
 };
 
 // Shared by the files of the World.
-// The shape with its centre and angle replaced (a circle keeps no angle); inline, as it runs for
+// Moves the shape to a centre and angle, in place (a circle keeps no angle); inline, as it runs for
 // every shape posed.
-inline Shape posed(Shape shape, const Vec2& center, double angle) {
+inline void move_shape(Shape& shape, const Vec2& center, double angle) {
   std::visit(
       [&](auto& s) {
         s.center = center;
         if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle = angle;
       },
       shape);
+}
+// The shape moved so.
+inline Shape posed(Shape shape, const Vec2& center, double angle) {
+  move_shape(shape, center, angle);
   return shape;
 }
 void require_finite(double value, const char* what);
