@@ -197,15 +197,24 @@ void WorldState::pose_part(std::uint32_t index, const Pose& at, const Orientatio
   p.box = aabb(p.shape, p.orientation);
 }
 
+// The shape placed anew in its body's frame, posed where the body is; a continuous body's step for it
+// starts there.
+void WorldState::set_local(std::uint32_t index, const Shape& local) {
+  Part& p = parts_[index];
+  const Body& b = bodies_[p.body.index];
+  locals_[index] = local;
+  p.shape = local;  // its sizes: pose_part() moves a shape at the origin as it is
+  p.at_origin = at_origin(local);
+  pose_part(index, b.pose, Orientation::of(b.pose.angle));
+  p.start = p.shape;
+}
+
 // A new shape of body `body`, last in its list, posed and in the broad phase; def.shape is valid.
 std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   const std::uint32_t index = take_slot(parts_, free_parts_);
   Body& b = bodies_[body];
   Part& p = parts_[index];  // a reused slot keeps the generation free_part() gave it
   locals_.resize(parts_.size());
-  locals_[index] = def.shape;
-  p.shape = def.shape;  // its sizes: pose_part() moves a shape at the origin as it is
-  p.at_origin = center_of(def.shape) == Vec2::Zero() && angle_of(def.shape) == 0.0;
   p.body = body_id(body);
   p.body_user_id = b.user_id;
   p.next = kNone;
@@ -215,8 +224,7 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   p.is_static = b.is_static;
   p.continuous = b.continuous;
   p.alive = true;
-  pose_part(index, b.pose, Orientation::of(b.pose.angle));
-  p.start = p.shape;
+  set_local(index, def.shape);
   if (b.continuous) continuous_.push_back(index);
   std::uint32_t* link = &b.first;
   while (*link != kNone) link = &parts_[*link].next;
@@ -280,14 +288,9 @@ void WorldState::remove_shape(ShapeId id) {
 
 void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   require_not_querying("set_local_shape");
-  Part& p = part(id);
+  part(id);
   validate(local);
-  const Body& b = bodies_[p.body.index];
-  locals_[id.index] = local;
-  p.shape = local;
-  p.at_origin = center_of(local) == Vec2::Zero() && angle_of(local) == 0.0;
-  pose_part(id.index, b.pose, Orientation::of(b.pose.angle));
-  p.start = p.shape;  // its step starts at its new place
+  set_local(id.index, local);
   place(id.index);
 }
 
@@ -368,8 +371,8 @@ void WorldState::set_proximity_margin(double margin) {
 // A shape at the origin with no angle of its own takes the pose as it is: a body of one shape is
 // then posed to the bit as that shape alone (adding a zero offset or angle could flip a zero's sign).
 Shape placed(const Shape& local, const Pose& pose, const Orientation& turn) {
+  if (detail::at_origin(local)) return detail::posed(local, pose.position, pose.angle);
   const Vec2 offset = center_of(local);
-  if (offset == Vec2::Zero() && angle_of(local) == 0.0) return detail::posed(local, pose.position, pose.angle);
   const Vec2 center =
       pose.position + Vec2(turn.c * offset.x() - turn.s * offset.y(), turn.s * offset.x() + turn.c * offset.y());
   return detail::posed(local, center, pose.angle + angle_of(local));

@@ -18,8 +18,8 @@ World& World::operator=(World&&) noexcept = default;
 
 BodyId World::add(const Shape& shape, const BodyDef& def) {
   validate(shape);  // so that a refusal names the shape's own fields
-  const ShapeDef at_origin{.shape = detail::posed(shape, Vec2::Zero(), 0.0)};
-  return state_->add({center_of(shape), angle_of(shape)}, std::span(&at_origin, 1), def);
+  const ShapeDef only{.shape = detail::posed(shape, Vec2::Zero(), 0.0)};
+  return state_->add({center_of(shape), angle_of(shape)}, std::span(&only, 1), def);
 }
 BodyId World::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
   return state_->add(pose, shapes, def);

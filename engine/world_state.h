@@ -246,6 +246,7 @@ class WorldState {
   void place(std::uint32_t index);
   void pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
   void pose_part(std::uint32_t index, const Pose& at, const Orientation& turn);
+  void set_local(std::uint32_t index, const Shape& local);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
   // f(index) for each shape of the body.
@@ -295,6 +296,8 @@ inline void move_shape(Shape& shape, const Vec2& center, double angle) {
       },
       shape);
 }
+// Whether a shape placed in a body's frame sits at its origin with no angle of its own.
+inline bool at_origin(const Shape& local) { return center_of(local) == Vec2::Zero() && angle_of(local) == 0.0; }
 // The shape moved so.
 inline Shape posed(Shape shape, const Vec2& center, double angle) {
   move_shape(shape, center, angle);

@@ -6,6 +6,7 @@
 #include "engine/thread_pool.h"
 #include "mp_reference.h"
 #include "world_reference.h"
+#include "world_testing.h"
 
 #include <gtest/gtest.h>
 
@@ -59,16 +60,7 @@ void expect_matches_all_pairs(const World& world, double margin, const std::stri
   ASSERT_EQ(reported, expected.near) << what;
 }
 
-// began and ended are what `now` gained and lost since `previous`.
-template <class Pair>
-void expect_changes(const std::vector<Pair>& previous, const std::vector<Pair>& now, const std::vector<Pair>& began,
-                    const std::vector<Pair>& ended, const std::string& what) {
-  std::vector<Pair> gained, lost;
-  std::set_difference(now.begin(), now.end(), previous.begin(), previous.end(), std::back_inserter(gained));
-  std::set_difference(previous.begin(), previous.end(), now.begin(), now.end(), std::back_inserter(lost));
-  ASSERT_EQ(began, gained) << what;
-  ASSERT_EQ(ended, lost) << what;
-}
+using testing::expect_changes;
 
 // The pair of two bodies of one shape each.
 ShapePair solo_pair(const World& world, BodyId x, BodyId y) { return {x, y, world.shapes(x)[0], world.shapes(y)[0]}; }

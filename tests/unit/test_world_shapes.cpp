@@ -5,6 +5,7 @@
 #include <collide2d/world.h>
 #include "mp_reference.h"
 #include "world_reference.h"
+#include "world_testing.h"
 
 #include <gtest/gtest.h>
 
@@ -61,15 +62,7 @@ BodyId add_body(World& world, Rng& rng, std::uint64_t user) {
   return world.add(pose, defs, {.user_id = user, .is_static = pick(rng, 6) == 0, .sensor = pick(rng, 10) == 0});
 }
 
-template <class Pair>
-void expect_changes(const std::vector<Pair>& previous, const std::vector<Pair>& now, const std::vector<Pair>& began,
-                    const std::vector<Pair>& ended, const std::string& what) {
-  std::vector<Pair> gained, lost;
-  std::set_difference(now.begin(), now.end(), previous.begin(), previous.end(), std::back_inserter(gained));
-  std::set_difference(previous.begin(), previous.end(), now.begin(), now.end(), std::back_inserter(lost));
-  ASSERT_EQ(began, gained) << what;
-  ASSERT_EQ(ended, lost) << what;
-}
+using testing::expect_changes;
 
 std::vector<BodyPair> bodies_of(const std::vector<ShapePair>& pairs) {
   std::vector<BodyPair> out;
