@@ -1,10 +1,11 @@
-// Contact kernels against Box2D 2.4.1's manifold functions on the three workloads of bench/workload.h
+// Contact kernels against Box2D 2.4.1's manifold functions on the five workloads of bench/workload.h
 // (candidates:0 random pairs, most far apart; 1 the generator's candidate pairs, whose boxes
-// overlap; 2 the built-in scene's broad-phase pairs): b2CollidePolygons on the rectangles' 4-gons and
-// on the ellipses' inscribed 8- and 16-gons, b2CollidePolygonAndCircle, b2CollideCircles. Box2D is
-// built here with polygons of up to 16 vertices (its default cap is 8). Its shapes are built
-// beforehand (not timed), with radius 0, so its manifold is empty for pairs apart while ours carries
-// their exact distance.
+// overlap; 2 the built-in scene's broad-phase pairs; 3 and 4 the overlapping pairs among 1 and 2):
+// b2CollidePolygons on the rectangles' 4-gons and on the ellipses' inscribed 8- and 16-gons,
+// b2CollidePolygonAndCircle, b2CollideCircles. Box2D is built here with polygons of up to 16
+// vertices (its default cap is 8). Its shapes are built beforehand (not timed), with radius 0, so
+// its manifold is empty for pairs apart; ours carries their exact distance, and the `_limited`
+// runs (max_separation 0) are empty there too.
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 
@@ -14,6 +15,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <vector>
 
 namespace collide2d {
@@ -29,20 +31,24 @@ Contact kernel(const Circle& a, const Circle& b) { return contact_circle_circle(
 Contact kernel(const Rect& a, const Ellipse& b) { return contact_rect_ellipse(a, b); }
 Contact kernel(const Circle& a, const Ellipse& b) { return contact_circle_ellipse(a, b); }
 Contact kernel(const Ellipse& a, const Ellipse& b) { return contact_ellipse_ellipse(a, b); }
-Contact kernel(const Rect& a, const Orientation& oa, const Rect& b, const Orientation& ob) {
-  return contact_rect_rect(a, oa, b, ob);
+Contact kernel(const Rect& a, const Orientation& oa, const Rect& b, const Orientation& ob, const ContactOptions& o) {
+  return contact_rect_rect(a, oa, b, ob, o);
 }
-Contact kernel(const Rect& a, const Orientation& oa, const Circle& b, const Orientation&) {
-  return contact_rect_circle(a, oa, b);
+Contact kernel(const Rect& a, const Orientation& oa, const Circle& b, const Orientation&, const ContactOptions& o) {
+  return contact_rect_circle(a, oa, b, o);
 }
-Contact kernel(const Rect& a, const Orientation& oa, const Ellipse& b, const Orientation& ob) {
-  return contact_rect_ellipse(a, oa, b, ob);
+Contact kernel(const Circle& a, const Orientation&, const Circle& b, const Orientation&, const ContactOptions& o) {
+  return contact_circle_circle(a, b, o);
 }
-Contact kernel(const Circle& a, const Orientation&, const Ellipse& b, const Orientation& ob) {
-  return contact_circle_ellipse(a, b, ob);
+Contact kernel(const Rect& a, const Orientation& oa, const Ellipse& b, const Orientation& ob, const ContactOptions& o) {
+  return contact_rect_ellipse(a, oa, b, ob, o);
 }
-Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const Orientation& ob) {
-  return contact_ellipse_ellipse(a, oa, b, ob);
+Contact kernel(const Circle& a, const Orientation&, const Ellipse& b, const Orientation& ob, const ContactOptions& o) {
+  return contact_circle_ellipse(a, b, ob, o);
+}
+Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const Orientation& ob,
+               const ContactOptions& o) {
+  return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
 
 template <class A, class B>
@@ -51,11 +57,14 @@ void ours(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], w.b[k]); });
 }
 
-template <class A, class B>
+// Orientations kept; `limited`: no contact beyond separation 0 (ContactOptions::max_separation), as
+// Box2D's manifolds of shapes of radius 0 are empty there.
+template <class A, class B, bool limited = false>
 void ours_oriented(benchmark::State& state) {
   const auto& w = bench::pairs<A, B>(state);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
-  bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], oa[k], w.b[k], ob[k]); });
+  const ContactOptions options{.max_separation = limited ? 0.0 : HUGE_VAL};
+  bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], oa[k], w.b[k], ob[k], options); });
 }
 
 // The batched circle–ellipse contact (orientations kept) on the whole workload per iteration.
@@ -98,33 +107,47 @@ void box2d_batch(benchmark::State& state) {
   bench::time_batches(state, [&] { baseline::box2d_manifolds(pairs, out); });
 }
 
-BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::workloads);
-BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::workloads);
-BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::workloads);
-BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::workloads);
-BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::workloads);
-BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::workloads);
-BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::workloads);
-BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::workloads);
-BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->Apply(bench::workloads);
-BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->Apply(bench::workloads);
-BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::workloads);
-BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::workloads);
-BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::workloads);
-BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::workloads);
+BENCHMARK(ours<Rect, Rect>)->Name("ours/rect_rect")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Rect>)->Name("ours/rect_rect_oriented")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Rect, true>)->Name("ours/rect_rect_limited")->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Apply(bench::contact_workloads);
+BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Circle, true>)->Name("ours/rect_circle_limited")->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::contact_workloads);
+BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Circle, Circle, true>)->Name("ours/circle_circle_limited")->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::contact_workloads);
+BENCHMARK(ours<Rect, Ellipse>)->Name("ours/rect_ellipse")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Ellipse>)->Name("ours/rect_ellipse_oriented")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Rect, Ellipse, true>)->Name("ours/rect_ellipse_limited")->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Rect, Ellipse>)->Name("box2d_collide_polygons/rect_ellipse_8gon")->Apply(bench::contact_workloads);
+BENCHMARK(ours<Circle, Ellipse>)->Name("ours/circle_ellipse")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Circle, Ellipse>)->Name("ours/circle_ellipse_oriented")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Circle, Ellipse, true>)->Name("ours/circle_ellipse_limited")->Apply(bench::contact_workloads);
+BENCHMARK(batch_circle_ellipse)->Name("batch_contact/circle_ellipse")->Apply(bench::contact_workloads);
 BENCHMARK(box2d<Circle, Ellipse>)
     ->Name("box2d_collide_polygon_and_circle/circle_ellipse_8gon")
-    ->Apply(bench::workloads);
-BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::workloads);
-BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::workloads);
-BENCHMARK(box2d<Ellipse, Ellipse>)->Name("box2d_collide_polygons/ellipse_ellipse_8gons")->Apply(bench::workloads);
-BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::workloads);
+    ->Apply(bench::contact_workloads);
+BENCHMARK(ours<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Ellipse, Ellipse>)->Name("ours/ellipse_ellipse_oriented")->Apply(bench::contact_workloads);
+BENCHMARK(ours_oriented<Ellipse, Ellipse, true>)->Name("ours/ellipse_ellipse_limited")->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Ellipse, Ellipse>)
+    ->Name("box2d_collide_polygons/ellipse_ellipse_8gons")
+    ->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Rect, Ellipse, 16>)->Name("box2d_collide_polygons/rect_ellipse_16gon")->Apply(bench::contact_workloads);
 BENCHMARK(box2d<Circle, Ellipse, 16>)
     ->Name("box2d_collide_polygon_and_circle/circle_ellipse_16gon")
-    ->Apply(bench::workloads);
-BENCHMARK(box2d<Ellipse, Ellipse, 16>)->Name("box2d_collide_polygons/ellipse_ellipse_16gons")->Apply(bench::workloads);
-BENCHMARK(box2d_batch<Circle, Ellipse, 8>)->Name("box2d_batch_contact/circle_ellipse_8gon")->Apply(bench::workloads);
-BENCHMARK(box2d_batch<Circle, Ellipse, 16>)->Name("box2d_batch_contact/circle_ellipse_16gon")->Apply(bench::workloads);
+    ->Apply(bench::contact_workloads);
+BENCHMARK(box2d<Ellipse, Ellipse, 16>)
+    ->Name("box2d_collide_polygons/ellipse_ellipse_16gons")
+    ->Apply(bench::contact_workloads);
+BENCHMARK(box2d_batch<Circle, Ellipse, 8>)
+    ->Name("box2d_batch_contact/circle_ellipse_8gon")
+    ->Apply(bench::contact_workloads);
+BENCHMARK(box2d_batch<Circle, Ellipse, 16>)
+    ->Name("box2d_batch_contact/circle_ellipse_16gon")
+    ->Apply(bench::contact_workloads);
 
 }  // namespace
 }  // namespace collide2d

@@ -2,6 +2,7 @@
 // once, cycled so that no input stays in a register.
 #pragma once
 
+#include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
 #include <benchmark/benchmark.h>
@@ -107,16 +108,52 @@ const Workload<A, B>& candidate_workload() {
 template <class A, class B>
 const Workload<A, B>& scene_workload();
 
+// The pairs of w whose solids overlap (touching counts), cycled up to kPairs: the pairs a contact
+// solver works on, where Box2D's manifolds are never empty.
+template <class A, class B>
+Workload<A, B> overlapping(const Workload<A, B>& w) {
+  Workload<A, B> out;
+  for (std::size_t k = 0; k < w.a.size(); ++k) {
+    if (!overlaps(w.a[k], w.b[k])) continue;
+    out.a.push_back(w.a[k]);
+    out.b.push_back(w.b[k]);
+  }
+  for (std::size_t k = 0; out.a.size() < kPairs; ++k) {
+    out.a.push_back(out.a[k]);
+    out.b.push_back(out.b[k]);
+  }
+  return out;
+}
+
 // The benchmark's workload, by its first argument: random pairs (0), the generator's candidate pairs
-// (1), the built-in scene's (2).
+// (1), the built-in scene's (2), and the overlapping pairs among the generator's candidates (3) and
+// among the scene's (4).
 template <class A, class B>
 const Workload<A, B>& pairs(const benchmark::State& state) {
-  if (state.range(0) == 2) return scene_workload<A, B>();
-  return state.range(0) == 0 ? workload<A, B>() : candidate_workload<A, B>();
+  switch (state.range(0)) {
+    case 0:
+      return workload<A, B>();
+    case 1:
+      return candidate_workload<A, B>();
+    case 2:
+      return scene_workload<A, B>();
+    case 3: {
+      static const Workload<A, B> w = overlapping(candidate_workload<A, B>());
+      return w;
+    }
+    default: {
+      static const Workload<A, B> w = overlapping(scene_workload<A, B>());
+      return w;
+    }
+  }
 }
 
 // Registers a benchmark on the three workloads, named candidates:0, candidates:1 and candidates:2
-// (->Apply(...)).
+// (->Apply(...)); contact_workloads adds the overlapping pairs, candidates:3 and candidates:4.
 inline void workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1)->Arg(2); }
+inline void contact_workloads(benchmark::internal::Benchmark* b) {
+  workloads(b);
+  b->Arg(3)->Arg(4);
+}
 
 }  // namespace collide2d::bench

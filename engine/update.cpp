@@ -296,7 +296,9 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
   }
   if (speculative_margin_ > 0.0 &&
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
-    const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, manifold);
+    // Only the pairs within the margin are recorded: the kernels stop as soon as a pair is beyond.
+    const ContactOptions speculative{.margin = speculative_margin_, .max_separation = speculative_margin_};
+    const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, speculative);
     if (c.separation <= speculative_margin_) record(false, c);
   }
 }

@@ -49,17 +49,17 @@ Contact contact_kernel(const Rect& a, const O& oa, const Rect& b, const O& ob, c
   return detail::contact_rect_rect(a, oa, b, ob, o,
                                    prefer_b ? detail::PreferredFace::of_b : detail::PreferredFace::of_a);
 }
-Contact contact_kernel(const Rect& a, const O& oa, const Circle& b, const O&, const ContactOptions&, bool) {
-  return contact_rect_circle(a, oa, b);
+Contact contact_kernel(const Rect& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
+  return contact_rect_circle(a, oa, b, o);
 }
 Contact contact_kernel(const Rect& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o, bool) {
   return contact_rect_ellipse(a, oa, b, ob, o);
 }
-Contact contact_kernel(const Circle& a, const O&, const Circle& b, const O&, const ContactOptions&, bool) {
-  return contact_circle_circle(a, b);
+Contact contact_kernel(const Circle& a, const O&, const Circle& b, const O&, const ContactOptions& o, bool) {
+  return contact_circle_circle(a, b, o);
 }
-Contact contact_kernel(const Circle& a, const O&, const Ellipse& b, const O& ob, const ContactOptions&, bool) {
-  return contact_circle_ellipse(a, b, ob);
+Contact contact_kernel(const Circle& a, const O&, const Ellipse& b, const O& ob, const ContactOptions& o, bool) {
+  return contact_circle_ellipse(a, b, ob, o);
 }
 Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O& ob, const ContactOptions& o, bool) {
   return contact_ellipse_ellipse(a, oa, b, ob, o);
@@ -164,6 +164,7 @@ Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
   validate(a);
   validate(b);
   if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
+  if (std::isnan(options.max_separation)) throw std::invalid_argument("contact max_separation must not be NaN");
   return contact(a, Orientation::of(angle_of(a)), b, Orientation::of(angle_of(b)), options);
 }
 

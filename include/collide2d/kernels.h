@@ -60,18 +60,21 @@ DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_o
 /// The gap between two ellipse curves (boundary_distance() in query.h).
 DistanceResult boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
 
-/// Contacts (Contact in query.h), one kernel per pair.
+/// Contacts (Contact in query.h), one kernel per pair. Each honours options.max_separation; the
+/// other options only where ContactOptions says.
 Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& options = {});
 Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
                           const Orientation& b_orientation, const ContactOptions& options = {});
-Contact contact_rect_circle(const Rect& a, const Circle& b);
-Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b);
+Contact contact_rect_circle(const Rect& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b,
+                            const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation, const ContactOptions& options = {});
-Contact contact_circle_circle(const Circle& a, const Circle& b);
-Contact contact_circle_ellipse(const Circle& a, const Ellipse& b);
-Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation);
+Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options = {});
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation,
+                               const ContactOptions& options = {});
 Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                                 const Orientation& b_orientation, const ContactOptions& options = {});

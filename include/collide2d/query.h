@@ -95,21 +95,35 @@ struct Contact {
   /// incident face clipped to the reference face (Box2D's b2CollidePolygons), deepest first, each
   /// with its own separation (two for a face resting on a face). The reference face is A's deepest
   /// unless B's is deeper by more than 1e-9 of the sum of the half extents, so that ids hold where
-  /// the faces tie; separation and normal stay the exact maximum.
+  /// the faces tie; separation and normal stay the exact maximum. Empty (size 0) for a pair apart
+  /// by more than ContactOptions::max_separation: see beyond().
   std::array<ContactPoint, 2> manifold{};
   int manifold_size = 1;
   int evaluations = 0;  ///< support evaluations of a curved pair's search (0 for closed forms)
 
   /// The manifold's points.
   std::span<const ContactPoint> points() const { return {manifold.data(), static_cast<std::size_t>(manifold_size)}; }
+  /// Whether the pair lies beyond ContactOptions::max_separation (an empty manifold).
+  bool empty() const { return manifold_size == 0; }
   /// The same contact for the pair (B, A).
   Contact swapped() const;
   /// A one-point contact.
   static Contact of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
                     std::uint32_t id = 0);
+  /// No contact: the solids are apart by more than the caller's max_separation. `separation` is a
+  /// lower bound of their distance that shows it (their distance itself where it came for free);
+  /// the normal and the points are not computed and stay at their defaults.
+  static Contact beyond(double lower_bound);
 };
 
 // Inline: a batch writes thousands of contacts, and a call out of line built each one and copied it.
+inline Contact Contact::beyond(double lower_bound) {
+  Contact c;
+  c.separation = lower_bound;
+  c.manifold_size = 0;
+  return c;
+}
+
 inline Contact Contact::of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
                            std::uint32_t id) {
   Contact c;
@@ -131,6 +145,13 @@ struct ContactOptions {
   /// and end sooner. Any direction gives the same contact to rounding; zero means none. Other pairs
   /// ignore it. Must be finite.
   Vec2 guess = Vec2::Zero();
+  /// No contact for a pair apart by more than this (Contact::beyond, an empty manifold, as Box2D's
+  /// manifold is empty beyond its margin): the kernels stop as soon as a lower bound of the
+  /// separation shows it, and compute the rest only for the pairs within it. A lower bound must
+  /// exceed the limit by 64 u of the pair's scale (more than its rounding), so that
+  /// `contact(a, b, {.max_separation = m})` and `contact(a, b)` agree to the bit on every pair
+  /// whose separation, as the query without a limit computes it, is at most m. Must not be NaN.
+  double max_separation = std::numeric_limits<double>::infinity();
 };
 
 /// Thrown for a query the pair does not support (the boundary distance of a rectangle).

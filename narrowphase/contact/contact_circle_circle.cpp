@@ -1,14 +1,16 @@
 #include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/frames/unit_vector.h"
 
 namespace collide2d {
 
 // Along the line of centres (unit_vector.h says how its direction stays unit for centres a few
 // denormals apart). Concentric circles: every direction is a maximiser; +x is reported.
-Contact contact_circle_circle(const Circle& a, const Circle& b) {
+Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options) {
   const detail::LengthAndDirection line = detail::length_and_direction(b.center - a.center);
   const Vec2& n = line.direction;
-  return Contact::of(line.length - a.radius - b.radius, n, a.center + a.radius * n, b.center - b.radius * n);
+  return detail::within_limit(
+      Contact::of(line.length - a.radius - b.radius, n, a.center + a.radius * n, b.center - b.radius * n), options);
 }
 
 }  // namespace collide2d

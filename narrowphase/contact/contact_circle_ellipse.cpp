@@ -1,6 +1,7 @@
 #include <collide2d/kernels.h>
 
 #include "narrowphase/batch/lanes.h"
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/ellipse/distance_point_ellipse.h"
 
 namespace collide2d {
@@ -11,15 +12,22 @@ namespace detail {
 // The signed distance of the circle's centre to the ellipse (Eberly's secular equation, inside and
 // out: distance_point_ellipse.h) less the radius: point_ellipse-inl.h, which the batch runs on
 // vectors with the same operations.
-Contact contact_circle_ellipse(const Circle& a, const Ellipse& b) {
-  return contact_circle_ellipse(a, b, Orientation::of(b.angle));
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options) {
+  return contact_circle_ellipse(a, b, Orientation::of(b.angle), options);
 }
 
-Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation) {
+Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation,
+                               const ContactOptions& options) {
   const detail::CirclePosedEllipseLanes<double> f = detail::circle_posed_ellipse_lanes(a, b, b_orientation);
   double px, py;
   detail::circle_centre_in_ellipse_frame(f, px, py);
-  const PointEllipseResult r = distance_point_ellipse(b.a, b.b, Vec2(px, py));
+  const Vec2 p(px, py);
+  if (detail::limited(options)) {
+    const double floor = distance_floor(b.a, b.b, p) - a.radius;
+    if (detail::beyond_limit(floor, std::abs(px) + std::abs(py) + b.a + b.b + a.radius, options))
+      return Contact::beyond(floor);
+  }
+  const PointEllipseResult r = distance_point_ellipse(b.a, b.b, p);
   return detail::circle_ellipse_contact(f, detail::nearest_on_ellipse(r)).contact();
 }
 

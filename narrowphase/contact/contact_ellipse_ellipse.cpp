@@ -1,8 +1,10 @@
 // Ellipse–ellipse contact: the global maximum of the separation over every direction, by a climb
 // that a bound over every direction certifies, else by branch and bound over arcs of directions
-// (deepest_direction.h says why no local maximum can pass for it).
+// (deepest_direction.h says why no local maximum can pass for it). With a limit, the search ends at
+// the first direction whose s passes it.
 #include <collide2d/kernels.h>
 
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/contact/curved_contact.h"
 
 namespace collide2d {
@@ -15,7 +17,10 @@ Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientati
                                 const Orientation& b_orientation, const ContactOptions& options) {
   using Pair = detail::SupportPair<double, detail::EllipseSupport<double>, detail::EllipseSupport<double>>;
   const Pair p = Pair::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  return detail::curved_contact(p, a.center, b.center, detail::deepest_direction(p, p.from_world(options.guess)));
+  const double stop = detail::separation_limit(p.scale, options);
+  const detail::Deepest<double> d = detail::deepest_direction(p, p.from_world(options.guess), stop);
+  if (detail::beyond_limit(d.at.s, p.scale, options)) return Contact::beyond(d.at.s);
+  return detail::curved_contact(p, a.center, b.center, d);
 }
 
 }  // namespace collide2d

@@ -1,4 +1,5 @@
 #include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/frames/box_local.h"
 #include "narrowphase/frames/unit_vector.h"
 #include "shapes/internal.h"
@@ -17,11 +18,12 @@ double sign_of(double x) { return x < 0 ? -1.0 : 1.0; }
 // is clamped (exact, not rounded through p - q) and from the corner otherwise; inside (or on the
 // boundary), p leaves through the nearer face, at depth (half extent - |p|) plus the radius. Where
 // two faces are equally near, either is a maximiser; the x face is reported.
-Contact contact_rect_circle(const Rect& a, const Circle& b) {
-  return contact_rect_circle(a, Orientation::of(a.angle), b);
+Contact contact_rect_circle(const Rect& a, const Circle& b, const ContactOptions& options) {
+  return contact_rect_circle(a, Orientation::of(a.angle), b, options);
 }
 
-Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b) {
+Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, const Circle& b,
+                            const ContactOptions& options) {
   const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 p = rot.apply_inverse(Vec2(b.center - a.center));
   const Vec2& h = a.half_extents;
@@ -48,7 +50,8 @@ Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, con
     d = -room[k];
   }
   const Vec2 normal = rot.apply(n);
-  return Contact::of(d - b.radius, normal, a.center + rot.apply(on_a), b.center - b.radius * normal);
+  return detail::within_limit(
+      Contact::of(d - b.radius, normal, a.center + rot.apply(on_a), b.center - b.radius * normal), options);
 }
 
 }  // namespace collide2d

@@ -23,6 +23,7 @@
 // delta in the Voronoi region of its arc, and unless the ellipse's tangents at the quarter's ends
 // (and their discs of curvature) allow a larger s; the open ones are settled in the order of their
 // bounds, and a maximum found in one may certify itself (disc_bound).
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/contact/curved_contact.h"
 
 #include "narrowphase/ellipse/distance_point_ellipse.h"
@@ -179,21 +180,39 @@ Quarter quarter_bound(const RectEllipse& p, const Faces& f, const NearEllipse& n
   return q;
 }
 
-// The contact, from the global maximum of s; ca and cb are the centres.
-Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb) {
+// No contact where s along the direction from a quarter's corner to B's centre, a lower bound of
+// the separation, passes the caller's limit: tried for the quarter whose arc's Voronoi region holds
+// delta, as the pairs apart at a corner have it, and whose faces' s fell short.
+std::optional<Contact> corner_beyond(const RectEllipse& p, const Quarter& q, const ContactOptions& options) {
+  if (!limited(options) || !q.nearest || q.bound != std::numeric_limits<double>::infinity()) return std::nullopt;
+  const V2<double> toward = p.delta - q.corner;
+  const V2<double> n = toward / toward.norm();
+  const double s = p.delta.dot(n) - p.A.extent(n) - p.B.extent(n);
+  if (!beyond_limit(s, p.scale, options)) return std::nullopt;
+  return Contact::beyond(s);
+}
+
+// The contact, from the global maximum of s; ca and cb are the centres. Each face's s, and each
+// quarter's maximum, is a lower bound of the separation: the search ends when one passes the
+// caller's limit.
+Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb, const ContactOptions& options) {
   const Faces faces = Faces::of(p);
   const int face = faces.best();
   const V2<double>& f = faces.normal[face];
   const double s = faces.s[face];
   const double margin = climb_margin(p);
+  if (beyond_limit(s, p.scale, options)) return Contact::beyond(s);
   // Apart, with B's support point over the face: delta is in the face's Voronoi region of the
   // Minkowski sum, and s is the distance.
   if (s >= 0 && std::abs(perp(f).dot(p.delta - faces.offset[face])) <= p.A.extent(perp(f)) + margin / 2) {
-    return face_contact(p, cb, f, faces.offset[face], s, 1);
+    return within_limit(face_contact(p, cb, f, faces.offset[face], s, 1), options);
   }
   Quarter quarters[4];
   const NearEllipse near = NearEllipse::of(p);
-  for (int k = 0; k < 4; ++k) quarters[k] = quarter_bound(p, faces, near, k);
+  for (int k = 0; k < 4; ++k) {
+    quarters[k] = quarter_bound(p, faces, near, k);
+    if (const std::optional<Contact> none = corner_beyond(p, quarters[k], options)) return *none;
+  }
   int evaluations = 1;
   Direction<double> inner[4];
   const Direction<double>* best = nullptr;
@@ -207,14 +226,15 @@ Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& c
     q.bound = -std::numeric_limits<double>::infinity();
     Direction<double>& m = inner[&q - quarters];
     if (quarter_maximum(p, q, m, evaluations) && m.at.s > top) {
+      if (beyond_limit(m.at.s, p.scale, options)) return Contact::beyond(m.at.s);
       best = &m;
       top = m.at.s;
       certified = std::max_element(quarters, quarters + 4, lower)->bound <= top + margin ||
                   disc_bound(p, m.n, m.at) <= top + margin;
     }
   }
-  if (best == nullptr) return face_contact(p, cb, f, faces.offset[face], s, evaluations);
-  return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
+  if (best == nullptr) return within_limit(face_contact(p, cb, f, faces.offset[face], s, evaluations), options);
+  return within_limit(curved_contact(p, ca, cb, Deepest<double>{*best, evaluations}), options);
 }
 
 }  // namespace
@@ -226,10 +246,10 @@ Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptio
 
 // options.guess is not needed: the quarters are settled in closed form, from no starting direction.
 Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
-                             const Orientation& b_orientation, const ContactOptions&) {
+                             const Orientation& b_orientation, const ContactOptions& options) {
   const detail::RectEllipse p =
       detail::RectEllipse::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
-  return detail::rect_ellipse_contact(p, a.center, b.center);
+  return detail::rect_ellipse_contact(p, a.center, b.center, options);
 }
 
 }  // namespace collide2d

@@ -1,5 +1,6 @@
 #include "narrowphase/contact/contact_rect_rect.h"
 #include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/frames/rect_pair_frame.h"
 
 #include <algorithm>
@@ -180,6 +181,27 @@ Face deepest_face(const View& v) {
   return out;
 }
 
+// The contact on the deeper of the two rectangles' deepest faces, with the manifold on the
+// preferred side's face where the two tie (below).
+Contact on_faces(const detail::RectPairFrame& f, const Rect& a, const View& from_a, const Face& on_a,
+                 const View& from_b, const Face& on_b, const ContactOptions& options, detail::PreferredFace preferred) {
+  const bool b_deepest = on_b.separation > on_a.separation;
+  Contact out = b_deepest ? contact_on(f, a, from_b, on_b.k, on_b.separation, options)
+                          : contact_on(f, a, from_a, on_a.k, on_a.separation, options);
+  const bool on_preferred = b_deepest == (preferred == detail::PreferredFace::of_b);
+  const double bias = 1e-9 * (a.half_extents.sum() + from_a.inc_half.sum());
+  if (on_preferred || std::abs(on_b.separation - on_a.separation) > bias ||
+      feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) {
+    return out;
+  }
+  const Contact kept = b_deepest ? contact_on(f, a, from_a, on_a.k, on_a.separation, options)
+                                 : contact_on(f, a, from_b, on_b.k, on_b.separation, options);
+  if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
+  out.manifold = kept.manifold;
+  out.manifold_size = kept.manifold_size;
+  return out;
+}
+
 }  // namespace
 
 // Separating axes give the signed distance wherever a face is involved: overlapping convex polygons
@@ -208,21 +230,11 @@ Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientatio
   const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
   const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
   const Face on_a = deepest_face(from_a), on_b = deepest_face(from_b);
-  const bool b_deepest = on_b.separation > on_a.separation;
-  Contact out = b_deepest ? contact_on(f, a, from_b, on_b.k, on_b.separation, options)
-                          : contact_on(f, a, from_a, on_a.k, on_a.separation, options);
-  const bool on_preferred = b_deepest == (preferred == PreferredFace::of_b);
-  const double bias = 1e-9 * (a.half_extents.sum() + b.half_extents.sum());
-  if (on_preferred || std::abs(on_b.separation - on_a.separation) > bias ||
-      feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) {
-    return out;
-  }
-  const Contact kept = b_deepest ? contact_on(f, a, from_a, on_a.k, on_a.separation, options)
-                                 : contact_on(f, a, from_b, on_b.k, on_b.separation, options);
-  if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
-  out.manifold = kept.manifold;
-  out.manifold_size = kept.manifold_size;
-  return out;
+  // A face's separation is a lower bound of the pair's (its maximum over every direction).
+  const double face_separation = std::max(on_a.separation, on_b.separation);
+  const double scale = a.half_extents.sum() + b.half_extents.sum() + f.b_center.cwiseAbs().sum();
+  if (detail::beyond_limit(face_separation, scale, options)) return Contact::beyond(face_separation);
+  return detail::within_limit(on_faces(f, a, from_a, on_a, from_b, on_b, options, preferred), options);
 }
 
 }  // namespace collide2d

@@ -225,11 +225,13 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p, Real* extent = nullptr) {
 // of s near its maximum (a time of impact's step far from contact) passes `rough` > 0: the climb
 // then stops, uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is
 // below rough * s. Where the climb reaches a maximum off the face normals that the bound cannot
-// certify (an overlap deeper than the discs), it is left in `reached` for the search.
+// certify (an overlap deeper than the discs), it is left in `reached` for the search. A caller that
+// needs s only up to a limit passes `stop`: the climb ends, uncertified, where s passes it.
 template <class Real, class SA, class SB>
 std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin,
                                              int& evaluations, Real rough = 0,
-                                             std::optional<Direction<Real>>* reached = nullptr) {
+                                             std::optional<Direction<Real>>* reached = nullptr,
+                                             Real stop = std::numeric_limits<Real>::infinity()) {
   using std::abs;
   constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
   const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
@@ -292,7 +294,8 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
   const auto near_enough = [&] {
     return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s);
   };
-  for (int k = 0; !near_enough() && !kink && (!level(e, flat) || abs(e.slope) > Real(1e-12) * e.bend); ++k) {
+  for (int k = 0; !near_enough() && !kink && !(e.s > stop) && (!level(e, flat) || abs(e.slope) > Real(1e-12) * e.bend);
+       ++k) {
     const bool apart = e.s > 0;
     // At least, not equal: touching, s flips sign from one direction to the next.
     if (k >= (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
@@ -319,7 +322,7 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
       tau /= 2;
     }
   }
-  if (!near_enough() && !(disc_bound(p, n, e) <= e.s + margin)) {
+  if (!near_enough() && !(e.s > stop) && !(disc_bound(p, n, e) <= e.s + margin)) {
     if (reached != nullptr && !kink) *reached = Direction<Real>{n, e};
     return std::nullopt;
   }
@@ -335,16 +338,19 @@ Real climb_margin(const SupportPair<Real, SA, SB>& p) {
   return 8 * std::numeric_limits<Real>::epsilon() * p.scale;
 }
 
-// The global maximum of s: certified_climb from `start`, else the search. The directions and arcs
-// live in buffers kept per thread, so that a query allocates nothing once warm.
+// The global maximum of s: certified_climb from `start`, else the search; or, once s passes
+// `stop` at some direction, that direction. The directions and arcs live in buffers kept per
+// thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
-Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, int cap = 4096) {
+Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start,
+                                Real stop = std::numeric_limits<Real>::infinity()) {
+  constexpr int cap = 4096;
   static_assert(!std::is_same_v<SA, RectSupport<Real>> && !std::is_same_v<SB, RectSupport<Real>>,
                 "a rectangle's quarter turns are settled in closed form (contact_rect_ellipse.cpp)");
   const Real margin = climb_margin(p);
   Deepest<Real> best;
   std::optional<Direction<Real>> reached;
-  if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &reached)) return *quick;
+  if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &reached, stop)) return *quick;
   // The best value is not seeded from a climb that stopped short (a point short of its maximum by
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
@@ -380,7 +386,7 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
       break;
     }
   }
-  while (!arcs.empty() && best.evaluations < cap) {
+  while (!arcs.empty() && best.evaluations < cap && !(best.at.s > stop)) {
     const auto top = std::max_element(arcs.begin(), arcs.end(),
                                       [](const Arc<Real>& l, const Arc<Real>& r) { return l.bound < r.bound; });
     if (top->bound <= best.at.s + margin) break;

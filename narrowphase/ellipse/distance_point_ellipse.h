@@ -21,6 +21,8 @@
 
 #include <collide2d/shapes.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace collide2d {
@@ -33,6 +35,19 @@ struct PointEllipseResult {
 };
 
 PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p);
+
+// A lower bound of the signed distance from p to the ellipse (negative inside), without its root:
+// the larger of the gap to the ellipse's bounding box (exact beyond the ends of the axes) and of
+// (rho - 1) times min(a, b) outside or max(a, b) inside, where rho E, the ellipse scaled by rho
+// about its centre, passes through p. Outside, rho E holds E grown by (rho - 1) min(a, b), as E's
+// support value is at least min(a, b) along every direction; inside, it holds E shrunk by
+// (1 - rho) max(a, b), as that value is at most max(a, b).
+inline double distance_floor(double a, double b, const Vec2& p) {
+  const double u = p.x() / a, v = p.y() / b;
+  const double box = std::max(std::abs(p.x()) - a, std::abs(p.y()) - b);
+  const double rho = std::sqrt(u * u + v * v);
+  return std::max(box, (rho - 1) * (rho >= 1 ? std::min(a, b) : std::max(a, b)));
+}
 
 // A point of the curve where the distance from p has a local minimum along the curve, the curve's
 // outward unit normal there, and the signed distance (p - point).normal (negative: p lies on the

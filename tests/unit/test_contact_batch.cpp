@@ -119,7 +119,7 @@ TEST(ContactBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {
   // The first circle's centre is 0.5 beyond the ellipse's left end, the second 2.5 beyond its right.
   EXPECT_EQ(out[0].separation, -0.5);
   EXPECT_EQ(out[1].separation, 1.5);
-  contact_circle_ellipse({}, {}, {}, {});  // nothing to do, and nothing touched
+  contact_circle_ellipse(std::span<const Circle>{}, {}, {}, {});  // nothing to do, and nothing touched
 }
 
 }  // namespace
