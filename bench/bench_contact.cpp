@@ -75,6 +75,14 @@ void batch_circle_ellipse(benchmark::State& state) {
   bench::time_batches(state, [&] { contact_circle_ellipse(w.a, w.b, ob, out); });
 }
 
+// The batched rectangle–circle contact (orientations kept) on the whole workload per iteration.
+void batch_rect_circle(benchmark::State& state) {
+  const auto& w = bench::pairs<Rect, Circle>(state);
+  const std::vector<Orientation> oa = bench::orientations(w.a);
+  std::vector<Contact> out(kPairs);
+  bench::time_batches(state, [&] { contact_rect_circle(w.a, oa, w.b, out); });
+}
+
 // The benchmark's pairs as Box2D shapes, ellipses as inscribed Sides-gons (not timed).
 template <class A, class B, int Sides>
 std::vector<baseline::ShapePair> box2d_pairs(const benchmark::State& state) {
@@ -114,7 +122,9 @@ BENCHMARK(box2d<Rect, Rect>)->Name("box2d_collide_polygons/rect_rect_4gons")->Ap
 BENCHMARK(ours<Rect, Circle>)->Name("ours/rect_circle")->Apply(bench::contact_workloads);
 BENCHMARK(ours_oriented<Rect, Circle>)->Name("ours/rect_circle_oriented")->Apply(bench::contact_workloads);
 BENCHMARK(ours_oriented<Rect, Circle, true>)->Name("ours/rect_circle_limited")->Apply(bench::contact_workloads);
+BENCHMARK(batch_rect_circle)->Name("batch_contact/rect_circle")->Apply(bench::contact_workloads);
 BENCHMARK(box2d<Rect, Circle>)->Name("box2d_collide_polygon_and_circle/rect_circle")->Apply(bench::contact_workloads);
+BENCHMARK(box2d_batch<Rect, Circle, 4>)->Name("box2d_batch_contact/rect_circle")->Apply(bench::contact_workloads);
 BENCHMARK(ours<Circle, Circle>)->Name("ours/circle_circle")->Apply(bench::contact_workloads);
 BENCHMARK(ours_oriented<Circle, Circle, true>)->Name("ours/circle_circle_limited")->Apply(bench::contact_workloads);
 BENCHMARK(box2d<Circle, Circle>)->Name("box2d_collide_circles/circle_circle")->Apply(bench::contact_workloads);

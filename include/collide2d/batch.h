@@ -62,5 +62,9 @@ void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientat
 /// where the one-off root stops.
 void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<Contact> contacts);
+/// contacts[i] = contact_rect_circle(rects[i], rect_orientations[i], circles[i]), bit for bit: every
+/// case of the closed form computed per lane and the pair's own kept.
+void contact_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
+                         std::span<const Circle> circles, std::span<Contact> contacts);
 
 }  // namespace collide2d

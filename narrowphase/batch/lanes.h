@@ -130,6 +130,25 @@ struct RectCircleLanes {
   std::array<V, kFields> fields() const { return {px, py, hx, hy, r}; }
 };
 
+// A posed rectangle and a circle as the contact takes them: the rectangle's centre, orientation and
+// half extents, the circle's centre and radius.
+template <class V>
+struct RectCirclePosedLanes {
+  V rx, ry;  // rectangle centre
+  V c, s;    // its orientation
+  V hx, hy;  // its half extents
+  V cx, cy;  // circle centre
+  V r;       // radius
+
+  static constexpr std::size_t kFields = 9;
+  std::array<V, kFields> fields() const { return {rx, ry, c, s, hx, hy, cx, cy, r}; }  // in declaration order
+};
+
+inline RectCirclePosedLanes<double> rect_circle_posed_lanes(const Rect& r, const Orientation& ro, const Circle& c) {
+  return {r.center.x(),       r.center.y(), ro.c,         ro.s,    r.half_extents.x(),
+          r.half_extents.y(), c.center.x(), c.center.y(), c.radius};
+}
+
 // A circle and an ellipse: the circle's centre in the ellipse's frame, the semi-axes, the radius.
 template <class V>
 struct CircleEllipseLanes {
