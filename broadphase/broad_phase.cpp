@@ -355,6 +355,33 @@ void SweepAndPrune::process(StripWork& w) const {
   if (w.full_sort) radix_sort(strip);
   merge_incoming(strip);
   sweep(w);
+  std::sort(w.found.begin(), w.found.end());
+}
+
+// found_: the first `strips` tasks' pairs, each list sorted by its task, merged pairwise until one
+// run is left. A pair is found in one strip only, so the result is the sorted union whatever the
+// order of the strips; the merges cost less than sorting the union, and the sorts ran in parallel.
+void SweepAndPrune::join(std::size_t strips) {
+  found_.clear();
+  runs_.assign(1, 0);
+  for (std::size_t k = 0; k < strips; ++k) {
+    found_.insert(found_.end(), work_[k].found.begin(), work_[k].found.end());
+    runs_.push_back(found_.size());
+  }
+  while (runs_.size() > 2) {
+    merged_.resize(found_.size());
+    next_runs_.assign(1, 0);
+    for (std::size_t i = 0; i + 1 < runs_.size(); i += 2) {
+      const std::size_t end = i + 2 < runs_.size() ? runs_[i + 2] : runs_[i + 1];
+      const auto from = found_.begin();
+      std::merge(from + static_cast<std::ptrdiff_t>(runs_[i]), from + static_cast<std::ptrdiff_t>(runs_[i + 1]),
+                 from + static_cast<std::ptrdiff_t>(runs_[i + 1]), from + static_cast<std::ptrdiff_t>(end),
+                 merged_.begin() + static_cast<std::ptrdiff_t>(runs_[i]));
+      next_runs_.push_back(end);
+    }
+    found_.swap(merged_);
+    runs_.swap(next_runs_);
+  }
 }
 
 void SweepAndPrune::update(const ParallelFor& parallel) {
@@ -377,20 +404,18 @@ void SweepAndPrune::update(const ParallelFor& parallel) {
   } else {
     for (std::size_t k = 0; k < n; ++k) task(k);
   }
-  found_.clear();
   std::size_t empty = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const StripWork& w = work_[k];
     stats_.swaps += w.swaps;
     stats_.axis_overlaps += w.axis_overlaps;
     stats_.full_sort = stats_.full_sort || w.full_sort;
-    found_.insert(found_.end(), w.found.begin(), w.found.end());
     empty += w.strip->tags.empty() ? 1 : 0;
   }
+  join(n);
   // Empty strips are dropped together once they are half of all: a strip that empties and fills
   // again frame after frame (a body crossing its edge) keeps its storage.
   if (2 * empty > n) std::erase_if(strips_, [](const auto& entry) { return entry.second.tags.empty(); });
-  std::sort(found_.begin(), found_.end());
   stats_.axis = sweep_axis_;
   stats_.strips = n - empty;
   finish_update(found_);

@@ -150,6 +150,8 @@ class SweepAndPrune : public BroadPhaseBase {
   std::vector<StripRange> range_;  // per proxy
   std::vector<StripWork> work_;    // per strip, kept from frame to frame
   std::vector<ProxyPair> found_;   // the strips' pairs joined; its storage is kept from frame to frame
+  std::vector<ProxyPair> merged_;  // the other side of join()'s merges, kept the same way
+  std::vector<std::size_t> runs_, next_runs_;
   UpdateStats stats_;
 
   bool lay_out();
@@ -162,6 +164,7 @@ class SweepAndPrune : public BroadPhaseBase {
   void merge_incoming(Strip& s) const;
   void sweep(StripWork& w) const;
   void process(StripWork& w) const;
+  void join(std::size_t strips);
 };
 
 /// Every pair tested: the reference the tests hold the sweep and prune to.
