@@ -1,5 +1,6 @@
 #include "bench/report.h"
 
+#include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
@@ -16,30 +17,51 @@
 namespace collide2d::report {
 namespace {
 
+// A shape's largest half-size.
+double half_size(const Ellipse& e) { return std::max(e.a, e.b); }
+double half_size(const Rect& r) { return r.half_extents.maxCoeff(); }
+double half_size(const Circle& c) { return c.radius; }
+
+template <class A, class B>
 struct Workload {
-  std::vector<Ellipse> a;
-  std::vector<Ellipse> b;
+  std::vector<A> a;
+  std::vector<B> b;
   std::vector<double> reference;
   std::vector<double> scale;
 };
 
+// The random generator's shapes: centres in a 4 x 4 square, sizes 0.05 to 1, aspect up to 10.
+struct Generator {
+  std::mt19937_64 rng;
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  double size() { return 0.05 * std::pow(20.0, uniform(0, 1)); }
+  Vec2 centre() { return {uniform(-2, 2), uniform(-2, 2)}; }
+  void make(Ellipse& e) {
+    const double a = size();
+    e = Ellipse{centre(), a, a / std::pow(10.0, uniform(0, 1)), uniform(0, 6.3)};
+  }
+  void make(Rect& r) {
+    const double h = size();
+    r = Rect{centre(), Vec2(h, h / std::pow(10.0, uniform(0, 1))), uniform(0, 6.3)};
+  }
+  void make(Circle& c) { c = Circle{centre(), size()}; }
+};
+
 // Pairs the generator draws until `keep` accepts `pairs` of them, with `reference` for each.
-template <class Keep, class Reference>
-Workload make_workload(const ReportOptions& options, Keep keep, Reference reference) {
-  std::mt19937_64 rng(options.seed);
-  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  const auto ellipse = [&] {
-    const double a = 0.05 * std::pow(20.0, uniform(0, 1));
-    return Ellipse{Vec2(uniform(-2, 2), uniform(-2, 2)), a, a / std::pow(10.0, uniform(0, 1)), uniform(0, 6.3)};
-  };
-  Workload w;
+template <class A, class B, class Keep, class Reference>
+Workload<A, B> make_workload(const ReportOptions& options, Keep keep, Reference reference) {
+  Generator g{std::mt19937_64(options.seed)};
+  Workload<A, B> w;
   while (static_cast<int>(w.a.size()) < options.pairs) {
-    const Ellipse a = ellipse(), b = ellipse();
+    A a;
+    B b;
+    g.make(a);
+    g.make(b);
     if (!keep(a, b)) continue;
     w.a.push_back(a);
     w.b.push_back(b);
     w.reference.push_back(reference(a, b));
-    w.scale.push_back(std::max({a.a, a.b, b.a, b.b, (b.center - a.center).norm()}));
+    w.scale.push_back(std::max({half_size(a), half_size(b), (b.center - a.center).norm()}));
   }
   return w;
 }
@@ -50,8 +72,8 @@ double median(std::vector<double> v) {
 }
 
 // Runs query(k) over the workload `repetitions` times; the median pass gives the time per query.
-template <class Query>
-MethodResult measure(const Workload& w, int repetitions, std::string method, int sides, Query query) {
+template <class A, class B, class Query>
+MethodResult measure(const Workload<A, B>& w, int repetitions, std::string method, int sides, Query query) {
   const std::size_t n = w.a.size();
   std::vector<double> got(n), times;
   for (int r = 0; r < repetitions; ++r) {
@@ -61,13 +83,13 @@ MethodResult measure(const Workload& w, int repetitions, std::string method, int
   }
   std::vector<double> errors;
   for (std::size_t k = 0; k < n; ++k) errors.push_back(std::abs(got[k] - w.reference[k]) / w.scale[k]);
-  return {std::move(method), sides, median(times), median(errors), *std::max_element(errors.begin(), errors.end())};
+  return {std::move(method), sides, median(times), median(errors), *std::max_element(errors.begin(), errors.end()), ""};
 }
 
 }  // namespace
 
 std::vector<MethodResult> measure_methods(const ReportOptions& options) {
-  const Workload w = make_workload(
+  const auto w = make_workload<Ellipse, Ellipse>(
       options, [](const Ellipse& a, const Ellipse& b) { return !overlap_ellipse_ellipse(a, b); },
       [](const Ellipse& a, const Ellipse& b) { return static_cast<double>(reference::ellipse_pair(a, b).distance); });
   std::vector<MethodResult> out;
@@ -95,21 +117,44 @@ std::vector<MethodResult> measure_methods(const ReportOptions& options) {
   return out;
 }
 
-std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) {
-  const Workload w = make_workload(
+namespace {
+
+// The pair kind's contact and its batch (none where there is no batch), by overload.
+Contact one_off(const Rect& a, const Ellipse& b) { return contact_rect_ellipse(a, b); }
+Contact one_off(const Circle& a, const Ellipse& b) { return contact_circle_ellipse(a, b); }
+Contact one_off(const Ellipse& a, const Ellipse& b) { return contact_ellipse_ellipse(a, b); }
+bool batch(const std::vector<Circle>& a, const std::vector<Ellipse>& b, std::vector<Contact>& out) {
+  std::vector<Orientation> orientations;
+  for (const Ellipse& e : b) orientations.push_back(Orientation::of(e.angle));
+  contact_circle_ellipse(a, b, orientations, out);
+  return true;
+}
+template <class A>
+bool batch(const std::vector<A>&, const std::vector<Ellipse>&, std::vector<Contact>&) {
+  return false;
+}
+
+// The contact depth of one pair kind: overlapping pairs deeper than 2% of the larger size.
+template <class A, class B>
+void measure_contact_pairs(const ReportOptions& options, const char* pair, std::vector<MethodResult>& out) {
+  const auto w = make_workload<A, B>(
       options,
-      [](const Ellipse& a, const Ellipse& b) {
-        return contact_ellipse_ellipse(a, b).separation < -0.02 * std::max({a.a, a.b, b.a, b.b});
-      },
-      [](const Ellipse& a, const Ellipse& b) {
-        return static_cast<double>(reference::signed_distance(a, b).separation);
-      });
-  std::vector<MethodResult> out;
+      [](const A& a, const B& b) { return one_off(a, b).separation < -0.02 * std::max(half_size(a), half_size(b)); },
+      [](const A& a, const B& b) { return static_cast<double>(reference::signed_distance(a, b).separation); });
+  const std::size_t first = out.size();
   out.push_back(measure(w, options.repetitions, "collide2d contact", 0,
-                        [&w](std::size_t k) { return contact_ellipse_ellipse(w.a[k], w.b[k]).separation; }));
+                        [&w](std::size_t k) { return one_off(w.a[k], w.b[k]).separation; }));
+  std::vector<Contact> contacts(w.a.size());
+  if (batch(w.a, w.b, contacts)) {
+    // Timed as a whole list per pass, divided by its pairs; the separations are read back from it.
+    out.push_back(measure(w, options.repetitions, "collide2d batch", 0, [&](std::size_t k) {
+      if (k == 0) batch(w.a, w.b, contacts);
+      return contacts[k].separation;
+    }));
+  }
   for (const auto& [name, fit] : {std::pair{"box2d manifold inscribed", baseline::Fit::inscribed},
                                   std::pair{"box2d manifold circumscribed", baseline::Fit::circumscribed}}) {
-    for (int sides = 5; sides <= 8; ++sides) {
+    for (const int sides : {5, 6, 7, 8, 16}) {
       std::vector<baseline::ShapePair> pairs;
       for (std::size_t k = 0; k < w.a.size(); ++k) {
         pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], sides, fit, w.a[k].center),
@@ -121,6 +166,16 @@ std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) 
       }));
     }
   }
+  for (std::size_t k = first; k < out.size(); ++k) out[k].pair = pair;
+}
+
+}  // namespace
+
+std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) {
+  std::vector<MethodResult> out;
+  measure_contact_pairs<Rect, Ellipse>(options, "rect-ellipse", out);
+  measure_contact_pairs<Circle, Ellipse>(options, "circle-ellipse", out);
+  measure_contact_pairs<Ellipse, Ellipse>(options, "ellipse-ellipse", out);
   return out;
 }
 
@@ -147,8 +202,9 @@ void write_report_json(const std::vector<MethodResult>& distance, const std::vec
       char line[300];
       std::snprintf(line, sizeof line,
                     "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %.6g, \"median_error\": %.6g, "
-                    "\"max_error\": %.6g}%s\n",
+                    "\"max_error\": %.6g%s%s%s}%s\n",
                     r.method.c_str(), r.sides, r.nanoseconds, r.median_error, r.max_error,
+                    r.pair.empty() ? "" : ", \"pair\": \"", r.pair.c_str(), r.pair.empty() ? "" : "\"",
                     k + 1 < results.size() ? "," : "");
       out << line;
     }

@@ -8,9 +8,12 @@
 // for N = 8 ... 256. Time: the median over `repetitions` passes of the mean time per query in the
 // pass. Error: |d - d_ref| / max(size, centre distance), median and maximum over the pairs.
 //
-// Contacts: `pairs` overlapping ellipse pairs of the same generator, deeper than 2% of the larger
-// size; collide2d's contact() against Box2D's manifold (b2CollidePolygons) on the inscribed and
-// the circumscribed N-gons, N = 5 ... 8 (b2_maxPolygonVertices is 8 in 2.4.1). Error: |separation -
+// Contacts, for each curved pair (rectangle–ellipse, circle–ellipse, ellipse–ellipse): `pairs`
+// overlapping pairs of the same generator (rectangles of aspect up to 10, circles), deeper than 2%
+// of the larger size; collide2d's contact one pair at a time and, where there is one, its batch
+// (timed over the whole list, per pair), against Box2D's manifold (b2CollidePolygons,
+// b2CollidePolygonAndCircle) on the inscribed and the circumscribed N-gons, N = 5 ... 8
+// (b2_maxPolygonVertices is 8 in 2.4.1) and 16 (the rebuilt 2.4.1). Error: |separation -
 // reference| / scale, the reference being the 50-digit signed distance (a scan of the dual
 // function); a Box2D manifold without points (inscribed polygons apart) counts as separation 0.
 #pragma once
@@ -27,6 +30,7 @@ struct MethodResult {
   double nanoseconds = 0.0;
   double median_error = 0.0;
   double max_error = 0.0;
+  std::string pair;  // the pair kind of a contact measurement, e.g. "rect-ellipse"
 };
 
 struct ReportOptions {
@@ -43,7 +47,8 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
                   std::ostream& out);
 
 // Both measurements as one JSON object: {"pairs", "repetitions", "distance": [...], "contact": [...]},
-// each result {"method", "sides", "nanoseconds", "median_error", "max_error"}.
+// each result {"method", "sides", "nanoseconds", "median_error", "max_error"}, and "pair" for a
+// contact's.
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out);
 

@@ -19,6 +19,8 @@ import sys
 
 UNITS = {'ns': 1.0, 'us': 1e3, 'ms': 1e6, 's': 1e9}
 WORKLOADS = [('random', 0), ('candidate', 1), ('scene', 2)]
+# The contact benchmarks add the overlapping pairs among the candidate and the scene pairs.
+CONTACT_WORKLOADS = WORKLOADS + [('overlapping candidate', 3), ('overlapping scene', 4)]
 
 # (label, ours, rival): `{w}` stands for the workload's number. Batches are timed over the whole list
 # per iteration (per_pair), against Box2D's loop over the same list.
@@ -39,14 +41,21 @@ DISTANCE = [
 ]
 CONTACT = [
     ('rect–rect, one pair', 'ours/rect_rect_oriented/candidates:{w}', 'box2d_collide_polygons/rect_rect_4gons/candidates:{w}'),
+    ('rect–rect, one pair, max_separation 0', 'ours/rect_rect_limited/candidates:{w}', 'box2d_collide_polygons/rect_rect_4gons/candidates:{w}'),
     ('rect–circle, one pair', 'ours/rect_circle_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/rect_circle/candidates:{w}'),
+    ('rect–circle, one pair, max_separation 0', 'ours/rect_circle_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/rect_circle/candidates:{w}'),
+    ('rect–circle, batch', 'batch_contact/rect_circle/candidates:{w}', 'box2d_batch_contact/rect_circle/candidates:{w}'),
     ('circle–circle, one pair', 'ours/circle_circle/candidates:{w}', 'box2d_collide_circles/circle_circle/candidates:{w}'),
     ('rect–ellipse vs 8-gon, one pair', 'ours/rect_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/rect_ellipse_8gon/candidates:{w}'),
+    ('rect–ellipse vs 8-gon, one pair, max_separation 0', 'ours/rect_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/rect_ellipse_8gon/candidates:{w}'),
     ('rect–ellipse vs 16-gon, one pair', 'ours/rect_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/rect_ellipse_16gon/candidates:{w}'),
     ('circle–ellipse vs 8-gon, one pair', 'ours/circle_ellipse_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/circle_ellipse_8gon/candidates:{w}'),
+    ('circle–ellipse vs 8-gon, one pair, max_separation 0', 'ours/circle_ellipse_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/circle_ellipse_8gon/candidates:{w}'),
     ('circle–ellipse vs 16-gon, one pair', 'ours/circle_ellipse_oriented/candidates:{w}', 'box2d_collide_polygon_and_circle/circle_ellipse_16gon/candidates:{w}'),
+    ('circle–ellipse vs 8-gon, batch', 'batch_contact/circle_ellipse/candidates:{w}', 'box2d_batch_contact/circle_ellipse_8gon/candidates:{w}'),
     ('circle–ellipse vs 16-gon, batch', 'batch_contact/circle_ellipse/candidates:{w}', 'box2d_batch_contact/circle_ellipse_16gon/candidates:{w}'),
     ('ellipse–ellipse vs 8-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_8gons/candidates:{w}'),
+    ('ellipse–ellipse vs 8-gons, one pair, max_separation 0', 'ours/ellipse_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_8gons/candidates:{w}'),
     ('ellipse–ellipse vs 16-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_16gons/candidates:{w}'),
 ]
 TOI = [
@@ -120,13 +129,14 @@ def fmt_ratio(ours, rival):
 
 
 def table(rows, med, workloads):
+    """One row per comparison: a column per workload (a list of WORKLOADS' kind), or one figure."""
     lines = []
     if workloads:
-        head = '| pair | ' + ' | '.join(f'{w} pairs: collide2d / Box2D' for w, _ in WORKLOADS) + ' |'
-        lines += [head, '| --- |' + ' --- |' * len(WORKLOADS)]
+        head = '| pair | ' + ' | '.join(f'{w} pairs: collide2d / Box2D' for w, _ in workloads) + ' |'
+        lines += [head, '| --- |' + ' --- |' * len(workloads)]
         for label, ours, rival in rows:
             cells = []
-            for _, n in WORKLOADS:
+            for _, n in workloads:
                 o, r = med.get(ours.format(w=n)), med.get(rival.format(w=n))
                 cells.append(f'{fmt_time(o)} / {fmt_time(r)} = **{fmt_ratio(o, r)}**')
             lines.append(f'| {label} | ' + ' | '.join(cells) + ' |')
@@ -226,6 +236,15 @@ def report_table(results):
     return '\n'.join(lines)
 
 
+def contact_pairs(results):
+    """The report's contact results by pair kind, in their order; a result without one is of two
+    ellipses."""
+    pairs = {}
+    for r in results:
+        pairs.setdefault(r.get('pair', 'ellipse-ellipse'), []).append(r)
+    return list(pairs.items())
+
+
 def page(args):
     files = sorted(pathlib.Path(args.results).glob('*.json'))
     if not files:
@@ -239,8 +258,15 @@ def page(args):
     svgs = {
         'ratios.svg': ratio_svg(groups, med),
         'distance_error.svg': error_svg(report['distance'], 'ellipse–ellipse distance: time per query against error'),
-        'contact_error.svg': error_svg(report['contact'], 'ellipse–ellipse contact depth: time per query against error'),
     }
+    contact_sections = []
+    for pair, rows in contact_pairs(report['contact']):
+        name = 'contact_error.svg' if pair == 'ellipse-ellipse' else f'contact_error_{pair.replace("-", "_")}.svg'
+        label = pair.replace('-', '–')
+        svgs[name] = error_svg(rows, f'{label} contact depth: time per query against error')
+        contact_sections.append(f'### {label[0].upper() + label[1:]}\n\n'
+                                f'![{label} contact depth: time against error](performance/{name})\n\n'
+                                f'{report_table(rows)}')
     text = f'''# Performance
 
 This page is generated: `bash scripts/bench.sh` runs the benchmark suite and writes its results to
@@ -287,20 +313,20 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (a circle is a
 `b2CircleShape`).
 
-{table(OVERLAP, med, True)}
+{table(OVERLAP, med, WORKLOADS)}
 
 ## Distance
 
 Box2D: `b2Distance` on the ellipses' inscribed N-gons.
 
-{table(DISTANCE, med, True)}
+{table(DISTANCE, med, WORKLOADS)}
 
 ## Contacts
 
 Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons; its
 manifold is empty for pairs apart, where collide2d's contact carries the exact distance and normal.
 
-{table(CONTACT, med, True)}
+{table(CONTACT, med, CONTACT_WORKLOADS)}
 
 ## Time of impact
 
@@ -342,12 +368,13 @@ centre distance), median and largest over the pairs. The reference methods `grad
 
 {report_table(report['distance'])}
 
-The contact depth of overlapping pairs deeper than 2% of the size; a Box2D manifold without points
-counts as separation 0.
+The contact depth of overlapping pairs deeper than 2% of the size, for each curved pair (rectangles
+of aspect up to 10, circles of the same sizes); collide2d one pair at a time and, where it has one,
+its batch (the whole list timed, per pair); Box2D's manifold on N-gons inscribed in and
+circumscribed about each ellipse, N = 5 to 8 and 16. A Box2D manifold without points counts as
+separation 0.
 
-![contact depth: time against error](performance/contact_error.svg)
-
-{report_table(report['contact'])}
+{(chr(10) * 2).join(contact_sections)}
 
 ## Results on file
 

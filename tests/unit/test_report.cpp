@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
 
 namespace collide2d::report {
 namespace {
@@ -32,21 +33,41 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   EXPECT_NE(json.str().find("{\"method\": \"box2d circumscribed\", \"sides\": 256, "), std::string::npos);
 }
 
-// The contact depth: ours exact, Box2D's manifolds closer as N grows from 5 to 8.
-TEST(Report, MeasuresTheContactDepth) {
+// The contact depth of each curved pair: ours exact one pair at a time and batched (the same
+// separations), Box2D's manifolds closer as N grows from 5 to 16.
+TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
   const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 4};
   const std::vector<MethodResult> results = measure_contact_methods(options);
-  ASSERT_EQ(results.size(), 1u + 2u * 4u);
-  EXPECT_EQ(results[0].method, "collide2d contact");
-  EXPECT_LE(results[0].max_error, 1e-15);
-  EXPECT_EQ(results[1].sides, 5);
-  EXPECT_EQ(results[4].sides, 8);
-  for (const std::size_t circumscribed : {5u, 8u})
-    EXPECT_EQ(results[circumscribed].method, "box2d manifold circumscribed");
-  EXPECT_LT(results[8].median_error, results[5].median_error);
-  std::ostringstream table;
+  ASSERT_EQ(results.size(), 11u + 12u + 11u);
+  std::size_t k = 0;
+  for (const std::string pair : {"rect-ellipse", "circle-ellipse", "ellipse-ellipse"}) {
+    const MethodResult& ours = results[k++];
+    EXPECT_EQ(ours.pair, pair);
+    EXPECT_EQ(ours.method, "collide2d contact") << pair;
+    EXPECT_LE(ours.max_error, 1e-15) << pair;
+    if (pair == "circle-ellipse") {
+      const MethodResult& batch = results[k++];
+      EXPECT_EQ(batch.method, "collide2d batch");
+      EXPECT_EQ(batch.median_error, ours.median_error);
+      EXPECT_EQ(batch.max_error, ours.max_error);
+    }
+    for (const std::string fit : {"inscribed", "circumscribed"}) {
+      const MethodResult& five = results[k];
+      const MethodResult& sixteen = results[k + 4];
+      EXPECT_EQ(five.method, "box2d manifold " + fit) << pair;
+      EXPECT_EQ(five.sides, 5) << pair;
+      EXPECT_EQ(sixteen.sides, 16) << pair;
+      EXPECT_EQ(sixteen.pair, pair);
+      EXPECT_LT(sixteen.median_error, five.median_error) << pair << " " << fit;
+      k += 5;
+    }
+  }
+  std::ostringstream table, json;
   print_report(results, "contact depth", options, table);
-  EXPECT_NE(table.str().find("| box2d manifold inscribed | 8 |"), std::string::npos);
+  EXPECT_NE(table.str().find("| box2d manifold inscribed | 16 |"), std::string::npos);
+  write_report_json({}, results, options, json);
+  EXPECT_NE(json.str().find("\"sides\": 16, "), std::string::npos);
+  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\"}"), std::string::npos);
 }
 
 }  // namespace
