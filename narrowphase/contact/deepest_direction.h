@@ -299,7 +299,10 @@ std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p,
     const bool apart = e.s > 0;
     // At least, not equal: touching, s flips sign from one direction to the next.
     if (k >= (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
-    Real tau = e.slope / (2 * e.bend * halley(e, Real(0)));  // on s' in tan(angle / 2)
+    // Halley's step on s' in tan(angle / 2), slope / (2 bend d) with d = halley(e, 0) = 1 + sq / b2,
+    // in one division: slope bend / (b2 + sq); Newton's where d leaves [1/2, 2].
+    const Real b2 = 2 * e.bend * e.bend, sq = e.slope * (e.slope + e.rho_slope);
+    Real tau = sq >= -b2 / 2 && sq <= b2 ? e.slope * e.bend / (b2 + sq) : e.slope / (2 * e.bend);
     if (!(abs(tau) < Real(0.5))) {
       if (!apart) return std::nullopt;
       tau = std::copysign(Real(0.5), tau);
