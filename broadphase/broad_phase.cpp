@@ -359,26 +359,34 @@ void SweepAndPrune::process(StripWork& w) const {
 }
 
 // found_: the first `strips` tasks' pairs, each list sorted by its task, merged pairwise until one
-// run is left. A pair is found in one strip only, so the result is the sorted union whatever the
-// order of the strips; the merges cost less than sorting the union, and the sorts ran in parallel.
-void SweepAndPrune::join(std::size_t strips) {
+// run is left, the merges of a pass as tasks for `run`. A pair is found in one strip only, so the
+// result is the sorted union whatever the order of the strips; the merges cost less than sorting
+// the union, and the sorts ran in parallel.
+void SweepAndPrune::join(std::size_t strips, const ParallelFor& run) {
   found_.clear();
   runs_.assign(1, 0);
   for (std::size_t k = 0; k < strips; ++k) {
     found_.insert(found_.end(), work_[k].found.begin(), work_[k].found.end());
     runs_.push_back(found_.size());
   }
+  // Captures `this` alone, which std::function holds without allocating.
+  const auto merge = [this](std::size_t m) {
+    const auto at = [](std::vector<ProxyPair>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
+    const std::size_t i = 2 * m, end = i + 2 < runs_.size() ? runs_[i + 2] : runs_[i + 1];
+    std::merge(at(found_, runs_[i]), at(found_, runs_[i + 1]), at(found_, runs_[i + 1]), at(found_, end),
+               at(merged_, runs_[i]));
+  };
   while (runs_.size() > 2) {
     merged_.resize(found_.size());
-    next_runs_.assign(1, 0);
-    for (std::size_t i = 0; i + 1 < runs_.size(); i += 2) {
-      const std::size_t end = i + 2 < runs_.size() ? runs_[i + 2] : runs_[i + 1];
-      const auto from = found_.begin();
-      std::merge(from + static_cast<std::ptrdiff_t>(runs_[i]), from + static_cast<std::ptrdiff_t>(runs_[i + 1]),
-                 from + static_cast<std::ptrdiff_t>(runs_[i + 1]), from + static_cast<std::ptrdiff_t>(end),
-                 merged_.begin() + static_cast<std::ptrdiff_t>(runs_[i]));
-      next_runs_.push_back(end);
+    const std::size_t merges = runs_.size() / 2;
+    if (run) {
+      run(merges, merge);
+    } else {
+      for (std::size_t m = 0; m < merges; ++m) merge(m);
     }
+    next_runs_.assign(1, 0);
+    for (std::size_t m = 0; m < merges; ++m)
+      next_runs_.push_back(2 * m + 2 < runs_.size() ? runs_[2 * m + 2] : runs_.back());
     found_.swap(merged_);
     runs_.swap(next_runs_);
   }
@@ -412,7 +420,7 @@ void SweepAndPrune::update(const ParallelFor& parallel) {
     stats_.full_sort = stats_.full_sort || w.full_sort;
     empty += w.strip->tags.empty() ? 1 : 0;
   }
-  join(n);
+  join(n, parallel);
   // Empty strips are dropped together once they are half of all: a strip that empties and fills
   // again frame after frame (a body crossing its edge) keeps its storage.
   if (2 * empty > n) std::erase_if(strips_, [](const auto& entry) { return entry.second.tags.empty(); });

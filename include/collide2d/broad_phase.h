@@ -164,7 +164,7 @@ class SweepAndPrune : public BroadPhaseBase {
   void merge_incoming(Strip& s) const;
   void sweep(StripWork& w) const;
   void process(StripWork& w) const;
-  void join(std::size_t strips);
+  void join(std::size_t strips, const ParallelFor& run);
 };
 
 /// Every pair tested: the reference the tests hold the sweep and prune to.
