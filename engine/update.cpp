@@ -52,20 +52,32 @@ void WorldState::refresh_moving_tree() {
 void WorldState::find_candidates() {
   // A few thousand moving shapes sort and sweep in less time than waking the pool takes.
   constexpr std::size_t kParallelBodies = 4096;
-  broad_.update([this](std::size_t count, const std::function<void(std::size_t)>& task) {
+  const auto parallel = [this](std::size_t count, const std::function<void(std::size_t)>& task) {
     if (broad_.size() < kParallelBodies) {
       for (std::size_t k = 0; k < count; ++k) task(k);
     } else {
       pool_->run(count, task);
     }
-  });
+  };
+  broad_.update(parallel);
   if (fresh(static_tree_)) static_tree_.rebuild();
-  candidates_.clear();
+  // The moving pairs' shapes in body order, in blocks on the pool (each pair reads two shapes far
+  // apart in memory), a pair of one body's shapes marked and then dropped.
+  constexpr std::size_t kBlock = 16384;
+  const std::vector<ProxyPair>& moving = broad_.pairs();
+  candidates_.resize(moving.size());
+  parallel((moving.size() + kBlock - 1) / kBlock, [this, &moving](std::size_t block) {
+    for (std::size_t k = block * kBlock; k < std::min(moving.size(), (block + 1) * kBlock); ++k) {
+      const std::uint32_t x = part_of_[moving[k].a], y = part_of_[moving[k].b];
+      const std::uint32_t bx = parts_[x].body.index, by = parts_[y].body.index;
+      candidates_[k] = bx == by ? std::pair(kNone, kNone) : bx < by ? std::pair(x, y) : std::pair(y, x);
+    }
+  });
+  std::erase_if(candidates_, [](const auto& c) { return c.first == kNone; });
   const auto add = [this](std::uint32_t x, std::uint32_t y) {
     const std::uint32_t bx = parts_[x].body.index, by = parts_[y].body.index;
     if (bx != by) candidates_.push_back(bx < by ? std::pair(x, y) : std::pair(y, x));
   };
-  for (const ProxyPair& p : broad_.pairs()) add(part_of_[p.a], part_of_[p.b]);
   const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every shape's list is empty
   for (ProxyId proxy = 0; statics && proxy < part_of_.size(); ++proxy) {
     const std::uint32_t index = part_of_[proxy];
