@@ -80,9 +80,17 @@ BENCHMARK(ours<Ellipse, Ellipse, true>)->Name("ours/ellipse_ellipse_turning");
 BENCHMARK(box2d<Ellipse, Ellipse, true, 8>)->Name("box2d_toi/ellipse_ellipse_turning_8gons");
 BENCHMARK(box2d<Ellipse, Ellipse, true, 16>)->Name("box2d_toi/ellipse_ellipse_turning_16gons");
 BENCHMARK(ours<Rect, Ellipse, false>)->Name("ours/rect_ellipse_translating");
+BENCHMARK(box2d<Rect, Ellipse, false, 8>)->Name("box2d_toi/rect_ellipse_translating_8gon");
 BENCHMARK(box2d<Rect, Ellipse, false, 16>)->Name("box2d_toi/rect_ellipse_translating_16gon");
 BENCHMARK(ours<Rect, Ellipse, true>)->Name("ours/rect_ellipse_turning");
+BENCHMARK(box2d<Rect, Ellipse, true, 8>)->Name("box2d_toi/rect_ellipse_turning_8gon");
 BENCHMARK(box2d<Rect, Ellipse, true, 16>)->Name("box2d_toi/rect_ellipse_turning_16gon");
+BENCHMARK(ours<Circle, Ellipse, false>)->Name("ours/circle_ellipse_translating");
+BENCHMARK(box2d<Circle, Ellipse, false, 8>)->Name("box2d_toi/circle_ellipse_translating_8gon");
+BENCHMARK(box2d<Circle, Ellipse, false, 16>)->Name("box2d_toi/circle_ellipse_translating_16gon");
+BENCHMARK(ours<Circle, Ellipse, true>)->Name("ours/circle_ellipse_turning");
+BENCHMARK(box2d<Circle, Ellipse, true, 8>)->Name("box2d_toi/circle_ellipse_turning_8gon");
+BENCHMARK(box2d<Circle, Ellipse, true, 16>)->Name("box2d_toi/circle_ellipse_turning_16gon");
 BENCHMARK(ours<Rect, Rect, true>)->Name("ours/rect_rect_turning");
 BENCHMARK(box2d<Rect, Rect, true, 4>)->Name("box2d_toi/rect_rect_turning");
 

@@ -59,10 +59,18 @@ CONTACT = [
     ('ellipse–ellipse vs 16-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_16gons/candidates:{w}'),
 ]
 TOI = [
+    ('ellipse–ellipse translating vs 8-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_8gons'),
     ('ellipse–ellipse translating vs 16-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_16gons'),
+    ('ellipse–ellipse turning vs 8-gons', 'ours/ellipse_ellipse_turning', 'box2d_toi/ellipse_ellipse_turning_8gons'),
     ('ellipse–ellipse turning vs 16-gons', 'ours/ellipse_ellipse_turning', 'box2d_toi/ellipse_ellipse_turning_16gons'),
+    ('rect–ellipse translating vs 8-gon', 'ours/rect_ellipse_translating', 'box2d_toi/rect_ellipse_translating_8gon'),
     ('rect–ellipse translating vs 16-gon', 'ours/rect_ellipse_translating', 'box2d_toi/rect_ellipse_translating_16gon'),
+    ('rect–ellipse turning vs 8-gon', 'ours/rect_ellipse_turning', 'box2d_toi/rect_ellipse_turning_8gon'),
     ('rect–ellipse turning vs 16-gon', 'ours/rect_ellipse_turning', 'box2d_toi/rect_ellipse_turning_16gon'),
+    ('circle–ellipse translating vs 8-gon', 'ours/circle_ellipse_translating', 'box2d_toi/circle_ellipse_translating_8gon'),
+    ('circle–ellipse translating vs 16-gon', 'ours/circle_ellipse_translating', 'box2d_toi/circle_ellipse_translating_16gon'),
+    ('circle–ellipse turning vs 8-gon', 'ours/circle_ellipse_turning', 'box2d_toi/circle_ellipse_turning_8gon'),
+    ('circle–ellipse turning vs 16-gon', 'ours/circle_ellipse_turning', 'box2d_toi/circle_ellipse_turning_16gon'),
     ('rect–rect turning', 'ours/rect_rect_turning', 'box2d_toi/rect_rect_turning'),
 ]
 BROAD = [(f'{n:,} boxes', f'moving_boxes<SweepAndPrune>/{n}{it}', f'moving_boxes<Box2dBroadPhase>/{n}{it}')
