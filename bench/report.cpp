@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <ostream>
 #include <random>
+#include <string>
 
 namespace collide2d::report {
 namespace {
@@ -193,6 +194,18 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
   out << "errors are |d - d_ref| / max(size, centre distance); d_ref from 50-digit arithmetic\n";
 }
 
+namespace {
+
+// A number as JSON: null where it is not finite (an error is, where a method failed on some pair).
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+}  // namespace
+
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out) {
   const auto list = [&out](const char* name, const std::vector<MethodResult>& results) {
@@ -201,11 +214,11 @@ void write_report_json(const std::vector<MethodResult>& distance, const std::vec
       const MethodResult& r = results[k];
       char line[300];
       std::snprintf(line, sizeof line,
-                    "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %.6g, \"median_error\": %.6g, "
-                    "\"max_error\": %.6g%s%s%s}%s\n",
-                    r.method.c_str(), r.sides, r.nanoseconds, r.median_error, r.max_error,
-                    r.pair.empty() ? "" : ", \"pair\": \"", r.pair.c_str(), r.pair.empty() ? "" : "\"",
-                    k + 1 < results.size() ? "," : "");
+                    "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %s, \"median_error\": %s, "
+                    "\"max_error\": %s%s%s%s}%s\n",
+                    r.method.c_str(), r.sides, json_number(r.nanoseconds).c_str(), json_number(r.median_error).c_str(),
+                    json_number(r.max_error).c_str(), r.pair.empty() ? "" : ", \"pair\": \"", r.pair.c_str(),
+                    r.pair.empty() ? "" : "\"", k + 1 < results.size() ? "," : "");
       out << line;
     }
     out << "  ]";

@@ -47,8 +47,8 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
                   std::ostream& out);
 
 // Both measurements as one JSON object: {"pairs", "repetitions", "distance": [...], "contact": [...]},
-// each result {"method", "sides", "nanoseconds", "median_error", "max_error"}, and "pair" for a
-// contact's.
+// each result {"method", "sides", "nanoseconds", "median_error", "max_error"} (an error that is not
+// finite, where a method failed on some pair, as null), and "pair" for a contact's.
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out);
 

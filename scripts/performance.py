@@ -189,15 +189,22 @@ def ratio_svg(groups, med):
     return '\n'.join(out) + '\n'
 
 
+def error_of(value):
+    """An error from the report; null (a method that failed on some pair) as infinite."""
+    return math.inf if value is None else value
+
+
 def error_svg(results, title):
-    """Time per query against error, log-log: a point per method, a curve per Box2D fit over N."""
+    """Time per query against error, log-log: a point per method, a curve per Box2D fit over N; an
+    infinite error's bar reaches the top."""
+    results = [dict(r, median_error=error_of(r['median_error']), max_error=error_of(r['max_error'])) for r in results]
     width, height, left, right, top, bottom, floor = 820, 520, 90, 230, 40, 60, 1e-17
     times = [r['nanoseconds'] for r in results]
     x0, x1 = math.floor(math.log10(min(times))), math.ceil(math.log10(max(times)))
     y0 = math.log10(floor)
-    y1 = max(0, math.ceil(math.log10(max(max(r['max_error'] for r in results), floor))))
+    y1 = max(0, math.ceil(math.log10(max(max(r['max_error'] for r in results if math.isfinite(r['max_error'])), floor))))
     px = lambda t: left + (math.log10(t) - x0) / (x1 - x0) * (width - left - right)
-    py = lambda e: height - bottom - (math.log10(max(e, floor)) - y0) / (y1 - y0) * (height - top - bottom)
+    py = lambda e: height - bottom - (math.log10(min(max(e, floor), 10.0 ** y1)) - y0) / (y1 - y0) * (height - top - bottom)
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
            '<rect width="100%" height="100%" fill="white"/>', f'<text x="{left}" y="24" font-size="15">{html.escape(title)}</text>']
     for k in range(x0, x1 + 1):
@@ -239,8 +246,8 @@ def error_svg(results, title):
 def report_table(results):
     lines = ['| method | N | time per query | median error | max error |', '| --- | --- | --- | --- | --- |']
     for r in results:
-        lines.append(f'| {r["method"]} | {r["sides"] or "—"} | {fmt_time(r["nanoseconds"])} | '
-                     f'{r["median_error"]:.1e} | {r["max_error"]:.1e} |')
+        errors = [f'{e:.1e}' if math.isfinite(e) else 'failed' for e in (error_of(r['median_error']), error_of(r['max_error']))]
+        lines.append(f'| {r["method"]} | {r["sides"] or "—"} | {fmt_time(r["nanoseconds"])} | {errors[0]} | {errors[1]} |')
     return '\n'.join(lines)
 
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -31,6 +32,11 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
     ++records;
   EXPECT_EQ(records, results.size());  // one per measurement
   EXPECT_NE(json.str().find("{\"method\": \"box2d circumscribed\", \"sides\": 256, "), std::string::npos);
+  // A method that failed on some pair has no finite error, which JSON writes as null.
+  std::ostringstream failed;
+  write_report_json({MethodResult{"polynomial", 0, 10.0, 1e-16, std::numeric_limits<double>::infinity(), ""}}, {},
+                    options, failed);
+  EXPECT_NE(failed.str().find("\"median_error\": 1e-16, \"max_error\": null}"), std::string::npos) << failed.str();
 }
 
 // The contact depth of each curved pair: ours exact one pair at a time and batched (the same
