@@ -71,7 +71,8 @@ Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, con
 Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation, const ContactOptions& options = {});
-Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_circle_circle(const Circle& a, const Circle& b);
+Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientation& b_orientation,
                                const ContactOptions& options = {});

@@ -111,8 +111,10 @@ struct Contact {
   static Contact of(double separation, const Vec2& normal, const Vec2& point_a, const Vec2& point_b,
                     std::uint32_t id = 0);
   /// No contact: the solids are apart by more than the caller's max_separation. `separation` is a
-  /// lower bound of their distance that shows it (their distance itself where it came for free);
-  /// the normal and the points are not computed and stay at their defaults.
+  /// lower bound of their distance that shows it; the normal and the points are not computed and
+  /// stay at their defaults. (A kernel that computes the whole contact anyway, as the closed forms
+  /// do, returns it with an empty manifold instead: read nothing but the separation of an empty
+  /// contact.)
   static Contact beyond(double lower_bound);
 };
 

@@ -22,10 +22,15 @@ inline bool beyond_limit(double lower_bound, double scale, const ContactOptions&
   return lower_bound > separation_limit(scale, options);
 }
 
-// A contact computed whole (the closed forms cost no more than a bound would): empty beyond the
-// limit, its separation kept as the bound.
-inline Contact within_limit(const Contact& c, const ContactOptions& options) {
-  return c.separation > options.max_separation ? Contact::beyond(c.separation) : c;
+// The contact make() computes whole (the closed forms cost no more than a bound would), its
+// manifold emptied beyond the limit. One named result and one return, so that the compiler builds
+// the contact where the caller receives it; a kernel with other returns (its early-outs) returns
+// this call's value rather than a named contact of its own, which would be built aside and copied.
+template <class Make>
+Contact limited(const ContactOptions& options, Make make) {
+  Contact c = make();
+  if (c.separation > options.max_separation) c.manifold_size = 0;
+  return c;
 }
 
 }  // namespace collide2d::detail

@@ -27,7 +27,7 @@ Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, con
     const detail::LengthAndDirection corner = detail::length_and_direction(Vec2(e.px - e.on_x, e.py - e.on_y));
     e.nx = corner.direction.x(), e.ny = corner.direction.y(), e.d = corner.length;
   }
-  return detail::within_limit(detail::rect_circle_contact(f, e).contact(), options);
+  return detail::limited(options, [&] { return detail::rect_circle_contact(f, e).contact(); });
 }
 
 }  // namespace collide2d

@@ -205,7 +205,7 @@ Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& c
   // Apart, with B's support point over the face: delta is in the face's Voronoi region of the
   // Minkowski sum, and s is the distance.
   if (s >= 0 && std::abs(perp(f).dot(p.delta - faces.offset[face])) <= p.A.extent(perp(f)) + margin / 2) {
-    return within_limit(face_contact(p, cb, f, faces.offset[face], s, 1), options);
+    return limited(options, [&] { return face_contact(p, cb, f, faces.offset[face], s, 1); });
   }
   Quarter quarters[4];
   const NearEllipse near = NearEllipse::of(p);
@@ -233,8 +233,10 @@ Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& c
                   disc_bound(p, m.n, m.at) <= top + margin;
     }
   }
-  if (best == nullptr) return within_limit(face_contact(p, cb, f, faces.offset[face], s, evaluations), options);
-  return within_limit(curved_contact(p, ca, cb, Deepest<double>{*best, evaluations}), options);
+  return limited(options, [&] {
+    return best == nullptr ? face_contact(p, cb, f, faces.offset[face], s, evaluations)
+                           : curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
+  });
 }
 
 }  // namespace
