@@ -369,11 +369,15 @@ void SweepAndPrune::join(std::size_t strips, const ParallelFor& run) {
     found_.insert(found_.end(), work_[k].found.begin(), work_[k].found.end());
     runs_.push_back(found_.size());
   }
+  // Where merge m's output ends: after runs 2m and 2m + 1, or the last run alone.
+  static constexpr auto end_of = [](const std::vector<std::size_t>& runs, std::size_t m) {
+    return 2 * m + 2 < runs.size() ? runs[2 * m + 2] : runs.back();
+  };
   // Captures `this` alone, which std::function holds without allocating.
   const auto merge = [this](std::size_t m) {
     const auto at = [](std::vector<ProxyPair>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
-    const std::size_t i = 2 * m, end = i + 2 < runs_.size() ? runs_[i + 2] : runs_[i + 1];
-    std::merge(at(found_, runs_[i]), at(found_, runs_[i + 1]), at(found_, runs_[i + 1]), at(found_, end),
+    const std::size_t i = 2 * m;
+    std::merge(at(found_, runs_[i]), at(found_, runs_[i + 1]), at(found_, runs_[i + 1]), at(found_, end_of(runs_, m)),
                at(merged_, runs_[i]));
   };
   while (runs_.size() > 2) {
@@ -385,8 +389,7 @@ void SweepAndPrune::join(std::size_t strips, const ParallelFor& run) {
       for (std::size_t m = 0; m < merges; ++m) merge(m);
     }
     next_runs_.assign(1, 0);
-    for (std::size_t m = 0; m < merges; ++m)
-      next_runs_.push_back(2 * m + 2 < runs_.size() ? runs_[2 * m + 2] : runs_.back());
+    for (std::size_t m = 0; m < merges; ++m) next_runs_.push_back(end_of(runs_, m));
     found_.swap(merged_);
     runs_.swap(next_runs_);
   }

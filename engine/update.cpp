@@ -61,22 +61,24 @@ void WorldState::find_candidates() {
   };
   broad_.update(parallel);
   if (fresh(static_tree_)) static_tree_.rebuild();
-  // The moving pairs' shapes in body order, in blocks on the pool (each pair reads two shapes far
-  // apart in memory), a pair of one body's shapes marked and then dropped.
+  // Two shapes in the order of their bodies, or (kNone, kNone) for two shapes of one body. Static,
+  // so that the task below captures no more than std::function holds without allocating.
+  static constexpr auto in_body_order = [](const std::vector<Part>& parts, std::uint32_t x, std::uint32_t y) {
+    const std::uint32_t bx = parts[x].body.index, by = parts[y].body.index;
+    return bx == by ? std::pair(kNone, kNone) : bx < by ? std::pair(x, y) : std::pair(y, x);
+  };
+  // The moving pairs' shapes, in blocks on the pool (each pair reads two shapes far apart in
+  // memory), a pair of one body's shapes marked and then dropped.
   constexpr std::size_t kBlock = 16384;
   const std::vector<ProxyPair>& moving = broad_.pairs();
   candidates_.resize(moving.size());
   parallel((moving.size() + kBlock - 1) / kBlock, [this, &moving](std::size_t block) {
-    for (std::size_t k = block * kBlock; k < std::min(moving.size(), (block + 1) * kBlock); ++k) {
-      const std::uint32_t x = part_of_[moving[k].a], y = part_of_[moving[k].b];
-      const std::uint32_t bx = parts_[x].body.index, by = parts_[y].body.index;
-      candidates_[k] = bx == by ? std::pair(kNone, kNone) : bx < by ? std::pair(x, y) : std::pair(y, x);
-    }
+    for (std::size_t k = block * kBlock; k < std::min(moving.size(), (block + 1) * kBlock); ++k)
+      candidates_[k] = in_body_order(parts_, part_of_[moving[k].a], part_of_[moving[k].b]);
   });
   std::erase_if(candidates_, [](const auto& c) { return c.first == kNone; });
-  const auto add = [this](std::uint32_t x, std::uint32_t y) {
-    const std::uint32_t bx = parts_[x].body.index, by = parts_[y].body.index;
-    if (bx != by) candidates_.push_back(bx < by ? std::pair(x, y) : std::pair(y, x));
+  const auto add = [&](std::uint32_t x, std::uint32_t y) {
+    if (const auto pair = in_body_order(parts_, x, y); pair.first != kNone) candidates_.push_back(pair);
   };
   const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every shape's list is empty
   for (ProxyId proxy = 0; statics && proxy < part_of_.size(); ++proxy) {

@@ -22,7 +22,7 @@ Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const Orientat
   double px, py;
   detail::circle_centre_in_ellipse_frame(f, px, py);
   const Vec2 p(px, py);
-  if (detail::limited(options)) {
+  if (detail::has_limit(options)) {
     const double floor = distance_floor(b.a, b.b, p) - a.radius;
     if (detail::beyond_limit(floor, std::abs(px) + std::abs(py) + b.a + b.b + a.radius, options))
       return Contact::beyond(floor);

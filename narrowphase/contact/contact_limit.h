@@ -8,7 +8,7 @@
 namespace collide2d::detail {
 
 // Whether the caller set a limit (a bound costs work that the full contact would not need).
-inline bool limited(const ContactOptions& options) {
+inline bool has_limit(const ContactOptions& options) {
   return options.max_separation < std::numeric_limits<double>::infinity();
 }
 

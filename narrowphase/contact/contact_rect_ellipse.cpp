@@ -184,7 +184,7 @@ Quarter quarter_bound(const RectEllipse& p, const Faces& f, const NearEllipse& n
 // the separation, passes the caller's limit: tried for the quarter whose arc's Voronoi region holds
 // delta, as the pairs apart at a corner have it, and whose faces' s fell short.
 std::optional<Contact> corner_beyond(const RectEllipse& p, const Quarter& q, const ContactOptions& options) {
-  if (!limited(options) || !q.nearest || q.bound != std::numeric_limits<double>::infinity()) return std::nullopt;
+  if (!has_limit(options) || !q.nearest || q.bound != std::numeric_limits<double>::infinity()) return std::nullopt;
   const V2<double> toward = p.delta - q.corner;
   const V2<double> n = toward / toward.norm();
   const double s = p.delta.dot(n) - p.A.extent(n) - p.B.extent(n);

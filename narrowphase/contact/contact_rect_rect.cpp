@@ -231,7 +231,7 @@ Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientatio
   const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
   const Face on_a = deepest_face(from_a), on_b = deepest_face(from_b);
   // A face's separation is a lower bound of the pair's (its maximum over every direction).
-  if (detail::limited(options)) {
+  if (detail::has_limit(options)) {
     const double face_separation = std::max(on_a.separation, on_b.separation);
     const double scale = a.half_extents.sum() + b.half_extents.sum() + f.b_center.cwiseAbs().sum();
     if (detail::beyond_limit(face_separation, scale, options)) return Contact::beyond(face_separation);
