@@ -206,7 +206,7 @@ void WorldState::set_local(std::uint32_t index, const Shape& local) {
   p.shape = local;  // its sizes: pose_part() moves a shape at the origin as it is
   p.at_origin = at_origin(local);
   pose_part(index, b.pose, Orientation::of(b.pose.angle));
-  p.start = p.shape;
+  p.start = pose_of(p.shape);
 }
 
 // A new shape of body `body`, last in its list, posed and in the broad phase; def.shape is valid.
@@ -328,7 +328,7 @@ void WorldState::pose(Body& b, const Vec2& position, double angle, const char* c
   for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) {
     Part& p = parts_[k];
     pose_part(k, b.pose, turn);
-    if (teleport && p.continuous) p.start = p.shape;
+    if (teleport && p.continuous) p.start = pose_of(p.shape);
     place(k);
   }
 }

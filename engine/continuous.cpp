@@ -14,18 +14,20 @@ namespace {
 
 Aabb merged(const Aabb& p, const Aabb& q) { return {p.min.cwiseMin(q.min), p.max.cwiseMax(q.max)}; }
 
-Motion step_of(const Shape& start, const Shape& end) {
-  return {center_of(end) - center_of(start), angle_of(end) - angle_of(start)};
+Motion step_of(const Pose& start, const Shape& end) {
+  return {center_of(end) - start.position, angle_of(end) - start.angle};
 }
 
 }  // namespace
 
 // Every pose of a step from `start` to `end` (its centre on the segment, any angle) lies in the
 // segment grown by the shape's reach; the two end boxes are kept in it against rounding.
-Aabb swept(const Shape& start, const Shape& end) {
-  const Vec2 c0 = center_of(start), c1 = center_of(end);
+Aabb swept(const Pose& start, const Shape& end) {
+  const Vec2 c0 = start.position, c1 = center_of(end);
   const double r = reach_of(end);
-  return merged(merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(start)), aabb(end));
+  return merged(
+      merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(posed(end, start.position, start.angle))),
+      aabb(end));
 }
 
 void WorldState::set_continuous(BodyId id, bool continuous) {
@@ -45,7 +47,7 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
       continuous_.erase(std::find(continuous_.begin(), continuous_.end(), k));
     }
     p.continuous = continuous;
-    p.start = p.shape;
+    p.start = pose_of(p.shape);
     place(k);
   });
 }
@@ -55,7 +57,9 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
 void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
   const Part& x = parts_[a];
   const Part& y = parts_[b];
-  const auto from = [](const Part& p) { return p.continuous ? p.start : p.shape; };
+  const auto from = [](const Part& p) {
+    return p.continuous ? posed(p.shape, p.start.position, p.start.angle) : p.shape;
+  };
   const auto motion = [](const Part& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
@@ -84,7 +88,7 @@ void WorldState::keep_earliest_impacts() {
 // The next step of every continuous body begins at its pose now.
 void WorldState::begin_steps() {
   for (const std::uint32_t index : continuous_) {
-    parts_[index].start = parts_[index].shape;
+    parts_[index].start = pose_of(parts_[index].shape);
     place(index);
   }
 }

@@ -114,7 +114,7 @@ void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<d
     return reach >= 0.0;
   };
   each(
-      swept(shape, end), filter, [](const Shape&) { return true; }, meet);
+      swept(pose_of(shape), end), filter, [](const Shape&) { return true; }, meet);
 }
 
 void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,

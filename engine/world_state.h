@@ -158,7 +158,7 @@ class WorldState {
     std::int32_t loose = -1;             // moving: its place in loose_ while its tree leaf is out of date
     Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
     std::vector<std::uint32_t> statics;  // moving: those neighbours (shape indices)
-    Shape start;                         // continuous: the place at the last update, where the step begins
+    Pose start;                          // continuous: its pose at the last update, where the step begins
   };
   // An empty box, which encloses no fat box: a shape entering the sweep and prune looks up its static
   // neighbours at the next update.
@@ -306,7 +306,9 @@ inline Shape posed(Shape shape, const Vec2& center, double angle) {
 void require_finite(double value, const char* what);
 void require_margin(double value, const char* what);
 Aabb grown(const Aabb& box, double by);
-// The box that holds every pose of a step from `start` to `end` (continuous.cpp).
-Aabb swept(const Shape& start, const Shape& end);
+// The pose of a shape.
+inline Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
+// The box that holds every pose of a step from `start` to the shape `end` (continuous.cpp).
+Aabb swept(const Pose& start, const Shape& end);
 
 }  // namespace collide2d::detail
