@@ -2,6 +2,8 @@
 // the scalar, and the form of every validation message.
 #pragma once
 
+#include <collide2d/shapes.h>
+
 #include "shapes/rotation.h"
 
 #include <string>
@@ -11,6 +13,16 @@ namespace collide2d::detail {
 // Throws InvalidShape("<what> <field> <rule> (got <value>)"), the form of every validation message
 // ("ellipse a must be positive (got -1)"), for the checks of other modules to share.
 [[noreturn]] void reject(const char* what, const char* field, double value, const char* rule);
+
+// The checks every shape's validation makes of one field, with that message.
+void require_finite(const char* shape, const char* field, double value);
+void require_coordinate(const char* shape, const char* field, double value);
+void require_size(const char* shape, const char* field, double value);
+
+// The box from center + lo to center + hi, grown by a few ulps of its coordinates: the kernels'
+// rounding must not put a point of the shape outside its box (a pair touching to rounding would
+// otherwise never reach the narrow phase).
+Aabb around(const Vec2& center, const Vec2& lo, const Vec2& hi);
 
 // The shortest digits that read back as the value ("0.1", "1e+51", "nan"), for messages.
 std::string shortest(double value);

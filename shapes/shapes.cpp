@@ -14,30 +14,35 @@ namespace {
 using Rot = detail::Rotation<double>;
 using detail::reject;
 
-void require_finite(const char* shape, const char* field, double value) {
+using detail::require_coordinate;
+using detail::require_finite;
+using detail::require_size;
+
+Aabb around(const Vec2& center, const Vec2& half) { return detail::around(center, -half, half); }
+
+}  // namespace
+
+void detail::require_finite(const char* shape, const char* field, double value) {
   if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
 }
 
-void require_coordinate(const char* shape, const char* field, double value) {
+void detail::require_coordinate(const char* shape, const char* field, double value) {
   require_finite(shape, field, value);
   if (std::abs(value) > kMaxMagnitude) reject(shape, field, value, "is beyond the supported range of +-1e50");
 }
 
-void require_size(const char* shape, const char* field, double value) {
+void detail::require_size(const char* shape, const char* field, double value) {
   require_finite(shape, field, value);
   if (!(value > 0.0)) reject(shape, field, value, "must be positive");
   if (value < kMinSize || value > kMaxMagnitude)
     reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
 }
 
-// The box grown by a few ulps of its coordinates: the kernels' rounding must not put a point of the
-// shape outside its box (a pair touching to rounding would otherwise never reach the narrow phase).
-Aabb around(const Vec2& center, const Vec2& half) {
-  const Vec2 slack = 8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + half);
-  return {center - half - slack, center + half + slack};
+Aabb detail::around(const Vec2& center, const Vec2& lo, const Vec2& hi) {
+  const Vec2 slack =
+      8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + lo.cwiseAbs().cwiseMax(hi.cwiseAbs()));
+  return {center + lo - slack, center + hi + slack};
 }
-
-}  // namespace
 
 void detail::reject(const char* what, const char* field, double value, const char* rule) {
   throw InvalidShape(std::string(what) + ' ' + field + ' ' + rule + " (got " + shortest(value) + ')');
@@ -85,6 +90,17 @@ void validate(const Rect& r) {
   require_size("rect", "hx", r.half_extents.x());
   require_size("rect", "hy", r.half_extents.y());
   require_finite("rect", "angle", r.angle);
+}
+
+void validate(const Capsule& c) {
+  require_coordinate("capsule", "cx", c.center.x());
+  require_coordinate("capsule", "cy", c.center.y());
+  if (c.half_length == 0.0)
+    reject("capsule", "half_length", c.half_length,
+           "must be positive (a capsule of no length is a circle: use circle)");
+  require_size("capsule", "half_length", c.half_length);
+  require_size("capsule", "radius", c.radius);
+  require_finite("capsule", "angle", c.angle);
 }
 
 void validate(const Shape& s) {
@@ -137,8 +153,13 @@ Aabb oriented_box(const Rect& r, const Orientation& o) {
   return around(r.center, Vec2(h.x() * c + h.y() * s, h.x() * s + h.y() * c));
 }
 
+Aabb oriented_box(const Capsule& c, const Orientation& o) {
+  return around(c.center, Vec2(c.half_length * std::abs(o.c) + c.radius, c.half_length * std::abs(o.s) + c.radius));
+}
+
 }  // namespace
 
+Aabb aabb(const Capsule& c) { return oriented_box(c, Orientation::of(c.angle)); }
 Aabb aabb(const Ellipse& e) { return oriented_box(e, Orientation::of(e.angle)); }
 Aabb aabb(const Rect& r) { return oriented_box(r, Orientation::of(r.angle)); }
 Aabb aabb(const Shape& s) {
@@ -173,6 +194,14 @@ Vec2 support(const Rect& r, const Vec2& d) {
   return r.center + rot.apply(corner);
 }
 
+Vec2 support(const Capsule& c, const Vec2& d) {
+  const Rot rot = Rot::of(c.angle);
+  const Vec2 axis(rot.c, rot.s);
+  const double n = d.norm();
+  const Vec2 end = c.center + (d.dot(axis) >= 0.0 ? c.half_length : -c.half_length) * axis;
+  return n > 0.0 ? Vec2(end + (c.radius / n) * d) : end;
+}
+
 Vec2 support(const Shape& s, const Vec2& d) {
   return std::visit([&d](const auto& shape) { return support(shape, d); }, s);
 }
@@ -189,6 +218,12 @@ bool contains(const Ellipse& e, const Vec2& p) {
 bool contains(const Rect& r, const Vec2& p) {
   const Vec2 q = Rot::of(r.angle).apply_inverse(Vec2(p - r.center));
   return std::abs(q.x()) <= r.half_extents.x() && std::abs(q.y()) <= r.half_extents.y();
+}
+
+bool contains(const Capsule& c, const Vec2& p) {
+  const Vec2 q = Rot::of(c.angle).apply_inverse(Vec2(p - c.center));
+  const double along = q.x() - std::clamp(q.x(), -c.half_length, c.half_length);
+  return along * along + q.y() * q.y() <= c.radius * c.radius;
 }
 
 bool contains(const Shape& s, const Vec2& p) {

@@ -1,17 +1,22 @@
 /// @file
-/// Shapes: solid circles, ellipses and oriented rectangles in double precision.
+/// Shapes: solid circles, ellipses, oriented rectangles, capsules and convex polygons in double
+/// precision.
 ///
-/// Shapes are plain value structs (no virtuals, no pointers). Angles are in radians,
-/// counter-clockwise from +x. A shape is the closed solid region: its boundary belongs to it.
+/// Shapes are plain value structs (no virtuals); a convex polygon shares its immutable outline among
+/// its copies. Angles are in radians, counter-clockwise from +x. A shape is the closed solid region:
+/// its boundary belongs to it.
 ///
-/// Validity: every field finite, every size in [1e-50, 1e50], every centre coordinate within
-/// +-1e50. In that range no ratio of lengths in a query exceeds about 1e100, so no square or cube of
-/// one overflows. The queries of query.h, the World and the command line validate their shapes; the
-/// kernels of kernels.h and batch.h trust them.
+/// Validity: every field finite, every size in [1e-50, 1e50], every centre coordinate and every
+/// polygon vertex within +-1e50. In that range no ratio of lengths in a query exceeds about 1e100, so no square or cube
+/// of one overflows. The queries of query.h, the World and the command line validate their shapes; the kernels of
+/// kernels.h and batch.h trust them.
 #pragma once
 
 #include <Eigen/Core>
 
+#include <array>
+#include <memory>
+#include <span>
 #include <stdexcept>
 #include <variant>
 
@@ -46,6 +51,79 @@ struct Rect {
   double angle = 0.0;
 };
 
+/// A solid capsule: the segment of half length `half_length` through the centre along the direction
+/// `angle`, grown by `radius` (a rounded segment, Box2D's capsule posed by centre and angle). A capsule
+/// of no length is a circle: use Circle.
+struct Capsule {
+  Vec2 center = Vec2::Zero();
+  double half_length = 1.0;
+  double radius = 0.5;
+  double angle = 0.0;
+};
+
+/// The most vertices a convex polygon has (Box2D's cap): its outline stays inline, 2 x 8 points.
+inline constexpr int kMaxPolygonVertices = 8;
+
+/// The outline of a convex polygon in its own frame, built and checked by ConvexPolygon's makers and
+/// immutable after: 3 to 8 vertices counter-clockwise, strictly convex (each vertex strictly left of
+/// every edge it is not on, beyond the rounding of the orientation test), each edge's outward unit
+/// normal, and a rounding radius (0, or a size) that grows the polygon into a rounded one.
+struct PolygonOutline {
+  std::array<Vec2, kMaxPolygonVertices> vertices{};
+  /// normals[i] is the outward unit normal of the edge from vertices[i] to vertices[(i + 1) % count].
+  std::array<Vec2, kMaxPolygonVertices> normals{};
+  int count = 0;
+  double radius = 0.0;
+  double area = 0.0;             ///< of the rounded solid
+  Vec2 centroid = Vec2::Zero();  ///< of the rounded solid, in the polygon's frame
+  double reach = 0.0;            ///< the largest |vertex| plus the radius: the farthest point from the origin
+
+  /// The vertices, counter-clockwise.
+  std::span<const Vec2> points() const { return {vertices.data(), static_cast<std::size_t>(count)}; }
+};
+
+/// A solid convex polygon, possibly rounded, posed by its centre and angle: the centre is the origin
+/// of the outline's frame (not moved to the centroid) and the outline turns by `angle` about it. The
+/// outline is shared, immutable, among copies, so that a polygon costs a Shape no more than a
+/// rectangle does; make one with the functions below, which validate it.
+struct ConvexPolygon {
+  Vec2 center = Vec2::Zero();
+  double angle = 0.0;
+  /// The outline; the default is the square of half side 1 (the default Rect's).
+  std::shared_ptr<const PolygonOutline> outline = square();
+
+  /// The polygon with these vertices, counter-clockwise, as given (exact: no weld, no reordering),
+  /// rounded by `radius`. Throws InvalidShape for fewer than 3 or more than 8 vertices, a coordinate
+  /// that is not finite or beyond +-1e50, a radius that is neither 0 nor a size, vertices clockwise,
+  /// not strictly convex (a vertex on the line of two others, to the orientation test's rounding),
+  /// or a polygon smaller than 1e-50 across, naming the vertex and the rule.
+  static ConvexPolygon of(std::span<const Vec2> vertices, double radius = 0.0);
+  /// The convex hull of the points, rounded by `radius`: points closer than `weld` times the points'
+  /// extent to a kept vertex, or to the line of its two neighbours, are dropped first (the extent is
+  /// the larger side of their bounding box, so that the weld scales with the polygon). Throws
+  /// InvalidShape as of(), and for points that are all collinear or more than 8 on the hull.
+  static ConvexPolygon hull(std::span<const Vec2> points, double radius = 0.0, double weld = 1e-9);
+  /// The rectangle of half extents hx, hy about the centre, rounded by `radius` (Box2D's box and
+  /// rounded box): the rounded box reaches hx + radius along x.
+  static ConvexPolygon box(double hx, double hy, double radius = 0.0);
+  /// The regular polygon of `count` vertices on the circle of radius `circumradius` about the
+  /// centre, vertex 0 on the +x axis, rounded by `radius`.
+  static ConvexPolygon regular(int count, double circumradius, double radius = 0.0);
+
+  /// The same outline, posed at `center` and `angle`.
+  ConvexPolygon at(const Vec2& center, double angle = 0.0) const { return {center, angle, outline}; }
+  /// The number of vertices, the vertices in the polygon's frame, and the rounding radius.
+  int count() const { return outline->count; }
+  std::span<const Vec2> vertices() const { return outline->points(); }
+  double radius() const { return outline->radius; }
+  /// The area of the (rounded) solid and its centroid in the world frame.
+  double area() const { return outline->area; }
+  Vec2 centroid() const;
+
+ private:
+  static std::shared_ptr<const PolygonOutline> square();
+};
+
 /// Any shape.
 using Shape = std::variant<Circle, Ellipse, Rect>;
 
@@ -71,10 +149,13 @@ class InvalidShape : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-/// Throws InvalidShape unless the shape is valid (see the file comment).
+/// Throws InvalidShape unless the shape is valid (see the file comment). A polygon's outline was
+/// checked when it was made: its pose is checked here.
 void validate(const Circle& c);
 void validate(const Ellipse& e);
 void validate(const Rect& r);
+void validate(const Capsule& c);
+void validate(const ConvexPolygon& p);
 void validate(const Shape& s);
 /// Throws InvalidShape unless both coordinates are finite and within +-1e50; the message calls the
 /// point `what` ("ray origin x ...").
@@ -103,6 +184,8 @@ bool encloses(const Aabb& outer, const Aabb& inner);
 Aabb aabb(const Circle& c);
 Aabb aabb(const Ellipse& e);
 Aabb aabb(const Rect& r);
+Aabb aabb(const Capsule& c);
+Aabb aabb(const ConvexPolygon& p);
 Aabb aabb(const Shape& s);
 /// The same box, given Orientation::of(angle_of(s)).
 Aabb aabb(const Shape& s, const Orientation& orientation);
@@ -113,12 +196,19 @@ Aabb aabb(const Shape& s, const Orientation& orientation);
 Vec2 support(const Circle& c, const Vec2& d);
 Vec2 support(const Ellipse& e, const Vec2& d);
 Vec2 support(const Rect& r, const Vec2& d);
+/// A capsule's: the segment's end along d (the end at +half_length on a tie) plus radius d / |d|. A
+/// polygon's: its vertex farthest along d (the first counter-clockwise from vertex 0 on a tie) plus
+/// radius d / |d|.
+Vec2 support(const Capsule& c, const Vec2& d);
+Vec2 support(const ConvexPolygon& p, const Vec2& d);
 Vec2 support(const Shape& s, const Vec2& d);
 
 /// Whether p lies in the closed solid shape.
 bool contains(const Circle& c, const Vec2& p);
 bool contains(const Ellipse& e, const Vec2& p);
 bool contains(const Rect& r, const Vec2& p);
+bool contains(const Capsule& c, const Vec2& p);
+bool contains(const ConvexPolygon& poly, const Vec2& p);
 bool contains(const Shape& s, const Vec2& p);
 
 }  // namespace collide2d

@@ -1,0 +1,372 @@
+// Convex polygons and capsules as shapes: what their makers refuse and why, hulls whose answer is
+// known by construction, areas and centroids against closed forms and a dense outline traced
+// independently, and support points, containment and boxes against points sampled on the outline.
+#include <collide2d/shapes.h>
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kPi = std::numbers::pi;
+
+void expect_refused(const std::function<void()>& make, const std::string& words) {
+  try {
+    make();
+    ADD_FAILURE() << "accepted, expected: " << words;
+  } catch (const InvalidShape& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+std::vector<Vec2> regular_points(int n, double r, double phase = 0.0) {
+  std::vector<Vec2> v;
+  for (int k = 0; k < n; ++k)
+    v.push_back(r * Vec2(std::cos(phase + 2 * kPi * k / n), std::sin(phase + 2 * kPi * k / n)));
+  return v;
+}
+
+TEST(PolygonShape, RefusesWhatIsNotAConvexPolygon) {
+  const std::vector<Vec2> square = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {1, 0}});
+      },
+      "polygon must have 3 to 8 vertices (got 2)");
+  expect_refused([] { ConvexPolygon::of(regular_points(9, 1)); }, "polygon must have 3 to 8 vertices (got 9)");
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {kNan, 0}, {0, 1}});
+      },
+      "polygon vertex 1 x must be finite (got nan)");
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 2e50}});
+      },
+      "polygon vertex 2 y is beyond the supported range");
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {0, 1}, {1, 0}});
+      },
+      "the vertices must run counter-clockwise");
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {1, 0}, {2, 0}, {1, 1}});
+      },
+      "vertex 2 lies on the line of the edge from vertex 0 to 1 (to rounding)");
+  // Turns whose determinant, computed in double, is smaller than its rounding (the exact ones are
+  // -1.4e-17 and +1.4e-17): refused either way, whatever the rounded sign.
+  expect_refused([] { ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {0.3, 0.1}, {0.9, 0.3}}); }, "(to rounding)");
+  expect_refused([] { ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {0.9, 0.3}, {0.3, 0.1}}); }, "(to rounding)");
+  // A pentagram turns left at every vertex and still is no convex polygon.
+  std::vector<Vec2> star;
+  for (int k = 0; k < 5; ++k) star.push_back(regular_points(5, 1)[(2 * k) % 5]);
+  expect_refused([&] { ConvexPolygon::of(star); }, "right of the edge");
+  expect_refused([&] { ConvexPolygon::of(square, -1); }, "polygon radius must be 0 or positive (got -1)");
+  expect_refused([&] { ConvexPolygon::of(square, 1e-60); }, "polygon radius is outside the supported range");
+  expect_refused(
+      [] {
+        ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {1e-51, 0}, {0, 1e-51}});
+      },
+      "polygon is smaller than 1e-50 across");
+  expect_refused(
+      [] {
+        ConvexPolygon::hull(std::vector<Vec2>{{0, 0}, {1, 1}});
+      },
+      "polygon needs at least 3 points (got 2)");
+  expect_refused(
+      [] {
+        ConvexPolygon::hull(std::vector<Vec2>{{0, 0}, {1, 1}, {2, 2}, {3, 3}});
+      },
+      "points lie on one line");
+  expect_refused([] { ConvexPolygon::hull(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1e-12}}); }, "points lie on one line");
+  expect_refused([] { ConvexPolygon::hull(regular_points(9, 1)); },
+                 "polygon hull has 9 vertices, more than the 8 supported");
+  expect_refused(
+      [] {
+        ConvexPolygon::hull(std::vector<Vec2>{{0, 0}, {1, 0}, {0, kNan}});
+      },
+      "polygon point 2 y must be finite");
+  expect_refused([&] { ConvexPolygon::hull(square, 0, -1); }, "polygon weld must not be negative");
+  expect_refused([] { ConvexPolygon::box(0, 1); }, "polygon hx must be positive (got 0)");
+  expect_refused([] { ConvexPolygon::box(1, 1, kNan); }, "polygon radius must be finite");
+  expect_refused([] { ConvexPolygon::regular(9, 1); }, "polygon must have 3 to 8 vertices (got 9)");
+  expect_refused([] { ConvexPolygon::regular(5, -2); }, "polygon circumradius must be positive");
+  ConvexPolygon posed = ConvexPolygon::box(1, 2);
+  posed.center.x() = kNan;
+  expect_refused([&] { validate(posed); }, "polygon cx must be finite");
+  posed = ConvexPolygon::box(1, 2).at({0, 0}, std::numeric_limits<double>::infinity());
+  expect_refused([&] { validate(posed); }, "polygon angle must be finite");
+  posed.outline = nullptr;
+  posed.angle = 0;
+  expect_refused([&] { validate(posed); }, "polygon has no outline");
+  EXPECT_NO_THROW(validate(ConvexPolygon::regular(8, 1e-6, 1e-9).at({1e9, -1e9}, 100.0)));
+}
+
+TEST(CapsuleShape, RefusesBadFields) {
+  expect_refused(
+      [] {
+        validate(Capsule{Vec2(0, 0), 0.0, 1.0, 0.0});
+      },
+      "capsule half_length must be positive (a capsule of no length is a circle: use circle) (got 0)");
+  expect_refused(
+      [] {
+        validate(Capsule{Vec2(0, 0), -1.0, 1.0, 0.0});
+      },
+      "capsule half_length must be positive (got -1)");
+  expect_refused([] { validate(Capsule{Vec2(0, 0), 1.0, 0.0, 0.0}); }, "capsule radius must be positive");
+  expect_refused([] { validate(Capsule{Vec2(kNan, 0), 1.0, 1.0, 0.0}); }, "capsule cx must be finite");
+  expect_refused([] { validate(Capsule{Vec2(0, 0), 1.0, 1.0, kNan}); }, "capsule angle must be finite");
+  expect_refused(
+      [] {
+        validate(Capsule{Vec2(0, 0), 1e51, 1.0, 0.0});
+      },
+      "capsule half_length is outside the supported range");
+  EXPECT_NO_THROW(validate(Capsule{Vec2(1e9, 0), 1.0, 1e-9, 3.0}));
+}
+
+// The hull of a convex polygon's vertices, shuffled among points inside it and copies a rounding
+// away: the polygon's own vertices, counter-clockwise, whatever the order.
+TEST(PolygonShape, HullFindsTheVerticesOfAKnownPolygon) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 500; ++trial) {
+    const int n = 3 + trial % 6;
+    const double scale = std::pow(10.0, -6 + 12 * unit(rng));
+    const Vec2 offset = scale * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+    // Vertices on an ellipse at angles at least 2 pi / (2 n) apart: strictly convex by construction.
+    std::vector<double> angles;
+    for (int k = 0; k < n; ++k) angles.push_back(2 * kPi * (k + 0.5 * unit(rng)) / n);
+    std::vector<Vec2> vertices;
+    for (const double t : angles) vertices.push_back(offset + scale * Vec2(std::cos(t), 0.4 * std::sin(t)));
+    std::vector<Vec2> points = vertices;
+    for (int k = 0; k < 20; ++k) {
+      const Vec2& p = vertices[k % n];
+      const Vec2& q = vertices[(k + 1) % n];
+      const Vec2& o = vertices[(k + 2) % n];
+      const double s = unit(rng), t = unit(rng) * (1 - s);
+      points.push_back(o + 0.99 * (s * (p - o) + t * (q - o)));
+    }
+    points.push_back(vertices[trial % n] * (1 + 1e-15));
+    std::shuffle(points.begin(), points.end(), rng);
+    const ConvexPolygon hull = ConvexPolygon::hull(points);
+    ASSERT_EQ(hull.count(), n) << "trial " << trial;
+    const auto v = hull.vertices();
+    const auto start = std::find_if(vertices.begin(), vertices.end(),
+                                    [&](const Vec2& p) { return (p - v[0]).norm() <= 1e-14 * scale; });
+    ASSERT_NE(start, vertices.end()) << "trial " << trial;
+    for (int k = 0; k < n; ++k) {
+      const Vec2& expected = vertices[(start - vertices.begin() + k) % n];
+      EXPECT_LE((v[k] - expected).norm(), 1e-14 * scale) << "trial " << trial << " vertex " << k;
+    }
+  }
+}
+
+TEST(PolygonShape, WeldScalesWithThePolygon) {
+  for (const double scale : {1e-40, 1.0, 1e40}) {
+    // Two vertices 1e-12 of the size apart weld into one; a vertex 1e-12 of the size off its
+    // neighbours' line is dropped by the hull's weld and kept by of(), which takes vertices as given.
+    const std::vector<Vec2> near_twins = {{0, 0}, {scale, 0}, {scale, scale * 1e-12}, {0, scale}};
+    EXPECT_EQ(ConvexPolygon::hull(near_twins).count(), 3);
+    EXPECT_EQ(ConvexPolygon::hull(near_twins, 0.0, 0.0).count(), 4);
+    const std::vector<Vec2> bent = {{0, 0}, {scale / 2, -scale * 1e-12}, {scale, 0}, {scale, scale}};
+    EXPECT_EQ(ConvexPolygon::hull(bent).count(), 3);
+    EXPECT_EQ(ConvexPolygon::of(bent).count(), 4);
+  }
+}
+
+// The boundary of a posed, possibly rounded polygon traced with `per_arc` points on each corner's
+// arc, in long double.
+using Point = Eigen::Matrix<long double, 2, 1>;
+std::vector<Point> outline_points(const ConvexPolygon& p, int per_arc) {
+  const long double c = std::cos(static_cast<long double>(p.angle)), s = std::sin(static_cast<long double>(p.angle));
+  const auto place = [&](const Point& q) {
+    return Point(p.center.x() + c * q.x() - s * q.y(), p.center.y() + s * q.x() + c * q.y());
+  };
+  const auto v = p.vertices();
+  const long double r = p.radius();
+  std::vector<Point> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Point a = v[(i + v.size() - 1) % v.size()].cast<long double>(), b = v[i].cast<long double>();
+    const Point next = v[(i + 1) % v.size()].cast<long double>();
+    const auto normal_angle = [](const Point& from, const Point& to) {
+      return std::atan2(-(to - from).x(), (to - from).y());
+    };
+    long double t0 = normal_angle(a, b), t1 = normal_angle(b, next);
+    if (t1 < t0) t1 += 2 * std::numbers::pi_v<long double>;
+    const int steps = r > 0 ? per_arc : 0;
+    for (int k = 0; k <= steps; ++k) {
+      const long double t = steps == 0 ? t0 : t0 + (t1 - t0) * k / steps;
+      out.push_back(place(b + r * Point(std::cos(t), std::sin(t))));
+    }
+  }
+  return out;
+}
+
+// Area and centroid by the shoelace formula over a traced outline.
+std::pair<long double, Point> shoelace(const std::vector<Point>& pts) {
+  long double area = 0;
+  Point moment(0, 0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Point& p = pts[i];
+    const Point& q = pts[(i + 1) % pts.size()];
+    const long double w = p.x() * q.y() - p.y() * q.x();
+    area += w / 2;
+    moment += w * (p + q) / 6;
+  }
+  return {area, moment / area};
+}
+
+TEST(PolygonShape, AreaAndCentroid) {
+  for (int n = 3; n <= 8; ++n) {
+    const ConvexPolygon p = ConvexPolygon::regular(n, 2.0);
+    EXPECT_NEAR(p.area(), n / 2.0 * 4.0 * std::sin(2 * kPi / n), 1e-14) << n;
+    EXPECT_LE(p.centroid().norm(), 1e-15) << n;
+  }
+  const ConvexPolygon box = ConvexPolygon::box(2.0, 0.5, 0.25);
+  EXPECT_NEAR(box.area(), 4 * 2.0 * 0.5 + 4 * (2.0 + 0.5) * 0.25 + kPi * 0.0625, 1e-14);
+  const std::vector<Vec2> kite = {{-1, -0.5}, {3, -0.25}, {2.5, 1.5}, {0.25, 2}, {-0.75, 1}};
+  for (const double r : {0.0, 0.125, 3.0}) {
+    const ConvexPolygon p = ConvexPolygon::of(kite, r).at({10, -5}, 0.7);
+    const auto [area, centroid] = shoelace(outline_points(p, 20000));
+    EXPECT_NEAR(p.area(), static_cast<double>(area), 1e-7 * p.area()) << r;
+    EXPECT_NEAR((p.centroid() - centroid.cast<double>()).norm(), 0.0, 1e-7) << r;
+  }
+}
+
+// Points of each shape's outline in the world frame, with the outward normal there (at a sharp
+// corner, the bisector of its two faces' normals).
+struct Sample {
+  Vec2 point;
+  Vec2 normal;
+};
+std::vector<Sample> samples(const ConvexPolygon& p) {
+  const Eigen::Rotation2Dd turn(p.angle);
+  const auto v = p.vertices();
+  const std::size_t n = v.size();
+  std::vector<Sample> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto normal_of = [&](std::size_t k) {
+      const Vec2 e = v[(k + 1) % n] - v[k];
+      return Vec2(e.y(), -e.x()).normalized();
+    };
+    const Vec2 before = normal_of((i + n - 1) % n), after = normal_of(i);
+    const double t0 = std::atan2(before.y(), before.x());
+    double t1 = std::atan2(after.y(), after.x());
+    if (t1 < t0) t1 += 2 * kPi;
+    for (int k = 0; k <= 64; ++k) {
+      const double t = t0 + (t1 - t0) * k / 64;
+      const Vec2 normal = p.radius() > 0 ? Vec2(std::cos(t), std::sin(t)) : Vec2((before + after).normalized());
+      out.push_back({p.center + turn * Vec2(v[i] + p.radius() * normal), turn * normal});
+    }
+    for (int k = 1; k < 16; ++k) {
+      const Vec2 on_edge = v[i] + (v[(i + 1) % n] - v[i]) * k / 16.0 + p.radius() * after;
+      out.push_back({p.center + turn * on_edge, turn * after});
+    }
+  }
+  return out;
+}
+std::vector<Sample> samples(const Capsule& c) {
+  const Vec2 axis(std::cos(c.angle), std::sin(c.angle)), across(-axis.y(), axis.x());
+  std::vector<Sample> out;
+  for (int k = 0; k <= 64; ++k) {
+    const double t = kPi * k / 64;
+    const Vec2 normal = std::sin(t) * axis + std::cos(t) * across;
+    out.push_back({c.center + c.half_length * axis + c.radius * normal, normal});
+    out.push_back({c.center - c.half_length * axis - c.radius * normal, -normal});
+  }
+  for (int k = -7; k < 8; ++k) {
+    out.push_back({c.center + c.half_length * k / 8.0 * axis + c.radius * across, across});
+    out.push_back({c.center + c.half_length * k / 8.0 * axis - c.radius * across, -across});
+  }
+  return out;
+}
+double rounding_radius(const ConvexPolygon& p) {
+  return p.radius() > 0 ? p.radius() : std::numeric_limits<double>::infinity();
+}
+double rounding_radius(const Capsule& c) { return c.radius; }
+
+template <class S>
+std::vector<S> posed_shapes();
+template <>
+std::vector<ConvexPolygon> posed_shapes() {
+  std::vector<ConvexPolygon> out;
+  const std::vector<Vec2> kite = {{-1, -0.5}, {3, -0.25}, {2.5, 1.5}, {0.25, 2}, {-0.75, 1}};
+  for (const double r : {0.0, 0.3}) {
+    out.push_back(ConvexPolygon::of(kite, r).at({1e6, 3}, 2.2));
+    out.push_back(ConvexPolygon::regular(8, 1e-5, r * 1e-5).at({-2, 7}, -0.4));
+    out.push_back(ConvexPolygon::box(4, 1e-3, r).at({0, 0}, kPi / 2));
+    out.push_back(ConvexPolygon::regular(3, 1e20, r * 1e20).at({1e20, 0}, 1.0));
+  }
+  return out;
+}
+template <>
+std::vector<Capsule> posed_shapes() {
+  return {{Vec2(1, 2), 3.0, 0.5, 0.3},
+          {Vec2(-1e6, 1e6), 1e-9, 1.0, -2.0},
+          {Vec2(0, 0), 1.0, 1e-9, kPi / 2},
+          {Vec2(5, 5), 1e20, 1e19, 1.0}};
+}
+
+template <class S>
+class CurvedOutline : public ::testing::Test {};
+using Kinds = ::testing::Types<ConvexPolygon, Capsule>;
+TYPED_TEST_SUITE(CurvedOutline, Kinds);
+
+TYPED_TEST(CurvedOutline, SupportMaximisesTheDirection) {
+  for (const TypeParam& s : posed_shapes<TypeParam>()) {
+    const std::vector<Sample> outline = samples(s);
+    const double size = (aabb(s).max - aabb(s).min).norm();
+    for (int k = 0; k < 360; ++k) {
+      const Vec2 d(std::cos(k * kPi / 180 + 0.01), std::sin(k * kPi / 180 + 0.01));
+      const Vec2 p = support(s, 3 * d);
+      double best = -std::numeric_limits<double>::infinity();
+      for (const Sample& q : outline) best = std::max(best, (q.point - s.center).dot(d));
+      const double reached = (p - s.center).dot(d);
+      EXPECT_GE(reached, best - 1e-14 * size) << k;
+      EXPECT_LE(reached, best + 1e-3 * size) << k;  // the samples' spacing on an arc
+    }
+  }
+}
+
+// A step along the outward normal from a point of the outline leaves the shape; a step back, shorter
+// than the rounding radius, stays in. Every point of the outline lies in the box.
+TYPED_TEST(CurvedOutline, ContainmentSeparatesInsideFromOutside) {
+  for (const TypeParam& s : posed_shapes<TypeParam>()) {
+    const Aabb box = aabb(s);
+    const double size = (box.max - box.min).norm();
+    const double step = std::min(1e-7 * size, rounding_radius(s) / 2);
+    for (const Sample& q : samples(s)) {
+      EXPECT_FALSE(contains(s, q.point + step * q.normal)) << q.point.transpose();
+      EXPECT_TRUE(contains(s, q.point - step * q.normal)) << q.point.transpose();
+      EXPECT_TRUE(box.min.x() <= q.point.x() && q.point.x() <= box.max.x() && box.min.y() <= q.point.y() &&
+                  q.point.y() <= box.max.y());
+    }
+  }
+}
+
+TYPED_TEST(CurvedOutline, AabbIsTight) {
+  for (const TypeParam& s : posed_shapes<TypeParam>()) {
+    const Aabb box = aabb(s);
+    const double size = (box.max - box.min).norm();
+    // The support points along the axes are the box's sides.
+    EXPECT_NEAR(support(s, Vec2(1, 0)).x(), box.max.x(), 1e-14 * (size + s.center.norm()));
+    EXPECT_NEAR(support(s, Vec2(-1, 0)).x(), box.min.x(), 1e-14 * (size + s.center.norm()));
+    EXPECT_NEAR(support(s, Vec2(0, 1)).y(), box.max.y(), 1e-14 * (size + s.center.norm()));
+    EXPECT_NEAR(support(s, Vec2(0, -1)).y(), box.min.y(), 1e-14 * (size + s.center.norm()));
+  }
+}
+
+}  // namespace
+}  // namespace collide2d
