@@ -449,6 +449,32 @@ Real distance_to(const Shape& s, const Point& p) {
   return point_rect(std::get<Rect>(s), p);
 }
 
+Real distance_to(const AnyShape& s, const Point& p) {
+  if (const auto* c = std::get_if<Capsule>(&s)) {
+    const Frame f = frame_of(c->center, c->angle);
+    const Point q = to_local(f, p);
+    const Real h(c->half_length);
+    const Real d = point_segment(q, {-h, Real(0)}, {h, Real(0)}) - Real(c->radius);
+    return d > 0 ? d : Real(0);
+  }
+  if (const auto* poly = std::get_if<ConvexPolygon>(&s)) {
+    const Point q = to_local(frame_of(poly->center, poly->angle), p);
+    const auto v = poly->vertices();
+    bool inside = true;
+    Real nearest = std::numeric_limits<Real>::infinity();
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Point a = to_mp(v[i]), b = to_mp(v[(i + 1) % v.size()]);
+      inside = inside && (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x) >= 0;
+      nearest = std::min(nearest, point_segment(q, a, b));
+    }
+    const Real d = nearest - Real(poly->radius());
+    return inside || d <= 0 ? Real(0) : d;
+  }
+  if (const auto* c = std::get_if<Circle>(&s)) return point_circle(*c, p);
+  if (const auto* e = std::get_if<Ellipse>(&s)) return point_ellipse(*e, p);
+  return point_rect(std::get<Rect>(s), p);
+}
+
 Real distance(const Shape& a, const Shape& b) {
   if (const auto* c = std::get_if<Circle>(&a)) return circle_distance(*c, b);
   if (const auto* c = std::get_if<Circle>(&b)) return circle_distance(*c, a);
@@ -474,21 +500,29 @@ bool overlap(const Shape& a, const Shape& b) {
 
 namespace {
 
-// s(theta) for the pair, in the scalar R: closed-form support functions of the shapes' axes.
+// s(theta) for the pair, in the scalar R: closed-form support functions in the shapes' frames (a
+// polygon's, the largest of its vertices' projections).
 template <class R>
 struct Dual {
   struct Side {
-    int kind;  // 0 circle, 1 ellipse, 2 rectangle
+    int kind;  // 0 circle, 1 ellipse, 2 rectangle, 3 capsule, 4 polygon
     R c, s, p, q;
+    std::vector<std::pair<R, R>> vertices;  // a polygon's
   };
   R dx, dy;
   Side a, b;
 
-  static Side side_of(const Shape& shape, const R& c, const R& s) {
-    if (const auto* x = std::get_if<Circle>(&shape)) return {0, c, s, R(x->radius), R(x->radius)};
-    if (const auto* x = std::get_if<Ellipse>(&shape)) return {1, c, s, R(x->a), R(x->b)};
+  static Side side_of(const AnyShape& shape, const R& c, const R& s) {
+    if (const auto* x = std::get_if<Circle>(&shape)) return {0, c, s, R(x->radius), R(x->radius), {}};
+    if (const auto* x = std::get_if<Ellipse>(&shape)) return {1, c, s, R(x->a), R(x->b), {}};
+    if (const auto* x = std::get_if<Capsule>(&shape)) return {3, c, s, R(x->half_length), R(x->radius), {}};
+    if (const auto* x = std::get_if<ConvexPolygon>(&shape)) {
+      Side out{4, c, s, R(0), R(x->radius()), {}};
+      for (const Vec2& v : x->vertices()) out.vertices.emplace_back(R(v.x()), R(v.y()));
+      return out;
+    }
     const auto& r = std::get<Rect>(shape);
-    return {2, c, s, R(r.half_extents.x()), R(r.half_extents.y())};
+    return {2, c, s, R(r.half_extents.x()), R(r.half_extents.y()), {}};
   }
   static R h(const Side& x, const R& ux, const R& uy) {
     using std::abs;
@@ -496,15 +530,52 @@ struct Dual {
     if (x.kind == 0) return x.p;
     const R l0 = x.c * ux + x.s * uy, l1 = -x.s * ux + x.c * uy;
     if (x.kind == 1) return sqrt(x.p * x.p * l0 * l0 + x.q * x.q * l1 * l1);
+    if (x.kind == 3) return x.p * abs(l0) + x.q;
+    if (x.kind == 4) {
+      R best = x.vertices[0].first * l0 + x.vertices[0].second * l1;
+      for (const auto& [vx, vy] : x.vertices) best = std::max<R>(best, vx * l0 + vy * l1);
+      return best + x.q;
+    }
     return x.p * abs(l0) + x.q * abs(l1);
   }
   R operator()(const R& theta) const {
     using std::cos;
     using std::sin;
     const R ux = cos(theta), uy = sin(theta);
-    return ux * dx + uy * dy - h(a, ux, uy) - h(b, ux, uy);
+    return ux * dx + uy * dy - h(a, ux, uy) - h(b, -ux, -uy);
   }
 };
+
+Vec2 center_of_any(const AnyShape& s) {
+  return std::visit([](const auto& x) { return Vec2(x.center); }, s);
+}
+double angle_of_any(const AnyShape& s) {
+  return std::visit(
+      [](const auto& x) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
+          return 0.0;
+        } else {
+          return x.angle;
+        }
+      },
+      s);
+}
+// The directions where s has kinks or turns fast, in the world: the shape's axes, a polygon's face
+// normals.
+std::vector<double> axes_of(const AnyShape& s) {
+  std::vector<double> out;
+  const double phi = angle_of_any(s);
+  if (const auto* p = std::get_if<ConvexPolygon>(&s)) {
+    for (std::size_t i = 0; i < p->vertices().size(); ++i) {
+      const Vec2 e = p->vertices()[(i + 1) % p->vertices().size()] - p->vertices()[i];
+      out.push_back(phi + std::atan2(-e.x(), e.y()));
+      out.push_back(out.back() + std::numbers::pi);
+    }
+    return out;
+  }
+  for (int k = 0; k < 4; ++k) out.push_back(phi + k * std::numbers::pi / 2);
+  return out;
+}
 
 // Golden-section search for the maximum of f on [lo, hi] down to width `width`.
 template <class R, class F>
@@ -527,24 +598,29 @@ R golden_maximum(const F& f, R lo, R hi, const R& width) {
 }  // namespace
 
 SignedDistance signed_distance(const Shape& a, const Shape& b) {
-  const Point ca = to_mp(center_of(a)), cb = to_mp(center_of(b));
-  const Frame fa = frame_of(center_of(a), angle_of(a)), fb = frame_of(center_of(b), angle_of(b));
+  return signed_distance(std::visit([](const auto& x) { return AnyShape(x); }, a),
+                         std::visit([](const auto& x) { return AnyShape(x); }, b));
+}
+
+SignedDistance signed_distance(const AnyShape& a, const AnyShape& b) {
+  const double angle_a = angle_of_any(a), angle_b = angle_of_any(b);
+  const Point ca = to_mp(center_of_any(a)), cb = to_mp(center_of_any(b));
+  const Frame fa = frame_of(center_of_any(a), angle_a), fb = frame_of(center_of_any(b), angle_b);
   const Dual<Real> exact{cb.x - ca.x, cb.y - ca.y, Dual<Real>::side_of(a, fa.c, fa.s),
                          Dual<Real>::side_of(b, fb.c, fb.s)};
   const Dual<double> rough{static_cast<double>(exact.dx), static_cast<double>(exact.dy),
-                           Dual<double>::side_of(a, std::cos(angle_of(a)), std::sin(angle_of(a))),
-                           Dual<double>::side_of(b, std::cos(angle_of(b)), std::sin(angle_of(b)))};
+                           Dual<double>::side_of(a, std::cos(angle_a), std::sin(angle_a)),
+                           Dual<double>::side_of(b, std::cos(angle_b), std::sin(angle_b))};
   const double two_pi = 2 * std::numbers::pi;
   std::vector<double> angles;
   for (int i = 0; i < 4096; ++i) angles.push_back(two_pi * i / 4096);
-  for (const double phi : {angle_of(a), angle_of(b)}) {
-    for (int k = 0; k < 4; ++k) {
-      const double axis = phi + k * std::numbers::pi / 2;
-      angles.push_back(axis);
-      for (double step = 0.1; step > 1e-16; step /= 10) {
-        angles.push_back(axis + step);
-        angles.push_back(axis - step);
-      }
+  std::vector<double> axes = axes_of(a);
+  for (const double t : axes_of(b)) axes.push_back(t);  // each direction with its opposite
+  for (const double axis : axes) {
+    angles.push_back(axis);
+    for (double step = 0.1; step > 1e-16; step /= 10) {
+      angles.push_back(axis + step);
+      angles.push_back(axis - step);
     }
   }
   for (double& t : angles) t -= two_pi * std::floor(t / two_pi);

@@ -9,9 +9,10 @@
 //   outside), sampled at 720 parameters in double, each promising extremum narrowed by golden
 //   section in double and then in 50 digits; the signs of f and the centres decide overlap,
 //   containment and crossing.
-// - signed distance (contacts): the dual function s(u) = u.(c_B - c_A) - h_A(u) - h_B(u) (h the
-//   support function, in closed form per shape) scanned in double at 4,096 even angles and at
-//   geometric offsets 10^-1 ... 10^-15 around every axis direction of both shapes (a needle's
+// - signed distance (contacts): the dual function s(u) = u.(c_B - c_A) - h_A(u) - h_B(-u) (h the
+//   support function, in closed form per shape; a polygon's the largest projection of its vertices)
+//   scanned in double at 4,096 even angles and at geometric offsets 10^-1 ... 10^-15 around every
+//   axis direction of both shapes and every face normal of a polygon (a needle's
 //   support function turns within b/a of its minor axis, a rectangle's has kinks on its axes), each
 //   of the six highest local maxima narrowed by golden section in 50 digits to 1e-22 rad. No Newton step and no
 //   curvature bound: nothing the kernels do.
@@ -21,6 +22,8 @@
 #include <collide2d/shapes.h>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <variant>
 
 namespace collide2d::reference {
 
@@ -72,5 +75,10 @@ struct SignedDistance {
   Real curvature;
 };
 SignedDistance signed_distance(const Shape& a, const Shape& b);
+// Any two shapes, capsules and convex polygons too (the World's Shape does not hold them yet).
+using AnyShape = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon>;
+SignedDistance signed_distance(const AnyShape& a, const AnyShape& b);
+// Distance from p to any solid shape (0 inside).
+Real distance_to(const AnyShape& s, const Point& p);
 
 }  // namespace collide2d::reference

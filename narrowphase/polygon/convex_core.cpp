@@ -1,0 +1,440 @@
+#include "narrowphase/polygon/convex_core.h"
+
+#include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/frames/unit_vector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+namespace collide2d::detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The feature number of a point where a side plane of the reference face cut the incident face:
+// at the face's first vertex's end, or at its second's.
+constexpr int kCutAtStart = kMaxPolygonVertices;
+constexpr int kCutAtEnd = kMaxPolygonVertices + 1;
+
+double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+// The direction of face i of a counter-clockwise core, from its outward normal.
+Vec2 along(const Vec2& normal) { return {-normal.y(), normal.x()}; }
+
+Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, const Placement& at) {
+  Core c;
+  c.count = static_cast<int>(vertices.size());
+  c.radius = radius;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    c.v[i] = at.point(vertices[i]);
+    c.reach = std::max(c.reach, vertices[i].norm());
+  }
+  c.reach += radius;
+  for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
+  return c;
+}
+
+// The least of d.(w - o) over y's vertices w, and that vertex.
+struct Low {
+  double s = kInf;
+  int vertex = 0;
+};
+Low lowest(const Core& y, const Vec2& d, const Vec2& o) {
+  Low out;
+  for (int j = 0; j < y.count; ++j) {
+    const double s = d.dot(y.v[j] - o);
+    if (s < out.s) out = {s, j};
+  }
+  return out;
+}
+
+// A separating axis of core x against core y: a face of x, or a segment's end (face -1, the end's
+// vertex `end`), with y's separation along it and y's deepest vertex there.
+struct Axis {
+  double s = -kInf;
+  int face = -1;
+  int end = 0;
+  int vertex = 0;
+};
+
+Axis best_axis(const Core& x, const Core& y) {
+  Axis best;
+  for (int i = 0; i < x.faces(); ++i) {
+    const Low low = lowest(y, x.n[i], x.v[i]);
+    if (low.s > best.s) best = {low.s, i, 0, low.vertex};
+  }
+  if (x.count == 2) {
+    const Vec2 e = along(x.n[0]);
+    for (const int k : {0, 1}) {
+      const Low low = lowest(y, k == 1 ? e : Vec2(-e), x.v[k]);
+      if (low.s > best.s) best = {low.s, -1, k, low.vertex};
+    }
+  }
+  return best;
+}
+
+// Every edge of a core once: a segment's one edge, a point's none.
+int edges(const Core& c) { return c.count == 2 ? 1 : c.faces(); }
+
+// The nearest points of two disjoint cores, in A's frame, and what they lie on: a vertex, or the
+// inside of an edge (the other's vertex then lies over that edge).
+struct Closest {
+  double squared = kInf;
+  Vec2 on_a = Vec2::Zero(), on_b = Vec2::Zero();
+  int a_edge = -1, b_edge = -1;    // the edge whose inside holds the point, else -1
+  int a_vertex = 0, b_vertex = 0;  // else the vertex
+};
+
+// Each vertex of `from` against each edge of `to`, into `best` with the sides as `from_is_a` says.
+void vertex_edge(const Core& from, const Core& to, bool from_is_a, Closest& best) {
+  for (int j = 0; j < from.count; ++j) {
+    const Vec2& w = from.v[j];
+    for (int i = 0; i < edges(to); ++i) {
+      const Vec2 &a = to.v[i], &b = to.v[to.next(i)];
+      const Vec2 e = b - a;
+      const double t = std::clamp((w - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const Vec2 q = t == 0.0 ? a : t == 1.0 ? b : Vec2(a + t * e);
+      const double d = (w - q).squaredNorm();
+      if (!(d < best.squared)) continue;
+      const int edge = t > 0.0 && t < 1.0 ? i : -1;
+      const int vertex = t == 1.0 ? to.next(i) : i;
+      best = from_is_a ? Closest{d, w, q, -1, edge, j, vertex} : Closest{d, q, w, edge, -1, vertex, j};
+    }
+  }
+}
+
+Closest nearest_features(const CorePair& p) {
+  Closest best;
+  vertex_edge(p.a, p.b, true, best);
+  vertex_edge(p.b, p.a, false, best);
+  if (p.a.count == 1 && p.b.count == 1) best = {(p.b.v[0] - p.a.v[0]).squaredNorm(), p.a.v[0], p.b.v[0], -1, -1, 0, 0};
+  return best;
+}
+
+// The two cores' axes: A's best against B and B's best against A.
+struct Axes {
+  Axis of_a, of_b;
+  double s() const { return std::max(of_a.s, of_b.s); }
+  bool b_best() const { return of_b.s > of_a.s; }
+  const Axis& best() const { return b_best() ? of_b : of_a; }
+};
+Axes axes_of(const CorePair& p) { return {best_axis(p.a, p.b), best_axis(p.b, p.a)}; }
+
+// The cores' distance and nearest points, apart: the best face's when its witness vertex lies over
+// the face, else the nearest of every vertex–edge pair.
+Closest gap(const CorePair& p, const Axes& axes) {
+  const Axis& best = axes.best();
+  if (best.face >= 0) {
+    const bool ref_a = !axes.b_best();
+    const Core &x = ref_a ? p.a : p.b, &y = ref_a ? p.b : p.a;
+    const Vec2& v0 = x.v[best.face];
+    const Vec2 t = along(x.n[best.face]);
+    const double a = t.dot(y.v[best.vertex] - v0);
+    if (a >= 0.0 && a <= t.dot(x.v[x.next(best.face)] - v0)) {
+      const Vec2& w = y.v[best.vertex];
+      const Vec2 q = w - best.s * x.n[best.face];
+      return ref_a ? Closest{best.s * best.s, q, w, best.face, -1, 0, best.vertex}
+                   : Closest{best.s * best.s, w, q, -1, best.face, best.vertex, 0};
+    }
+  }
+  return nearest_features(p);
+}
+
+// One point of a manifold on the reference face: the incident core's point `on_y` with its
+// separation `b` from the face's line and its feature number.
+struct Clipped {
+  Vec2 on_y = Vec2::Zero();
+  double b = 0.0;
+  int id = 0;
+};
+
+// The reference face i of core x and the incident face of core y (its one vertex for a point),
+// clipped to the face's side planes.
+struct FaceClip {
+  Clipped deep;                 // the incident face's deeper end, before clipping
+  std::array<Clipped, 2> kept;  // the clipped ends, deeper first
+  int count = 0;                // 0 when the incident face lies beyond a side plane
+};
+
+FaceClip clip_face(const Core& x, int i, const Core& y) {
+  const Vec2 &n = x.n[i], &v0 = x.v[i];
+  const Vec2 t = along(n);
+  const double length = t.dot(x.v[x.next(i)] - v0);
+  int k = 0;
+  for (int j = 1; j < y.faces(); ++j) {
+    if (y.n[j].dot(n) < y.n[k].dot(n)) k = j;
+  }
+  const int ends = y.count == 1 ? 1 : 2;
+  std::array<Clipped, 2> end;
+  std::array<double, 2> a{};
+  for (int e = 0; e < ends; ++e) {
+    const int vertex = e == 0 ? k : y.next(k);
+    end[e] = {y.v[vertex], n.dot(y.v[vertex] - v0), vertex};
+    a[e] = t.dot(y.v[vertex] - v0);
+  }
+  FaceClip out;
+  out.deep = ends == 2 && end[1].b < end[0].b ? end[1] : end[0];
+  for (int e = 0; e < ends; ++e) {
+    if (a[e] >= 0.0 && a[e] <= length) {
+      out.kept[out.count++] = end[e];
+      continue;
+    }
+    const int other = 1 - e;
+    const bool below = a[e] < 0.0;
+    if (ends == 1 || (below ? a[other] < 0.0 : a[other] > length)) continue;  // wholly beyond that plane
+    const double limit = below ? 0.0 : length;
+    // On the side plane exactly, in the face's coordinates: interpolated, the cut point's position
+    // along the face would carry the rounding of the whole incident face.
+    const double b = end[e].b + (end[other].b - end[e].b) * ((limit - a[e]) / (a[other] - a[e]));
+    out.kept[out.count++] = {v0 + limit * t + b * n, b, below ? kCutAtStart : kCutAtEnd};
+  }
+  if (out.count == 2 && out.kept[1].b < out.kept[0].b) std::swap(out.kept[0], out.kept[1]);
+  return out;
+}
+
+// Builds contacts in the world from points in A's frame.
+struct Writer {
+  const CorePair& p;
+
+  // A point of y's core and its foot on x's, the normal from x to y.
+  ContactPoint point(bool x_is_a, const Vec2& on_x, const Vec2& on_y, const Vec2& normal, double separation,
+                     std::uint32_t id) const {
+    const double rx = x_is_a ? p.a.radius : p.b.radius, ry = x_is_a ? p.b.radius : p.a.radius;
+    const Vec2 x = p.world_point(Vec2(on_x + rx * normal)), y = p.world_point(Vec2(on_y - ry * normal));
+    return x_is_a ? ContactPoint{x, y, separation, id} : ContactPoint{y, x, separation, swapped_feature(id)};
+  }
+  Contact one(bool x_is_a, const Vec2& on_x, const Vec2& on_y, const Vec2& normal, double separation,
+              std::uint32_t id) const {
+    const ContactPoint c = point(x_is_a, on_x, on_y, normal, separation, id);
+    const Vec2 world = p.world_direction(normal);
+    return Contact::of(separation, x_is_a ? world : Vec2(-world), c.point_a, c.point_b, c.id);
+  }
+};
+
+double radii(const CorePair& p) { return p.a.radius + p.b.radius; }
+
+// Apart, nearest at two vertices, or at a vertex over an edge found by the vertex–edge search.
+Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOptions& options);
+
+// The contact on face i of x (A's if x_is_a): the cores' separation s, its main point `main` (a
+// point of y's core and its height over the face), and the manifold from the face's clip `c`.
+Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& main, const FaceClip& c,
+                const ContactOptions& options) {
+  const Vec2& n = (x_is_a ? p.a : p.b).n[i];
+  const auto point = [&](const Clipped& k) {
+    // As if x were A: Writer renames the features for B.
+    return Writer{p}.point(x_is_a, Vec2(k.on_y - k.b * n), k.on_y, n, k.b - radii(p),
+                           feature_id(FeatureKind::face_of_a, i, k.id));
+  };
+  const ContactPoint first = point(main);
+  const Vec2 world = p.world_direction(n);
+  Contact out = Contact::of(s - radii(p), x_is_a ? world : Vec2(-world), first.point_a, first.point_b, first.id);
+  out.manifold[0] = first;
+  const double keep = std::max(out.separation, 0.0) + options.margin;
+  int size = 0;
+  for (int k = 0; k < c.count; ++k) {
+    if (c.kept[k].b - radii(p) <= keep) out.manifold[size++] = point(c.kept[k]);
+  }
+  out.manifold_size = std::max(size, 1);
+  return out;
+}
+
+// The contact on face i of x, y's separation along it s, from the axes. Apart, s is the distance
+// where y's deepest vertex lies over the face. Where it does not, the vertex–edge search gives the
+// distance; the face stays the reference if its clipped incident face comes that near (parallel
+// faces, whose ids then hold whichever side of touching the pair is), else the nearest features
+// make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest clipped
+// point stands in for it as the main point, so that both points lie on their shapes (the
+// separation stays s).
+Contact face_contact(const CorePair& p, bool x_is_a, int i, double s, const ContactOptions& options) {
+  const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+  const FaceClip c = clip_face(x, i, y);
+  const bool deep_kept =
+      std::any_of(c.kept.begin(), c.kept.begin() + c.count, [&](const Clipped& k) { return k.id == c.deep.id; });
+  if (s > 0 && !deep_kept) {
+    const Closest near = nearest_features(p);
+    const double distance = std::sqrt(near.squared);
+    const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
+    if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);
+    return on_face(p, x_is_a, i, distance, c.kept[0], c, options);
+  }
+  return on_face(p, x_is_a, i, s, deep_kept || c.count == 0 ? c.deep : c.kept[0], c, options);
+}
+
+Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOptions& options) {
+  const double distance = std::sqrt(c.squared);
+  // A vertex over an edge: that edge is the reference face (a segment's, the side facing the vertex).
+  const auto over_edge = [&](bool x_is_a, int edge, const Vec2& on_x, const Vec2& on_y, int vertex) {
+    const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+    const int face = x.count == 2 && x.n[edge].dot(on_y - on_x) < 0 ? 1 - edge : edge;
+    return on_face(p, x_is_a, face, distance, Clipped{on_y, distance, vertex}, clip_face(x, face, y), options);
+  };
+  if (c.a_edge >= 0) return over_edge(true, c.a_edge, c.on_a, c.on_b, c.b_vertex);
+  if (c.b_edge >= 0) return over_edge(false, c.b_edge, c.on_b, c.on_a, c.a_vertex);
+  const LengthAndDirection d = length_and_direction(Vec2(c.on_b - c.on_a));
+  return Writer{p}.one(true, c.on_a, c.on_b, d.direction, d.length - radii(p),
+                       feature_id(FeatureKind::corner_corner, c.a_vertex, c.b_vertex));
+}
+
+// A segment's end axis at the best: the segment x and a point or a parallel segment y in line.
+Contact end_contact(const CorePair& p, bool x_is_a, const Axis& axis) {
+  const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+  const Vec2 e = along(x.n[0]);
+  const Vec2 normal = axis.end == 1 ? e : Vec2(-e);
+  return Writer{p}.one(x_is_a, x.v[axis.end], y.v[axis.vertex], normal, axis.s - radii(p),
+                       feature_id(FeatureKind::corner_corner, axis.end, axis.vertex));
+}
+
+// The contact on the axis of greatest separation; where the two cores' best faces tie to 1e-9 of
+// the sum of their reaches, the manifold is A's (as contact_rect_rect keeps it, so that ids hold).
+Contact contact_of(const CorePair& p, const Axes& axes, const ContactOptions& options) {
+  const bool b_best = axes.b_best();
+  const Axis& best = axes.best();
+  if (best.face < 0) {
+    if (best.s > 0) return nearest_contact(p, nearest_features(p), options);
+    return end_contact(p, !b_best, best);
+  }
+  Contact out = face_contact(p, !b_best, best.face, best.s, options);
+  const bool tie = b_best && axes.of_a.face >= 0 && axes.of_b.s - axes.of_a.s <= 1e-9 * (p.a.reach + p.b.reach);
+  if (!tie || feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) return out;
+  const Contact kept = face_contact(p, true, axes.of_a.face, axes.of_a.s, options);
+  if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
+  out.manifold = kept.manifold;
+  out.manifold_size = kept.manifold_size;
+  return out;
+}
+
+// A point of two overlapping segments: where their lines cross, or, in line, the middle of their
+// common part.
+Vec2 segments_common_point(const Core& x, const Core& y) {
+  const Vec2 ex = x.v[1] - x.v[0], ey = y.v[1] - y.v[0];
+  const double turn = cross(ey, ex);
+  if (turn != 0.0) return y.v[0] + (cross(x.v[0] - y.v[0], ex) / turn) * ey;
+  const double length = ex.squaredNorm();
+  const auto at = [&](const Vec2& q) { return std::clamp((q - x.v[0]).dot(ex) / length, 0.0, 1.0); };
+  return x.v[0] + ((at(y.v[0]) + at(y.v[1])) / 2) * ex;
+}
+
+// Whether p lies in the (sharp) core c, which has faces all round (3 vertices or more).
+bool in_core(const Core& c, const Vec2& p) {
+  for (int i = 0; i < c.count; ++i) {
+    if (c.n[i].dot(p - c.v[i]) > 0.0) return false;
+  }
+  return true;
+}
+
+// A point of both overlapping cores, x the one of more vertices. The mean of the vertices of each
+// that lie in the other, a point of both by convexity; where none does (the cores cross), the mean
+// of y's core clipped to x's faces (Sutherland–Hodgman), whose points are edges' crossings (left
+// for last: two nearly parallel edges cross at a point that rounding slides along them); a point
+// core is its own witness. Where rounding clips all of y away (the cores touch), `fallback`.
+Vec2 common_point(const Core& x, const Core& y, const Vec2& fallback) {
+  if (y.count == 1) return y.v[0];
+  if (x.count == 2) return segments_common_point(x, y);
+  Vec2 sum = Vec2::Zero();
+  int inside = 0;
+  for (int k = 0; k < y.count; ++k) {
+    if (in_core(x, y.v[k])) sum += y.v[k], ++inside;
+  }
+  for (int k = 0; y.count >= 3 && k < x.count; ++k) {
+    if (in_core(y, x.v[k])) sum += x.v[k], ++inside;
+  }
+  if (inside > 0) return sum / inside;
+  std::array<Vec2, 2 * kMaxPolygonVertices> poly{}, next{};
+  int size = y.count;
+  std::copy(y.v.begin(), y.v.begin() + size, poly.begin());
+  for (int i = 0; i < x.faces() && size > 0; ++i) {
+    int out = 0;
+    for (int k = 0; k < size; ++k) {
+      const Vec2 &p = poly[k], &q = poly[(k + 1) % size];
+      const double dp = x.n[i].dot(p - x.v[i]), dq = x.n[i].dot(q - x.v[i]);
+      if (dp <= 0.0) next[out++] = p;
+      if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) next[out++] = p + (dp / (dp - dq)) * (q - p);
+    }
+    if (y.count == 2) out = std::min(out, 2);  // a segment, closed as a polygon, is cut twice at one point
+    size = out, poly = next;
+  }
+  if (size == 0) return fallback;
+  for (int k = 0; k < size; ++k) sum += poly[k];
+  return sum / size;
+}
+
+// A point of both cores where they touch to rounding: midway between y's deepest point over the
+// best face and its foot on the face, or between a segment's end and y's vertex beyond it.
+Vec2 touching_point(const CorePair& p, const Axes& axes) {
+  const Axis& best = axes.best();
+  const Core &x = axes.b_best() ? p.b : p.a, &y = axes.b_best() ? p.a : p.b;
+  if (best.face < 0) return (x.v[best.end] + y.v[best.vertex]) / 2;
+  const FaceClip c = clip_face(x, best.face, y);
+  const Clipped& k = c.count > 0 ? c.kept[0] : c.deep;
+  return k.on_y - (k.b / 2) * x.n[best.face];
+}
+
+}  // namespace
+
+Core core_of(const Rect& r, const Placement& at) {
+  const double hx = r.half_extents.x(), hy = r.half_extents.y();
+  const Vec2 v[] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
+  const Vec2 n[] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  return make(v, n, 0.0, at);
+}
+
+Core core_of(const ConvexPolygon& p, const Placement& at) {
+  const PolygonOutline& o = *p.outline;
+  const auto count = static_cast<std::size_t>(o.count);
+  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, at);
+}
+
+Core core_of(const Capsule& c, const Placement& at) {
+  const Vec2 v[] = {{-c.half_length, 0}, {c.half_length, 0}};
+  const Vec2 n[] = {{0, -1}, {0, 1}};
+  return make(v, n, c.radius, at);
+}
+
+Core core_of(const Circle& c, const Placement& at) {
+  const Vec2 v[] = {{0, 0}};
+  return make(v, {}, c.radius, at);
+}
+
+double CorePair::scale() const {
+  double reach = 0.0;
+  for (const Core* c : {&a, &b}) {
+    for (int i = 0; i < c->count; ++i) reach = std::max(reach, c->v[i].cwiseAbs().maxCoeff());
+  }
+  return 2 * reach + a.radius + b.radius;
+}
+
+bool core_overlap(const CorePair& p) {
+  const Axes axes = axes_of(p);
+  const double s = axes.s();
+  if (s <= 0.0) return true;
+  if (s > radii(p)) return false;
+  return gap(p, axes).squared <= radii(p) * radii(p);
+}
+
+DistanceResult core_distance(const CorePair& p) {
+  const Axes axes = axes_of(p);
+  if (axes.s() <= 0.0) {
+    const Vec2 w = p.a.count >= p.b.count ? common_point(p.a, p.b, touching_point(p, axes))
+                                          : common_point(p.b, p.a, touching_point(p, axes));
+    return DistanceResult::touching(p.world_point(w));
+  }
+  const Closest c = gap(p, axes);
+  const LengthAndDirection d = length_and_direction(Vec2(c.on_b - c.on_a));
+  const double distance = d.length - radii(p);
+  if (distance <= 0.0) {
+    const double t = radii(p) > 0.0 ? p.a.radius / radii(p) : 0.5;
+    return DistanceResult::touching(p.world_point(Vec2(c.on_a + t * (c.on_b - c.on_a))));
+  }
+  return DistanceResult::apart(distance, p.world_point(Vec2(c.on_a + p.a.radius * d.direction)),
+                               p.world_point(Vec2(c.on_b - p.b.radius * d.direction)));
+}
+
+Contact core_contact(const CorePair& p, const ContactOptions& options) {
+  const Axes axes = axes_of(p);
+  const double bound = axes.s() - radii(p);  // the cores' separation along an axis is at most their distance
+  if (beyond_limit(bound, p.scale(), options)) return Contact::beyond(bound);
+  return limited(options, [&] { return contact_of(p, axes, options); });
+}
+
+}  // namespace collide2d::detail

@@ -1,0 +1,77 @@
+// Private: the flat shapes as rounded convex cores, and their pairs' overlap, distance and contact.
+//
+// A rectangle, a convex polygon, a capsule and a circle are each a convex core (a polygon of 3 to 8
+// vertices, a segment of 2, or a point) grown by a radius (0 for the sharp polygons). Every pair
+// of them is settled on the two cores, B's placed in A's frame:
+// - separating axes (the faces' normals of both cores; a segment also its own direction, the end
+//   faces its Minkowski sums with a point or a parallel segment have) give the cores' signed
+//   distance wherever they overlap, the deepest way out being along one of those axes, and a lower
+//   bound of their distance where they do not;
+// - apart, that bound is the distance when the best face's witness vertex lies over the face (a
+//   point of the face is then that far from it), and otherwise the nearest features are found among
+//   every vertex–edge pair (a closest pair of two disjoint convex polygons always has a vertex);
+// - a rounded pair's signed distance is its cores' minus the two radii, along the same normal.
+// The manifold is Box2D's (E. Catto, b2ClipPolygons): the incident face, the other core's face most
+// opposed to the reference face, clipped to the reference face's side planes.
+#pragma once
+
+#include <collide2d/query.h>
+#include <collide2d/shapes.h>
+
+#include "shapes/internal.h"
+
+#include <array>
+
+namespace collide2d::detail {
+
+// A core in the frame of the pair's shape A: its vertices counter-clockwise, each face's outward
+// unit normal (face i from vertex i to vertex i + 1), and the radius around it. A segment has two
+// faces, one each way; a point none.
+struct Core {
+  std::array<Vec2, kMaxPolygonVertices> v{};
+  std::array<Vec2, kMaxPolygonVertices> n{};
+  int count = 0;
+  double radius = 0.0;
+  double reach = 0.0;  // the largest |vertex| about its own centre, plus the radius
+
+  int faces() const { return count == 1 ? 0 : count; }
+  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+};
+
+// Where shape B's local points go in A's frame; A's own placement is the identity.
+struct Placement {
+  Rotation<double> rot;
+  Vec2 offset = Vec2::Zero();
+
+  Vec2 point(const Vec2& p) const { return offset + rot.apply(p); }
+  Vec2 direction(const Vec2& d) const { return rot.apply(d); }
+};
+
+Core core_of(const Rect& r, const Placement& at);
+Core core_of(const ConvexPolygon& p, const Placement& at);
+Core core_of(const Capsule& c, const Placement& at);
+Core core_of(const Circle& c, const Placement& at);
+
+// A pair of flat shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.
+struct CorePair {
+  Core a, b;
+  Rotation<double> a_rot;
+  Vec2 a_center = Vec2::Zero();
+
+  template <class A, class B>
+  static CorePair of(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+    const Rotation<double> ra{ao.c, ao.s}, rb{bo.c, bo.s};
+    const Placement b_in_a{rb.relative_to(ra), ra.apply_inverse(Vec2(b.center - a.center))};
+    return {core_of(a, Placement{}), core_of(b, b_in_a), ra, a.center};
+  }
+  Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
+  Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }
+  // The pair's scale: the offset of B and both cores' sizes, what their rounding is a few u of.
+  double scale() const;
+};
+
+bool core_overlap(const CorePair& p);
+DistanceResult core_distance(const CorePair& p);
+Contact core_contact(const CorePair& p, const ContactOptions& options);
+
+}  // namespace collide2d::detail

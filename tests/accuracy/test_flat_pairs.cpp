@@ -1,0 +1,357 @@
+// Pairs of flat shapes (rectangles, convex polygons sharp and rounded, capsules, circles) settled on
+// their convex cores (narrowphase/polygon/convex_core.h): overlap, distance and contact against
+// the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
+// against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
+// and on the degenerate configurations of segments and faces.
+#include "mp_reference.h"
+
+#include "narrowphase/polygon/convex_core.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using reference::AnyShape;
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+constexpr double kPi = std::numbers::pi;
+
+enum class Flat { rect, polygon, rounded, capsule, circle };
+const char* name_of(Flat k) {
+  constexpr const char* names[] = {"rect", "polygon", "rounded", "capsule", "circle"};
+  return names[static_cast<int>(k)];
+}
+
+Orientation orientation_of(const AnyShape& s) {
+  return std::visit(
+      [](const auto& x) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
+          return Orientation{};
+        } else {
+          return Orientation::of(x.angle);
+        }
+      },
+      s);
+}
+
+detail::CorePair pair_of(const AnyShape& a, const AnyShape& b) {
+  return std::visit(
+      [](const auto& x, const auto& y) -> detail::CorePair {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Ellipse> ||
+                      std::is_same_v<std::decay_t<decltype(y)>, Ellipse>) {
+          throw std::logic_error("not a flat pair");
+        } else {
+          return detail::CorePair::of(x, orientation_of(x), y, orientation_of(y));
+        }
+      },
+      a, b);
+}
+
+Vec2 center_of_any(const AnyShape& s) {
+  return std::visit([](const auto& x) { return Vec2(x.center); }, s);
+}
+
+// The largest distance from the centre to a point of the shape.
+double reach_of_any(const AnyShape& s) {
+  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
+  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.norm();
+  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length + c->radius;
+  return std::get<ConvexPolygon>(s).outline->reach;
+}
+
+// The point of the shape farthest along unit d, in 50 digits' worth of care: the support of the
+// core (a vertex, chosen in double, then placed exactly) plus the radius along d.
+Vec2 support_of(const AnyShape& s, const Vec2& d) {
+  return std::visit([&d](const auto& x) { return Vec2(support(x, d)); }, s);
+}
+
+AnyShape moved_to(AnyShape s, const Vec2& center) {
+  std::visit([&center](auto& x) { x.center = center; }, s);
+  return s;
+}
+
+// A random shape of the kind about the origin, of size about `size` (its longest half-size) and
+// aspect up to `aspect`.
+AnyShape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double angle = 2 * kPi * unit(rng);
+  const double thin = size / std::exp(std::log(aspect) * unit(rng));
+  switch (kind) {
+    case Flat::rect:
+      return Rect{Vec2::Zero(), Vec2(size, thin), angle};
+    case Flat::circle:
+      return Circle{Vec2::Zero(), size};
+    case Flat::capsule: {
+      const bool long_one = unit(rng) < 0.5;
+      return Capsule{Vec2::Zero(), long_one ? size : thin, long_one ? thin : size, angle};
+    }
+    case Flat::polygon:
+    case Flat::rounded: {
+      const int n = 3 + static_cast<int>(unit(rng) * 6);
+      std::vector<Vec2> v;
+      for (int k = 0; k < n; ++k) {
+        const double t = 2 * kPi * (k + 0.6 * unit(rng)) / n;
+        v.emplace_back(size * std::cos(t), thin * std::sin(t));
+      }
+      const double radius = kind == Flat::rounded ? thin * (0.05 + unit(rng)) : 0.0;
+      return ConvexPolygon::of(v, radius).at(Vec2::Zero(), angle);
+    }
+  }
+  return Circle{};
+}
+
+struct FlatFamily {
+  std::string name;
+  Flat a, b;
+  double size = 1.0;
+  double offset = 0.0;
+  double aspect = 4.0;
+  std::vector<double> deltas;  // of the size: B's support point that far along A's
+  int cases = 24;
+};
+
+void PrintTo(const FlatFamily& f, std::ostream* os) { *os << f.name; }
+
+std::vector<FlatFamily> families() {
+  const Flat kinds[] = {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle};
+  const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
+  std::vector<FlatFamily> out;
+  for (const Flat a : kinds) {
+    for (const Flat b : kinds) {
+      if (a == Flat::circle && b == Flat::circle) continue;
+      const std::string pair = std::string(name_of(a)) + "_" + name_of(b);
+      out.push_back({pair + "_touching", a, b, 1.0, 0.0, 4.0, near});
+      out.push_back({pair + "_deep", a, b, 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5}});
+      out.push_back({pair + "_slivers", a, b, 1.0, 0.0, 1e6, near});
+      out.push_back({pair + "_far", a, b, 1.0, 1e9, 4.0, near});
+      out.push_back({pair + "_small", a, b, 1e-6, 1e6, 4.0, near});
+      out.push_back({pair + "_large", a, b, 1e6, 0.0, 4.0, near});
+    }
+  }
+  return out;
+}
+
+struct Case {
+  AnyShape a, b;
+  double delta;  // the nominal gap
+};
+
+// B placed so that its support point along -n lies at A's along n plus delta n (delta in units of
+// the size): for delta >= 0 the pair's distance is delta, to the rounding of B's centre.
+std::vector<Case> cases_of(const FlatFamily& f) {
+  std::mt19937_64 rng(std::hash<std::string>{}(f.name));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Case> out;
+  for (int k = 0; k < f.cases; ++k) {
+    const double delta = f.deltas[k % f.deltas.size()] * f.size;
+    const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
+    const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+    const AnyShape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
+    const AnyShape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
+    const double t = 2 * kPi * unit(rng);
+    const Vec2 n(std::cos(t), std::sin(t));
+    const Vec2 pa = support_of(a, n);
+    const Vec2 pb = support_of(b0, Vec2(-n));  // b0 is about the origin
+    out.push_back({a, moved_to(b0, pa + delta * n - pb), delta});
+  }
+  return out;
+}
+
+double angle_between(const Vec2& u, const Vec2& v) {
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
+double ulps_of(const Vec2& p) { return 8 * kU * p.cwiseAbs().maxCoeff(); }
+
+class FlatFamilies : public ::testing::TestWithParam<FlatFamily> {};
+
+TEST_P(FlatFamilies, MatchReference) {
+  const FlatFamily& f = GetParam();
+  double worst_sep = 0, worst_known = 0, worst_points = 0, worst_normal = 0;
+  int k = 0, normals = 0, apart = 0, overlapping = 0;
+  for (const Case& c : cases_of(f)) {
+    const std::string what = f.name + " case " + std::to_string(k++);
+    const detail::CorePair p = pair_of(c.a, c.b);
+    const Contact got = detail::core_contact(p, {});
+    const reference::SignedDistance ref = reference::signed_distance(c.a, c.b);
+    const double ref_sep = static_cast<double>(ref.separation);
+    const double size = std::max(reach_of_any(c.a), reach_of_any(c.b));
+    const double scale = std::max(size, (center_of_any(c.b) - center_of_any(c.a)).norm());
+    const double err = std::abs(got.separation - ref_sep) / scale;
+    worst_sep = std::max(worst_sep, err);
+    EXPECT_LE(err, 8 * kU) << what << " separation " << got.separation << " reference " << ref_sep;
+    if (c.delta >= 0) {
+      // Apart or touching by construction: the gap is the distance, to the rounding of B's centre.
+      const double rho = 16 * kU * (center_of_any(c.b).cwiseAbs().maxCoeff() + 4 * size);
+      worst_known = std::max(worst_known, (std::abs(got.separation - c.delta) - rho) / scale);
+      EXPECT_LE(std::abs(got.separation - c.delta), rho + 8 * kU * scale) << what << " nominal gap " << c.delta;
+    }
+
+    const Vec2 ref_normal(static_cast<double>(ref.normal.x), static_cast<double>(ref.normal.y));
+    const bool unique = ref.runner_up < ref.separation - 1e-9 * scale;
+    const double curvature = static_cast<double>(ref.curvature);
+    if (unique && std::abs(ref_sep) > 1e-9 * size && 64 * kU * scale / curvature <= 1e-10) {
+      const double turn = angle_between(got.normal, ref_normal);
+      worst_normal = std::max(worst_normal, turn);
+      ++normals;
+      EXPECT_LE(turn, 1e-10) << what << " normal " << got.normal.transpose() << " reference " << ref_normal.transpose();
+    }
+
+    // The contact's points separation * normal apart; every point of the manifold on its shape, its
+    // two points |separation| apart. Where the two shapes' best faces tie to 1e-9 of the scale, the
+    // manifold is on A's face, whose normal and separations differ from the maximum's by as much.
+    const auto off = [&](const AnyShape& s, const Vec2& q) {
+      return static_cast<double>(reference::distance_to(s, reference::to_mp(q))) - ulps_of(q);
+    };
+    // (Overlapping with the deepest vertex beyond the reference face's ends, a point within them
+    // stands in: its points are farther apart along the normal than the separation.)
+    const Vec2 main = got.point_b - got.point_a;
+    const double main_ulps = ulps_of(got.point_a) + ulps_of(got.point_b);
+    const double main_along = (main - main.dot(got.normal) * got.normal).norm() - main_ulps;
+    worst_points =
+        std::max({worst_points, main_along / scale, off(c.a, got.point_a) / scale, off(c.b, got.point_b) / scale});
+    EXPECT_LE(main_along, 16 * kU * scale) << what << " point_b - point_a not along the normal";
+    EXPECT_GE(main.dot(got.normal), got.separation - main_ulps - 16 * kU * scale)
+        << what << " points deeper than the pair";
+    EXPECT_LE(off(c.a, got.point_a), 16 * kU * scale) << what << " point_a is off A";
+    EXPECT_LE(off(c.b, got.point_b), 16 * kU * scale) << what << " point_b is off B";
+    for (const ContactPoint& m : got.points()) {
+      const double ulps = ulps_of(m.point_a) + ulps_of(m.point_b);
+      EXPECT_LE(std::abs((m.point_b - m.point_a).norm() - std::abs(m.separation)) - ulps, 16 * kU * scale)
+          << what << " manifold point's separation";
+      EXPECT_LE(off(c.a, m.point_a), 16 * kU * scale) << what << " manifold point_a is off A";
+      EXPECT_LE(off(c.b, m.point_b), 16 * kU * scale) << what << " manifold point_b is off B";
+      EXPECT_GE(m.separation, got.separation - 1e-9 * (reach_of_any(c.a) + reach_of_any(c.b)) - 16 * kU * scale)
+          << what << " a point deeper than the pair";
+    }
+
+    // The verdict and the distance, wherever the reference is clear of rounding.
+    const DistanceResult d = detail::core_distance(p);
+    if (std::abs(ref_sep) > 16 * kU * scale) {
+      EXPECT_EQ(detail::core_overlap(p), ref_sep < 0) << what << " verdict, reference " << ref_sep;
+      EXPECT_EQ(d.overlapping, ref_sep < 0) << what << " distance's verdict";
+      (ref_sep < 0 ? overlapping : apart)++;
+    }
+    if (d.overlapping) {
+      // A point of both, to rounding; where two slivers cross in a region thinner than the rounding
+      // of their edges' crossing points, within the overlap's depth of each.
+      const double bound = std::max(64 * kU * scale, std::abs(ref_sep));
+      EXPECT_LE(off(c.a, d.point_a), bound) << what << " witness off A, reference " << ref_sep;
+      EXPECT_LE(off(c.b, d.point_a), bound) << what << " witness off B, reference " << ref_sep;
+    } else {
+      EXPECT_LE(std::abs(d.distance - std::max(ref_sep, 0.0)), 8 * kU * scale) << what << " distance";
+      EXPECT_LE(std::abs((d.point_b - d.point_a).norm() - d.distance) - ulps_of(d.point_a) - ulps_of(d.point_b),
+                16 * kU * scale)
+          << what << " closest points";
+    }
+  }
+  std::printf(
+      "[flat] %-28s worst separation %.1f u  known gap %.1f u  points %.1f u  normal %.1e rad (%d)  apart %d "
+      "overlapping %d\n",
+      f.name.c_str(), worst_sep / kU, worst_known / kU, worst_points / kU, worst_normal, normals, apart, overlapping);
+}
+
+Contact contact_of(const AnyShape& a, const AnyShape& b, const ContactOptions& options = {}) {
+  return detail::core_contact(pair_of(a, b), options);
+}
+
+// Two capsules on one line: their cores' only separating directions are the line itself (an end of
+// each) and its normal, which a segment's faces alone would miss.
+TEST(FlatPairs, CapsulesInLine) {
+  const Capsule a{Vec2(0, 0), 1.0, 0.5, 0.0};
+  for (const double gap : {0.5, 1e-9, 0.0, -1e-9, -0.5}) {
+    const Capsule b{Vec2(3 + gap, 0), 1.0, 0.5, 0.0};
+    const Contact c = contact_of(a, b);
+    EXPECT_NEAR(c.separation, gap, 4 * kU * 4) << gap;
+    EXPECT_EQ(c.normal, Vec2(1, 0)) << gap;
+    EXPECT_EQ(detail::core_overlap(pair_of(a, b)), gap <= 0) << gap;
+    const DistanceResult d = detail::core_distance(pair_of(a, b));
+    EXPECT_NEAR(d.distance, std::max(gap, 0.0), 4 * kU * 4) << gap;
+  }
+  // Cores overlapping along the line: the way out is sideways, by the two radii.
+  const Contact side = contact_of(a, Capsule{Vec2(1.5, 0), 1.0, 0.5, 0.0});
+  EXPECT_EQ(side.separation, -1.0);
+  EXPECT_EQ(std::abs(side.normal.y()), 1.0);
+  // Crossing at right angles, 0.25 from A's centre: B's way out is past A's nearer end, 1.75 (past
+  // the far end 2.25, across A's core 2).
+  const Contact crossing = contact_of(a, Capsule{Vec2(0.25, 0), 1.0, 0.5, std::numbers::pi / 2});
+  EXPECT_NEAR(crossing.separation, -1.75, 4 * kU * 4);
+  EXPECT_NEAR(crossing.normal.x(), 1.0, 4 * kU);
+}
+
+// A box resting on a wider box, gap 1e-9 either way: two points, the upper box's bottom corners,
+// on the lower box's top face (face 2 of a rectangle in these pairs, the 4-gon of
+// ConvexPolygon::box), with the same ids whatever the gap and a slide along the face.
+TEST(FlatPairs, BoxRestingOnABox) {
+  const Rect floor{Vec2(0, 0), Vec2(2, 1), 0.0};
+  for (const double gap : {1e-9, 0.0, -1e-9}) {
+    for (const double slide : {-0.3, 0.0, 0.7}) {
+      const ConvexPolygon crate = ConvexPolygon::box(0.5, 0.5).at(Vec2(slide, 1.5 + gap));
+      const Contact c = contact_of(floor, crate);
+      EXPECT_NEAR(c.separation, gap, 8 * kU * 2) << gap << " " << slide;
+      EXPECT_EQ(c.normal, Vec2(0, 1));
+      ASSERT_EQ(c.manifold_size, 2) << gap << " " << slide;
+      EXPECT_EQ(c.manifold[0].id, feature_id(FeatureKind::face_of_a, 2, 0));
+      EXPECT_EQ(c.manifold[1].id, feature_id(FeatureKind::face_of_a, 2, 1));
+      for (const ContactPoint& m : c.points()) {
+        EXPECT_NEAR(m.point_a.y(), 1.0, 8 * kU * 2);
+        EXPECT_NEAR(m.point_b.y(), 1.0 + gap, 8 * kU * 2);
+        EXPECT_NEAR(std::abs(m.point_a.x() - slide), 0.5, 8 * kU * 2);
+      }
+      // The pair the other way round: the faces tie, and A's, the crate's bottom face 0, is the
+      // reference; the floor's longer face is cut to its ends.
+      const Contact back = contact_of(crate, floor);
+      EXPECT_EQ(back.normal, Vec2(0, -1));
+      ASSERT_EQ(back.manifold_size, 2);
+      const std::uint32_t ids[] = {back.manifold[0].id, back.manifold[1].id};
+      EXPECT_EQ(std::min(ids[0], ids[1]), feature_id(FeatureKind::face_of_a, 0, 8));
+      EXPECT_EQ(std::max(ids[0], ids[1]), feature_id(FeatureKind::face_of_a, 0, 9));
+    }
+  }
+  // Overhanging the floor's end: the crate's outer corner is cut to the face's end, where the face
+  // (from vertex 2 at +x to vertex 3) starts (id 8).
+  const Contact over = contact_of(floor, ConvexPolygon::box(0.5, 0.5).at(Vec2(2.2, 1.5)));
+  ASSERT_EQ(over.manifold_size, 2);
+  EXPECT_EQ(over.manifold[1].id, feature_id(FeatureKind::face_of_a, 2, 8));
+  EXPECT_EQ(over.manifold[1].point_a, Vec2(2, 1));
+}
+
+// A triangle's tip exactly on a face, a capsule of radius 1e-9 of its length flat on a face, a
+// capsule of length 1e-9 of its radius against a circle: known separations.
+TEST(FlatPairs, KnownSeparations) {
+  const Rect floor{Vec2(0, 0), Vec2(2, 1), 0.0};
+  const std::vector<Vec2> wedge = {{0, 0}, {1, 2}, {-1, 2}};
+  const ConvexPolygon tip = ConvexPolygon::of(wedge).at(Vec2(0.25, 1));
+  EXPECT_EQ(contact_of(floor, tip).separation, 0.0);
+  EXPECT_TRUE(detail::core_overlap(pair_of(floor, tip)));
+  EXPECT_TRUE(detail::core_distance(pair_of(floor, tip)).overlapping);
+  const ConvexPolygon lifted = ConvexPolygon::of(wedge).at(Vec2(0.25, 1 + 1e-12));
+  EXPECT_NEAR(contact_of(floor, lifted).separation, 1e-12, 4 * kU * 2);
+  EXPECT_FALSE(detail::core_overlap(pair_of(floor, lifted)));
+
+  const Capsule needle{Vec2(0.5, 1 + 1e-9 + 1e-3), 1.0, 1e-9, 0.0};
+  const Contact lying = contact_of(floor, needle);
+  EXPECT_NEAR(lying.separation, 1e-3, 8 * kU * 2);
+  EXPECT_EQ(lying.manifold_size, 2);
+
+  const Capsule bead{Vec2(3, 0), 1e-9, 1.0, 0.7};
+  const Circle ball{Vec2(0, 0), 1.5};
+  const Contact c = contact_of(bead, ball);
+  // The core's nearest end is 1e-9 nearer than the centre, along cos 0.7.
+  EXPECT_NEAR(c.separation, 3 - 1e-9 * std::cos(0.7) - 2.5, 8 * kU * 3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(families()),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace collide2d
