@@ -13,6 +13,14 @@
 // - a rounded pair's signed distance is its cores' minus the two radii, along the same normal.
 // The manifold is Box2D's (E. Catto, b2ClipPolygons): the incident face, the other core's face most
 // opposed to the reference face, clipped to the reference face's side planes.
+//
+// Against an ellipse, the separation along a direction u is, wherever A's support point is its
+// vertex v (the cone of directions between the normals of v's two faces), the separation of the
+// point v and the ellipse along u, less A's radius. Its maxima over the cone are at the cone's ends
+// (face normals, where the ellipse's support point lies over the face) or at a normal of the
+// ellipse through v inside the cone: the point's nearest foot on the ellipse (Eberly's
+// point–ellipse root) or, inside the evolute, the other local one. The largest of those is the
+// signed distance, with no search and no local maximum to mistake for the global one.
 #pragma once
 
 #include <collide2d/query.h>
@@ -73,5 +81,27 @@ struct CorePair {
 bool core_overlap(const CorePair& p);
 DistanceResult core_distance(const CorePair& p);
 Contact core_contact(const CorePair& p, const ContactOptions& options);
+
+// A flat shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
+// ellipse is centred at the origin with semi-axis a along x and b along y.
+struct CoreEllipse {
+  Core core;
+  double a = 1.0, b = 1.0;
+  Rotation<double> e_rot;
+  Vec2 e_center = Vec2::Zero();
+
+  template <class A>
+  static CoreEllipse of(const A& shape, const Orientation& ao, const Ellipse& e, const Orientation& eo) {
+    const Rotation<double> ra{ao.c, ao.s}, re{eo.c, eo.s};
+    const Placement in_e{ra.relative_to(re), re.apply_inverse(Vec2(shape.center - e.center))};
+    return {core_of(shape, in_e), e.a, e.b, re, e.center};
+  }
+  Vec2 world_point(const Vec2& p) const { return e_center + e_rot.apply(p); }
+  Vec2 world_direction(const Vec2& d) const { return e_rot.apply(d); }
+};
+
+bool core_ellipse_overlap(const CoreEllipse& p);
+DistanceResult core_ellipse_distance(const CoreEllipse& p);
+Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options);
 
 }  // namespace collide2d::detail

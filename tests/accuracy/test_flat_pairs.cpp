@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -26,9 +27,9 @@ using reference::AnyShape;
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 constexpr double kPi = std::numbers::pi;
 
-enum class Flat { rect, polygon, rounded, capsule, circle };
+enum class Flat { rect, polygon, rounded, capsule, circle, ellipse };
 const char* name_of(Flat k) {
-  constexpr const char* names[] = {"rect", "polygon", "rounded", "capsule", "circle"};
+  constexpr const char* names[] = {"rect", "polygon", "rounded", "capsule", "circle", "ellipse"};
   return names[static_cast<int>(k)];
 }
 
@@ -44,6 +45,13 @@ Orientation orientation_of(const AnyShape& s) {
       s);
 }
 
+// The kernels under test for a pair: two cores, or a core and an ellipse (B).
+struct Kernels {
+  std::function<Contact(const ContactOptions&)> contact;
+  std::function<DistanceResult()> distance;
+  std::function<bool()> overlap;
+};
+
 detail::CorePair pair_of(const AnyShape& a, const AnyShape& b) {
   return std::visit(
       [](const auto& x, const auto& y) -> detail::CorePair {
@@ -57,6 +65,25 @@ detail::CorePair pair_of(const AnyShape& a, const AnyShape& b) {
       a, b);
 }
 
+Kernels kernels_of(const AnyShape& a, const AnyShape& b) {
+  if (const auto* e = std::get_if<Ellipse>(&b)) {
+    const detail::CoreEllipse p = std::visit(
+        [&](const auto& x) -> detail::CoreEllipse {
+          if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Ellipse>) {
+            throw std::logic_error("two ellipses");
+          } else {
+            return detail::CoreEllipse::of(x, orientation_of(x), *e, Orientation::of(e->angle));
+          }
+        },
+        a);
+    return {[p](const ContactOptions& o) { return detail::core_ellipse_contact(p, o); },
+            [p] { return detail::core_ellipse_distance(p); }, [p] { return detail::core_ellipse_overlap(p); }};
+  }
+  const detail::CorePair p = pair_of(a, b);
+  return {[p](const ContactOptions& o) { return detail::core_contact(p, o); }, [p] { return detail::core_distance(p); },
+          [p] { return detail::core_overlap(p); }};
+}
+
 Vec2 center_of_any(const AnyShape& s) {
   return std::visit([](const auto& x) { return Vec2(x.center); }, s);
 }
@@ -66,6 +93,7 @@ double reach_of_any(const AnyShape& s) {
   if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
   if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.norm();
   if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length + c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
   return std::get<ConvexPolygon>(s).outline->reach;
 }
 
@@ -91,6 +119,8 @@ AnyShape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rn
       return Rect{Vec2::Zero(), Vec2(size, thin), angle};
     case Flat::circle:
       return Circle{Vec2::Zero(), size};
+    case Flat::ellipse:
+      return Ellipse{Vec2::Zero(), size, thin, angle};
     case Flat::capsule: {
       const bool long_one = unit(rng) < 0.5;
       return Capsule{Vec2::Zero(), long_one ? size : thin, long_one ? thin : size, angle};
@@ -127,8 +157,8 @@ std::vector<FlatFamily> families() {
   const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
   std::vector<FlatFamily> out;
   for (const Flat a : kinds) {
-    for (const Flat b : kinds) {
-      if (a == Flat::circle && b == Flat::circle) continue;
+    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse}) {
+      if ((a == Flat::circle && b == Flat::circle) || (a == Flat::circle && b == Flat::ellipse)) continue;
       const std::string pair = std::string(name_of(a)) + "_" + name_of(b);
       out.push_back({pair + "_touching", a, b, 1.0, 0.0, 4.0, near});
       out.push_back({pair + "_deep", a, b, 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5}});
@@ -180,8 +210,8 @@ TEST_P(FlatFamilies, MatchReference) {
   int k = 0, normals = 0, apart = 0, overlapping = 0;
   for (const Case& c : cases_of(f)) {
     const std::string what = f.name + " case " + std::to_string(k++);
-    const detail::CorePair p = pair_of(c.a, c.b);
-    const Contact got = detail::core_contact(p, {});
+    const Kernels kernels = kernels_of(c.a, c.b);
+    const Contact got = kernels.contact({});
     const reference::SignedDistance ref = reference::signed_distance(c.a, c.b);
     const double ref_sep = static_cast<double>(ref.separation);
     const double size = std::max(reach_of_any(c.a), reach_of_any(c.b));
@@ -235,9 +265,9 @@ TEST_P(FlatFamilies, MatchReference) {
     }
 
     // The verdict and the distance, wherever the reference is clear of rounding.
-    const DistanceResult d = detail::core_distance(p);
+    const DistanceResult d = kernels.distance();
     if (std::abs(ref_sep) > 16 * kU * scale) {
-      EXPECT_EQ(detail::core_overlap(p), ref_sep < 0) << what << " verdict, reference " << ref_sep;
+      EXPECT_EQ(kernels.overlap(), ref_sep < 0) << what << " verdict, reference " << ref_sep;
       EXPECT_EQ(d.overlapping, ref_sep < 0) << what << " distance's verdict";
       (ref_sep < 0 ? overlapping : apart)++;
     }
