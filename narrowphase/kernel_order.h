@@ -1,5 +1,5 @@
-// Private: the order in which kernels take their shapes: by rank across kinds (a rectangle first,
-// an ellipse last), and by key within one.
+// Private: the order in which kernels take their shapes: by rank across kinds (a rectangle, a
+// polygon, a capsule, a circle, an ellipse), and by key within one.
 //
 // The key is a total order on shapes of one kind. Same-kind pairs are put in this order before the
 // kernel runs (query.cpp, and the batch in overlap_batch.cpp), so that swapping A and B swaps the
@@ -16,14 +16,32 @@ namespace collide2d::detail {
 template <class T>
 constexpr int rank() {
   if constexpr (std::is_same_v<T, Rect>) return 0;
-  if constexpr (std::is_same_v<T, Circle>) return 1;
-  return 2;
+  if constexpr (std::is_same_v<T, ConvexPolygon>) return 1;
+  if constexpr (std::is_same_v<T, Capsule>) return 2;
+  if constexpr (std::is_same_v<T, Circle>) return 3;
+  return 4;
 }
+
+// Whether the batched overlap tests (batch.h) take the kind; pairs with any other are tested one at
+// a time.
+template <class T>
+constexpr bool batched = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
 
 inline std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
 inline std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }
 inline std::array<double, 5> key(const Rect& r) {
   return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
+}
+inline std::array<double, 5> key(const Capsule& c) {
+  return {c.center.x(), c.center.y(), c.half_length, c.radius, c.angle};
+}
+// A polygon's pose, then its outline's radius, count and vertices (never its address, which would
+// order a replay differently).
+inline std::array<double, 5 + 2 * kMaxPolygonVertices> key(const ConvexPolygon& p) {
+  std::array<double, 5 + 2 * kMaxPolygonVertices> k{p.center.x(), p.center.y(), p.angle, p.radius(),
+                                                    static_cast<double>(p.count())};
+  for (int i = 0; i < p.count(); ++i) k[5 + 2 * i] = p.vertices()[i].x(), k[6 + 2 * i] = p.vertices()[i].y();
+  return k;
 }
 
 }  // namespace collide2d::detail

@@ -4,6 +4,7 @@
 #include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "narrowphase/polygon/convex_core.h"
 
 #include <algorithm>
 #include <array>
@@ -65,6 +66,64 @@ Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O&
   return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
 
+// The pairs with a polygon or a capsule, in kernel order: a flat shape (rectangle, polygon, capsule)
+// first, settled on convex cores (narrowphase/polygon/convex_core.h).
+template <class T>
+constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule>;
+
+template <class T>
+Orientation orientation_of(const T& x) {
+  if constexpr (std::is_same_v<T, Circle>) {
+    return {};
+  } else {
+    return Orientation::of(x.angle);
+  }
+}
+
+// The pair's cores, or A's core against the ellipse B, for `run` to settle.
+template <class X, class Y, class Run>
+auto on_core_pair(const X& a, const O& oa, const Y& b, const O& ob, Run run) {
+  if constexpr (std::is_same_v<Y, Ellipse>) {
+    return run(detail::CoreEllipse::of(a, oa, b, ob));
+  } else {
+    return run(detail::CorePair::of(a, oa, b, ob));
+  }
+}
+
+struct CoreOverlap {
+  bool operator()(const detail::CorePair& p) const { return detail::core_overlap(p); }
+  bool operator()(const detail::CoreEllipse& p) const { return detail::core_ellipse_overlap(p); }
+};
+struct CoreDistance {
+  DistanceResult operator()(const detail::CorePair& p) const { return detail::core_distance(p); }
+  DistanceResult operator()(const detail::CoreEllipse& p) const { return detail::core_ellipse_distance(p); }
+};
+struct CoreContact {
+  const ContactOptions& options;
+  Contact operator()(const detail::CorePair& p) const { return detail::core_contact(p, options); }
+  Contact operator()(const detail::CoreEllipse& p) const { return detail::core_ellipse_contact(p, options); }
+};
+
+template <class X, class Y>
+requires(on_cores<X> || on_cores<Y>) bool posed_overlap(const X& a, const O& oa, const Y& b, const O& ob) {
+  return on_core_pair(a, oa, b, ob, CoreOverlap{});
+}
+template <class X, class Y>
+requires(on_cores<X> || on_cores<Y>) bool overlap_kernel(const X& a, const Y& b) {
+  return posed_overlap(a, orientation_of(a), b, orientation_of(b));
+}
+template <class X, class Y>
+requires(on_cores<X> || on_cores<Y>) DistanceResult distance_kernel(const X& a, const Y& b) {
+  return on_core_pair(a, orientation_of(a), b, orientation_of(b), CoreDistance{});
+}
+// A tie of two polygons' faces keeps the kernel's A's (the pair in kernel order), whichever the
+// caller gave first.
+template <class X, class Y>
+requires(on_cores<X> || on_cores<Y>) Contact
+    contact_kernel(const X& a, const O& oa, const Y& b, const O& ob, const ContactOptions& o, bool) {
+  return on_core_pair(a, oa, b, ob, CoreContact{o});
+}
+
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 
 // Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
@@ -89,9 +148,9 @@ DistanceResult boundary_kernel(const Circle& a, const Ellipse& b) {
   return boundary_distance_ellipse_ellipse(as_ellipse(a), b);
 }
 DistanceResult boundary_kernel(const Ellipse& a, const Ellipse& b) { return boundary_distance_ellipse_ellipse(a, b); }
-template <class X>
-DistanceResult boundary_kernel(const Rect&, const X&) {
-  throw UnsupportedPair("the boundary distance covers circles and ellipses, not rectangles");
+template <class X, class Y>
+requires(std::is_same_v<X, Rect> || on_cores<X>) DistanceResult boundary_kernel(const X&, const Y&) {
+  throw UnsupportedPair("the boundary distance covers circles and ellipses, not rectangles, polygons or capsules");
 }
 
 // Calls kernel(x, y, swapped) with the pair in kernel order: by rank across kinds, by key within one.

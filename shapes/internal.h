@@ -19,10 +19,14 @@ void require_finite(const char* shape, const char* field, double value);
 void require_coordinate(const char* shape, const char* field, double value);
 void require_size(const char* shape, const char* field, double value);
 
-// The box from center + lo to center + hi, grown by a few ulps of its coordinates: the kernels'
-// rounding must not put a point of the shape outside its box (a pair touching to rounding would
-// otherwise never reach the narrow phase).
-Aabb around(const Vec2& center, const Vec2& lo, const Vec2& hi);
+// The box from center - below to center + above, grown by a few ulps of its coordinates (the
+// centre's and `reach`, the shape's extent from it): the kernels' rounding must not put a point of
+// the shape outside its box (a pair touching to rounding would otherwise never reach the narrow
+// phase).
+Aabb around(const Vec2& center, const Vec2& below, const Vec2& above, const Vec2& reach);
+
+// A polygon's box with its orientation given.
+Aabb polygon_box(const ConvexPolygon& p, const Orientation& o);
 
 // The shortest digits that read back as the value ("0.1", "1e+51", "nan"), for messages.
 std::string shortest(double value);

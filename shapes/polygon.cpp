@@ -203,14 +203,17 @@ void validate(const ConvexPolygon& p) {
   if (p.outline == nullptr) refuse("has no outline: make it with ConvexPolygon::of, hull, box or regular");
 }
 
-Aabb aabb(const ConvexPolygon& p) {
-  const Rot rot = Rot::of(p.angle);
+Aabb aabb(const ConvexPolygon& p) { return detail::polygon_box(p, Orientation::of(p.angle)); }
+
+Aabb detail::polygon_box(const ConvexPolygon& p, const Orientation& o) {
+  const Rot rot{o.c, o.s};
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec2& v : p.vertices()) {
     const Vec2 w = rot.apply(v);
     lo = lo.cwiseMin(w), hi = hi.cwiseMax(w);
   }
-  return detail::around(p.center, lo.array() - p.radius(), hi.array() + p.radius());
+  const Vec2 reach = lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).array() + p.radius();
+  return detail::around(p.center, p.radius() - lo.array(), hi.array() + p.radius(), reach);
 }
 
 Vec2 support(const ConvexPolygon& p, const Vec2& d) {

@@ -18,7 +18,7 @@ using detail::require_coordinate;
 using detail::require_finite;
 using detail::require_size;
 
-Aabb around(const Vec2& center, const Vec2& half) { return detail::around(center, -half, half); }
+Aabb around(const Vec2& center, const Vec2& half) { return detail::around(center, half, half, half); }
 
 }  // namespace
 
@@ -38,10 +38,9 @@ void detail::require_size(const char* shape, const char* field, double value) {
     reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
 }
 
-Aabb detail::around(const Vec2& center, const Vec2& lo, const Vec2& hi) {
-  const Vec2 slack =
-      8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + lo.cwiseAbs().cwiseMax(hi.cwiseAbs()));
-  return {center + lo - slack, center + hi + slack};
+Aabb detail::around(const Vec2& center, const Vec2& below, const Vec2& above, const Vec2& reach) {
+  const Vec2 slack = 8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + reach);
+  return {center - below - slack, center + above + slack};
 }
 
 void detail::reject(const char* what, const char* field, double value, const char* rule) {
@@ -112,14 +111,22 @@ Vec2 center_of(const Shape& s) {
 }
 
 double angle_of(const Shape& s) {
-  if (const auto* e = std::get_if<Ellipse>(&s)) return e->angle;
-  if (const auto* r = std::get_if<Rect>(&s)) return r->angle;
-  return 0.0;
+  return std::visit(
+      [](const auto& x) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
+          return 0.0;
+        } else {
+          return x.angle;
+        }
+      },
+      s);
 }
 
 double reach_of(const Shape& s) {
   if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
   if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
+  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length + c->radius;
+  if (const auto* p = std::get_if<ConvexPolygon>(&s)) return p->outline->reach;
   return std::get<Rect>(s).half_extents.norm();
 }
 
@@ -132,7 +139,7 @@ bool encloses(const Aabb& outer, const Aabb& inner) {
 }
 
 const char* shape_name(const Shape& s) {
-  constexpr const char* names[] = {"circle", "ellipse", "rect"};
+  constexpr const char* names[] = {"circle", "ellipse", "rect", "capsule", "polygon"};
   return names[s.index()];
 }
 
@@ -156,6 +163,8 @@ Aabb oriented_box(const Rect& r, const Orientation& o) {
 Aabb oriented_box(const Capsule& c, const Orientation& o) {
   return around(c.center, Vec2(c.half_length * std::abs(o.c) + c.radius, c.half_length * std::abs(o.s) + c.radius));
 }
+
+Aabb oriented_box(const ConvexPolygon& p, const Orientation& o) { return detail::polygon_box(p, o); }
 
 }  // namespace
 

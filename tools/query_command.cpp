@@ -52,21 +52,39 @@ struct ShapeGrammar {
   std::size_t count;
   std::string_view fields;
 };
-constexpr std::array<ShapeGrammar, 3> kGrammar{{
+constexpr std::array<ShapeGrammar, 4> kGrammar{{
     {"circle", 3, "cx cy r"},
     {"ellipse", 5, "cx cy a b theta"},
     {"rect", 5, "cx cy hx hy theta"},
+    {"capsule", 5, "cx cy h r theta"},
 }};
 
 Shape make_shape(std::string_view word, const std::vector<double>& v) {
   if (word == "circle") return Circle{Vec2(v[0], v[1]), v[2]};
   if (word == "ellipse") return Ellipse{Vec2(v[0], v[1]), v[2], v[3], v[4]};
+  if (word == "capsule") return Capsule{Vec2(v[0], v[1]), v[2], v[3], v[4]};
   return Rect{Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]};
+}
+
+// `polygon cx cy theta r x0 y0 x1 y1 ...`: 3 to 8 vertices, counter-clockwise about the centre.
+Shape parse_polygon(const std::vector<std::string_view>& words) {
+  std::vector<double> v;
+  for (std::size_t k = 1; k < words.size(); ++k) v.push_back(parse_number(words[k]));
+  if (v.size() < 10 || v.size() > 20 || v.size() % 2 != 0) {
+    throw ParseError("polygon takes 4 numbers (cx cy theta r) and 3 to 8 vertices (x y each), got " +
+                     std::to_string(v.size()) + " numbers");
+  }
+  std::vector<Vec2> vertices;
+  for (std::size_t k = 4; k < v.size(); k += 2) vertices.emplace_back(v[k], v[k + 1]);
+  Shape shape = ConvexPolygon::of(vertices, v[3]).at(Vec2(v[0], v[1]), v[2]);
+  validate(shape);
+  return shape;
 }
 
 Shape parse_shape(std::string_view text, const char* side) {
   const std::vector<std::string_view> words = split_words(text);
   if (words.empty()) throw ParseError(std::string("shape ") + side + " is missing");
+  if (words[0] == "polygon") return parse_polygon(words);
   for (const ShapeGrammar& g : kGrammar) {
     if (words[0] != g.word) continue;
     const std::string takes =
@@ -85,7 +103,8 @@ Shape parse_shape(std::string_view text, const char* side) {
     validate(shape);
     return shape;
   }
-  throw ParseError("unknown shape '" + std::string(words[0]) + "' (expected circle, ellipse or rect)");
+  throw ParseError("unknown shape '" + std::string(words[0]) +
+                   "' (expected circle, ellipse, rect, capsule or polygon)");
 }
 
 struct Side {

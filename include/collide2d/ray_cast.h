@@ -1,6 +1,7 @@
 /// @file
 /// Where a ray first meets a solid shape: exact for circles and ellipses (the root of the ray's
-/// quadratic against the curve, not a polygon), slabs for rectangles.
+/// quadratic against the curve, not a polygon), slabs for rectangles, the faces for polygons, and
+/// the offset faces and the vertices' circles for rounded polygons and capsules.
 #pragma once
 
 #include <collide2d/shapes.h>

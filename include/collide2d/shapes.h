@@ -125,7 +125,7 @@ struct ConvexPolygon {
 };
 
 /// Any shape.
-using Shape = std::variant<Circle, Ellipse, Rect>;
+using Shape = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon>;
 
 /// A closed axis-aligned box; min <= max on each axis. A box may have no width or height.
 struct Aabb {
@@ -163,15 +163,16 @@ void validate_point(const Vec2& p, const char* what);
 /// Throws InvalidShape unless both corners are valid points and min <= max on each axis.
 void validate(const Aabb& box);
 
-/// "circle", "ellipse" or "rect": the word of the command line and of error messages.
+/// "circle", "ellipse", "rect", "capsule" or "polygon": the word of the command line and of error
+/// messages.
 const char* shape_name(const Shape& s);
 
 /// The centre of any shape.
 Vec2 center_of(const Shape& s);
-/// The angle of an ellipse or rectangle; 0 for a circle.
+/// The angle of an ellipse, rectangle, capsule or polygon; 0 for a circle.
 double angle_of(const Shape& s);
 /// The distance from the centre to the farthest point: the radius, the longer semi-axis, the half
-/// diagonal.
+/// diagonal, the half length plus the radius, a polygon's farthest vertex plus its radius.
 double reach_of(const Shape& s);
 
 /// Whether two closed boxes share a point.

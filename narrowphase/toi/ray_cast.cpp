@@ -1,5 +1,6 @@
 #include <collide2d/ray_cast.h>
 
+#include "narrowphase/polygon/convex_core.h"
 #include "shapes/internal.h"
 
 #include <cmath>
@@ -77,6 +78,59 @@ std::optional<RayShapeHit> cast(const Rect& r, const Vec2& origin, const Vec2& d
   }
   if (enter > leave || leave < 0.0) return std::nullopt;
   return hit_at(std::max(enter, 0.0), origin, direction, rot.apply(normal), max_distance);
+}
+
+// A polygon's or capsule's core in its own frame, the ray brought there. Sharp, the faces clip the
+// ray (Cyrus–Beck): it enters at the largest entry parameter of the faces it crosses inwards, whose
+// normal it takes. Rounded, the solid is the union of the core, the rectangles the radius lays along
+// its faces and the discs at its vertices, and a ray from outside enters the union where it first
+// enters one of them: its first crossing of an offset face inwards (within the face) or of a
+// vertex's circle, whichever comes first, whose normal it takes.
+std::optional<RayShapeHit> cast_core(const detail::Core& c, const Rot& rot, const Vec2& center, const Vec2& origin,
+                                     const Vec2& direction, double max_distance) {
+  const Vec2 o = rot.apply_inverse(Vec2(origin - center));
+  const Vec2 d = rot.apply_inverse(direction);
+  double enter = -std::numeric_limits<double>::infinity(), leave = std::numeric_limits<double>::infinity();
+  double first = std::numeric_limits<double>::infinity();
+  Vec2 normal = Vec2::Zero();
+  for (int i = 0; i < c.faces(); ++i) {
+    const Vec2& n = c.n[i];
+    const double toward = n.dot(d), gap = n.dot(o - c.v[i]) - c.radius;  // the ray's height over the offset face
+    if (c.radius == 0.0) {
+      if (toward == 0.0) {
+        if (gap > 0.0) return std::nullopt;
+        continue;
+      }
+      const double t = -gap / toward;
+      if (toward < 0.0 && t > enter) enter = t, normal = n;
+      if (toward > 0.0) leave = std::min(leave, t);
+      continue;
+    }
+    if (!(toward < 0.0) || gap < 0.0) continue;
+    const double t = -gap / toward;
+    const Vec2 along(-n.y(), n.x());
+    const double at = along.dot(o + t * d - c.v[i]);
+    if (at >= 0.0 && at <= along.dot(c.v[c.next(i)] - c.v[i]) && t < first) first = t, normal = n;
+  }
+  if (c.radius == 0.0) {
+    if (enter > leave || leave < 0.0) return std::nullopt;
+    return hit_at(std::max(enter, 0.0), origin, direction, rot.apply(normal), max_distance);
+  }
+  for (int k = 0; k < c.count; ++k) {
+    const std::optional<RayShapeHit> disc = cast(Ellipse{c.v[k], c.radius, c.radius, 0.0}, o, d, first);
+    if (disc && disc->distance < first) first = disc->distance, normal = disc->normal;
+  }
+  if (!(first <= max_distance)) return std::nullopt;
+  return hit_at(first, origin, direction, rot.apply(normal), max_distance);
+}
+
+std::optional<RayShapeHit> cast(const Capsule& s, const Vec2& origin, const Vec2& direction, double max_distance) {
+  return cast_core(detail::core_of(s, {}), Rot::of(s.angle), s.center, origin, direction, max_distance);
+}
+
+std::optional<RayShapeHit> cast(const ConvexPolygon& s, const Vec2& origin, const Vec2& direction,
+                                double max_distance) {
+  return cast_core(detail::core_of(s, {}), Rot::of(s.angle), s.center, origin, direction, max_distance);
 }
 
 }  // namespace

@@ -42,6 +42,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <type_traits>
 
 namespace collide2d {
@@ -59,6 +60,8 @@ constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 double turning_reach(const Shape& s) {
   if (const auto* e = std::get_if<Ellipse>(&s)) return std::abs(e->a - e->b);
   if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.maxCoeff();
+  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length;
+  if (const auto* p = std::get_if<ConvexPolygon>(&s)) return p->outline->reach - p->radius();
   return 0.0;
 }
 
@@ -84,7 +87,22 @@ double support_in_axes(const Shape& s, const Vec2& local) {
   if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
   if (const auto* e = std::get_if<Ellipse>(&s))
     return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
+  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length * std::abs(local.x()) + c->radius;
+  if (const auto* p = std::get_if<ConvexPolygon>(&s)) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (const Vec2& v : p->vertices()) top = std::max(top, local.dot(v));
+    return top + p->radius();
+  }
   return std::get<Circle>(s).radius;
+}
+
+// A capsule's or polygon's core vertices in its own axes.
+std::span<const Vec2> core_vertices(const Shape& s, std::array<Vec2, 2>& ends) {
+  if (const auto* c = std::get_if<Capsule>(&s)) {
+    ends = {Vec2(-c->half_length, 0), Vec2(c->half_length, 0)};
+    return ends;
+  }
+  return std::get<ConvexPolygon>(s).vertices();
 }
 
 // An upper bound of a turning shape's support function h along a fixed direction n over the rest of
@@ -129,6 +147,17 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
       out.pieces[i] = {top - along, w * across, w * w * (std::abs(along) + std::abs(across))};
     }
     out.count = 4;
+  } else if (std::holds_alternative<Capsule>(s) || std::holds_alternative<ConvexPolygon>(s)) {
+    // Each vertex's sinusoid (the radius adds a constant) is at most A + B x + (|A| + |B|) x^2 / 2,
+    // and A is at most h now: one parabola with the largest slope and bend covers them all.
+    std::array<Vec2, 2> ends;
+    double slope = -std::numeric_limits<double>::infinity(), bend = 0.0;
+    for (const Vec2& v : core_vertices(s, ends)) {
+      const double along = local.dot(v), across = turn(v);
+      slope = std::max(slope, w * across);
+      bend = std::max(bend, w * w * (std::abs(along) + std::abs(across)));
+    }
+    out.pieces[0] = {0.0, slope, bend};
   }
   return out;
 }

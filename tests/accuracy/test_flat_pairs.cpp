@@ -23,7 +23,7 @@
 namespace collide2d {
 namespace {
 
-using reference::AnyShape;
+using AnyShape = Shape;
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 constexpr double kPi = std::numbers::pi;
 

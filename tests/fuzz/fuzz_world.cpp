@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
@@ -192,6 +193,12 @@ void check_impacts(const World& w, const Starts& starts) {
           if constexpr (std::is_same_v<T, Circle>) return x.radius;
           if constexpr (std::is_same_v<T, Ellipse>) return std::min(x.a, x.b);
           if constexpr (std::is_same_v<T, Rect>) return x.half_extents.minCoeff();
+          if constexpr (std::is_same_v<T, Capsule>) return x.radius;
+          if constexpr (std::is_same_v<T, ConvexPolygon>) {
+            double inner = std::numeric_limits<double>::infinity();  // the centre's depth in the core
+            for (int i = 0; i < x.count(); ++i) inner = std::min(inner, -x.outline->normals[i].dot(x.vertices()[i]));
+            return std::max(inner, 0.0) + x.radius();
+          }
         },
         now);
     const Vec2 c0 = center_of(*start), c1 = center_of(now);

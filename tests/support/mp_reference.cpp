@@ -444,12 +444,6 @@ Aabb bounding_box(const Shape& s) {
 }
 
 Real distance_to(const Shape& s, const Point& p) {
-  if (const auto* c = std::get_if<Circle>(&s)) return point_circle(*c, p);
-  if (const auto* e = std::get_if<Ellipse>(&s)) return point_ellipse(*e, p);
-  return point_rect(std::get<Rect>(s), p);
-}
-
-Real distance_to(const AnyShape& s, const Point& p) {
   if (const auto* c = std::get_if<Capsule>(&s)) {
     const Frame f = frame_of(c->center, c->angle);
     const Point q = to_local(f, p);
@@ -512,7 +506,7 @@ struct Dual {
   R dx, dy;
   Side a, b;
 
-  static Side side_of(const AnyShape& shape, const R& c, const R& s) {
+  static Side side_of(const Shape& shape, const R& c, const R& s) {
     if (const auto* x = std::get_if<Circle>(&shape)) return {0, c, s, R(x->radius), R(x->radius), {}};
     if (const auto* x = std::get_if<Ellipse>(&shape)) return {1, c, s, R(x->a), R(x->b), {}};
     if (const auto* x = std::get_if<Capsule>(&shape)) return {3, c, s, R(x->half_length), R(x->radius), {}};
@@ -546,25 +540,11 @@ struct Dual {
   }
 };
 
-Vec2 center_of_any(const AnyShape& s) {
-  return std::visit([](const auto& x) { return Vec2(x.center); }, s);
-}
-double angle_of_any(const AnyShape& s) {
-  return std::visit(
-      [](const auto& x) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
-          return 0.0;
-        } else {
-          return x.angle;
-        }
-      },
-      s);
-}
 // The directions where s has kinks or turns fast, in the world: the shape's axes, a polygon's face
 // normals.
-std::vector<double> axes_of(const AnyShape& s) {
+std::vector<double> axes_of(const Shape& s) {
   std::vector<double> out;
-  const double phi = angle_of_any(s);
+  const double phi = angle_of(s);
   if (const auto* p = std::get_if<ConvexPolygon>(&s)) {
     for (std::size_t i = 0; i < p->vertices().size(); ++i) {
       const Vec2 e = p->vertices()[(i + 1) % p->vertices().size()] - p->vertices()[i];
@@ -598,14 +578,9 @@ R golden_maximum(const F& f, R lo, R hi, const R& width) {
 }  // namespace
 
 SignedDistance signed_distance(const Shape& a, const Shape& b) {
-  return signed_distance(std::visit([](const auto& x) { return AnyShape(x); }, a),
-                         std::visit([](const auto& x) { return AnyShape(x); }, b));
-}
-
-SignedDistance signed_distance(const AnyShape& a, const AnyShape& b) {
-  const double angle_a = angle_of_any(a), angle_b = angle_of_any(b);
-  const Point ca = to_mp(center_of_any(a)), cb = to_mp(center_of_any(b));
-  const Frame fa = frame_of(center_of_any(a), angle_a), fb = frame_of(center_of_any(b), angle_b);
+  const double angle_a = angle_of(a), angle_b = angle_of(b);
+  const Point ca = to_mp(center_of(a)), cb = to_mp(center_of(b));
+  const Frame fa = frame_of(center_of(a), angle_a), fb = frame_of(center_of(b), angle_b);
   const Dual<Real> exact{cb.x - ca.x, cb.y - ca.y, Dual<Real>::side_of(a, fa.c, fa.s),
                          Dual<Real>::side_of(b, fb.c, fb.s)};
   const Dual<double> rough{static_cast<double>(exact.dx), static_cast<double>(exact.dy),

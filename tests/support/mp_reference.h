@@ -23,8 +23,6 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include <variant>
-
 namespace collide2d::reference {
 
 using Real = boost::multiprecision::cpp_bin_float_50;
@@ -36,7 +34,8 @@ struct Point {
 
 Point to_mp(const Vec2& p);
 
-// Distance from p to the solid shape (0 inside).
+// Distance from p to the solid shape (0 inside): for a capsule or a polygon, the nearest of its
+// core's edges, less its radius.
 Real distance_to(const Shape& s, const Point& p);
 
 // The exact axis-aligned box of a shape (its support function along the axes, in 50 digits),
@@ -75,10 +74,5 @@ struct SignedDistance {
   Real curvature;
 };
 SignedDistance signed_distance(const Shape& a, const Shape& b);
-// Any two shapes, capsules and convex polygons too (the World's Shape does not hold them yet).
-using AnyShape = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon>;
-SignedDistance signed_distance(const AnyShape& a, const AnyShape& b);
-// Distance from p to any solid shape (0 inside).
-Real distance_to(const AnyShape& s, const Point& p);
 
 }  // namespace collide2d::reference

@@ -1,7 +1,11 @@
 // Convex polygons and capsules as shapes: what their makers refuse and why, hulls whose answer is
 // known by construction, areas and centroids against closed forms and a dense outline traced
 // independently, and support points, containment and boxes against points sampled on the outline.
+#include <collide2d/query.h>
+#include <collide2d/ray_cast.h>
 #include <collide2d/shapes.h>
+#include <collide2d/time_of_impact.h>
+#include <collide2d/world.h>
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -366,6 +370,123 @@ TYPED_TEST(CurvedOutline, AabbIsTight) {
     EXPECT_NEAR(support(s, Vec2(0, 1)).y(), box.max.y(), 1e-14 * (size + s.center.norm()));
     EXPECT_NEAR(support(s, Vec2(0, -1)).y(), box.min.y(), 1e-14 * (size + s.center.norm()));
   }
+}
+
+// Every query of query.h on the pairs with a polygon or a capsule: the same result bit for bit with
+// the pair swapped (features renamed, normal reversed), the distance 0 exactly when they overlap,
+// the contact's separation the distance when apart.
+TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<Vec2> kite = {{-1, -0.5}, {3, -0.25}, {2.5, 1.5}, {0.25, 2}, {-0.75, 1}};
+  const auto random_shape = [&](int kind) -> Shape {
+    const Vec2 c(4 * unit(rng) - 2, 4 * unit(rng) - 2);
+    const double angle = 7 * unit(rng);
+    switch (kind) {
+      case 0:
+        return Rect{c, Vec2(0.5 + unit(rng), 0.2 + unit(rng)), angle};
+      case 1:
+        return Circle{c, 0.3 + unit(rng)};
+      case 2:
+        return Ellipse{c, 0.3 + 2 * unit(rng), 0.2 + unit(rng), angle};
+      case 3:
+        return Capsule{c, 0.2 + unit(rng), 0.1 + unit(rng), angle};
+      default:
+        return ConvexPolygon::of(kite, kind == 4 ? 0.0 : 0.2).at(c, angle);
+    }
+  };
+  int apart = 0, overlapping = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const int ka = 3 + k % 3, kb = (k / 3) % 6;
+    const Shape a = random_shape(ka), b = random_shape(kb);
+    const bool hit = overlaps(a, b);
+    EXPECT_EQ(hit, overlaps(b, a));
+    const DistanceResult d = distance(a, b), back = distance(b, a);
+    EXPECT_EQ(d.distance, back.distance);
+    EXPECT_EQ(d.point_a, back.point_b);
+    EXPECT_EQ(d.overlapping, hit);
+    EXPECT_EQ(d.distance == 0, hit);
+    const Contact c = contact(a, b), r = contact(b, a);
+    EXPECT_EQ(c.separation, r.separation);
+    EXPECT_EQ(c.normal, Vec2(-r.normal));
+    EXPECT_EQ(c.manifold[0].id, swapped_feature(r.manifold[0].id));
+    if (!hit) EXPECT_NEAR(c.separation, d.distance, 1e-14);
+    if (hit) EXPECT_LE(c.separation, 1e-14);
+    (hit ? overlapping : apart)++;
+    EXPECT_THROW(boundary_distance(a, b), UnsupportedPair);
+  }
+  EXPECT_GT(apart, 500);
+  EXPECT_GT(overlapping, 500);
+}
+
+TEST(PolygonCapsuleQueries, RayCasts) {
+  const Vec2 right(1, 0);
+  // A unit square's left face at x = -1: from x = -3 the ray enters at 2, normal -x.
+  const auto square = ray_cast(ConvexPolygon::box(1, 1), Vec2(-3, 0.5), right, 10);
+  ASSERT_TRUE(square);
+  EXPECT_EQ(square->distance, 2.0);
+  EXPECT_EQ(square->normal, Vec2(-1, 0));
+  // Rounded by 0.5, the face moves out to -1.5; along y = 1.25 the ray meets the corner's arc,
+  // centred on (-1, 1): x = -1 - sqrt(0.25 - 0.0625).
+  const ConvexPolygon rounded = ConvexPolygon::box(1, 1, 0.5);
+  EXPECT_EQ(ray_cast(rounded, Vec2(-3, 0.5), right, 10)->distance, 1.5);
+  const auto arc = ray_cast(rounded, Vec2(-3, 1.25), right, 10);
+  ASSERT_TRUE(arc);
+  EXPECT_NEAR(arc->distance, 2 - std::sqrt(0.1875), 1e-15);
+  EXPECT_NEAR(arc->normal.x(), -std::sqrt(0.1875) / 0.5, 1e-15);
+  // A capsule along x, half length 2, radius 1: end on, the ray meets the cap at x = 3.
+  const Capsule capsule{Vec2(0, 0), 2.0, 1.0, 0.0};
+  EXPECT_EQ(ray_cast(capsule, Vec2(10, 0), Vec2(-1, 0), 20)->distance, 7.0);
+  EXPECT_EQ(ray_cast(capsule, Vec2(0.5, 5), Vec2(0, -1), 20)->distance, 4.0);
+  EXPECT_FALSE(ray_cast(capsule, Vec2(0.5, 5), Vec2(0, -1), 3.5));
+  EXPECT_FALSE(ray_cast(capsule, Vec2(10, 1.5), Vec2(-1, 0), 20));
+  EXPECT_EQ(ray_cast(capsule, Vec2(0, 0), right, 1)->distance, 0.0);  // starts inside
+  // A triangle seen along its face: missed beside it, hit through its vertex.
+  const ConvexPolygon triangle = ConvexPolygon::of(std::vector<Vec2>{{0, 0}, {2, 0}, {0, 2}});
+  EXPECT_FALSE(ray_cast(triangle, Vec2(-1, -0.5), right, 10));
+  EXPECT_EQ(ray_cast(triangle, Vec2(-1, 1), right, 10)->distance, 1.0);
+}
+
+// A capsule sliding, then also turning, into a box: the translation's exact time, and a turning step
+// that stops at contact, never beyond.
+TEST(PolygonCapsuleQueries, TimeOfImpact) {
+  const Shape box = ConvexPolygon::box(1, 1);
+  const Shape capsule = Capsule{Vec2(-5, 0), 1.0, 0.5, 0.0};
+  const TimeOfImpact slide = time_of_impact(capsule, {Vec2(5, 0), 0.0}, box, {});
+  ASSERT_EQ(slide.status, ToiStatus::hit);
+  EXPECT_NEAR(slide.t, 2.5 / 5, 1e-9);
+  for (const double spin : {1.0, 3.0, -6.0}) {
+    const TimeOfImpact turn = time_of_impact(capsule, {Vec2(5, 0), spin}, box, {Vec2(0, 0), -spin / 2});
+    ASSERT_EQ(turn.status, ToiStatus::hit) << spin;
+    const Contact at =
+        contact(at_time(capsule, {Vec2(5, 0), spin}, turn.t), at_time(box, {Vec2(0, 0), -spin / 2}, turn.t));
+    EXPECT_GT(at.separation, 0.0) << spin;
+    EXPECT_LE(at.separation, 1e-9 * 4) << spin;
+  }
+}
+
+// Polygons and capsules in a World: their pairs found, their contacts made, their rays and shape
+// queries answered.
+TEST(PolygonCapsuleQueries, InAWorld) {
+  World world({.contacts = true, .threads = 1});
+  const BodyId floor = world.add(Capsule{Vec2(0, 0), 5.0, 0.5, 0.0}, {.is_static = true});
+  const BodyId crate = world.add(ConvexPolygon::box(0.5, 0.5).at(Vec2(1, 0.99)));
+  const BodyId wedge = world.add(ConvexPolygon::regular(3, 0.5).at(Vec2(-3, 3)));
+  world.update();
+  ASSERT_EQ(world.overlapping().size(), 1u);
+  EXPECT_EQ(world.overlapping()[0].a == floor ? world.overlapping()[0].b : world.overlapping()[0].a, crate);
+  ASSERT_EQ(world.contacts().size(), 1u);
+  EXPECT_NEAR(std::abs(world.contacts()[0].contact.separation), 0.01, 1e-12);
+  EXPECT_EQ(world.contacts()[0].contact.manifold_size, 2);
+  const auto ray = world.ray_cast(Vec2(-3, 10), Vec2(0, -1), 20);
+  ASSERT_TRUE(ray);
+  EXPECT_EQ(ray->body, wedge);
+  std::vector<BodyId> found;
+  world.overlapping(Shape(Capsule{Vec2(1, 2), 0.5, 0.6, 1.5}), [&](const BodyShape& s) {
+    found.push_back(s.body);
+    return true;
+  });
+  EXPECT_EQ(found, std::vector<BodyId>{crate});
 }
 
 }  // namespace

@@ -21,9 +21,13 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
                           .shapes = {Ellipse{Vec2(0, 0), 2, 0.5, 0.0}, Rect{Vec2(0, 1), Vec2(0.3, 0.8), 0.2}},
                           .velocity = Vec2(1, 2),
                           .id = 999});
+  scene.bodies.push_back(
+      {.pose = {Vec2(10, 30), 0.1},
+       .shapes = {Capsule{Vec2(0, 0), 1.5, 0.25, 0.0}, ConvexPolygon::regular(5, 0.7, 0.1).at(Vec2(0, 1), 0.3)},
+       .id = 1000});
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
-  EXPECT_EQ(back.bodies.size(), 60u + level(60) + 1u);  // and the ship
+  EXPECT_EQ(back.bodies.size(), 60u + level(60) + 2u);  // and the ship and the lamp
   // One bullet per 500 bodies, continuous, and read back so.
   const Scene big = default_scene(1000, 10, 3);
   ASSERT_EQ(big.bodies.size(), 1002u + level(1000));
@@ -128,6 +132,14 @@ TEST(Scene, BrokenFilesNameTheField) {
       {with_body(R"({"shape": "rect", "center": [1, 1], "half_extents": [1, -3]})"),
        "bodies[0].half_extents[1]: must be positive"},
       {with_body(R"({"shape": "blob", "center": [1, 1]})"), "bodies[0].shape: unknown shape 'blob'"},
+      {with_body(R"({"shape": "capsule", "center": [1, 1], "half_length": 0, "radius": 1})"),
+       "bodies[0].half_length: must be positive (got 0)"},
+      {with_body(R"({"shape": "capsule", "center": [1, 1], "half_length": 1, "radius": 1, "a": 2})"),
+       "bodies[0]: a capsule has no field 'a' (its own are half_length, radius and angle)"},
+      {with_body(R"({"shape": "polygon", "center": [1, 1], "vertices": [[0, 0], [0, 1], [1, 0]]})"),
+       "bodies[0]: polygon vertex 2 lies right of the edge from vertex 0 to 1"},
+      {with_body(R"({"shape": "polygon", "center": [1, 1], "vertices": [[0, 0], [1]]})"),
+       "bodies[0].vertices[1]: expected an array of 2 numbers"},
       {with_body(R"({"center": [1, 1], "radius": 1})"), "bodies[0].shape: missing"},
       {with_body(R"({"shape": "circle", "center": [1, 1, 1], "radius": 1})"),
        "bodies[0].center: expected an array of 2 numbers"},

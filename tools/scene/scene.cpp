@@ -74,9 +74,12 @@ struct ShapeFields {
   std::initializer_list<const char*> fields;
   const char* listed;  // for the message
 };
-constexpr ShapeFields kShapeFields[] = {{"circle", {"radius"}, "radius"},
-                                        {"ellipse", {"a", "b", "angle"}, "a, b and angle"},
-                                        {"rect", {"half_extents", "angle"}, "half_extents and angle"}};
+constexpr ShapeFields kShapeFields[] = {
+    {"circle", {"radius"}, "radius"},
+    {"ellipse", {"a", "b", "angle"}, "a, b and angle"},
+    {"rect", {"half_extents", "angle"}, "half_extents and angle"},
+    {"capsule", {"half_length", "radius", "angle"}, "half_length, radius and angle"},
+    {"polygon", {"vertices", "radius", "angle"}, "vertices, radius and angle"}};
 
 bool listed(std::initializer_list<const char*> names, const std::string& key) {
   return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
@@ -98,6 +101,20 @@ void reject_unknown_fields(const json& b, const std::string& kind, const std::st
       fail(field, article + kind + " has no field '" + key + "' (its own are " + own->listed + ")");
     }
     fail(field, "unknown field '" + key + "'");
+  }
+}
+
+// A polygon's vertices, counter-clockwise about its centre, as given (ConvexPolygon::of checks them).
+Shape parse_polygon(const json& b, const std::string& field, const Vec2& center, double angle) {
+  const json& list = member(b, "vertices", field);
+  if (!list.is_array()) fail(field + ".vertices", "expected an array of [x, y] points, got " + list.dump());
+  std::vector<Vec2> vertices;
+  for (std::size_t k = 0; k < list.size(); ++k)
+    vertices.push_back(vec2(list[k], field + ".vertices[" + std::to_string(k) + "]"));
+  try {
+    return ConvexPolygon::of(vertices, optional_number(b, "radius", field, 0.0)).at(center, angle);
+  } catch (const InvalidShape& e) {
+    fail(field, e.what());
   }
 }
 
@@ -127,7 +144,15 @@ Shape parse_shape(const json& b, const std::string& field, std::initializer_list
     require_positive(half.y(), field + ".half_extents[1]");
     return Rect{center, half, angle};
   }
-  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse or rect)");
+  if (kind == "capsule") {
+    const double h = number(member(b, "half_length", field), field + ".half_length");
+    const double r = number(member(b, "radius", field), field + ".radius");
+    require_positive(h, field + ".half_length");
+    require_positive(r, field + ".radius");
+    return Capsule{center, h, r, angle};
+  }
+  if (kind == "polygon") return parse_polygon(b, field, center, angle);
+  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule or polygon)");
 }
 
 // A shape the library takes: the ranges it supports.
@@ -221,9 +246,20 @@ json shape_json(const Shape& s) {
           j["a"] = x.a;
           j["b"] = x.b;
           j["angle"] = x.angle;
-        } else {
+        } else if constexpr (std::is_same_v<T, Rect>) {
           j["shape"] = "rect";
           j["half_extents"] = {x.half_extents.x(), x.half_extents.y()};
+          j["angle"] = x.angle;
+        } else if constexpr (std::is_same_v<T, Capsule>) {
+          j["shape"] = "capsule";
+          j["half_length"] = x.half_length;
+          j["radius"] = x.radius;
+          j["angle"] = x.angle;
+        } else {
+          j["shape"] = "polygon";
+          j["vertices"] = json::array();
+          for (const Vec2& v : x.vertices()) j["vertices"].push_back({v.x(), v.y()});
+          j["radius"] = x.radius();
           j["angle"] = x.angle;
         }
         return j;
@@ -242,6 +278,13 @@ bool same_shape(const Shape& a, const Shape& b) {
           return x.center == y.center && x.a == y.a && x.b == y.b && x.angle == y.angle;
         if constexpr (std::is_same_v<T, Rect>)
           return x.center == y.center && x.half_extents == y.half_extents && x.angle == y.angle;
+        if constexpr (std::is_same_v<T, Capsule>) {
+          return x.center == y.center && x.half_length == y.half_length && x.radius == y.radius && x.angle == y.angle;
+        }
+        if constexpr (std::is_same_v<T, ConvexPolygon>) {
+          return x.center == y.center && x.angle == y.angle && x.radius() == y.radius() &&
+                 std::equal(x.vertices().begin(), x.vertices().end(), y.vertices().begin(), y.vertices().end());
+        }
       },
       a);
 }
