@@ -5,7 +5,8 @@
 // b2CollidePolygonAndCircle, b2CollideCircles. Box2D is built here with polygons of up to 16
 // vertices (its default cap is 8). Its shapes are built beforehand (not timed), with radius 0, so
 // its manifold is empty for pairs apart; ours carries their exact distance, and the `_limited`
-// runs (max_separation 0) are empty there too.
+// runs (max_separation 0) are empty there too. Convex 8-gons (bench/workload.h's) against 8-gons,
+// circles and ellipses' 8-gons, on workloads 0, 1 and 3 (the scene has no polygons).
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 
@@ -65,6 +66,16 @@ void ours_oriented(benchmark::State& state) {
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   const ContactOptions options{.max_separation = limited ? 0.0 : HUGE_VAL};
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], oa[k], w.b[k], ob[k], options); });
+}
+
+// Pairs with a polygon through kernels.h's contact on Shape with kept orientations (the World's
+// call): no typed kernel of their own.
+template <class A, class B>
+void ours_shape(benchmark::State& state) {
+  const auto& w = bench::pairs<A, B>(state);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
+  std::vector<Shape> sa(w.a.begin(), w.a.end()), sb(w.b.begin(), w.b.end());
+  bench::time_queries(state, [&](std::size_t k) { return contact(sa[k], oa[k], sb[k], ob[k]); });
 }
 
 // The batched circle–ellipse contact (orientations kept) on the whole workload per iteration.
@@ -158,6 +169,19 @@ BENCHMARK(box2d_batch<Circle, Ellipse, 8>)
 BENCHMARK(box2d_batch<Circle, Ellipse, 16>)
     ->Name("box2d_batch_contact/circle_ellipse_16gon")
     ->Apply(bench::contact_workloads);
+
+BENCHMARK(ours_shape<ConvexPolygon, ConvexPolygon>)->Name("ours/polygon_polygon")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<ConvexPolygon, ConvexPolygon>)
+    ->Name("box2d_collide_polygons/polygon_polygon_8gons")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<ConvexPolygon, Circle>)->Name("ours/polygon_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<ConvexPolygon, Circle>)
+    ->Name("box2d_collide_polygon_and_circle/polygon_circle")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<ConvexPolygon, Ellipse>)->Name("ours/polygon_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<ConvexPolygon, Ellipse>)
+    ->Name("box2d_collide_polygons/polygon_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
 
 }  // namespace
 }  // namespace collide2d

@@ -182,6 +182,20 @@ BENCHMARK(box2d_overlap<Circle, Ellipse>)->Name("box2d_overlap/circle_ellipse_8g
 BENCHMARK(box2d_batch_overlap<Circle, Ellipse>)
     ->Name("box2d_batch_overlap/circle_ellipse_8gon")
     ->Apply(bench::workloads);
+BENCHMARK(posed_overlap<ConvexPolygon, ConvexPolygon>)
+    ->Name("posed_overlap/polygon_polygon")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<ConvexPolygon, ConvexPolygon>)
+    ->Name("box2d_overlap/polygon_polygon_8gons")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(posed_overlap<ConvexPolygon, Circle>)->Name("posed_overlap/polygon_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<ConvexPolygon, Circle>)->Name("box2d_overlap/polygon_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(posed_overlap<ConvexPolygon, Ellipse>)
+    ->Name("posed_overlap/polygon_ellipse")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<ConvexPolygon, Ellipse>)
+    ->Name("box2d_overlap/polygon_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {

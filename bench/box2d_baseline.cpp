@@ -45,6 +45,12 @@ Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
   if (const auto* e = std::get_if<Ellipse>(&shape)) return ellipse_polygon(*e, sides, fit, origin);
   if (const auto* c = std::get_if<Circle>(&shape))
     return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
+  if (const auto* q = std::get_if<ConvexPolygon>(&shape)) {
+    if (q->radius() != 0.0) throw std::invalid_argument("Box2D 2.4.1 has no rounded polygons");
+    Polygon p;
+    for (const Vec2& v : q->vertices()) p.vertices.push_back(to_float(q->center - origin + rotate(q->angle, v)));
+    return p;
+  }
   const auto& r = std::get<Rect>(shape);
   Polygon p;
   for (const Vec2& corner : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {

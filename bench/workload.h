@@ -7,7 +7,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -66,6 +68,17 @@ struct Generator {
     e = Ellipse{center(), a, a / std::pow(aspect, uniform(0, 1)), uniform(0, 6.3)};
   }
   void make(Circle& c) { c = Circle{center(), size()}; }
+  // A convex 8-gon: vertices on an ellipse of aspect up to 2, each within a sixteenth of a turn of
+  // its regular place.
+  void make(ConvexPolygon& p) {
+    const double a = size(), b = a / uniform(1, 2);
+    std::array<Vec2, 8> v;
+    for (int k = 0; k < 8; ++k) {
+      const double t = (k + uniform(-0.25, 0.25)) * std::numbers::pi / 4;
+      v[k] = Vec2(a * std::cos(t), b * std::sin(t));
+    }
+    p = ConvexPolygon::of(v).at(center(), uniform(0, 6.3));
+  }
 };
 
 template <class A, class B>
@@ -155,5 +168,8 @@ inline void contact_workloads(benchmark::internal::Benchmark* b) {
   workloads(b);
   b->Arg(3)->Arg(4);
 }
+// The built-in scene has no polygons: pairs with one run on the random pairs (0), the generator's
+// candidates (1) and the overlapping ones among them (3).
+inline void polygon_workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1)->Arg(3); }
 
 }  // namespace collide2d::bench

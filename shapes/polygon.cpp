@@ -52,14 +52,24 @@ double extent(std::span<const Vec2> points) {
 }
 
 // Each vertex strictly left of every edge it is not on: the vertices run counter-clockwise around a
-// strictly convex polygon (a star whose turns are all left has a vertex right of some edge).
+// strictly convex polygon (a star whose turns are all left has a vertex right of some edge). Each
+// edge, and each vertex's height over every other edge, is a size: at least 1e-50, which also keeps
+// the orientation test's products clear of underflow, where its error bound would not hold.
 void require_convex(std::span<const Vec2> v) {
   const std::size_t n = v.size();
   for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t next = (i + 1) % n;
+    const double length = (v[next] - v[i]).norm();
+    if (!(length >= kMinSize)) {
+      refuse("edge from vertex " + std::to_string(i) + " to " + std::to_string(next) + " is shorter than 1e-50");
+    }
     for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t next = (i + 1) % n;
       if (j == i || j == next) continue;
       const int side = turn(v[i], v[next], v[j]);
+      if (side > 0 && cross(v[next] - v[i], v[j] - v[i]) / length < kMinSize) {
+        refuse("vertex " + std::to_string(j) + " lies within 1e-50 of the line of the edge from vertex " +
+               std::to_string(i) + " to " + std::to_string(next) + ": thinner than the supported range");
+      }
       if (side > 0) continue;
       const std::string where = "vertex " + std::to_string(j) + " lies " + (side < 0 ? "right of" : "on the line of") +
                                 " the edge from vertex " + std::to_string(i) + " to " + std::to_string(next);

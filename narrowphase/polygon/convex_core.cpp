@@ -92,7 +92,8 @@ void vertex_edge(const Core& from, const Core& to, bool from_is_a, Closest& best
     for (int i = 0; i < edges(to); ++i) {
       const Vec2 &a = to.v[i], &b = to.v[to.next(i)];
       const Vec2 e = b - a;
-      const double t = std::clamp((w - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const double length = e.squaredNorm();  // 0 where rounding has collapsed an edge far from the origin
+      const double t = length > 0.0 ? std::clamp((w - a).dot(e) / length, 0.0, 1.0) : 0.0;
       const Vec2 q = t == 0.0 ? a : t == 1.0 ? b : Vec2(a + t * e);
       const double d = (w - q).squaredNorm();
       if (!(d < best.squared)) continue;
@@ -239,25 +240,34 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
   return out;
 }
 
-// The contact on face i of x, y's separation along it s, from the axes. Apart, s is the distance
-// where y's deepest vertex lies over the face. Where it does not, the vertex–edge search gives the
+// The contact on the axis' face i of x, y's separation along it s. Apart, s is the distance where
+// the axis' witness, y's deepest vertex, lies over the face (the witness itself: of a sliver's
+// nearly parallel faces, the incident face the clip takes may not hold it). Where it does not, the
+// vertex–edge search gives the
 // distance; the face stays the reference if its clipped incident face comes that near (parallel
 // faces, whose ids then hold whichever side of touching the pair is), else the nearest features
 // make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest clipped
 // point stands in for it as the main point, so that both points lie on their shapes (the
 // separation stays s).
-Contact face_contact(const CorePair& p, bool x_is_a, int i, double s, const ContactOptions& options) {
+Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+  const int i = axis.face;
+  const double s = axis.s;
   const FaceClip c = clip_face(x, i, y);
-  const bool deep_kept =
-      std::any_of(c.kept.begin(), c.kept.begin() + c.count, [&](const Clipped& k) { return k.id == c.deep.id; });
-  if (s > 0 && !deep_kept) {
+  if (s > 0) {
+    const Vec2& w = y.v[axis.vertex];
+    const Vec2 t = along(x.n[i]);
+    const double at = t.dot(w - x.v[i]);
+    if (at >= 0.0 && at <= t.dot(x.v[x.next(i)] - x.v[i]))
+      return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
     const Closest near = nearest_features(p);
     const double distance = std::sqrt(near.squared);
     const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
     if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);
     return on_face(p, x_is_a, i, distance, c.kept[0], c, options);
   }
+  const bool deep_kept =
+      std::any_of(c.kept.begin(), c.kept.begin() + c.count, [&](const Clipped& k) { return k.id == c.deep.id; });
   return on_face(p, x_is_a, i, s, deep_kept || c.count == 0 ? c.deep : c.kept[0], c, options);
 }
 
@@ -294,10 +304,10 @@ Contact contact_of(const CorePair& p, const Axes& axes, const ContactOptions& op
     if (best.s > 0) return nearest_contact(p, nearest_features(p), options);
     return end_contact(p, !b_best, best);
   }
-  Contact out = face_contact(p, !b_best, best.face, best.s, options);
+  Contact out = face_contact(p, !b_best, best, options);
   const bool tie = b_best && axes.of_a.face >= 0 && axes.of_b.s - axes.of_a.s <= 1e-9 * (p.a.reach + p.b.reach);
   if (!tie || feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) return out;
-  const Contact kept = face_contact(p, true, axes.of_a.face, axes.of_a.s, options);
+  const Contact kept = face_contact(p, true, axes.of_a, options);
   if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
   out.manifold = kept.manifold;
   out.manifold_size = kept.manifold_size;
@@ -311,6 +321,7 @@ Vec2 segments_common_point(const Core& x, const Core& y) {
   const double turn = cross(ey, ex);
   if (turn != 0.0) return y.v[0] + (cross(x.v[0] - y.v[0], ex) / turn) * ey;
   const double length = ex.squaredNorm();
+  if (length == 0.0) return x.v[0];  // collapsed by rounding, far from the origin
   const auto at = [&](const Vec2& q) { return std::clamp((q - x.v[0]).dot(ex) / length, 0.0, 1.0); };
   return x.v[0] + ((at(y.v[0]) + at(y.v[1])) / 2) * ex;
 }
@@ -404,29 +415,40 @@ double CorePair::scale() const {
   return 2 * reach + a.radius + b.radius;
 }
 
-bool core_overlap(const CorePair& p) {
-  const Axes axes = axes_of(p);
+namespace {
+
+// Whether the solids overlap, from the cores' axes and, where those leave it open, their gap (into
+// `c`): the one verdict of the overlap test and the distance, so that they agree to the bit.
+bool overlapping(const CorePair& p, const Axes& axes, Closest& c) {
   const double s = axes.s();
   if (s <= 0.0) return true;
   if (s > radii(p)) return false;
-  return gap(p, axes).squared <= radii(p) * radii(p);
+  c = gap(p, axes);
+  return c.squared <= radii(p) * radii(p);
+}
+
+}  // namespace
+
+bool core_overlap(const CorePair& p) {
+  Closest c;
+  return overlapping(p, axes_of(p), c);
 }
 
 DistanceResult core_distance(const CorePair& p) {
   const Axes axes = axes_of(p);
-  if (axes.s() <= 0.0) {
-    const Vec2 w = p.a.count >= p.b.count ? common_point(p.a, p.b, touching_point(p, axes))
-                                          : common_point(p.b, p.a, touching_point(p, axes));
-    return DistanceResult::touching(p.world_point(w));
-  }
-  const Closest c = gap(p, axes);
-  const LengthAndDirection d = length_and_direction(Vec2(c.on_b - c.on_a));
-  const double distance = d.length - radii(p);
-  if (distance <= 0.0) {
+  Closest c;
+  if (overlapping(p, axes, c)) {
+    if (axes.s() <= 0.0) {
+      const Vec2 w = p.a.count >= p.b.count ? common_point(p.a, p.b, touching_point(p, axes))
+                                            : common_point(p.b, p.a, touching_point(p, axes));
+      return DistanceResult::touching(p.world_point(w));
+    }
     const double t = radii(p) > 0.0 ? p.a.radius / radii(p) : 0.5;
     return DistanceResult::touching(p.world_point(Vec2(c.on_a + t * (c.on_b - c.on_a))));
   }
-  return DistanceResult::apart(distance, p.world_point(Vec2(c.on_a + p.a.radius * d.direction)),
+  if (c.squared == kInf) c = gap(p, axes);
+  const LengthAndDirection d = length_and_direction(Vec2(c.on_b - c.on_a));
+  return DistanceResult::apart(d.length - radii(p), p.world_point(Vec2(c.on_a + p.a.radius * d.direction)),
                                p.world_point(Vec2(c.on_b - p.b.radius * d.direction)));
 }
 

@@ -74,10 +74,13 @@ Peak deepest(const CoreEllipse& p, int& roots) {
 
 // The point of A's core least in the ellipse's quadratic (x/a)^2 + (y/b)^2, and that value: in
 // the frame scaled to make the ellipse the unit disc, the core's point nearest the origin (a convex
-// polygon there too); 0 where the core holds the centre.
+// polygon there too); 0 where the core holds the centre strictly inside (on an edge, that edge's
+// nearest point says so; and a core that rounding has collapsed, far from the ellipse, holds
+// nothing).
 struct Least {
   Vec2 point = Vec2::Zero();
   double q = kInf;
+  double bound = 0.0;  // of q's rounding: 16 u of the largest squared scaled vertex
 };
 Least least_quadratic(const CoreEllipse& p) {
   const Core& c = p.core;
@@ -88,14 +91,17 @@ Least least_quadratic(const CoreEllipse& p) {
   for (int i = 0; i < edges; ++i) {
     const Vec2 w0 = scaled(c.v[i]), w1 = scaled(c.v[(i + 1) % c.count]);
     const Vec2 e = w1 - w0;
-    holds = holds && cross(e, Vec2(-w0)) >= 0.0;
-    const double t = std::clamp(-w0.dot(e) / e.squaredNorm(), 0.0, 1.0);
+    holds = holds && cross(e, Vec2(-w0)) > 0.0;
+    const double length = e.squaredNorm();
+    const double t = length > 0.0 ? std::clamp(-w0.dot(e) / length, 0.0, 1.0) : 0.0;
     const Vec2 w = t == 1.0 ? w1 : Vec2(w0 + t * e);
     const double q = w.squaredNorm();
     if (q < out.q) out = {Vec2(w.x() * p.a, w.y() * p.b), q};
   }
   if (c.count == 1) out = {c.v[0], scaled(c.v[0]).squaredNorm()};
   if (holds) out = {Vec2::Zero(), 0.0};
+  for (int k = 0; k < c.count; ++k) out.bound = std::max(out.bound, scaled(c.v[k]).squaredNorm());
+  out.bound *= 8 * std::numeric_limits<double>::epsilon();
   return out;
 }
 
@@ -117,23 +123,40 @@ Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options
   });
 }
 
-// Overlapping where the core meets the ellipse (its least quadratic at most 1: that point is a
-// witness), or, for a rounded core, where the ellipse comes within the radius of it (the ellipse's
-// nearest point is a witness).
-bool core_ellipse_overlap(const CoreEllipse& p) {
-  if (least_quadratic(p).q <= 1.0) return true;
-  if (p.core.radius == 0.0) return false;
+namespace {
+
+// Overlapping where the core's least ellipse quadratic is below 1 by more than its rounding (that
+// point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
+// a long edge's nearest point, which the bound follows); else where the signed distance is within
+// the radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
+// nearest point within the radius of a rounded core). The one verdict of the overlap test and the
+// distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
+bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
+  if (least.q <= 1.0 - least.bound) return true;
   int roots = 0;
-  return deepest(p, roots).s <= p.core.radius;
+  d = deepest(p, roots);
+  return d.s <= p.core.radius;
+}
+
+}  // namespace
+
+bool core_ellipse_overlap(const CoreEllipse& p) {
+  Peak d;
+  return overlapping(p, least_quadratic(p), d);
 }
 
 DistanceResult core_ellipse_distance(const CoreEllipse& p) {
   const Least least = least_quadratic(p);
-  if (least.q <= 1.0) return DistanceResult::touching(p.world_point(least.point));
-  int roots = 0;
-  const Peak d = deepest(p, roots);
+  Peak d;
+  if (overlapping(p, least, d)) {
+    const Vec2& witness = d.s == -kInf ? least.point : d.s <= 0.0 ? d.on_a : d.on_e;
+    return DistanceResult::touching(p.world_point(witness));
+  }
+  if (d.s == -kInf) {
+    int roots = 0;
+    d = deepest(p, roots);
+  }
   const double r = p.core.radius;
-  if (d.s <= r) return DistanceResult::touching(p.world_point(d.on_e));
   return DistanceResult::apart(d.s - r, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));
 }
 

@@ -6,13 +6,18 @@
 #include <collide2d/shapes.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace collide2d::fuzz {
 
-enum class Kind { circle, ellipse, rect, any };
+// `any`: a circle, an ellipse or a rectangle, as the bytes choose (the corpora were written so);
+// `flat`: a capsule or a polygon; `all`: any of the five.
+enum class Kind { circle, ellipse, rect, any, capsule, polygon, flat, all };
 
 class Input {
  public:
@@ -41,6 +46,13 @@ class Input {
   // Each read in its own statement: the order of evaluation of function arguments differs between
   // compilers, and a crash found with clang must decode the same with g++.
   Shape shape(Kind wanted = Kind::any) {
+    if (wanted == Kind::flat || wanted == Kind::all) {
+      const int chosen = byte() % (wanted == Kind::flat ? 2 : 5);
+      constexpr Kind kinds[] = {Kind::capsule, Kind::polygon, Kind::circle, Kind::ellipse, Kind::rect};
+      return shape(kinds[chosen]);
+    }
+    if (wanted == Kind::capsule) return capsule();
+    if (wanted == Kind::polygon) return polygon();
     const double x = number();
     const double y = number();
     const int chosen = byte() % 3;
@@ -51,6 +63,33 @@ class Input {
     if (kind == 0) return Circle{Vec2(x, y), u};
     if (kind == 1) return Ellipse{Vec2(x, y), u, v, angle};
     return Rect{Vec2(x, y), Vec2(u, v), angle};
+  }
+  Capsule capsule() {
+    const Vec2 c = point();
+    const double h = size();
+    const double r = size();
+    return {c, h, r, number()};
+  }
+  // 3 to 8 vertices on an ellipse, each within a quarter step of its regular place (a convex polygon
+  // unless the numbers are extreme), rounded half the time; one that ConvexPolygon::of refuses has
+  // no outline, and validate() refuses it.
+  ConvexPolygon polygon() {
+    const Vec2 c = point();
+    const double angle = number();
+    const double a = size();
+    const double b = size();
+    const int n = 3 + byte() % 6;
+    std::array<Vec2, kMaxPolygonVertices> v;
+    for (int k = 0; k < n; ++k) {
+      const double t = (k + (static_cast<int>(byte()) - 128) / 512.0) * 6.283185307179586 / n;
+      v[k] = Vec2(a * std::cos(t), b * std::sin(t));
+    }
+    const double radius = byte() & 1 ? size() : 0.0;
+    try {
+      return ConvexPolygon::of(std::span<const Vec2>(v.data(), static_cast<std::size_t>(n)), radius).at(c, angle);
+    } catch (const InvalidShape&) {
+      return {c, angle, nullptr};
+    }
   }
   Vec2 point() {
     const double x = number();
