@@ -57,13 +57,15 @@ struct Axis {
   int vertex = 0;
 };
 
-Axis best_axis(const Core& x, const Core& y) {
+// The best axis, or the first beyond `stop`: past it, the caller needs no other (the overlap test,
+// whose pair is apart).
+Axis best_axis(const Core& x, const Core& y, double stop = kInf) {
   Axis best;
-  for (int i = 0; i < x.faces(); ++i) {
+  for (int i = 0; i < x.faces() && !(best.s > stop); ++i) {
     const Low low = lowest(y, x.n[i], x.v[i]);
     if (low.s > best.s) best = {low.s, i, 0, low.vertex};
   }
-  if (x.count == 2) {
+  if (x.count == 2 && !(best.s > stop)) {
     const Vec2 e = along(x.n[0]);
     for (const int k : {0, 1}) {
       const Low low = lowest(y, k == 1 ? e : Vec2(-e), x.v[k]);
@@ -119,7 +121,10 @@ struct Axes {
   bool b_best() const { return of_b.s > of_a.s; }
   const Axis& best() const { return b_best() ? of_b : of_a; }
 };
-Axes axes_of(const CorePair& p) { return {best_axis(p.a, p.b), best_axis(p.b, p.a)}; }
+Axes axes_of(const CorePair& p, double stop = kInf) {
+  const Axis of_a = best_axis(p.a, p.b, stop);
+  return {of_a, of_a.s > stop ? Axis{} : best_axis(p.b, p.a, stop)};
+}
 
 // The cores' distance and nearest points, apart: the best face's when its witness vertex lies over
 // the face, else the nearest of every vertex–edge pair.
@@ -431,7 +436,7 @@ bool overlapping(const CorePair& p, const Axes& axes, Closest& c) {
 
 bool core_overlap(const CorePair& p) {
   Closest c;
-  return overlapping(p, axes_of(p), c);
+  return overlapping(p, axes_of(p, radii(p)), c);
 }
 
 DistanceResult core_distance(const CorePair& p) {

@@ -129,10 +129,16 @@ namespace {
 // point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
 // a long edge's nearest point, which the bound follows); else where the signed distance is within
 // the radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
-// nearest point within the radius of a rounded core). The one verdict of the overlap test and the
-// distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
+// nearest point within the radius of a rounded core), unless a cheaper bound shows them apart. The one verdict of the
+// overlap test and the distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
 bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
   if (least.q <= 1.0 - least.bound) return true;
+  // Certainly apart: a sharp core beyond the quadratic's rounding, or a face normal's separation (a
+  // lower bound of the signed distance) beyond the radius.
+  if (p.core.radius == 0.0 && least.q > 1.0 + least.bound) return false;
+  for (int i = 0; i < p.core.faces(); ++i) {
+    if (face_peak(p, i).s > p.core.radius) return false;
+  }
   int roots = 0;
   d = deepest(p, roots);
   return d.s <= p.core.radius;
