@@ -370,6 +370,8 @@ void WorldState::set_proximity_margin(double margin) {
 
 // A shape at the origin with no angle of its own takes the pose as it is: a body of one shape is
 // then posed to the bit as that shape alone (adding a zero offset or angle could flip a zero's sign).
+Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
+
 Shape placed(const Shape& local, const Pose& pose, const Orientation& turn) {
   if (detail::at_origin(local)) return detail::posed(local, pose.position, pose.angle);
   const Vec2 offset = center_of(local);

@@ -306,8 +306,6 @@ inline Shape posed(Shape shape, const Vec2& center, double angle) {
 void require_finite(double value, const char* what);
 void require_margin(double value, const char* what);
 Aabb grown(const Aabb& box, double by);
-// The pose of a shape.
-inline Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
 // The box that holds every pose of a step from `start` to the shape `end` (continuous.cpp).
 Aabb swept(const Pose& start, const Shape& end);
 

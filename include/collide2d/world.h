@@ -290,6 +290,8 @@ struct Pose {
 /// added. `turn` is Orientation::of(pose.angle), computed once for all of a body's shapes. The World
 /// places its bodies' shapes so, to the bit.
 Shape placed(const Shape& local, const Pose& pose, const Orientation& turn);
+/// The pose of a shape's own centre and angle: the origin of the body add(shape) makes of it.
+Pose pose_of(const Shape& shape);
 
 /// Bodies, their pairs frame by frame, and queries on them.
 class World {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 
 namespace collide2d::detail {
@@ -126,6 +127,13 @@ Axes axes_of(const CorePair& p, double stop = kInf) {
   return {of_a, of_a.s > stop ? Axis{} : best_axis(p.b, p.a, stop)};
 }
 
+// Whether the point w lies over face i of x, between the face's side planes.
+bool over_face(const Core& x, int i, const Vec2& w) {
+  const Vec2 t = along(x.n[i]);
+  const double at = t.dot(w - x.v[i]);
+  return at >= 0.0 && at <= t.dot(x.v[x.next(i)] - x.v[i]);
+}
+
 // The cores' distance and nearest points, apart: the best face's when its witness vertex lies over
 // the face, else the nearest of every vertex–edge pair.
 Closest gap(const CorePair& p, const Axes& axes) {
@@ -133,11 +141,8 @@ Closest gap(const CorePair& p, const Axes& axes) {
   if (best.face >= 0) {
     const bool ref_a = !axes.b_best();
     const Core &x = ref_a ? p.a : p.b, &y = ref_a ? p.b : p.a;
-    const Vec2& v0 = x.v[best.face];
-    const Vec2 t = along(x.n[best.face]);
-    const double a = t.dot(y.v[best.vertex] - v0);
-    if (a >= 0.0 && a <= t.dot(x.v[x.next(best.face)] - v0)) {
-      const Vec2& w = y.v[best.vertex];
+    const Vec2& w = y.v[best.vertex];
+    if (over_face(x, best.face, w)) {
       const Vec2 q = w - best.s * x.n[best.face];
       return ref_a ? Closest{best.s * best.s, q, w, best.face, -1, 0, best.vertex}
                    : Closest{best.s * best.s, w, q, -1, best.face, best.vertex, 0};
@@ -248,12 +253,10 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
 // The contact on the axis' face i of x, y's separation along it s. Apart, s is the distance where
 // the axis' witness, y's deepest vertex, lies over the face (the witness itself: of a sliver's
 // nearly parallel faces, the incident face the clip takes may not hold it). Where it does not, the
-// vertex–edge search gives the
-// distance; the face stays the reference if its clipped incident face comes that near (parallel
-// faces, whose ids then hold whichever side of touching the pair is), else the nearest features
-// make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest clipped
-// point stands in for it as the main point, so that both points lie on their shapes (the
-// separation stays s).
+// vertex–edge search gives the distance; the face stays the reference if its clipped incident face
+// comes that near (parallel faces, whose ids then hold whichever side of touching the pair is),
+// else the nearest features make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest
+// clipped point stands in for it as the main point, so that both points lie on their shapes (the separation stays s).
 Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
   const int i = axis.face;
@@ -261,10 +264,7 @@ Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const Con
   const FaceClip c = clip_face(x, i, y);
   if (s > 0) {
     const Vec2& w = y.v[axis.vertex];
-    const Vec2 t = along(x.n[i]);
-    const double at = t.dot(w - x.v[i]);
-    if (at >= 0.0 && at <= t.dot(x.v[x.next(i)] - x.v[i]))
-      return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
+    if (over_face(x, i, w)) return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
     const Closest near = nearest_features(p);
     const double distance = std::sqrt(near.squared);
     const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
@@ -343,8 +343,8 @@ bool in_core(const Core& c, const Vec2& p) {
 // that lie in the other, a point of both by convexity; where none does (the cores cross), the mean
 // of y's core clipped to x's faces (Sutherland–Hodgman), whose points are edges' crossings (left
 // for last: two nearly parallel edges cross at a point that rounding slides along them); a point
-// core is its own witness. Where rounding clips all of y away (the cores touch), `fallback`.
-Vec2 common_point(const Core& x, const Core& y, const Vec2& fallback) {
+// core is its own witness. None where rounding clips all of y away (the cores touch).
+std::optional<Vec2> common_point(const Core& x, const Core& y) {
   if (y.count == 1) return y.v[0];
   if (x.count == 2) return segments_common_point(x, y);
   Vec2 sum = Vec2::Zero();
@@ -370,7 +370,7 @@ Vec2 common_point(const Core& x, const Core& y, const Vec2& fallback) {
     if (y.count == 2) out = std::min(out, 2);  // a segment, closed as a polygon, is cut twice at one point
     size = out, poly = next;
   }
-  if (size == 0) return fallback;
+  if (size == 0) return std::nullopt;
   for (int k = 0; k < size; ++k) sum += poly[k];
   return sum / size;
 }
@@ -444,9 +444,8 @@ DistanceResult core_distance(const CorePair& p) {
   Closest c;
   if (overlapping(p, axes, c)) {
     if (axes.s() <= 0.0) {
-      const Vec2 w = p.a.count >= p.b.count ? common_point(p.a, p.b, touching_point(p, axes))
-                                            : common_point(p.b, p.a, touching_point(p, axes));
-      return DistanceResult::touching(p.world_point(w));
+      const std::optional<Vec2> w = p.a.count >= p.b.count ? common_point(p.a, p.b) : common_point(p.b, p.a);
+      return DistanceResult::touching(p.world_point(w ? *w : touching_point(p, axes)));
     }
     const double t = radii(p) > 0.0 ? p.a.radius / radii(p) : 0.5;
     return DistanceResult::touching(p.world_point(Vec2(c.on_a + t * (c.on_b - c.on_a))));

@@ -61,13 +61,19 @@ void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
   }
 }
 
-// The global maximum of the separation of A's core and the ellipse, and the roots it took.
-Peak deepest(const CoreEllipse& p, int& roots) {
+// The largest face normal's separation, a lower bound of the signed distance.
+Peak best_face(const CoreEllipse& p) {
   Peak best;
   for (int i = 0; i < p.core.faces(); ++i) {
     const Peak f = face_peak(p, i);
     if (f.s > best.s) best = f;
   }
+  return best;
+}
+
+// The global maximum of the separation of A's core and the ellipse, from the best face's, and the
+// roots it took.
+Peak deepest(const CoreEllipse& p, Peak best, int& roots) {
   for (int k = 0; k < p.core.count; ++k) vertex_peaks(p, k, best, roots);
   return best;
 }
@@ -109,13 +115,12 @@ Least least_quadratic(const CoreEllipse& p) {
 
 Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options) {
   const double r = p.core.radius;
-  double faces = -kInf;  // each face normal's separation is a lower bound of the pair's
-  for (int i = 0; i < p.core.faces(); ++i) faces = std::max(faces, face_peak(p, i).s);
+  const Peak faces = best_face(p);
   const double scale = p.core.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
-  if (beyond_limit(faces - r, scale, options)) return Contact::beyond(faces - r);
+  if (beyond_limit(faces.s - r, scale, options)) return Contact::beyond(faces.s - r);
   return limited(options, [&] {
     int roots = 0;
-    const Peak d = deepest(p, roots);
+    const Peak d = deepest(p, faces, roots);
     const Vec2 u = p.world_direction(d.u);
     Contact c = Contact::of(d.s - r, u, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));
     c.evaluations = roots;
@@ -129,18 +134,18 @@ namespace {
 // point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
 // a long edge's nearest point, which the bound follows); else where the signed distance is within
 // the radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
-// nearest point within the radius of a rounded core), unless a cheaper bound shows them apart. The one verdict of the
-// overlap test and the distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
+// nearest point within the radius of a rounded core), unless a cheaper bound shows them apart. The
+// one verdict of the overlap test and the distance, so that they agree to the bit; the deepest peak
+// into `d` where it was needed.
 bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
   if (least.q <= 1.0 - least.bound) return true;
   // Certainly apart: a sharp core beyond the quadratic's rounding, or a face normal's separation (a
   // lower bound of the signed distance) beyond the radius.
   if (p.core.radius == 0.0 && least.q > 1.0 + least.bound) return false;
-  for (int i = 0; i < p.core.faces(); ++i) {
-    if (face_peak(p, i).s > p.core.radius) return false;
-  }
+  const Peak faces = best_face(p);
+  if (faces.s > p.core.radius) return false;
   int roots = 0;
-  d = deepest(p, roots);
+  d = deepest(p, faces, roots);
   return d.s <= p.core.radius;
 }
 
@@ -160,7 +165,7 @@ DistanceResult core_ellipse_distance(const CoreEllipse& p) {
   }
   if (d.s == -kInf) {
     int roots = 0;
-    d = deepest(p, roots);
+    d = deepest(p, best_face(p), roots);
   }
   const double r = p.core.radius;
   return DistanceResult::apart(d.s - r, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));

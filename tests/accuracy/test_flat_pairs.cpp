@@ -23,7 +23,6 @@
 namespace collide2d {
 namespace {
 
-using AnyShape = Shape;
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 constexpr double kPi = std::numbers::pi;
 
@@ -33,17 +32,7 @@ const char* name_of(Flat k) {
   return names[static_cast<int>(k)];
 }
 
-Orientation orientation_of(const AnyShape& s) {
-  return std::visit(
-      [](const auto& x) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Circle>) {
-          return Orientation{};
-        } else {
-          return Orientation::of(x.angle);
-        }
-      },
-      s);
-}
+Orientation orientation_of(const Shape& s) { return Orientation::of(angle_of(s)); }
 
 // The kernels under test for a pair: two cores, or a core and an ellipse (B).
 struct Kernels {
@@ -52,7 +41,7 @@ struct Kernels {
   std::function<bool()> overlap;
 };
 
-detail::CorePair pair_of(const AnyShape& a, const AnyShape& b) {
+detail::CorePair pair_of(const Shape& a, const Shape& b) {
   return std::visit(
       [](const auto& x, const auto& y) -> detail::CorePair {
         if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Ellipse> ||
@@ -65,7 +54,7 @@ detail::CorePair pair_of(const AnyShape& a, const AnyShape& b) {
       a, b);
 }
 
-Kernels kernels_of(const AnyShape& a, const AnyShape& b) {
+Kernels kernels_of(const Shape& a, const Shape& b) {
   if (const auto* e = std::get_if<Ellipse>(&b)) {
     const detail::CoreEllipse p = std::visit(
         [&](const auto& x) -> detail::CoreEllipse {
@@ -84,33 +73,14 @@ Kernels kernels_of(const AnyShape& a, const AnyShape& b) {
           [p] { return detail::core_overlap(p); }};
 }
 
-Vec2 center_of_any(const AnyShape& s) {
-  return std::visit([](const auto& x) { return Vec2(x.center); }, s);
-}
-
-// The largest distance from the centre to a point of the shape.
-double reach_of_any(const AnyShape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return c->radius;
-  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.norm();
-  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length + c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
-  return std::get<ConvexPolygon>(s).outline->reach;
-}
-
-// The point of the shape farthest along unit d, in 50 digits' worth of care: the support of the
-// core (a vertex, chosen in double, then placed exactly) plus the radius along d.
-Vec2 support_of(const AnyShape& s, const Vec2& d) {
-  return std::visit([&d](const auto& x) { return Vec2(support(x, d)); }, s);
-}
-
-AnyShape moved_to(AnyShape s, const Vec2& center) {
+Shape moved_to(Shape s, const Vec2& center) {
   std::visit([&center](auto& x) { x.center = center; }, s);
   return s;
 }
 
 // A random shape of the kind about the origin, of size about `size` (its longest half-size) and
 // aspect up to `aspect`.
-AnyShape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
+Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double angle = 2 * kPi * unit(rng);
   const double thin = size / std::exp(std::log(aspect) * unit(rng));
@@ -172,7 +142,7 @@ std::vector<FlatFamily> families() {
 }
 
 struct Case {
-  AnyShape a, b;
+  Shape a, b;
   double delta;  // the nominal gap
 };
 
@@ -186,12 +156,12 @@ std::vector<Case> cases_of(const FlatFamily& f) {
     const double delta = f.deltas[k % f.deltas.size()] * f.size;
     const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
     const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
-    const AnyShape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
-    const AnyShape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
+    const Shape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
+    const Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
     const double t = 2 * kPi * unit(rng);
     const Vec2 n(std::cos(t), std::sin(t));
-    const Vec2 pa = support_of(a, n);
-    const Vec2 pb = support_of(b0, Vec2(-n));  // b0 is about the origin
+    const Vec2 pa = support(a, n);
+    const Vec2 pb = support(b0, Vec2(-n));  // b0 is about the origin
     out.push_back({a, moved_to(b0, pa + delta * n - pb), delta});
   }
   return out;
@@ -214,14 +184,14 @@ TEST_P(FlatFamilies, MatchReference) {
     const Contact got = kernels.contact({});
     const reference::SignedDistance ref = reference::signed_distance(c.a, c.b);
     const double ref_sep = static_cast<double>(ref.separation);
-    const double size = std::max(reach_of_any(c.a), reach_of_any(c.b));
-    const double scale = std::max(size, (center_of_any(c.b) - center_of_any(c.a)).norm());
+    const double size = std::max(reach_of(c.a), reach_of(c.b));
+    const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
     const double err = std::abs(got.separation - ref_sep) / scale;
     worst_sep = std::max(worst_sep, err);
     EXPECT_LE(err, 8 * kU) << what << " separation " << got.separation << " reference " << ref_sep;
     if (c.delta >= 0) {
       // Apart or touching by construction: the gap is the distance, to the rounding of B's centre.
-      const double rho = 16 * kU * (center_of_any(c.b).cwiseAbs().maxCoeff() + 4 * size);
+      const double rho = 16 * kU * (center_of(c.b).cwiseAbs().maxCoeff() + 4 * size);
       worst_known = std::max(worst_known, (std::abs(got.separation - c.delta) - rho) / scale);
       EXPECT_LE(std::abs(got.separation - c.delta), rho + 8 * kU * scale) << what << " nominal gap " << c.delta;
     }
@@ -239,7 +209,7 @@ TEST_P(FlatFamilies, MatchReference) {
     // The contact's points separation * normal apart; every point of the manifold on its shape, its
     // two points |separation| apart. Where the two shapes' best faces tie to 1e-9 of the scale, the
     // manifold is on A's face, whose normal and separations differ from the maximum's by as much.
-    const auto off = [&](const AnyShape& s, const Vec2& q) {
+    const auto off = [&](const Shape& s, const Vec2& q) {
       return static_cast<double>(reference::distance_to(s, reference::to_mp(q))) - ulps_of(q);
     };
     // (Overlapping with the deepest vertex beyond the reference face's ends, a point within them
@@ -260,7 +230,7 @@ TEST_P(FlatFamilies, MatchReference) {
           << what << " manifold point's separation";
       EXPECT_LE(off(c.a, m.point_a), 16 * kU * scale) << what << " manifold point_a is off A";
       EXPECT_LE(off(c.b, m.point_b), 16 * kU * scale) << what << " manifold point_b is off B";
-      EXPECT_GE(m.separation, got.separation - 1e-9 * (reach_of_any(c.a) + reach_of_any(c.b)) - 16 * kU * scale)
+      EXPECT_GE(m.separation, got.separation - 1e-9 * (reach_of(c.a) + reach_of(c.b)) - 16 * kU * scale)
           << what << " a point deeper than the pair";
     }
 
@@ -290,7 +260,7 @@ TEST_P(FlatFamilies, MatchReference) {
       f.name.c_str(), worst_sep / kU, worst_known / kU, worst_points / kU, worst_normal, normals, apart, overlapping);
 }
 
-Contact contact_of(const AnyShape& a, const AnyShape& b, const ContactOptions& options = {}) {
+Contact contact_of(const Shape& a, const Shape& b, const ContactOptions& options = {}) {
   return detail::core_contact(pair_of(a, b), options);
 }
 

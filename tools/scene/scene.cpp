@@ -291,8 +291,6 @@ bool same_shape(const Shape& a, const Shape& b) {
 
 }  // namespace
 
-Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
-
 std::vector<Shape> at_origin(const Shape& shape) {
   return {std::visit(
       [](auto s) -> Shape {

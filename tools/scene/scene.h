@@ -52,8 +52,8 @@ struct Scene {
   bool operator==(const Scene&) const;
 };
 
-// The body of one shape: its origin at the shape's centre and angle, the shape at the origin.
-Pose pose_of(const Shape& shape);
+// The body of one shape: its origin at the shape's pose (pose_of in world.h), the shape at the
+// origin.
 std::vector<Shape> at_origin(const Shape& shape);
 // Each of the body's shapes where its pose puts it, and the box around them all.
 std::vector<Shape> placed_shapes(const SceneBody& body);
