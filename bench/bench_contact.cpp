@@ -51,6 +51,10 @@ Contact kernel(const Ellipse& a, const Orientation& oa, const Ellipse& b, const 
                const ContactOptions& o) {
   return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
+Contact kernel(const ConvexPolygon& a, const Orientation& oa, const Circle& b, const Orientation&,
+               const ContactOptions& o) {
+  return contact_polygon_circle(a, oa, b, o);
+}
 
 template <class A, class B>
 void ours(benchmark::State& state) {
@@ -68,14 +72,15 @@ void ours_oriented(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return kernel(w.a[k], oa[k], w.b[k], ob[k], options); });
 }
 
-// Pairs with a polygon through kernels.h's contact on Shape with kept orientations (the World's
-// call): no typed kernel of their own.
-template <class A, class B>
+// Pairs with a polygon and no typed kernel of their own through kernels.h's contact on Shape with
+// kept orientations (the World's call).
+template <class A, class B, bool limited = false>
 void ours_shape(benchmark::State& state) {
   const auto& w = bench::pairs<A, B>(state);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   std::vector<Shape> sa(w.a.begin(), w.a.end()), sb(w.b.begin(), w.b.end());
-  bench::time_queries(state, [&](std::size_t k) { return contact(sa[k], oa[k], sb[k], ob[k]); });
+  const ContactOptions options{.max_separation = limited ? 0.0 : HUGE_VAL};
+  bench::time_queries(state, [&](std::size_t k) { return contact(sa[k], oa[k], sb[k], ob[k], options); });
 }
 
 // The batched circle–ellipse contact (orientations kept) on the whole workload per iteration.
@@ -171,14 +176,23 @@ BENCHMARK(box2d_batch<Circle, Ellipse, 16>)
     ->Apply(bench::contact_workloads);
 
 BENCHMARK(ours_shape<ConvexPolygon, ConvexPolygon>)->Name("ours/polygon_polygon")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<ConvexPolygon, ConvexPolygon, true>)
+    ->Name("ours/polygon_polygon_limited")
+    ->Apply(bench::polygon_workloads);
 BENCHMARK(box2d<ConvexPolygon, ConvexPolygon>)
     ->Name("box2d_collide_polygons/polygon_polygon_8gons")
     ->Apply(bench::polygon_workloads);
-BENCHMARK(ours_shape<ConvexPolygon, Circle>)->Name("ours/polygon_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_oriented<ConvexPolygon, Circle>)->Name("ours/polygon_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_oriented<ConvexPolygon, Circle, true>)
+    ->Name("ours/polygon_circle_limited")
+    ->Apply(bench::polygon_workloads);
 BENCHMARK(box2d<ConvexPolygon, Circle>)
     ->Name("box2d_collide_polygon_and_circle/polygon_circle")
     ->Apply(bench::polygon_workloads);
 BENCHMARK(ours_shape<ConvexPolygon, Ellipse>)->Name("ours/polygon_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<ConvexPolygon, Ellipse, true>)
+    ->Name("ours/polygon_ellipse_limited")
+    ->Apply(bench::polygon_workloads);
 BENCHMARK(box2d<ConvexPolygon, Ellipse>)
     ->Name("box2d_collide_polygons/polygon_ellipse_8gon")
     ->Apply(bench::polygon_workloads);

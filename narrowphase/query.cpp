@@ -124,6 +124,10 @@ requires(on_cores<X> || on_cores<Y>) Contact
   return on_core_pair(a, oa, b, ob, CoreContact{o});
 }
 
+Contact contact_kernel(const ConvexPolygon& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
+  return contact_polygon_circle(a, oa, b, o);
+}
+
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 
 // Nested circles: the gap lies on the line of centres, on the side away from the larger circle's

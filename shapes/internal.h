@@ -6,9 +6,27 @@
 
 #include "shapes/rotation.h"
 
+#include <Eigen/Core>
+
 #include <string>
 
 namespace collide2d::detail {
+
+template <class Real>
+using V2 = Eigen::Matrix<Real, 2, 1>;
+
+// v turned a quarter turn counter-clockwise: a counter-clockwise outline's face direction from its
+// outward normal.
+template <class Real>
+V2<Real> perp(const V2<Real>& v) {
+  return {-v[1], v[0]};
+}
+
+// The z of the cross product; any two 2-vectors of one scalar, or expressions of them.
+template <class P, class Q>
+auto cross(const Eigen::MatrixBase<P>& p, const Eigen::MatrixBase<Q>& q) {
+  return p[0] * q[1] - p[1] * q[0];
+}
 
 // Throws InvalidShape("<what> <field> <rule> (got <value>)"), the form of every validation message
 // ("ellipse a must be positive (got -1)"), for the checks of other modules to share.

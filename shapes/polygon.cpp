@@ -14,8 +14,7 @@ namespace collide2d {
 namespace {
 
 using Rot = detail::Rotation<double>;
-
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
+using detail::cross;
 
 // The sign of the turn a -> b -> c: +1 left, -1 right, 0 where the determinant lies within the
 // bound of its rounding (J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast

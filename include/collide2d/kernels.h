@@ -71,6 +71,11 @@ Contact contact_rect_circle(const Rect& a, const Orientation& a_orientation, con
 Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptions& options = {});
 Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation, const ContactOptions& options = {});
+/// A convex polygon and a circle: the centre against the polygon's faces in its frame (E. Catto,
+/// Box2D's b2CollidePolygonAndCircle), the separation exact apart as well.
+Contact contact_polygon_circle(const ConvexPolygon& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options = {});
 Contact contact_circle_circle(const Circle& a, const Circle& b);
 Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options = {});

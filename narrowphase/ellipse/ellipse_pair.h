@@ -236,7 +236,7 @@ struct GjkSimplex {
   bool reduce(Real& depth) {
     if (count == 2) *this = segment(0, 1);
     if (count != 3) return false;
-    const Real area = cross<Real>(v[1].w - v[0].w, v[2].w - v[0].w);
+    const Real area = cross(v[1].w - v[0].w, v[2].w - v[0].w);
     if (area != 0) {
       const Real l0 = cross(v[1].w, v[2].w) / area;
       const Real l1 = cross(v[2].w, v[0].w) / area;

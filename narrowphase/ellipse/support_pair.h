@@ -25,19 +25,6 @@
 namespace collide2d::detail {
 
 template <class Real>
-using V2 = Eigen::Matrix<Real, 2, 1>;
-
-template <class Real>
-V2<Real> perp(const V2<Real>& v) {
-  return {-v[1], v[0]};
-}
-
-template <class Real>
-Real cross(const V2<Real>& p, const V2<Real>& q) {
-  return p[0] * q[1] - p[1] * q[0];
-}
-
-template <class Real>
 struct Support {
   V2<Real> offset;     // support point minus centre
   Real h = 0;          // support function value

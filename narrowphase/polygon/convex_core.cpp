@@ -18,39 +18,33 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kCutAtStart = kMaxPolygonVertices;
 constexpr int kCutAtEnd = kMaxPolygonVertices + 1;
 
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
-// The direction of face i of a counter-clockwise core, from its outward normal.
-Vec2 along(const Vec2& normal) { return {-normal.y(), normal.x()}; }
-
-Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, const Placement& at) {
+// `reach`: the shape's own, the largest |vertex| plus the radius.
+Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, double reach,
+          const Placement& at) {
   Core c;
   c.count = static_cast<int>(vertices.size());
   c.radius = radius;
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    c.v[i] = at.point(vertices[i]);
-    c.reach = std::max(c.reach, vertices[i].norm());
-  }
-  c.reach += radius;
+  c.reach = reach;
+  for (std::size_t i = 0; i < vertices.size(); ++i) c.v[i] = at.point(vertices[i]);
+  std::fill(c.v.begin() + c.count, c.v.end(), c.v[0]);  // lowest() reads all kMaxPolygonVertices
+  for (int i = 0; i < kMaxPolygonVertices; ++i) c.x[i] = c.v[i].x(), c.y[i] = c.v[i].y();
   for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
   return c;
 }
 
-// The least of d.(w - o) over y's vertices w, and that vertex.
-struct Low {
-  double s = kInf;
-  int vertex = 0;
-};
-Low lowest(const Core& y, const Vec2& d, const Vec2& o) {
-  Low out;
-  for (int j = 0; j < y.count; ++j) {
-    const double s = d.dot(y.v[j] - o);
-    if (s < out.s) out = {s, j};
+// The least of d.(w - o) over y's vertices w: a tree of minima over every slot (those past the
+// count repeat the first vertex), no branch to mispredict.
+double lowest(const Core& y, const Vec2& d, const Vec2& o) {
+  std::array<double, kMaxPolygonVertices> s;
+  for (int j = 0; j < kMaxPolygonVertices; ++j) s[j] = d.x() * (y.x[j] - o.x()) + d.y() * (y.y[j] - o.y());
+  for (int width = kMaxPolygonVertices / 2; width > 0; width /= 2) {
+    for (int j = 0; j < width; ++j) s[j] = std::min(s[j], s[j + width]);
   }
-  return out;
+  return s[0];
 }
 
 // A separating axis of core x against core y: a face of x, or a segment's end (face -1, the end's
-// vertex `end`), with y's separation along it and y's deepest vertex there.
+// vertex `end`), with y's separation along it and y's deepest vertex there (the first at it).
 struct Axis {
   double s = -kInf;
   int face = -1;
@@ -58,21 +52,33 @@ struct Axis {
   int vertex = 0;
 };
 
+// The axis' outward direction and a point of x on it.
+struct Plane {
+  Vec2 normal, origin;
+};
+Plane plane_of(const Core& x, const Axis& axis) {
+  if (axis.face >= 0) return {x.n[axis.face], x.v[axis.face]};
+  const Vec2 e = perp(x.n[0]);
+  return {axis.end == 1 ? e : Vec2(-e), x.v[axis.end]};
+}
+
 // The best axis, or the first beyond `stop`: past it, the caller needs no other (the overlap test,
 // whose pair is apart).
 Axis best_axis(const Core& x, const Core& y, double stop = kInf) {
   Axis best;
   for (int i = 0; i < x.faces() && !(best.s > stop); ++i) {
-    const Low low = lowest(y, x.n[i], x.v[i]);
-    if (low.s > best.s) best = {low.s, i, 0, low.vertex};
+    const double s = lowest(y, x.n[i], x.v[i]);
+    if (s > best.s) best = {s, i};
   }
-  if (x.count == 2 && !(best.s > stop)) {
-    const Vec2 e = along(x.n[0]);
-    for (const int k : {0, 1}) {
-      const Low low = lowest(y, k == 1 ? e : Vec2(-e), x.v[k]);
-      if (low.s > best.s) best = {low.s, -1, k, low.vertex};
-    }
+  for (int k = 0; x.count == 2 && k < 2 && !(best.s > stop); ++k) {
+    const Axis end{-kInf, -1, k};
+    const Plane at = plane_of(x, end);
+    const double s = lowest(y, at.normal, at.origin);
+    if (s > best.s) best = {s, -1, k};
   }
+  if (best.s == -kInf) return best;  // a point core has no axis
+  const Plane at = plane_of(x, best);
+  while (best.vertex + 1 < y.count && at.normal.dot(y.v[best.vertex] - at.origin) != best.s) ++best.vertex;
   return best;
 }
 
@@ -127,28 +133,43 @@ Axes axes_of(const CorePair& p, double stop = kInf) {
   return {of_a, of_a.s > stop ? Axis{} : best_axis(p.b, p.a, stop)};
 }
 
-// Whether the point w lies over face i of x, between the face's side planes.
-bool over_face(const Core& x, int i, const Vec2& w) {
-  const Vec2 t = along(x.n[i]);
-  const double at = t.dot(w - x.v[i]);
-  return at >= 0.0 && at <= t.dot(x.v[x.next(i)] - x.v[i]);
+bool over_face(const Core& x, int i, const Vec2& w) { return along_face(x.n[i], x.v[i], x.v[x.next(i)], w) == 0; }
+
+// A point core's one vertex is farthest along every direction.
+bool farthest_at(const Core& x, int k, const Vec2& d) {
+  return detail::farthest_at(x.v[k == 0 ? x.count - 1 : k - 1], x.v[k], x.v[x.next(k)], d);
+}
+
+// Apart, the nearest points where y's witness w of x's face i does not lie over the face. The
+// cores' difference y - x has the face w - (face i) at the greatest separation, and its
+// separation along a direction falls away on either side of its greatest (the set of directions
+// along which it is at least c > 0 is an arc), so its nearest point to the origin lies on that
+// face: here at its end, the vertex of x beyond which w lies, and w. Checked (each vertex is its
+// core's farthest along the line between them, which makes them nearest), as rounding or parallel
+// faces can take the greatest separation to another face; else every vertex–edge pair is searched.
+Closest beside_face(const CorePair& p, bool x_is_a, const Axis& axis) {
+  const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+  const Vec2& w = y.v[axis.vertex];
+  const int i = axis.face;
+  const int e = along_face(x.n[i], x.v[i], x.v[x.next(i)], w) < 0 ? i : x.next(i);
+  const Vec2 d = w - x.v[e];
+  if (!farthest_at(x, e, d) || !farthest_at(y, axis.vertex, Vec2(-d))) return nearest_features(p);
+  return x_is_a ? Closest{d.squaredNorm(), x.v[e], w, -1, -1, e, axis.vertex}
+                : Closest{d.squaredNorm(), w, x.v[e], -1, -1, axis.vertex, e};
 }
 
 // The cores' distance and nearest points, apart: the best face's when its witness vertex lies over
-// the face, else the nearest of every vertex–edge pair.
+// the face, else beside it.
 Closest gap(const CorePair& p, const Axes& axes) {
   const Axis& best = axes.best();
-  if (best.face >= 0) {
-    const bool ref_a = !axes.b_best();
-    const Core &x = ref_a ? p.a : p.b, &y = ref_a ? p.b : p.a;
-    const Vec2& w = y.v[best.vertex];
-    if (over_face(x, best.face, w)) {
-      const Vec2 q = w - best.s * x.n[best.face];
-      return ref_a ? Closest{best.s * best.s, q, w, best.face, -1, 0, best.vertex}
-                   : Closest{best.s * best.s, w, q, -1, best.face, best.vertex, 0};
-    }
-  }
-  return nearest_features(p);
+  if (best.face < 0) return nearest_features(p);
+  const bool ref_a = !axes.b_best();
+  const Core &x = ref_a ? p.a : p.b, &y = ref_a ? p.b : p.a;
+  const Vec2& w = y.v[best.vertex];
+  if (!over_face(x, best.face, w)) return beside_face(p, ref_a, best);
+  const Vec2 q = w - best.s * x.n[best.face];
+  return ref_a ? Closest{best.s * best.s, q, w, best.face, -1, 0, best.vertex}
+               : Closest{best.s * best.s, w, q, -1, best.face, best.vertex, 0};
 }
 
 // One point of a manifold on the reference face: the incident core's point `on_y` with its
@@ -169,7 +190,7 @@ struct FaceClip {
 
 FaceClip clip_face(const Core& x, int i, const Core& y) {
   const Vec2 &n = x.n[i], &v0 = x.v[i];
-  const Vec2 t = along(n);
+  const Vec2 t = perp(n);
   const double length = t.dot(x.v[x.next(i)] - v0);
   int k = 0;
   for (int j = 1; j < y.faces(); ++j) {
@@ -253,7 +274,7 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
 // The contact on the axis' face i of x, y's separation along it s. Apart, s is the distance where
 // the axis' witness, y's deepest vertex, lies over the face (the witness itself: of a sliver's
 // nearly parallel faces, the incident face the clip takes may not hold it). Where it does not, the
-// vertex–edge search gives the distance; the face stays the reference if its clipped incident face
+// nearest features beside the face give the distance; the face stays the reference if its clipped incident face
 // comes that near (parallel faces, whose ids then hold whichever side of touching the pair is),
 // else the nearest features make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest
 // clipped point stands in for it as the main point, so that both points lie on their shapes (the separation stays s).
@@ -265,7 +286,7 @@ Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const Con
   if (s > 0) {
     const Vec2& w = y.v[axis.vertex];
     if (over_face(x, i, w)) return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
-    const Closest near = nearest_features(p);
+    const Closest near = beside_face(p, x_is_a, axis);
     const double distance = std::sqrt(near.squared);
     const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
     if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);
@@ -294,9 +315,7 @@ Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOption
 // A segment's end axis at the best: the segment x and a point or a parallel segment y in line.
 Contact end_contact(const CorePair& p, bool x_is_a, const Axis& axis) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
-  const Vec2 e = along(x.n[0]);
-  const Vec2 normal = axis.end == 1 ? e : Vec2(-e);
-  return Writer{p}.one(x_is_a, x.v[axis.end], y.v[axis.vertex], normal, axis.s - radii(p),
+  return Writer{p}.one(x_is_a, x.v[axis.end], y.v[axis.vertex], plane_of(x, axis).normal, axis.s - radii(p),
                        feature_id(FeatureKind::corner_corner, axis.end, axis.vertex));
 }
 
@@ -392,24 +411,24 @@ Core core_of(const Rect& r, const Placement& at) {
   const double hx = r.half_extents.x(), hy = r.half_extents.y();
   const Vec2 v[] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const Vec2 n[] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-  return make(v, n, 0.0, at);
+  return make(v, n, 0.0, v[0].norm(), at);
 }
 
 Core core_of(const ConvexPolygon& p, const Placement& at) {
   const PolygonOutline& o = *p.outline;
   const auto count = static_cast<std::size_t>(o.count);
-  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, at);
+  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, o.reach, at);
 }
 
 Core core_of(const Capsule& c, const Placement& at) {
   const Vec2 v[] = {{-c.half_length, 0}, {c.half_length, 0}};
   const Vec2 n[] = {{0, -1}, {0, 1}};
-  return make(v, n, c.radius, at);
+  return make(v, n, c.radius, c.half_length + c.radius, at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {
   const Vec2 v[] = {{0, 0}};
-  return make(v, {}, c.radius, at);
+  return make(v, {}, c.radius, c.radius, at);
 }
 
 double CorePair::scale() const {
@@ -459,7 +478,7 @@ DistanceResult core_distance(const CorePair& p) {
 Contact core_contact(const CorePair& p, const ContactOptions& options) {
   const Axes axes = axes_of(p);
   const double bound = axes.s() - radii(p);  // the cores' separation along an axis is at most their distance
-  if (beyond_limit(bound, p.scale(), options)) return Contact::beyond(bound);
+  if (has_limit(options) && beyond_limit(bound, p.scale(), options)) return Contact::beyond(bound);
   return limited(options, [&] { return contact_of(p, axes, options); });
 }
 

@@ -32,11 +32,13 @@
 
 namespace collide2d::detail {
 
-// A core in the frame of the pair's shape A: its vertices counter-clockwise, each face's outward
+// A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
+// count repeating the first), each face's outward
 // unit normal (face i from vertex i to vertex i + 1), and the radius around it. A segment has two
 // faces, one each way; a point none.
 struct Core {
   std::array<Vec2, kMaxPolygonVertices> v{};
+  std::array<double, kMaxPolygonVertices> x{}, y{};  // v's coordinates apart, for the separating axes
   std::array<Vec2, kMaxPolygonVertices> n{};
   int count = 0;
   double radius = 0.0;
@@ -45,6 +47,20 @@ struct Core {
   int faces() const { return count == 1 ? 0 : count; }
   int next(int i) const { return i + 1 == count ? 0 : i + 1; }
 };
+
+// Where the point w lies along the face from v0 to v1 of outward normal n: over it (0, between its
+// side planes), before v0 (-1) or beyond v1 (1).
+inline int along_face(const Vec2& n, const Vec2& v0, const Vec2& v1, const Vec2& w) {
+  const Vec2 t = perp(n);
+  const double at = t.dot(w - v0);
+  return at >= 0.0 ? (at <= t.dot(v1 - v0) ? 0 : 1) : -1;
+}
+
+// Whether a convex outline lies farthest along d at its vertex v, between `before` and `after`
+// (d is in the vertex's normal cone).
+inline bool farthest_at(const Vec2& before, const Vec2& v, const Vec2& after, const Vec2& d) {
+  return d.dot(v - before) >= 0.0 && d.dot(v - after) >= 0.0;
+}
 
 // Where shape B's local points go in A's frame; A's own placement is the identity.
 struct Placement {

@@ -11,13 +11,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
-
-// The ellipse's support value along unit n.
-double extent(const CoreEllipse& p, const Vec2& n) {
-  return std::sqrt(p.a * p.a * n.x() * n.x() + p.b * p.b * n.y() * n.y());
-}
-
 // A local maximum of the separation of the two cores (A's radius left out), in the ellipse's frame:
 // its value s, its direction u (from A to the ellipse), A's point there and the ellipse's.
 struct Peak {
@@ -25,15 +18,6 @@ struct Peak {
   Vec2 u = Vec2::UnitX();
   Vec2 on_a = Vec2::Zero(), on_e = Vec2::Zero();
 };
-
-// Face i's normal: the ellipse's support point along -n over the face, at s = n.(q - v).
-Peak face_peak(const CoreEllipse& p, int i) {
-  const Vec2& n = p.core.n[i];
-  const double h = extent(p, n);
-  const Vec2 q(-p.a * p.a * n.x() / h, -p.b * p.b * n.y() / h);
-  const double s = n.dot(q - p.core.v[i]);
-  return {s, n, Vec2(q - s * n), q};
-}
 
 // Whether u lies in the cone of directions where vertex k is A's support point: from the normal of
 // the face that ends at k to the normal of the face that starts there (a half turn at a segment's
@@ -45,36 +29,106 @@ bool in_cone(const Core& c, int k, const Vec2& u) {
 }
 
 // The maxima of the separation over vertex k's cone that lie inside it, into `best`; each root
-// counted in `roots`.
+// counted in `roots`. Where the nearest foot's normal lies in the cone it is the greatest
+// separation over every direction, and the other foot's cannot pass it.
 void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
   const Vec2& v = p.core.v[k];
   const auto consider = [&](double s, const Vec2& normal, const Vec2& foot) {
     const Vec2 u = -normal;  // from the vertex towards the ellipse, the ellipse's inward normal
-    if (s > best.s && in_cone(p.core, k, u)) best = {s, u, v, foot};
+    const bool inside = in_cone(p.core, k, u);
+    if (s > best.s && inside) best = {s, u, v, foot};
+    return inside;
   };
   ++roots;
   const PointEllipseResult near = distance_point_ellipse(p.a, p.b, v);
-  consider(near.inside ? -near.distance : near.distance, near.normal, near.closest);
+  if (consider(near.inside ? -near.distance : near.distance, near.normal, near.closest)) return;
   ++roots;
   if (const std::optional<CurveFoot> other = other_local_nearest(p.a, p.b, v)) {
     consider(other->signed_distance, other->normal, other->point);
   }
 }
 
-// The largest face normal's separation, a lower bound of the signed distance.
-Peak best_face(const CoreEllipse& p) {
+// The largest face normal's separation, a lower bound of the signed distance, and along each face
+// normal n the ellipse's support value h and its support point q along -n.
+struct Faces {
   Peak best;
-  for (int i = 0; i < p.core.faces(); ++i) {
-    const Peak f = face_peak(p, i);
-    if (f.s > best.s) best = f;
+  int face = -1;             // best's
+  double runner_up = -kInf;  // the largest separation of the other faces
+  std::array<double, kMaxPolygonVertices> h{};
+  std::array<Vec2, kMaxPolygonVertices> q{};
+};
+
+// Along face i's normal n the separation is n.(q - v), v the face's first vertex: q lies over the
+// face there. The faces apart first, so that their square roots and divisions overlap.
+Faces best_face(const CoreEllipse& p) {
+  const Core& c = p.core;
+  Faces out;
+  std::array<double, kMaxPolygonVertices> s{};
+  for (int i = 0; i < c.faces(); ++i) {
+    const Vec2& n = c.n[i];
+    const Vec2 aa(p.a * p.a * n.x(), p.b * p.b * n.y());
+    out.h[i] = std::sqrt(aa.dot(n));
+    out.q[i] = aa * (-1 / out.h[i]);
+    s[i] = n.dot(out.q[i] - c.v[i]);
   }
-  return best;
+  for (int i = 0; i < c.faces(); ++i) {
+    if (s[i] > out.best.s) {
+      out.runner_up = out.best.s, out.best.s = s[i], out.face = i;
+    } else {
+      out.runner_up = std::max(out.runner_up, s[i]);
+    }
+  }
+  if (out.face >= 0) {
+    const Vec2 &n = c.n[out.face], &q = out.q[out.face];
+    out.best = {out.best.s, n, Vec2(q - out.best.s * n), q};
+  }
+  return out;
+}
+
+// The pair's scale: what the rounding of its separations is a few u of.
+double scale(const CoreEllipse& p) { return p.core.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff(); }
+
+// Whether u.w <= s all over vertex k's cone: at its ends, and along w where w lies inside it.
+bool within(const Core& c, int k, const Vec2& w, double s) {
+  if (std::max(c.n[k == 0 ? c.count - 1 : k - 1].dot(w), c.n[k].dot(w)) > s) return false;
+  return !in_cone(c, k, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
+}
+
+// Whether the separation over vertex k's cone stays at most s, by any of three bounds. Along u it is
+// -(u.v + h(u)), h the ellipse's support value, so
+// - at most u.(q - v) for any point q of the ellipse (h(u) >= -u.q): for each of the ellipse's
+//   points q that the cone's two face normals found;
+// - at most minus the least u.v less the least h over the cone, that at the cone's ends or along
+//   the ellipse's minor axis where the cone holds it.
+bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
+  const Core& c = p.core;
+  const Vec2& v = c.v[k];
+  const double minor = std::min(p.a, p.b);
+  if (c.count == 1) return v.norm() - minor <= s;
+  const int before = k == 0 ? c.count - 1 : k - 1;
+  if (within(c, k, Vec2(faces.q[k] - v), s) || within(c, k, Vec2(faces.q[before] - v), s)) return true;
+  const Vec2 axis = p.a <= p.b ? Vec2::UnitX() : Vec2::UnitY();
+  const bool minor_inside = in_cone(c, k, axis) || in_cone(c, k, Vec2(-axis));
+  const double least_h = minor_inside ? minor : std::min(faces.h[before], faces.h[k]);
+  return within(c, k, Vec2(-v), s + least_h);
 }
 
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
-// roots it took.
-Peak deepest(const CoreEllipse& p, Peak best, int& roots) {
-  for (int k = 0; k < p.core.count; ++k) vertex_peaks(p, k, best, roots);
+// roots it took: a vertex whose cone cannot beat the best so far takes none. Apart, the separation
+// falls away on either side of its greatest (the directions along which it is at least c > 0 make
+// an arc), so that where one face's separation is positive and passes every other face's, each
+// beyond their rounding, the greatest lies between that face's neighbours: in the cones of its two
+// ends. (Faces tied to rounding, as a needle's long sides, may have a far higher peak between
+// them.)
+Peak deepest(const CoreEllipse& p, const Faces& faces, int& roots) {
+  const Core& c = p.core;
+  const double rounding = 64 * std::numeric_limits<double>::epsilon() * scale(p);
+  const bool leads = faces.best.s > rounding && faces.best.s - faces.runner_up > rounding;
+  Peak best = faces.best;
+  for (int k = 0; k < c.count; ++k) {
+    const bool end_of_best = k == faces.face || k == c.next(faces.face);
+    if ((!leads || end_of_best) && !cone_within(p, faces, k, best.s)) vertex_peaks(p, k, best, roots);
+  }
   return best;
 }
 
@@ -115,9 +169,8 @@ Least least_quadratic(const CoreEllipse& p) {
 
 Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options) {
   const double r = p.core.radius;
-  const Peak faces = best_face(p);
-  const double scale = p.core.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
-  if (beyond_limit(faces.s - r, scale, options)) return Contact::beyond(faces.s - r);
+  const Faces faces = best_face(p);
+  if (beyond_limit(faces.best.s - r, scale(p), options)) return Contact::beyond(faces.best.s - r);
   return limited(options, [&] {
     int roots = 0;
     const Peak d = deepest(p, faces, roots);
@@ -142,8 +195,8 @@ bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
   // Certainly apart: a sharp core beyond the quadratic's rounding, or a face normal's separation (a
   // lower bound of the signed distance) beyond the radius.
   if (p.core.radius == 0.0 && least.q > 1.0 + least.bound) return false;
-  const Peak faces = best_face(p);
-  if (faces.s > p.core.radius) return false;
+  const Faces faces = best_face(p);
+  if (faces.best.s > p.core.radius) return false;
   int roots = 0;
   d = deepest(p, faces, roots);
   return d.s <= p.core.radius;

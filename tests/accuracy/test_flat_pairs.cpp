@@ -5,6 +5,8 @@
 // and on the degenerate configurations of segments and faces.
 #include "mp_reference.h"
 
+#include <collide2d/kernels.h>
+
 #include "narrowphase/polygon/convex_core.h"
 
 #include <gtest/gtest.h>
@@ -34,7 +36,8 @@ const char* name_of(Flat k) {
 
 Orientation orientation_of(const Shape& s) { return Orientation::of(angle_of(s)); }
 
-// The kernels under test for a pair: two cores, or a core and an ellipse (B).
+// The kernels under test for a pair: two cores, or a core and an ellipse (B); a polygon's contact
+// with a circle, its typed kernel.
 struct Kernels {
   std::function<Contact(const ContactOptions&)> contact;
   std::function<DistanceResult()> distance;
@@ -69,8 +72,16 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
             [p] { return detail::core_ellipse_distance(p); }, [p] { return detail::core_ellipse_overlap(p); }};
   }
   const detail::CorePair p = pair_of(a, b);
-  return {[p](const ContactOptions& o) { return detail::core_contact(p, o); }, [p] { return detail::core_distance(p); },
-          [p] { return detail::core_overlap(p); }};
+  Kernels out{[p](const ContactOptions& o) { return detail::core_contact(p, o); },
+              [p] { return detail::core_distance(p); }, [p] { return detail::core_overlap(p); }};
+  const auto* polygon = std::get_if<ConvexPolygon>(&a);
+  const auto* circle = std::get_if<Circle>(&b);
+  if (polygon && circle) {
+    out.contact = [x = *polygon, y = *circle](const ContactOptions& o) {
+      return contact_polygon_circle(x, orientation_of(x), y, o);
+    };
+  }
+  return out;
 }
 
 Shape moved_to(Shape s, const Vec2& center) {
@@ -348,6 +359,34 @@ TEST(FlatPairs, KnownSeparations) {
   const Contact c = contact_of(bead, ball);
   // The core's nearest end is 1e-9 nearer than the centre, along cos 0.7.
   EXPECT_NEAR(c.separation, 3 - 1e-9 * std::cos(0.7) - 2.5, 8 * kU * 3);
+}
+
+// The polygon–circle kernel (the centre's Voronoi regions) against the cores' contact (separating
+// axes, then the nearest of every vertex–edge pair): the same separation, normal, points and
+// feature, on every polygon–circle family and with the contact limited.
+TEST(FlatPairs, PolygonCircleKernelIsTheCoresContact) {
+  int compared = 0;
+  for (const FlatFamily& f : families()) {
+    if (f.b != Flat::circle || (f.a != Flat::polygon && f.a != Flat::rounded)) continue;
+    for (const Case& c : cases_of(f)) {
+      const auto& x = std::get<ConvexPolygon>(c.a);
+      const auto& y = std::get<Circle>(c.b);
+      for (const double limit : {HUGE_VAL, 0.0}) {
+        const ContactOptions o{.max_separation = limit};
+        const Contact got = contact_polygon_circle(x, orientation_of(x), y, o);
+        const Contact want = detail::core_contact(pair_of(c.a, c.b), o);
+        ASSERT_EQ(got.separation, want.separation) << f.name << " " << compared;
+        ASSERT_EQ(got.manifold_size, want.manifold_size) << f.name;
+        if (want.empty()) continue;
+        EXPECT_EQ(got.normal, want.normal) << f.name;
+        EXPECT_EQ(got.point_a, want.point_a) << f.name;
+        EXPECT_EQ(got.point_b, want.point_b) << f.name;
+        EXPECT_EQ(got.manifold[0].id, want.manifold[0].id) << f.name;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 200);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(families()),

@@ -1,0 +1,63 @@
+#include <collide2d/kernels.h>
+
+#include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/frames/unit_vector.h"
+#include "narrowphase/polygon/convex_core.h"
+
+#include <limits>
+
+namespace collide2d {
+namespace {
+
+// Out of line: the cores take a large frame that the common paths do without.
+[[gnu::noinline]] Contact on_cores(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
+                                   const ContactOptions& options) {
+  return detail::core_contact(detail::CorePair::of(a, a_orientation, b, Orientation{}), options);
+}
+
+}  // namespace
+
+// In the polygon's frame, with c the circle's centre: the face of greatest separation s, then, as
+// Box2D's b2CollidePolygonAndCircle, the face where c lies over it or within the core (s <= 0),
+// else the face's end beyond which c lies (the polygon's separation from a point falls away on
+// either side of its greatest face, so the nearest point of the core lies on that face). Where
+// rounding leaves that end not the core's farthest point towards c, the convex cores' contact
+// decides (narrowphase/polygon/convex_core.h), as it does for every other flat pair.
+Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options) {
+  const PolygonOutline& o = *a.outline;
+  const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
+  const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
+  int face = 0;
+  double s = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < o.count; ++i) {
+    const double si = o.normals[i].dot(c - o.vertices[i]);
+    if (si > s) s = si, face = i;
+  }
+  const double radii = o.radius + b.radius;
+  const double scale = 2 * std::max(o.reach, c.cwiseAbs().maxCoeff()) + radii;
+  if (detail::beyond_limit(s - radii, scale, options)) return Contact::beyond(s - radii);
+  const auto one = [&](const Vec2& on_a, const Vec2& normal, double separation, std::uint32_t id) {
+    const Vec2 point_a = a.center + rot.apply(Vec2(on_a + o.radius * normal));
+    const Vec2 point_b = a.center + rot.apply(Vec2(c - b.radius * normal));
+    return detail::limited(options, [&] { return Contact::of(separation, rot.apply(normal), point_a, point_b, id); });
+  };
+  const Vec2& n = o.normals[face];
+  const int next = face + 1 == o.count ? 0 : face + 1;
+  const int side = s > 0.0 ? detail::along_face(n, o.vertices[face], o.vertices[next], c) : 0;
+  if (side == 0) return one(Vec2(c - s * n), n, s - radii, feature_id(FeatureKind::face_of_a, face, 0));
+  const int end = side < 0 ? face : next;
+  const Vec2 d = c - o.vertices[end];
+  const Vec2& before = o.vertices[end == 0 ? o.count - 1 : end - 1];
+  if (!detail::farthest_at(before, o.vertices[end], o.vertices[end + 1 == o.count ? 0 : end + 1], d)) {
+    return on_cores(a, a_orientation, b, options);
+  }
+  const detail::LengthAndDirection u = detail::length_and_direction(d);
+  return one(o.vertices[end], u.direction, u.length - radii, feature_id(FeatureKind::corner_corner, end, 0));
+}
+
+Contact contact_polygon_circle(const ConvexPolygon& a, const Circle& b, const ContactOptions& options) {
+  return contact_polygon_circle(a, Orientation::of(a.angle), b, options);
+}
+
+}  // namespace collide2d
