@@ -31,7 +31,7 @@ Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orie
   int face = 0;
   double s = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < o.count; ++i) {
-    const double si = o.normals[i].dot(c - o.vertices[i]);
+    const double si = o.normals[i].dot(c) - o.normals[i].dot(o.vertices[i]);  // as the cores' axes
     if (si > s) s = si, face = i;
   }
   const double radii = o.radius + b.radius;

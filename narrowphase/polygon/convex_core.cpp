@@ -25,18 +25,28 @@ Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double 
   c.count = static_cast<int>(vertices.size());
   c.radius = radius;
   c.reach = reach;
-  for (std::size_t i = 0; i < vertices.size(); ++i) c.v[i] = at.point(vertices[i]);
+  if (at.moves()) {
+    for (std::size_t i = 0; i < vertices.size(); ++i) c.v[i] = at.point(vertices[i]);
+    for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
+  } else {
+    std::copy(vertices.begin(), vertices.end(), c.v.begin());
+    std::copy(normals.begin(), normals.end(), c.n.begin());
+  }
   std::fill(c.v.begin() + c.count, c.v.end(), c.v[0]);  // lowest() reads all kMaxPolygonVertices
+  std::fill(c.n.begin() + static_cast<std::ptrdiff_t>(normals.size()), c.n.end(), Vec2::Zero());
   for (int i = 0; i < kMaxPolygonVertices; ++i) c.x[i] = c.v[i].x(), c.y[i] = c.v[i].y();
-  for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
   return c;
 }
 
-// The least of d.(w - o) over y's vertices w: a tree of minima over every slot (those past the
-// count repeat the first vertex), no branch to mispredict.
-double lowest(const Core& y, const Vec2& d, const Vec2& o) {
+// y's vertex j along d.
+double projection(const Core& y, int j, const Vec2& d) { return d.x() * y.x[j] + d.y() * y.y[j]; }
+
+// The least of d.w over y's vertices w: a tree of minima over every slot (those past the count
+// repeat the first vertex), no branch to mispredict. Less d.o, it is y's least height over the
+// line through o normal to d.
+double lowest(const Core& y, const Vec2& d) {
   std::array<double, kMaxPolygonVertices> s;
-  for (int j = 0; j < kMaxPolygonVertices; ++j) s[j] = d.x() * (y.x[j] - o.x()) + d.y() * (y.y[j] - o.y());
+  for (int j = 0; j < kMaxPolygonVertices; ++j) s[j] = projection(y, j, d);
   for (int width = kMaxPolygonVertices / 2; width > 0; width /= 2) {
     for (int j = 0; j < width; ++j) s[j] = std::min(s[j], s[j + width]);
   }
@@ -63,23 +73,26 @@ Plane plane_of(const Core& x, const Axis& axis) {
 }
 
 // The best axis, or the first beyond `stop`: past it, the caller needs no other (the overlap test,
-// whose pair is apart).
+// whose pair is apart). The running best is selected, not branched to: which axis leads is
+// unpredictable.
 Axis best_axis(const Core& x, const Core& y, double stop = kInf) {
-  Axis best;
-  for (int i = 0; i < x.faces() && !(best.s > stop); ++i) {
-    const double s = lowest(y, x.n[i], x.v[i]);
-    if (s > best.s) best = {s, i};
+  const int faces = x.faces(), axes = faces + (x.count == 2 ? 2 : 0);
+  double best = -kInf, best_least = 0.0;
+  int at = -1;
+  for (int i = 0; i < axes && !(best > stop); ++i) {
+    const Plane plane = i < faces ? Plane{x.n[i], x.v[i]} : plane_of(x, Axis{-kInf, -1, i - faces});
+    const double least = lowest(y, plane.normal);
+    const double s = least - plane.normal.dot(plane.origin);
+    const bool better = s > best;
+    best = better ? s : best;
+    best_least = better ? least : best_least;
+    at = better ? i : at;
   }
-  for (int k = 0; x.count == 2 && k < 2 && !(best.s > stop); ++k) {
-    const Axis end{-kInf, -1, k};
-    const Plane at = plane_of(x, end);
-    const double s = lowest(y, at.normal, at.origin);
-    if (s > best.s) best = {s, -1, k};
-  }
-  if (best.s == -kInf) return best;  // a point core has no axis
-  const Plane at = plane_of(x, best);
-  while (best.vertex + 1 < y.count && at.normal.dot(y.v[best.vertex] - at.origin) != best.s) ++best.vertex;
-  return best;
+  if (at < 0) return {};  // a point core has no axis
+  Axis out = at < faces ? Axis{best, at} : Axis{best, -1, at - faces};
+  const Vec2 normal = plane_of(x, out).normal;
+  while (out.vertex + 1 < y.count && projection(y, out.vertex, normal) != best_least) ++out.vertex;
+  return out;
 }
 
 // Every edge of a core once: a segment's one edge, a point's none.
@@ -201,7 +214,7 @@ FaceClip clip_face(const Core& x, int i, const Core& y) {
   std::array<double, 2> a{};
   for (int e = 0; e < ends; ++e) {
     const int vertex = e == 0 ? k : y.next(k);
-    end[e] = {y.v[vertex], n.dot(y.v[vertex] - v0), vertex};
+    end[e] = {y.v[vertex], n.dot(y.v[vertex]) - n.dot(v0), vertex};  // as the axes measure it
     a[e] = t.dot(y.v[vertex] - v0);
   }
   FaceClip out;
@@ -475,10 +488,12 @@ DistanceResult core_distance(const CorePair& p) {
                                p.world_point(Vec2(c.on_b - p.b.radius * d.direction)));
 }
 
+// With a limit, the axes stop at the first that shows the pair beyond it.
 Contact core_contact(const CorePair& p, const ContactOptions& options) {
-  const Axes axes = axes_of(p);
-  const double bound = axes.s() - radii(p);  // the cores' separation along an axis is at most their distance
-  if (has_limit(options) && beyond_limit(bound, p.scale(), options)) return Contact::beyond(bound);
+  const double stop = has_limit(options) ? separation_limit(p.scale(), options) + radii(p) : kInf;
+  const Axes axes = axes_of(p, stop);
+  // The cores' separation along an axis is at most their distance.
+  if (axes.s() > stop) return Contact::beyond(axes.s() - radii(p));
   return limited(options, [&] { return contact_of(p, axes, options); });
 }
 

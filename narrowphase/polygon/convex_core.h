@@ -37,9 +37,10 @@ namespace collide2d::detail {
 // unit normal (face i from vertex i to vertex i + 1), and the radius around it. A segment has two
 // faces, one each way; a point none.
 struct Core {
-  std::array<Vec2, kMaxPolygonVertices> v{};
-  std::array<double, kMaxPolygonVertices> x{}, y{};  // v's coordinates apart, for the separating axes
-  std::array<Vec2, kMaxPolygonVertices> n{};
+  // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
+  std::array<Vec2, kMaxPolygonVertices> v;
+  std::array<double, kMaxPolygonVertices> x, y;  // v's coordinates apart, for the separating axes
+  std::array<Vec2, kMaxPolygonVertices> n;
   int count = 0;
   double radius = 0.0;
   double reach = 0.0;  // the largest |vertex| about its own centre, plus the radius
@@ -67,6 +68,7 @@ struct Placement {
   Rotation<double> rot;
   Vec2 offset = Vec2::Zero();
 
+  bool moves() const { return rot.c != 1.0 || rot.s != 0.0 || offset != Vec2::Zero(); }
   Vec2 point(const Vec2& p) const { return offset + rot.apply(p); }
   Vec2 direction(const Vec2& d) const { return rot.apply(d); }
 };
