@@ -33,6 +33,9 @@ OVERLAP = [
     ('ellipse–ellipse, batch', 'batch_overlap/ellipse_ellipse/candidates:{w}', 'box2d_batch_overlap/ellipse_ellipse_8gons/candidates:{w}'),
     ('circle–ellipse, one pair', 'posed_overlap/circle_ellipse/candidates:{w}', 'box2d_overlap/circle_ellipse_8gon/candidates:{w}'),
     ('circle–ellipse, batch', 'batch_overlap/circle_ellipse/candidates:{w}', 'box2d_batch_overlap/circle_ellipse_8gon/candidates:{w}'),
+    ('polygon–polygon (8-gons), one pair', 'posed_overlap/polygon_polygon/candidates:{w}', 'box2d_overlap/polygon_polygon_8gons/candidates:{w}'),
+    ('polygon–circle, one pair', 'posed_overlap/polygon_circle/candidates:{w}', 'box2d_overlap/polygon_circle/candidates:{w}'),
+    ('polygon–ellipse vs 8-gon, one pair', 'posed_overlap/polygon_ellipse/candidates:{w}', 'box2d_overlap/polygon_ellipse_8gon/candidates:{w}'),
 ]
 DISTANCE = [
     ('ellipse–ellipse vs 8-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:8'),
@@ -57,6 +60,12 @@ CONTACT = [
     ('ellipse–ellipse vs 8-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_8gons/candidates:{w}'),
     ('ellipse–ellipse vs 8-gons, one pair, max_separation 0', 'ours/ellipse_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_8gons/candidates:{w}'),
     ('ellipse–ellipse vs 16-gons, one pair', 'ours/ellipse_ellipse_oriented/candidates:{w}', 'box2d_collide_polygons/ellipse_ellipse_16gons/candidates:{w}'),
+    ('polygon–polygon (8-gons), one pair', 'ours/polygon_polygon/candidates:{w}', 'box2d_collide_polygons/polygon_polygon_8gons/candidates:{w}'),
+    ('polygon–polygon (8-gons), one pair, max_separation 0', 'ours/polygon_polygon_limited/candidates:{w}', 'box2d_collide_polygons/polygon_polygon_8gons/candidates:{w}'),
+    ('polygon–circle, one pair', 'ours/polygon_circle/candidates:{w}', 'box2d_collide_polygon_and_circle/polygon_circle/candidates:{w}'),
+    ('polygon–circle, one pair, max_separation 0', 'ours/polygon_circle_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/polygon_circle/candidates:{w}'),
+    ('polygon–ellipse vs 8-gon, one pair', 'ours/polygon_ellipse/candidates:{w}', 'box2d_collide_polygons/polygon_ellipse_8gon/candidates:{w}'),
+    ('polygon–ellipse vs 8-gon, one pair, max_separation 0', 'ours/polygon_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/polygon_ellipse_8gon/candidates:{w}'),
 ]
 TOI = [
     ('ellipse–ellipse translating vs 8-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_8gons'),
@@ -326,7 +335,8 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 ## Overlap tests
 
 Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (a circle is a
-`b2CircleShape`).
+`b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/workload.h);
+the scene has none, so their rows are the random and candidate pairs.
 
 {table(OVERLAP, med, WORKLOADS)}
 
@@ -340,6 +350,7 @@ Box2D: `b2Distance` on the ellipses' inscribed N-gons.
 
 Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons; its
 manifold is empty for pairs apart, where collide2d's contact carries the exact distance and normal.
+The scene has no polygons: their rows have no scene columns.
 
 {table(CONTACT, med, CONTACT_WORKLOADS)}
 
