@@ -18,10 +18,14 @@ inline constexpr std::size_t kChunk = 256;
 inline constexpr std::size_t kMaxLanes = 256 / sizeof(double);
 static_assert(kChunk % kMaxLanes == 0);
 
+// A field's array, a little longer than the chunk: arrays 2 KiB apart would alias every other one
+// at the same 4 KiB offset, and the pair-by-pair writes that fill a chunk would stall on it.
+inline constexpr std::size_t kFieldStride = kChunk + 8;
+
 // A chunk of pairs, one array per field, and a byte per pair for a kernel's verdict.
 template <std::size_t kFields>
 struct Chunk {
-  double field[kFields][kChunk];
+  double field[kFields][kFieldStride];
   std::uint8_t verdict[kChunk];
 };
 

@@ -15,7 +15,7 @@ using M = hn::Mask<D>;
 
 // The lanes i ... i + Lanes(D()) - 1 of the chunk's fields.
 template <class Lanes, std::size_t... I>
-Lanes load(const double (&field)[sizeof...(I)][detail::kChunk], std::size_t i, std::index_sequence<I...>) {
+Lanes load(const double (&field)[sizeof...(I)][detail::kFieldStride], std::size_t i, std::index_sequence<I...>) {
   return Lanes{hn::LoadU(D(), field[I] + i)...};
 }
 
