@@ -261,11 +261,15 @@ std::string describe(const Shape& s) {
   std::visit(
       [&o](const auto& x) {
         using T = std::decay_t<decltype(x)>;
-        o << (std::is_same_v<T, Circle> ? "circle " : std::is_same_v<T, Ellipse> ? "ellipse " : "rect ");
-        o << x.center.x() << ' ' << x.center.y() << ' ';
+        o << shape_name(Shape(x)) << ' ' << x.center.x() << ' ' << x.center.y() << ' ';
         if constexpr (std::is_same_v<T, Circle>) o << x.radius;
         if constexpr (std::is_same_v<T, Ellipse>) o << x.a << ' ' << x.b << ' ' << x.angle;
         if constexpr (std::is_same_v<T, Rect>) o << x.half_extents.x() << ' ' << x.half_extents.y() << ' ' << x.angle;
+        if constexpr (std::is_same_v<T, Capsule>) o << x.half_length << ' ' << x.radius << ' ' << x.angle;
+        if constexpr (std::is_same_v<T, ConvexPolygon>) {
+          o << x.angle << ' ' << x.radius();
+          for (const Vec2& v : x.vertices()) o << ' ' << v.x() << ' ' << v.y();
+        }
       },
       s);
   return o.str();
