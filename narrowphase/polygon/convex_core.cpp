@@ -80,7 +80,7 @@ Axis best_axis(const Core& x, const Core& y, double stop = kInf) {
   double best = -kInf, best_least = 0.0;
   int at = -1;
   for (int i = 0; i < axes && !(best > stop); ++i) {
-    const Plane plane = i < faces ? Plane{x.n[i], x.v[i]} : plane_of(x, Axis{-kInf, -1, i - faces});
+    const Plane plane = plane_of(x, i < faces ? Axis{-kInf, i} : Axis{-kInf, -1, i - faces});
     const double least = lowest(y, plane.normal);
     const double s = least - plane.normal.dot(plane.origin);
     const bool better = s > best;
@@ -146,25 +146,26 @@ Axes axes_of(const CorePair& p, double stop = kInf) {
   return {of_a, of_a.s > stop ? Axis{} : best_axis(p.b, p.a, stop)};
 }
 
-bool over_face(const Core& x, int i, const Vec2& w) { return along_face(x.n[i], x.v[i], x.v[x.next(i)], w) == 0; }
+// Where w lies along x's face i: over it (0), before its start (-1) or beyond its end (1).
+int side_of(const Core& x, int i, const Vec2& w) { return along_face(x.n[i], x.v[i], x.v[x.next(i)], w); }
 
 // A point core's one vertex is farthest along every direction.
 bool farthest_at(const Core& x, int k, const Vec2& d) {
-  return detail::farthest_at(x.v[k == 0 ? x.count - 1 : k - 1], x.v[k], x.v[x.next(k)], d);
+  return detail::farthest_at(x.v[x.prev(k)], x.v[k], x.v[x.next(k)], d);
 }
 
 // Apart, the nearest points where y's witness w of x's face i does not lie over the face. The
 // cores' difference y - x has the face w - (face i) at the greatest separation, and its
 // separation along a direction falls away on either side of its greatest (the set of directions
 // along which it is at least c > 0 is an arc), so its nearest point to the origin lies on that
-// face: here at its end, the vertex of x beyond which w lies, and w. Checked (each vertex is its
-// core's farthest along the line between them, which makes them nearest), as rounding or parallel
-// faces can take the greatest separation to another face; else every vertex–edge pair is searched.
-Closest beside_face(const CorePair& p, bool x_is_a, const Axis& axis) {
+// face: here at its end, the vertex of x beyond which w lies (`side`, side_of's), and w. Checked
+// (each vertex is its core's farthest along the line between them, which makes them nearest), as
+// rounding or parallel faces can take the greatest separation to another face; else every
+// vertex–edge pair is searched.
+Closest beside_face(const CorePair& p, bool x_is_a, const Axis& axis, int side) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
   const Vec2& w = y.v[axis.vertex];
-  const int i = axis.face;
-  const int e = along_face(x.n[i], x.v[i], x.v[x.next(i)], w) < 0 ? i : x.next(i);
+  const int e = side < 0 ? axis.face : x.next(axis.face);
   const Vec2 d = w - x.v[e];
   if (!farthest_at(x, e, d) || !farthest_at(y, axis.vertex, Vec2(-d))) return nearest_features(p);
   return x_is_a ? Closest{d.squaredNorm(), x.v[e], w, -1, -1, e, axis.vertex}
@@ -179,7 +180,7 @@ Closest gap(const CorePair& p, const Axes& axes) {
   const bool ref_a = !axes.b_best();
   const Core &x = ref_a ? p.a : p.b, &y = ref_a ? p.b : p.a;
   const Vec2& w = y.v[best.vertex];
-  if (!over_face(x, best.face, w)) return beside_face(p, ref_a, best);
+  if (const int side = side_of(x, best.face, w); side != 0) return beside_face(p, ref_a, best, side);
   const Vec2 q = w - best.s * x.n[best.face];
   return ref_a ? Closest{best.s * best.s, q, w, best.face, -1, 0, best.vertex}
                : Closest{best.s * best.s, w, q, -1, best.face, best.vertex, 0};
@@ -287,10 +288,11 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
 // The contact on the axis' face i of x, y's separation along it s. Apart, s is the distance where
 // the axis' witness, y's deepest vertex, lies over the face (the witness itself: of a sliver's
 // nearly parallel faces, the incident face the clip takes may not hold it). Where it does not, the
-// nearest features beside the face give the distance; the face stays the reference if its clipped incident face
-// comes that near (parallel faces, whose ids then hold whichever side of touching the pair is),
-// else the nearest features make the contact. Overlapping with the deepest vertex beyond the face's ends, the deepest
-// clipped point stands in for it as the main point, so that both points lie on their shapes (the separation stays s).
+// nearest features beside the face give the distance; the face stays the reference if its clipped
+// incident face comes that near (parallel faces, whose ids then hold whichever side of touching the
+// pair is), else the nearest features make the contact. Overlapping with the deepest vertex beyond
+// the face's ends, the deepest clipped point stands in for it as the main point, so that both
+// points lie on their shapes (the separation stays s).
 Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
   const int i = axis.face;
@@ -298,8 +300,9 @@ Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const Con
   const FaceClip c = clip_face(x, i, y);
   if (s > 0) {
     const Vec2& w = y.v[axis.vertex];
-    if (over_face(x, i, w)) return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
-    const Closest near = beside_face(p, x_is_a, axis);
+    const int side = side_of(x, i, w);
+    if (side == 0) return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
+    const Closest near = beside_face(p, x_is_a, axis, side);
     const double distance = std::sqrt(near.squared);
     const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
     if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);

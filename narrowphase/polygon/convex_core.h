@@ -47,6 +47,7 @@ struct Core {
 
   int faces() const { return count == 1 ? 0 : count; }
   int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
 };
 
 // Where the point w lies along the face from v0 to v1 of outward normal n: over it (0, between its

@@ -24,7 +24,7 @@ struct Peak {
 // end; every direction at a point).
 bool in_cone(const Core& c, int k, const Vec2& u) {
   if (c.count == 1) return true;
-  const Vec2& before = c.n[k == 0 ? c.count - 1 : k - 1];
+  const Vec2& before = c.n[c.prev(k)];
   return cross(before, u) >= 0.0 && cross(u, c.n[k]) >= 0.0;
 }
 
@@ -90,7 +90,7 @@ double scale(const CoreEllipse& p) { return p.core.reach + std::max(p.a, p.b) + 
 
 // Whether u.w <= s all over vertex k's cone: at its ends, and along w where w lies inside it.
 bool within(const Core& c, int k, const Vec2& w, double s) {
-  if (std::max(c.n[k == 0 ? c.count - 1 : k - 1].dot(w), c.n[k].dot(w)) > s) return false;
+  if (std::max(c.n[c.prev(k)].dot(w), c.n[k].dot(w)) > s) return false;
   return !in_cone(c, k, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
 }
 
@@ -105,7 +105,7 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const Vec2& v = c.v[k];
   const double minor = std::min(p.a, p.b);
   if (c.count == 1) return v.norm() - minor <= s;
-  const int before = k == 0 ? c.count - 1 : k - 1;
+  const int before = c.prev(k);
   if (within(c, k, Vec2(faces.q[k] - v), s) || within(c, k, Vec2(faces.q[before] - v), s)) return true;
   const Vec2 axis = p.a <= p.b ? Vec2::UnitX() : Vec2::UnitY();
   const bool minor_inside = in_cone(c, k, axis) || in_cone(c, k, Vec2(-axis));
