@@ -3,6 +3,7 @@
 // the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
 // against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
 // and on the degenerate configurations of segments and faces.
+#include "flat_families.h"
 #include "mp_reference.h"
 
 #include <collide2d/kernels.h>
@@ -17,7 +18,6 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <random>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,14 +25,13 @@
 namespace collide2d {
 namespace {
 
-constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
-constexpr double kPi = std::numbers::pi;
+using testing::cases_of;
+using testing::Flat;
+using testing::flat_families;
+using testing::FlatCase;
+using testing::FlatFamily;
 
-enum class Flat { rect, polygon, rounded, capsule, circle, ellipse };
-const char* name_of(Flat k) {
-  constexpr const char* names[] = {"rect", "polygon", "rounded", "capsule", "circle", "ellipse"};
-  return names[static_cast<int>(k)];
-}
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 Orientation orientation_of(const Shape& s) { return Orientation::of(angle_of(s)); }
 
@@ -84,100 +83,6 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
   return out;
 }
 
-Shape moved_to(Shape s, const Vec2& center) {
-  std::visit([&center](auto& x) { x.center = center; }, s);
-  return s;
-}
-
-// A random shape of the kind about the origin, of size about `size` (its longest half-size) and
-// aspect up to `aspect`.
-Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double angle = 2 * kPi * unit(rng);
-  const double thin = size / std::exp(std::log(aspect) * unit(rng));
-  switch (kind) {
-    case Flat::rect:
-      return Rect{Vec2::Zero(), Vec2(size, thin), angle};
-    case Flat::circle:
-      return Circle{Vec2::Zero(), size};
-    case Flat::ellipse:
-      return Ellipse{Vec2::Zero(), size, thin, angle};
-    case Flat::capsule: {
-      const bool long_one = unit(rng) < 0.5;
-      return Capsule{Vec2::Zero(), long_one ? size : thin, long_one ? thin : size, angle};
-    }
-    case Flat::polygon:
-    case Flat::rounded: {
-      const int n = 3 + static_cast<int>(unit(rng) * 6);
-      std::vector<Vec2> v;
-      for (int k = 0; k < n; ++k) {
-        const double t = 2 * kPi * (k + 0.6 * unit(rng)) / n;
-        v.emplace_back(size * std::cos(t), thin * std::sin(t));
-      }
-      const double radius = kind == Flat::rounded ? thin * (0.05 + unit(rng)) : 0.0;
-      return ConvexPolygon::of(v, radius).at(Vec2::Zero(), angle);
-    }
-  }
-  return Circle{};
-}
-
-struct FlatFamily {
-  std::string name;
-  Flat a, b;
-  double size = 1.0;
-  double offset = 0.0;
-  double aspect = 4.0;
-  std::vector<double> deltas;  // of the size: B's support point that far along A's
-  int cases = 24;
-};
-
-void PrintTo(const FlatFamily& f, std::ostream* os) { *os << f.name; }
-
-std::vector<FlatFamily> families() {
-  const Flat kinds[] = {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle};
-  const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
-  std::vector<FlatFamily> out;
-  for (const Flat a : kinds) {
-    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse}) {
-      if ((a == Flat::circle && b == Flat::circle) || (a == Flat::circle && b == Flat::ellipse)) continue;
-      const std::string pair = std::string(name_of(a)) + "_" + name_of(b);
-      out.push_back({pair + "_touching", a, b, 1.0, 0.0, 4.0, near});
-      out.push_back({pair + "_deep", a, b, 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5}});
-      out.push_back({pair + "_slivers", a, b, 1.0, 0.0, 1e6, near});
-      out.push_back({pair + "_far", a, b, 1.0, 1e9, 4.0, near});
-      out.push_back({pair + "_small", a, b, 1e-6, 1e6, 4.0, near});
-      out.push_back({pair + "_large", a, b, 1e6, 0.0, 4.0, near});
-    }
-  }
-  return out;
-}
-
-struct Case {
-  Shape a, b;
-  double delta;  // the nominal gap
-};
-
-// B placed so that its support point along -n lies at A's along n plus delta n (delta in units of
-// the size): for delta >= 0 the pair's distance is delta, to the rounding of B's centre.
-std::vector<Case> cases_of(const FlatFamily& f) {
-  std::mt19937_64 rng(std::hash<std::string>{}(f.name));
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Case> out;
-  for (int k = 0; k < f.cases; ++k) {
-    const double delta = f.deltas[k % f.deltas.size()] * f.size;
-    const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
-    const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
-    const Shape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
-    const Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
-    const double t = 2 * kPi * unit(rng);
-    const Vec2 n(std::cos(t), std::sin(t));
-    const Vec2 pa = support(a, n);
-    const Vec2 pb = support(b0, Vec2(-n));  // b0 is about the origin
-    out.push_back({a, moved_to(b0, pa + delta * n - pb), delta});
-  }
-  return out;
-}
-
 double angle_between(const Vec2& u, const Vec2& v) {
   return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
 }
@@ -189,7 +94,7 @@ TEST_P(FlatFamilies, MatchReference) {
   const FlatFamily& f = GetParam();
   double worst_sep = 0, worst_known = 0, worst_points = 0, worst_normal = 0;
   int k = 0, normals = 0, apart = 0, overlapping = 0;
-  for (const Case& c : cases_of(f)) {
+  for (const FlatCase& c : cases_of(f)) {
     const std::string what = f.name + " case " + std::to_string(k++);
     const Kernels kernels = kernels_of(c.a, c.b);
     const Contact got = kernels.contact({});
@@ -336,6 +241,29 @@ TEST(FlatPairs, BoxRestingOnABox) {
   EXPECT_EQ(over.manifold[1].point_a, Vec2(2, 1));
 }
 
+// A rounded core far from an ellipse (offsets to 1e40 of its size), and against a needle ellipse
+// of aspect 1e28 across its long axis: the scaled frame's quadratic is then huge, and with it its
+// rounding, which must not decide the radius's reach.
+TEST(FlatPairs, RoundedCoresFarFromAnEllipseOrAcrossANeedle) {
+  const Ellipse e{Vec2(-8, -8), 8, 8, -8};
+  for (double offset = 1e3; offset <= 1e40; offset *= 10) {
+    for (const Shape& a : {Shape(Capsule{Vec2(-offset, 4.375), 4.375, 4.375, 4.375}),
+                           Shape(ConvexPolygon::regular(5, 2.0, 3.0).at(Vec2(offset, -offset), 0.3))}) {
+      const double gap = static_cast<double>(reference::signed_distance(a, e).separation);
+      ASSERT_GT(gap, 0.0);
+      EXPECT_FALSE(overlaps(a, e)) << offset;
+      EXPECT_FALSE(distance(a, e).overlapping) << offset;
+    }
+  }
+  const Ellipse needle{Vec2(0, 0), 1e-28, 1.0, 0.0};
+  for (const double x : {-2.0, -1e-3, 1e-3, 2.0}) {
+    const Capsule across{Vec2(x, 0.5), 0.25, 0.5, 1.5707963267948966};
+    const double gap = static_cast<double>(reference::signed_distance(across, needle).separation);
+    EXPECT_EQ(overlaps(across, needle), gap < 0) << x << " reference " << gap;
+    EXPECT_EQ(distance(across, needle).overlapping, gap < 0) << x;
+  }
+}
+
 // A triangle's tip exactly on a face, a capsule of radius 1e-9 of its length flat on a face, a
 // capsule of length 1e-9 of its radius against a circle: known separations.
 TEST(FlatPairs, KnownSeparations) {
@@ -366,9 +294,9 @@ TEST(FlatPairs, KnownSeparations) {
 // feature, on every polygon–circle family and with the contact limited.
 TEST(FlatPairs, PolygonCircleKernelIsTheCoresContact) {
   int compared = 0;
-  for (const FlatFamily& f : families()) {
+  for (const FlatFamily& f : flat_families()) {
     if (f.b != Flat::circle || (f.a != Flat::polygon && f.a != Flat::rounded)) continue;
-    for (const Case& c : cases_of(f)) {
+    for (const FlatCase& c : cases_of(f)) {
       const auto& x = std::get<ConvexPolygon>(c.a);
       const auto& y = std::get<Circle>(c.b);
       for (const double limit : {HUGE_VAL, 0.0}) {
@@ -389,7 +317,7 @@ TEST(FlatPairs, PolygonCircleKernelIsTheCoresContact) {
   EXPECT_GT(compared, 200);
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(families()),
+INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(testing::flat_families()),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace
