@@ -68,6 +68,11 @@ struct Generator {
     e = Ellipse{center(), a, a / std::pow(aspect, uniform(0, 1)), uniform(0, 6.3)};
   }
   void make(Circle& c) { c = Circle{center(), size()}; }
+  // A capsule whose radius is its half length over 1 to 4.
+  void make(Capsule& c) {
+    const double h = size();
+    c = Capsule{center(), h, h / uniform(1, 4), uniform(0, 6.3)};
+  }
   // A convex 8-gon: vertices on an ellipse of aspect up to 2, each within a sixteenth of a turn of
   // its regular place.
   void make(ConvexPolygon& p) {
@@ -168,8 +173,8 @@ inline void contact_workloads(benchmark::internal::Benchmark* b) {
   workloads(b);
   b->Arg(3)->Arg(4);
 }
-// The built-in scene has no polygons: pairs with one run on the random pairs (0), the generator's
-// candidates (1) and the overlapping ones among them (3).
+// The built-in scene has no polygons or capsules: pairs with one run on the random pairs (0), the
+// generator's candidates (1) and the overlapping ones among them (3).
 inline void polygon_workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1)->Arg(3); }
 
 }  // namespace collide2d::bench

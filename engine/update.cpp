@@ -271,7 +271,7 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
       [&](const auto& xs, const auto& ys) {
         using X = std::decay_t<decltype(xs)>;
         using Y = std::decay_t<decltype(ys)>;
-        if constexpr (!batched<X> || !batched<Y>) {
+        if constexpr (!batched<X, Y>) {
           return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
         } else if constexpr (rank<X>() <= rank<Y>()) {
           std::get<Batch<X, Y>>(out.batches).add(place, a, b);

@@ -191,7 +191,9 @@ class WorldState {
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
     std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>,
-               Batch<Circle, Ellipse>, Batch<Ellipse, Ellipse>>
+               Batch<Circle, Ellipse>, Batch<Ellipse, Ellipse>, Batch<ConvexPolygon, ConvexPolygon>,
+               Batch<ConvexPolygon, Circle>, Batch<ConvexPolygon, Ellipse>, Batch<Capsule, Circle>,
+               Batch<Capsule, Ellipse>>
         batches;  // every pair kind, in kernel order
     void clear();
   };

@@ -22,10 +22,22 @@ constexpr int rank() {
   return 4;
 }
 
-// Whether the batched overlap tests (batch.h) take the kind; pairs with any other are tested one at
-// a time.
 template <class T>
-constexpr bool batched = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
+constexpr bool one_of_first_kinds = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
+// The kinds the kernels settle on convex cores (narrowphase/polygon/convex_core.h).
+template <class T>
+constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule>;
+
+template <class X, class Y>
+constexpr bool core_with_round = on_cores<X> && (std::is_same_v<Y, Circle> || std::is_same_v<Y, Ellipse>);
+
+// Whether the batched overlap tests (batch.h) take the pair of kinds, either way round: any two of
+// rectangles, circles and ellipses, a polygon or a capsule with a circle or an ellipse, and two
+// polygons. Other pairs are tested one at a time.
+template <class X, class Y>
+constexpr bool batched =
+    (one_of_first_kinds<X> && one_of_first_kinds<Y>) || core_with_round<X, Y> || core_with_round<Y, X> ||
+    (std::is_same_v<X, ConvexPolygon> && std::is_same_v<Y, ConvexPolygon>);
 
 inline std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
 inline std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }

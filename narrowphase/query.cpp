@@ -15,6 +15,7 @@ namespace collide2d {
 namespace {
 
 using detail::key;  // the order in which kernels take their shapes (kernel_order.h)
+using detail::on_cores;
 using detail::rank;
 
 bool overlap_kernel(const Rect& a, const Rect& b) { return overlap_rect_rect(a, b); }
@@ -66,11 +67,8 @@ Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O&
   return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
 
-// The pairs with a polygon or a capsule, in kernel order: a flat shape (rectangle, polygon, capsule)
-// first, settled on convex cores (narrowphase/polygon/convex_core.h).
-template <class T>
-constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule>;
-
+// The pairs with a polygon or a capsule (on_cores, kernel_order.h), in kernel order: a flat shape
+// (rectangle, polygon, capsule) first, settled on convex cores (narrowphase/polygon/convex_core.h).
 template <class T>
 Orientation orientation_of(const T& x) {
   if constexpr (std::is_same_v<T, Circle>) {

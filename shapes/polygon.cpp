@@ -119,6 +119,10 @@ std::shared_ptr<const PolygonOutline> outline_of(std::span<const Vec2> vertices,
     o->normals[i] = Vec2(edge.y(), -edge.x()) / edge.norm();
     o->reach = std::max(o->reach, vertices[i].norm());
   }
+  std::fill(o->vertices.begin() + o->count, o->vertices.end(), vertices[0]);
+  double nearest_face = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < o->count; ++i) nearest_face = std::min(nearest_face, o->normals[i].dot(o->vertices[i]));
+  o->inner = nearest_face >= 0.0 ? nearest_face + radius : -1.0;
   o->reach += radius;
   set_mass(*o);
   return o;

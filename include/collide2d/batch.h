@@ -36,8 +36,22 @@ void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orienta
                              std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping);
 
-/// Any of the above by the kinds of the lists, A before B in kernel order (rectangle, circle,
-/// ellipse), for generic code; a circle's orientations are not read.
+void overlap_polygon_ellipse(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
+                             std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
+                             std::span<std::uint8_t> overlapping);
+void overlap_capsule_ellipse(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
+                             std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
+                             std::span<std::uint8_t> overlapping);
+void overlap_polygon_circle(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
+                            std::span<const Circle> circles, std::span<std::uint8_t> overlapping);
+void overlap_capsule_circle(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
+                            std::span<const Circle> circles, std::span<std::uint8_t> overlapping);
+void overlap_polygon_polygon(std::span<const ConvexPolygon> a, std::span<const Orientation> a_orientations,
+                             std::span<const ConvexPolygon> b, std::span<const Orientation> b_orientations,
+                             std::span<std::uint8_t> overlapping);
+
+/// Any of the above by the kinds of the lists, A before B in kernel order (rectangle, polygon,
+/// capsule, circle, ellipse), for generic code; a circle's orientations are not read.
 template <class A, class B>
 void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
                    std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
@@ -51,6 +65,16 @@ void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientat
     overlap_circle_circle(a, b, overlapping);
   } else if constexpr (std::is_same_v<A, Circle> && std::is_same_v<B, Ellipse>) {
     overlap_circle_ellipse(a, b, b_orientations, overlapping);
+  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, Ellipse>) {
+    overlap_polygon_ellipse(a, a_orientations, b, b_orientations, overlapping);
+  } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Ellipse>) {
+    overlap_capsule_ellipse(a, a_orientations, b, b_orientations, overlapping);
+  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, Circle>) {
+    overlap_polygon_circle(a, a_orientations, b, overlapping);
+  } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Circle>) {
+    overlap_capsule_circle(a, a_orientations, b, overlapping);
+  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, ConvexPolygon>) {
+    overlap_polygon_polygon(a, a_orientations, b, b_orientations, overlapping);
   } else {
     static_assert(std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>, "no batch for this pair kind or order");
     overlap_ellipse_ellipse(a, a_orientations, b, b_orientations, overlapping);

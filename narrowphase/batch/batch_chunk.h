@@ -1,5 +1,5 @@
 // Private: what the batched kernels (overlap_batch.cpp, contact_batch.cpp) share. Work goes in
-// chunks of 256 pairs: scalar code writes each pair's kernel inputs (its lanes, lanes.h, with the
+// chunks of up to 256 pairs: scalar code writes each pair's kernel inputs (its lanes, lanes.h, with the
 // one-off kernel's rounding) into one array per field, the vector kernel runs on the chunk, and the
 // results are read back pair by pair.
 #pragma once
@@ -11,22 +11,29 @@
 
 namespace collide2d::detail {
 
-inline constexpr std::size_t kChunk = 256;
 // At least the doubles in the widest vector of any Highway target (256 bytes for SVE and RVV):
 // a kernel of any target that reads a chunk's first n pairs in whole vectors reads no further than
 // n rounded up to a multiple of this.
 inline constexpr std::size_t kMaxLanes = 256 / sizeof(double);
-static_assert(kChunk % kMaxLanes == 0);
 
-// A field's array, a little longer than the chunk: arrays 2 KiB apart would alias every other one
-// at the same 4 KiB offset, and the pair-by-pair writes that fill a chunk would stall on it.
-inline constexpr std::size_t kFieldStride = kChunk + 8;
-
-// A chunk of pairs, one array per field, and a byte per pair for a kernel's verdict.
+// A chunk of pairs, one array per field, and a byte per pair for a kernel's verdict. 256 pairs, or
+// fewer where the fields are many: the arrays are written pair by pair and then read by the kernel,
+// and stay within 24 KiB so that the reads find them in a 32 KiB L1 data cache. Each array is a
+// little longer than the chunk: arrays a multiple of 4 KiB apart would alias at the same cache
+// set, and the pair-by-pair writes that fill a chunk would stall on it.
 template <std::size_t kFields>
 struct Chunk {
-  double field[kFields][kFieldStride];
-  std::uint8_t verdict[kChunk];
+  static constexpr std::size_t pairs_within(std::size_t bytes) {
+    std::size_t n = 256;
+    while (n > kMaxLanes && kFields * (n + 8) * sizeof(double) > bytes) n /= 2;
+    return n;
+  }
+  static constexpr std::size_t kPairs = pairs_within(24 * 1024);
+  static constexpr std::size_t kStride = kPairs + 8;
+  static_assert(kPairs % kMaxLanes == 0);
+
+  double field[kFields][kStride];
+  std::uint8_t verdict[kPairs];
 };
 
 // Fills the chunk with pairs start ... start + count - 1 (lanes_of(k): pair k's lanes), and the

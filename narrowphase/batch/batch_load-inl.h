@@ -14,8 +14,8 @@ using V = hn::Vec<D>;
 using M = hn::Mask<D>;
 
 // The lanes i ... i + Lanes(D()) - 1 of the chunk's fields.
-template <class Lanes, std::size_t... I>
-Lanes load(const double (&field)[sizeof...(I)][detail::kFieldStride], std::size_t i, std::index_sequence<I...>) {
+template <class Lanes, std::size_t kStride, std::size_t... I>
+Lanes load(const double (&field)[sizeof...(I)][kStride], std::size_t i, std::index_sequence<I...>) {
   return Lanes{hn::LoadU(D(), field[I] + i)...};
 }
 

@@ -123,8 +123,9 @@ void contact_batch(std::span<Contact> contacts, LanesOf lanes_of, RunChunk chunk
   using Out = detail::ContactLanes<double>;
   detail::Chunk<In::kFields> in;
   detail::Chunk<Out::kFields> out;
-  for (std::size_t start = 0; start < contacts.size(); start += detail::kChunk) {
-    const std::size_t count = std::min(detail::kChunk, contacts.size() - start);
+  static_assert(in.kPairs == out.kPairs);
+  for (std::size_t start = 0; start < contacts.size(); start += in.kPairs) {
+    const std::size_t count = std::min(in.kPairs, contacts.size() - start);
     detail::fill_chunk(in, start, count, lanes_of);
     chunk(in, out, count);
     for (std::size_t i = 0; i < count; ++i) {

@@ -160,6 +160,55 @@ struct CircleEllipseLanes {
   std::array<V, kFields> fields() const { return {px, py, a, b, r}; }
 };
 
+// A flat shape against an ellipse as the disc test takes it (disc_filter-inl.h): the shape's centre
+// in the ellipse's frame, its reach and inner radius, the semi-axes.
+template <class V>
+struct DiscEllipseLanes {
+  V ox, oy;
+  V reach, inner;
+  V a, b;
+
+  static constexpr std::size_t kFields = 6;
+  std::array<V, kFields> fields() const { return {ox, oy, reach, inner, a, b}; }
+};
+
+// Two flat shapes, or a flat shape and a circle, as the disc test takes them: B's centre in A's
+// frame, and each shape's reach and inner radius (a circle's radius both).
+template <class V>
+struct DiscPairLanes {
+  V dx, dy;
+  V a_reach, a_inner;
+  V b_reach, b_inner;
+
+  static constexpr std::size_t kFields = 6;
+  std::array<V, kFields> fields() const { return {dx, dy, a_reach, a_inner, b_reach, b_inner}; }
+};
+
+// A flat shape's core (convex_core.h) against an ellipse, as the batched overlap takes it: the core's
+// placement in the ellipse's frame, its N vertex slots in its own frame (every slot set, those past
+// the count repeating the first; 2 for a segment), their count, its radius and the semi-axes.
+template <class V, std::size_t N = kMaxPolygonVertices>
+struct CoreEllipseLanes {
+  V ox, oy;  // the placement's offset
+  V c, s;    // and rotation
+  std::array<V, N> vx, vy;
+  V count;
+  V radius;
+  V a, b;
+
+  static constexpr std::size_t kFields = 8 + 2 * N;
+  std::array<V, kFields> fields() const {  // in declaration order
+    std::array<V, kFields> out;            // every slot set below: no zero fill first
+    out[0] = ox, out[1] = oy, out[2] = c, out[3] = s;
+    std::copy(vx.begin(), vx.end(), out.begin() + 4);
+    std::copy(vy.begin(), vy.end(), out.begin() + 4 + N);
+    out[kFields - 4] = count, out[kFields - 3] = radius, out[kFields - 2] = a, out[kFields - 1] = b;
+    return out;
+  }
+};
+template <class V>
+using SegmentEllipseLanes = CoreEllipseLanes<V, 2>;
+
 // Two ellipses as the algebraic test takes them (ellipse_cubic-inl.h): B's centre less A's in world
 // axes, each orientation, each pair of semi-axes.
 template <class V>

@@ -17,6 +17,7 @@
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -39,6 +40,9 @@ namespace collide2d::HWY_NAMESPACE {
 #include "narrowphase/overlap/rect_ellipse_filter-inl.h"
 #include "narrowphase/overlap/rect_rect_overlap-inl.h"
 
+#include "narrowphase/polygon/disc_filter-inl.h"
+#include "narrowphase/polygon/least_quadratic-inl.h"
+
 #include "narrowphase/batch/batch_load-inl.h"
 
 detail::LaneVerdicts<M> decide(const detail::RectEllipseLanes<V>& f) { return RectEllipseFilter<D>(D(), f).run(); }
@@ -54,6 +58,10 @@ detail::LaneVerdicts<M> decide(const detail::CircleEllipseLanes<V>& f) {
 }
 detail::LaneVerdicts<M> decide(const detail::EllipseEllipseLanes<V>& f) { return ellipse_cubic_verdicts(D(), f); }
 
+detail::LaneVerdicts<M> decide(const detail::CoreEllipseLanes<V>& f) { return core_ellipse_verdicts(D(), f); }
+detail::LaneVerdicts<M> decide(const detail::SegmentEllipseLanes<V>& f) { return core_ellipse_verdicts(D(), f); }
+detail::LaneVerdicts<M> decide(const detail::DiscEllipseLanes<V>& f) { return disc_verdicts(D(), f); }
+detail::LaneVerdicts<M> decide(const detail::DiscPairLanes<V>& f) { return disc_verdicts(D(), f); }
 // The kernel on the chunk's first `count` pairs, in whole vectors.
 template <template <class> class Lanes>
 void decide_chunk(detail::Chunk<Lanes<double>::kFields>& chunk, std::size_t count) {
@@ -91,6 +99,20 @@ void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
   decide_chunk<detail::EllipseEllipseLanes>(chunk, count);
 }
 
+void core_ellipse_chunk(detail::Chunk<detail::CoreEllipseLanes<double>::kFields>& chunk, std::size_t count) {
+  decide_chunk<detail::CoreEllipseLanes>(chunk, count);
+}
+
+void segment_ellipse_chunk(detail::Chunk<detail::SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count) {
+  decide_chunk<detail::SegmentEllipseLanes>(chunk, count);
+}
+void disc_ellipse_chunk(detail::Chunk<detail::DiscEllipseLanes<double>::kFields>& chunk, std::size_t count) {
+  decide_chunk<detail::DiscEllipseLanes>(chunk, count);
+}
+void disc_pair_chunk(detail::Chunk<detail::DiscPairLanes<double>::kFields>& chunk, std::size_t count) {
+  decide_chunk<detail::DiscPairLanes>(chunk, count);
+}
+
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -115,6 +137,10 @@ HWY_EXPORT(circle_circle_chunk);
 HWY_EXPORT(rect_circle_chunk);
 HWY_EXPORT(circle_ellipse_chunk);
 HWY_EXPORT(ellipse_ellipse_chunk);
+HWY_EXPORT(core_ellipse_chunk);
+HWY_EXPORT(segment_ellipse_chunk);
+HWY_EXPORT(disc_ellipse_chunk);
+HWY_EXPORT(disc_pair_chunk);
 
 }  // namespace
 
@@ -135,6 +161,28 @@ void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) 
 }
 void detail::decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>) {
   HWY_DYNAMIC_DISPATCH(ellipse_ellipse_chunk)(chunk, count);
+}
+
+void detail::decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(core_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Ellipse>) {
+  HWY_DYNAMIC_DISPATCH(segment_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Circle>) {
+  HWY_DYNAMIC_DISPATCH(core_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Circle>) {
+  HWY_DYNAMIC_DISPATCH(segment_ellipse_chunk)(chunk, count);
+}
+
+void detail::decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t count,
+                    Kinds<DiscEllipseLanes<double>, void>) {
+  HWY_DYNAMIC_DISPATCH(disc_ellipse_chunk)(chunk, count);
+}
+void detail::decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count,
+                    Kinds<DiscPairLanes<double>, void>) {
+  HWY_DYNAMIC_DISPATCH(disc_pair_chunk)(chunk, count);
 }
 
 namespace {
@@ -204,6 +252,46 @@ void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orienta
   detail::check_lengths("overlap_ellipse_ellipse", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
                         overlapping.size());
   overlap_lists<Ellipse, Ellipse>(a, a_orientations, b, b_orientations, overlapping);
+}
+
+void overlap_polygon_ellipse(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
+                             std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
+                             std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_polygon_ellipse",
+                        {polygons.size(), polygon_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+                        overlapping.size());
+  overlap_lists<ConvexPolygon, Ellipse>(polygons, polygon_orientations, ellipses, ellipse_orientations, overlapping);
+}
+
+void overlap_capsule_ellipse(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
+                             std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
+                             std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_capsule_ellipse",
+                        {capsules.size(), capsule_orientations.size(), ellipses.size(), ellipse_orientations.size()},
+                        overlapping.size());
+  overlap_lists<Capsule, Ellipse>(capsules, capsule_orientations, ellipses, ellipse_orientations, overlapping);
+}
+
+void overlap_polygon_circle(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
+                            std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_polygon_circle", {polygons.size(), polygon_orientations.size(), circles.size()},
+                        overlapping.size());
+  overlap_lists<ConvexPolygon, Circle>(polygons, polygon_orientations, circles, {}, overlapping);
+}
+
+void overlap_capsule_circle(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
+                            std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_capsule_circle", {capsules.size(), capsule_orientations.size(), circles.size()},
+                        overlapping.size());
+  overlap_lists<Capsule, Circle>(capsules, capsule_orientations, circles, {}, overlapping);
+}
+
+void overlap_polygon_polygon(std::span<const ConvexPolygon> a, std::span<const Orientation> a_orientations,
+                             std::span<const ConvexPolygon> b, std::span<const Orientation> b_orientations,
+                             std::span<std::uint8_t> overlapping) {
+  detail::check_lengths("overlap_polygon_polygon", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
+                        overlapping.size());
+  overlap_lists<ConvexPolygon, ConvexPolygon>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 }  // namespace collide2d

@@ -13,12 +13,16 @@
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/polygon/convex_core.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace collide2d::detail {
@@ -55,6 +59,62 @@ inline EllipseEllipseLanes<double> lanes_of(const PairRef<Ellipse, Ellipse>& p) 
                              : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 
+// A flat shape's core as the lanes take it: every vertex slot (those past the count repeating the
+// first), the count and the radius.
+inline const std::array<Vec2, kMaxPolygonVertices>& slots_of(const ConvexPolygon& p) { return p.outline->vertices; }
+inline std::array<Vec2, 2> slots_of(const Capsule& c) { return segment_of(c); }
+inline int count_of(const ConvexPolygon& p) { return p.count(); }
+inline int count_of(const Capsule&) { return 2; }
+inline double radius_of(const ConvexPolygon& p) { return p.radius(); }
+inline double radius_of(const Capsule& c) { return c.radius; }
+
+// A flat shape's core placed in the frame of an ellipse of semi-axes a, b posed at `frame_center` and
+// `frame`.
+template <class A, std::size_t N = std::tuple_size_v<std::decay_t<decltype(slots_of(std::declval<A>()))>>>
+CoreEllipseLanes<double, N> core_ellipse_lanes(const A& shape, const Orientation& o, const Vec2& frame_center,
+                                               const Orientation& frame, double a, double b) {
+  const Placement at = Placement::of(shape.center, o, frame_center, frame);
+  const auto& slots = slots_of(shape);
+  CoreEllipseLanes<double, N> f;  // every field set below: no zero fill first
+  f.ox = at.offset.x(), f.oy = at.offset.y(), f.c = at.rot.c, f.s = at.rot.s;
+  for (std::size_t i = 0; i < N; ++i) f.vx[i] = slots[i].x(), f.vy[i] = slots[i].y();
+  f.count = count_of(shape), f.radius = radius_of(shape), f.a = a, f.b = b;
+  return f;
+}
+template <class A>
+auto lanes_of(const PairRef<A, Ellipse>& p) {
+  return core_ellipse_lanes(p.a, p.a_orientation, p.b.center, p.b_orientation, p.b.a, p.b.b);
+}
+// A circle is the ellipse of two equal semi-axes: its quadratic is the squared distance over r^2,
+// and its bounds on a rounded core's reach (quadratic_verdicts) meet.
+template <class A>
+requires on_cores<A>
+auto lanes_of(const PairRef<A, Circle>& p) {
+  return core_ellipse_lanes(p.a, p.a_orientation, p.b.center, Orientation{}, p.b.radius, p.b.radius);
+}
+
+// Pair k's disc lanes (disc_filter-inl.h), for a flat shape A: its centre where the one-off test
+// places it (CoreEllipse::of, CorePair::of), both shapes' discs.
+template <class A>
+DiscEllipseLanes<double> disc_lanes_of(const PairRef<A, Ellipse>& p) {
+  const Vec2 o = Placement::of(p.a.center, p.a_orientation, p.b.center, p.b_orientation).offset;
+  const Discs d = discs_of(p.a);
+  return {o.x(), o.y(), d.reach, d.inner, p.b.a, p.b.b};
+}
+template <class A, class B>
+DiscPairLanes<double> disc_pair_lanes(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+  const Vec2 o = Placement::of(b.center, bo, a.center, ao).offset;
+  const Discs da = discs_of(a), db = discs_of(b);
+  return {o.x(), o.y(), da.reach, da.inner, db.reach, db.inner};
+}
+template <class A, class B>
+DiscPairLanes<double> disc_lanes_of(const PairRef<A, B>& p) {
+  if constexpr (std::is_same_v<A, B>) {
+    if (key(p.b) < key(p.a)) return disc_pair_lanes(p.b, p.b_orientation, p.a, p.a_orientation);
+  }
+  return disc_pair_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+}
+
 // The verdict of a pair the vector kernel left uncertain.
 inline bool exact(const PairRef<Rect, Ellipse>& p) { return minkowski_fallback(p.a, p.b); }
 inline bool exact(const PairRef<Circle, Ellipse>& p) { return circle_ellipse_exact(lanes_of(p)); }
@@ -62,6 +122,19 @@ inline bool exact(const PairRef<Circle, Ellipse>& p) { return circle_ellipse_exa
 inline bool exact(const PairRef<Ellipse, Ellipse>& p) {
   return key(p.b) < key(p.a) ? overlap_ellipse_ellipse(p.b, p.b_orientation, p.a, p.a_orientation)
                              : overlap_ellipse_ellipse(p.a, p.a_orientation, p.b, p.b_orientation);
+}
+// A flat shape against an ellipse: the one-off test whole.
+template <class A>
+bool exact(const PairRef<A, Ellipse>& p) {
+  return core_ellipse_overlap(CoreEllipse::of(p.a, p.a_orientation, p.b, p.b_orientation));
+}
+// Two flat shapes, or a flat shape and a circle: the one-off test whole, in the dispatcher's order.
+template <class A, class B>
+requires(on_cores<A> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
+  if constexpr (std::is_same_v<A, B>) {
+    if (key(p.b) < key(p.a)) return core_overlap(CorePair::of(p.b, p.b_orientation, p.a, p.a_orientation));
+  }
+  return core_overlap(CorePair::of(p.a, p.a_orientation, p.b, p.b_orientation));
 }
 template <class A, class B>
 bool exact(const PairRef<A, B>&) {
@@ -78,23 +151,66 @@ void decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>);
 void decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>);
 void decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>);
 void decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>);
+void decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Ellipse>);
+void decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Ellipse>);
+void decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Circle>);
+void decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Circle>);
+void decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<DiscEllipseLanes<double>, void>);
+void decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count, Kinds<DiscPairLanes<double>, void>);
+
+// The verdict the vector kernel left in a chunk's slot, or else the exact fallback's.
+template <class Ref>
+bool verdict_or_exact(std::uint8_t slot, const Ref& pair) {
+  const auto verdict = static_cast<FilterVerdict>(slot);
+  return verdict == FilterVerdict::uncertain ? exact(pair) : verdict == FilterVerdict::overlap;
+}
+
+// overlapping[at(i)] for i < n: in chunks, each pair's lanes from scalar code, the chunk's verdicts
+// from the kind's vector kernel, each pair it left uncertain from the exact fallback; the exact
+// test alone where the kind has no vector kernel of its own.
+template <class A, class B, class Pair, class At>
+void settle(Pair pair, std::size_t n, At at, std::span<std::uint8_t> overlapping) {
+  if constexpr (requires(const PairRef<A, B>& p) { lanes_of(p); }) {
+    using Lanes = decltype(lanes_of(std::declval<PairRef<A, B>>()));
+    Chunk<Lanes::kFields> chunk;
+    for (std::size_t start = 0; start < n; start += chunk.kPairs) {
+      const std::size_t count = std::min(chunk.kPairs, n - start);
+      fill_chunk(chunk, start, count, [&](std::size_t i) { return lanes_of(pair(at(i))); });
+      decide(chunk, count, Kinds<A, B>());
+      for (std::size_t i = 0; i < count; ++i) {
+        overlapping[at(start + i)] = verdict_or_exact(chunk.verdict[i], pair(at(start + i))) ? 1 : 0;
+      }
+    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) overlapping[at(i)] = exact(pair(at(i))) ? 1 : 0;
+  }
+}
 
 // overlapping[k] for the pairs k < overlapping.size(), A before B in kernel order (rectangle,
-// circle, ellipse). In chunks: each pair's lanes from scalar code, the
-// chunk's verdicts from the vector kernel, each pair it left uncertain from the exact fallback.
+// polygon, capsule, circle, ellipse). A polygon or a capsule first meets the disc test (a few
+// fields a pair, no vertex read), and only the pairs it leaves go on.
 template <class A, class B, class Pair>
 void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
-  using Lanes = decltype(lanes_of(std::declval<PairRef<A, B>>()));
-  Chunk<Lanes::kFields> chunk;
-  for (std::size_t start = 0; start < overlapping.size(); start += kChunk) {
-    const std::size_t count = std::min(kChunk, overlapping.size() - start);
-    fill_chunk(chunk, start, count, [&](std::size_t k) { return lanes_of(pair(k)); });
-    decide(chunk, count, Kinds<A, B>());
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto verdict = static_cast<FilterVerdict>(chunk.verdict[i]);
-      const bool hit = verdict == FilterVerdict::uncertain ? exact(pair(start + i)) : verdict == FilterVerdict::overlap;
-      overlapping[start + i] = hit ? 1 : 0;
+  if constexpr (on_cores<A>) {
+    using Lanes = decltype(disc_lanes_of(std::declval<PairRef<A, B>>()));
+    Chunk<Lanes::kFields> discs;
+    std::array<std::size_t, discs.kPairs> open;
+    for (std::size_t start = 0; start < overlapping.size(); start += discs.kPairs) {
+      const std::size_t count = std::min(discs.kPairs, overlapping.size() - start);
+      fill_chunk(discs, start, count, [&](std::size_t k) { return disc_lanes_of(pair(k)); });
+      decide(discs, count, Kinds<Lanes, void>());
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < count; ++i) {
+        const auto verdict = static_cast<FilterVerdict>(discs.verdict[i]);
+        if (verdict == FilterVerdict::uncertain) open[n++] = start + i;
+        overlapping[start + i] = verdict == FilterVerdict::overlap ? 1 : 0;
+      }
+      settle<A, B>(
+          pair, n, [&](std::size_t i) { return open[i]; }, overlapping);
     }
+  } else {
+    settle<A, B>(
+        pair, overlapping.size(), [](std::size_t k) { return k; }, overlapping);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "narrowphase/polygon/convex_core.h"
 
+#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/frames/unit_vector.h"
 
@@ -10,6 +11,8 @@
 #include <span>
 
 namespace collide2d::detail {
+#include "narrowphase/polygon/disc_filter-inl.h"
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -18,13 +21,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kCutAtStart = kMaxPolygonVertices;
 constexpr int kCutAtEnd = kMaxPolygonVertices + 1;
 
-// `reach`: the shape's own, the largest |vertex| plus the radius.
-Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, double reach,
+Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, const Discs& discs,
           const Placement& at) {
   Core c;
   c.count = static_cast<int>(vertices.size());
   c.radius = radius;
-  c.reach = reach;
+  c.discs = discs;
+  c.center = at.offset;
   if (at.moves()) {
     for (std::size_t i = 0; i < vertices.size(); ++i) c.v[i] = at.point(vertices[i]);
     for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
@@ -345,7 +348,8 @@ Contact contact_of(const CorePair& p, const Axes& axes, const ContactOptions& op
     return end_contact(p, !b_best, best);
   }
   Contact out = face_contact(p, !b_best, best, options);
-  const bool tie = b_best && axes.of_a.face >= 0 && axes.of_b.s - axes.of_a.s <= 1e-9 * (p.a.reach + p.b.reach);
+  const bool tie =
+      b_best && axes.of_a.face >= 0 && axes.of_b.s - axes.of_a.s <= 1e-9 * (p.a.discs.reach + p.b.discs.reach);
   if (!tie || feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) return out;
   const Contact kept = face_contact(p, true, axes.of_a, options);
   if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
@@ -427,24 +431,23 @@ Core core_of(const Rect& r, const Placement& at) {
   const double hx = r.half_extents.x(), hy = r.half_extents.y();
   const Vec2 v[] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const Vec2 n[] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-  return make(v, n, 0.0, v[0].norm(), at);
+  return make(v, n, 0.0, discs_of(r), at);
 }
 
 Core core_of(const ConvexPolygon& p, const Placement& at) {
   const PolygonOutline& o = *p.outline;
   const auto count = static_cast<std::size_t>(o.count);
-  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, o.reach, at);
+  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, discs_of(p), at);
 }
 
 Core core_of(const Capsule& c, const Placement& at) {
-  const Vec2 v[] = {{-c.half_length, 0}, {c.half_length, 0}};
   const Vec2 n[] = {{0, -1}, {0, 1}};
-  return make(v, n, c.radius, c.half_length + c.radius, at);
+  return make(segment_of(c), n, c.radius, discs_of(c), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {
   const Vec2 v[] = {{0, 0}};
-  return make(v, {}, c.radius, c.radius, at);
+  return make(v, {}, c.radius, discs_of(c), at);
 }
 
 double CorePair::scale() const {
@@ -470,6 +473,10 @@ bool overlapping(const CorePair& p, const Axes& axes, Closest& c) {
 }  // namespace
 
 bool core_overlap(const CorePair& p) {
+  const DiscPairLanes<double> discs{p.b.center.x(),  p.b.center.y(),  p.a.discs.reach,
+                                    p.a.discs.inner, p.b.discs.reach, p.b.discs.inner};
+  const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
+  if (certain.overlap || certain.separated) return certain.overlap;
   Closest c;
   return overlapping(p, axes_of(p, radii(p)), c);
 }

@@ -28,9 +28,23 @@
 
 #include "shapes/internal.h"
 
+#include <algorithm>
 #include <array>
 
 namespace collide2d::detail {
+
+// A flat shape's (or a circle's) two discs about its centre: the reach, the largest |vertex| plus
+// the radius, and the inner radius, that of a disc within the solid (-1 where the core does not hold
+// the centre).
+struct Discs {
+  double reach, inner;
+};
+inline Discs discs_of(const Rect& r) {
+  return {r.half_extents.norm(), std::min(r.half_extents.x(), r.half_extents.y())};
+}
+inline Discs discs_of(const ConvexPolygon& p) { return {p.outline->reach, p.outline->inner}; }
+inline Discs discs_of(const Capsule& c) { return {c.half_length + c.radius, c.radius}; }
+inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
 
 // A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
 // count repeating the first), each face's outward
@@ -43,7 +57,8 @@ struct Core {
   std::array<Vec2, kMaxPolygonVertices> n;
   int count = 0;
   double radius = 0.0;
-  double reach = 0.0;  // the largest |vertex| about its own centre, plus the radius
+  Discs discs{0.0, -1.0};      // about its own centre
+  Vec2 center = Vec2::Zero();  // its own centre, in the frame
 
   int faces() const { return count == 1 ? 0 : count; }
   int next(int i) const { return i + 1 == count ? 0 : i + 1; }
@@ -69,10 +84,18 @@ struct Placement {
   Rotation<double> rot;
   Vec2 offset = Vec2::Zero();
 
+  // Where a shape posed at `center` and `o` goes in the frame posed at `frame_center` and `frame`.
+  static Placement of(const Vec2& center, const Orientation& o, const Vec2& frame_center, const Orientation& frame) {
+    const Rotation<double> r{o.c, o.s}, f{frame.c, frame.s};
+    return {r.relative_to(f), f.apply_inverse(Vec2(center - frame_center))};
+  }
   bool moves() const { return rot.c != 1.0 || rot.s != 0.0 || offset != Vec2::Zero(); }
   Vec2 point(const Vec2& p) const { return offset + rot.apply(p); }
   Vec2 direction(const Vec2& d) const { return rot.apply(d); }
 };
+
+// A capsule's core: its segment's two ends in its own frame.
+inline std::array<Vec2, 2> segment_of(const Capsule& c) { return {Vec2(-c.half_length, 0), Vec2(c.half_length, 0)}; }
 
 Core core_of(const Rect& r, const Placement& at);
 Core core_of(const ConvexPolygon& p, const Placement& at);
@@ -87,9 +110,7 @@ struct CorePair {
 
   template <class A, class B>
   static CorePair of(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-    const Rotation<double> ra{ao.c, ao.s}, rb{bo.c, bo.s};
-    const Placement b_in_a{rb.relative_to(ra), ra.apply_inverse(Vec2(b.center - a.center))};
-    return {core_of(a, Placement{}), core_of(b, b_in_a), ra, a.center};
+    return {core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), {ao.c, ao.s}, a.center};
   }
   Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }
@@ -111,9 +132,7 @@ struct CoreEllipse {
 
   template <class A>
   static CoreEllipse of(const A& shape, const Orientation& ao, const Ellipse& e, const Orientation& eo) {
-    const Rotation<double> ra{ao.c, ao.s}, re{eo.c, eo.s};
-    const Placement in_e{ra.relative_to(re), re.apply_inverse(Vec2(shape.center - e.center))};
-    return {core_of(shape, in_e), e.a, e.b, re, e.center};
+    return {core_of(shape, Placement::of(shape.center, ao, e.center, eo)), e.a, e.b, {eo.c, eo.s}, e.center};
   }
   Vec2 world_point(const Vec2& p) const { return e_center + e_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return e_rot.apply(d); }

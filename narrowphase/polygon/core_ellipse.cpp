@@ -1,12 +1,17 @@
+#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/ellipse/distance_point_ellipse.h"
 #include "narrowphase/polygon/convex_core.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace collide2d::detail {
+#include "narrowphase/polygon/disc_filter-inl.h"
+#include "narrowphase/polygon/least_quadratic-inl.h"
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -86,7 +91,9 @@ Faces best_face(const CoreEllipse& p) {
 }
 
 // The pair's scale: what the rounding of its separations is a few u of.
-double scale(const CoreEllipse& p) { return p.core.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff(); }
+double scale(const CoreEllipse& p) {
+  return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
+}
 
 // Whether u.w <= s all over vertex k's cone: at its ends, and along w where w lies inside it.
 bool within(const Core& c, int k, const Vec2& w, double s) {
@@ -132,37 +139,14 @@ Peak deepest(const CoreEllipse& p, const Faces& faces, int& roots) {
   return best;
 }
 
-// The point of A's core least in the ellipse's quadratic (x/a)^2 + (y/b)^2, and that value: in
-// the frame scaled to make the ellipse the unit disc, the core's point nearest the origin (a convex
-// polygon there too); 0 where the core holds the centre strictly inside (on an edge, that edge's
+// The point of A's core least in the ellipse's quadratic (least_quadratic-inl.h), in the scaled
+// frame, and that value (0 where the core holds the centre strictly inside; on an edge, that edge's
 // nearest point says so; and a core that rounding has collapsed, far from the ellipse, holds
 // nothing).
-struct Least {
-  Vec2 point = Vec2::Zero();
-  double q = kInf;
-  double bound = 0.0;  // of q's rounding: 16 u of the largest squared scaled vertex
-};
-Least least_quadratic(const CoreEllipse& p) {
+LeastQuadratic<double> least_quadratic(const CoreEllipse& p) {
   const Core& c = p.core;
-  const auto scaled = [&](const Vec2& v) { return Vec2(v.x() / p.a, v.y() / p.b); };
-  Least out;
-  bool holds = c.count >= 3;
-  const int edges = c.count == 2 ? 1 : c.count;
-  for (int i = 0; i < edges; ++i) {
-    const Vec2 w0 = scaled(c.v[i]), w1 = scaled(c.v[(i + 1) % c.count]);
-    const Vec2 e = w1 - w0;
-    holds = holds && cross(e, Vec2(-w0)) > 0.0;
-    const double length = e.squaredNorm();
-    const double t = length > 0.0 ? std::clamp(-w0.dot(e) / length, 0.0, 1.0) : 0.0;
-    const Vec2 w = t == 1.0 ? w1 : Vec2(w0 + t * e);
-    const double q = w.squaredNorm();
-    if (q < out.q) out = {Vec2(w.x() * p.a, w.y() * p.b), q};
-  }
-  if (c.count == 1) out = {c.v[0], scaled(c.v[0]).squaredNorm()};
-  if (holds) out = {Vec2::Zero(), 0.0};
-  for (int k = 0; k < c.count; ++k) out.bound = std::max(out.bound, scaled(c.v[k]).squaredNorm());
-  out.bound *= 8 * std::numeric_limits<double>::epsilon();
-  return out;
+  const double count = c.count;
+  return least_quadratic(Scalar{}, scaled_core(Scalar{}, c.x, c.y, p.a, p.b), count, c.count == 2 ? 1 : c.count);
 }
 
 }  // namespace
@@ -185,16 +169,15 @@ namespace {
 
 // Overlapping where the core's least ellipse quadratic is below 1 by more than its rounding (that
 // point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
-// a long edge's nearest point, which the bound follows); else where the signed distance is within
-// the radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
-// nearest point within the radius of a rounded core), unless a cheaper bound shows them apart. The
-// one verdict of the overlap test and the distance, so that they agree to the bit; the deepest peak
-// into `d` where it was needed.
-bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
-  if (least.q <= 1.0 - least.bound) return true;
-  // Certainly apart: a sharp core beyond the quadratic's rounding, or a face normal's separation (a
-  // lower bound of the signed distance) beyond the radius.
-  if (p.core.radius == 0.0 && least.q > 1.0 + least.bound) return false;
+// a long edge's nearest point, which the bound follows) or a rounded core's radius certainly reaches
+// the ellipse; apart where it certainly does not (quadratic_verdicts); else where the signed distance is within the
+// radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
+// nearest point within the radius of a rounded core), unless a face normal's separation (a lower
+// bound of the signed distance) shows them apart. The one verdict of the overlap test and the
+// distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
+bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, Peak& d) {
+  const LaneVerdicts<bool> certain = quadratic_verdicts(Scalar{}, least, p.core.x, p.core.y, p.core.radius, p.a, p.b);
+  if (certain.overlap || certain.separated) return certain.overlap;
   const Faces faces = best_face(p);
   if (faces.best.s > p.core.radius) return false;
   int roots = 0;
@@ -205,15 +188,24 @@ bool overlapping(const CoreEllipse& p, const Least& least, Peak& d) {
 }  // namespace
 
 bool core_ellipse_overlap(const CoreEllipse& p) {
+  const Core& c = p.core;
+  const DiscEllipseLanes<double> discs{c.center.x(), c.center.y(), c.discs.reach, c.discs.inner, p.a, p.b};
+  const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
+  if (certain.overlap || certain.separated) return certain.overlap;
   Peak d;
   return overlapping(p, least_quadratic(p), d);
 }
 
 DistanceResult core_ellipse_distance(const CoreEllipse& p) {
-  const Least least = least_quadratic(p);
+  const LeastQuadratic<double> least = least_quadratic(p);
   Peak d;
   if (overlapping(p, least, d)) {
-    const Vec2& witness = d.s == -kInf ? least.point : d.s <= 0.0 ? d.on_a : d.on_e;
+    // The least point is in the ellipse, unless a rounded core's reach decided.
+    if (d.s == -kInf && least.q > 1.0 - least.bound) {
+      int roots = 0;
+      d = deepest(p, best_face(p), roots);
+    }
+    const Vec2 witness = d.s == -kInf ? Vec2(least.wx * p.a, least.wy * p.b) : d.s <= 0.0 ? d.on_a : d.on_e;
     return DistanceResult::touching(p.world_point(witness));
   }
   if (d.s == -kInf) {

@@ -49,7 +49,7 @@ bool batched(const Shape& a, const Shape& b) {
       [&](const auto& x, const auto& y) {
         using X = std::decay_t<decltype(x)>;
         using Y = std::decay_t<decltype(y)>;
-        if constexpr (!detail::batched<X> || !detail::batched<Y>) {
+        if constexpr (!detail::batched<X, Y>) {
           return overlaps(a, b);  // no batch takes the kind
         } else if constexpr (detail::rank<X>() > detail::rank<Y>()) {
           return batched(b, a);
