@@ -1,9 +1,9 @@
 // Private: the order in which kernels take their shapes: by rank across kinds (a rectangle, a
 // polygon, a capsule, a circle, an ellipse), and by key within one.
 //
-// The key is a total order on shapes of one kind. Same-kind pairs are put in this order before the
-// kernel runs (query.cpp, and the batch in overlap_batch.cpp), so that swapping A and B swaps the
-// result exactly, bit for bit, whatever frame the kernel uses.
+// The key is a total order on shapes of one kind (precedes()). Same-kind pairs are put in this order
+// before the kernel runs (query.cpp, and the batch in overlap_batch.cpp), so that swapping A and B
+// swaps the result exactly, bit for bit, whatever frame the kernel uses.
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -47,13 +47,23 @@ inline std::array<double, 5> key(const Rect& r) {
 inline std::array<double, 5> key(const Capsule& c) {
   return {c.center.x(), c.center.y(), c.half_length, c.radius, c.angle};
 }
+// Whether x comes before y, the order the kernels take two shapes of one kind in.
+template <class T>
+bool precedes(const T& x, const T& y) {
+  return key(x) < key(y);
+}
 // A polygon's pose, then its outline's radius, count and vertices (never its address, which would
-// order a replay differently).
-inline std::array<double, 5 + 2 * kMaxPolygonVertices> key(const ConvexPolygon& p) {
-  std::array<double, 5 + 2 * kMaxPolygonVertices> k{p.center.x(), p.center.y(), p.angle, p.radius(),
-                                                    static_cast<double>(p.count())};
-  for (int i = 0; i < p.count(); ++i) k[5 + 2 * i] = p.vertices()[i].x(), k[6 + 2 * i] = p.vertices()[i].y();
-  return k;
+// order a replay differently): the outline is read only where the poses tie, as copies of one
+// polygon do.
+inline bool precedes(const ConvexPolygon& p, const ConvexPolygon& q) {
+  const auto pose = [](const ConvexPolygon& x) { return std::array<double, 3>{x.center.x(), x.center.y(), x.angle}; };
+  if (pose(p) != pose(q)) return pose(p) < pose(q);
+  const auto outline = [](const ConvexPolygon& x) {
+    std::array<double, 2 + 2 * kMaxPolygonVertices> k{x.radius(), static_cast<double>(x.count())};
+    for (int i = 0; i < x.count(); ++i) k[2 + 2 * i] = x.vertices()[i].x(), k[3 + 2 * i] = x.vertices()[i].y();
+    return k;
+  };
+  return outline(p) < outline(q);
 }
 
 }  // namespace collide2d::detail

@@ -14,8 +14,8 @@
 namespace collide2d {
 namespace {
 
-using detail::key;  // the order in which kernels take their shapes (kernel_order.h)
 using detail::on_cores;
+using detail::precedes;  // the order in which kernels take their shapes (kernel_order.h)
 using detail::rank;
 
 bool overlap_kernel(const Rect& a, const Rect& b) { return overlap_rect_rect(a, b); }
@@ -167,7 +167,7 @@ auto in_kernel_order(const Shape& a, const Shape& b, Kernel kernel) {
         } else if constexpr (rank<X>() > rank<Y>()) {
           return kernel(y, x, true);
         } else {
-          return key(y) < key(x) ? kernel(y, x, true) : kernel(x, y, false);
+          return precedes(y, x) ? kernel(y, x, true) : kernel(x, y, false);
         }
       },
       a, b);

@@ -55,7 +55,7 @@ std::optional<DistanceResult> in_order(const Shape& a, const Shape& b, Kernel ke
     const X& x = std::get<X>(a);
     const Y& y = std::get<Y>(b);
     if constexpr (std::is_same_v<X, Y>) {
-      if (detail::key(y) < detail::key(x)) return kernel(y, x).swapped();
+      if (detail::precedes(y, x)) return kernel(y, x).swapped();
     }
     return kernel(x, y);
   }

@@ -42,11 +42,11 @@ inline RectEllipseLanes<double> lanes_of(const PairRef<Rect, Ellipse>& p) {
   return rect_ellipse_lanes(rect_ellipse_frame<double>(p.a, {ro.c, ro.s}, p.b, {eo.c, eo.s}));
 }
 inline RectRectLanes<double> lanes_of(const PairRef<Rect, Rect>& p) {
-  return key(p.b) < key(p.a) ? rect_rect_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
-                             : rect_rect_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+  return precedes(p.b, p.a) ? rect_rect_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
+                            : rect_rect_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 inline CircleCircleLanes<double> lanes_of(const PairRef<Circle, Circle>& p) {
-  return key(p.b) < key(p.a) ? circle_circle_lanes(p.b, p.a) : circle_circle_lanes(p.a, p.b);
+  return precedes(p.b, p.a) ? circle_circle_lanes(p.b, p.a) : circle_circle_lanes(p.a, p.b);
 }
 inline RectCircleLanes<double> lanes_of(const PairRef<Rect, Circle>& p) {
   return rect_circle_lanes(p.a, p.a_orientation, p.b);
@@ -55,8 +55,8 @@ inline CircleEllipseLanes<double> lanes_of(const PairRef<Circle, Ellipse>& p) {
   return circle_ellipse_lanes(p.a, p.b, p.b_orientation);
 }
 inline EllipseEllipseLanes<double> lanes_of(const PairRef<Ellipse, Ellipse>& p) {
-  return key(p.b) < key(p.a) ? ellipse_ellipse_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
-                             : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+  return precedes(p.b, p.a) ? ellipse_ellipse_lanes(p.b, p.b_orientation, p.a, p.a_orientation)
+                            : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 
 // A flat shape's core as the lanes take it: every vertex slot (those past the count repeating the
@@ -110,7 +110,7 @@ DiscPairLanes<double> disc_pair_lanes(const A& a, const Orientation& ao, const B
 template <class A, class B>
 DiscPairLanes<double> disc_lanes_of(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {
-    if (key(p.b) < key(p.a)) return disc_pair_lanes(p.b, p.b_orientation, p.a, p.a_orientation);
+    if (precedes(p.b, p.a)) return disc_pair_lanes(p.b, p.b_orientation, p.a, p.a_orientation);
   }
   return disc_pair_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
@@ -120,8 +120,8 @@ inline bool exact(const PairRef<Rect, Ellipse>& p) { return minkowski_fallback(p
 inline bool exact(const PairRef<Circle, Ellipse>& p) { return circle_ellipse_exact(lanes_of(p)); }
 // The one-off kernel whole (its algebraic test is again uncertain, then its certain cases and GJK).
 inline bool exact(const PairRef<Ellipse, Ellipse>& p) {
-  return key(p.b) < key(p.a) ? overlap_ellipse_ellipse(p.b, p.b_orientation, p.a, p.a_orientation)
-                             : overlap_ellipse_ellipse(p.a, p.a_orientation, p.b, p.b_orientation);
+  return precedes(p.b, p.a) ? overlap_ellipse_ellipse(p.b, p.b_orientation, p.a, p.a_orientation)
+                            : overlap_ellipse_ellipse(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 // A flat shape against an ellipse: the one-off test whole.
 template <class A>
@@ -132,7 +132,7 @@ bool exact(const PairRef<A, Ellipse>& p) {
 template <class A, class B>
 requires(on_cores<A> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {
-    if (key(p.b) < key(p.a)) return core_overlap(CorePair::of(p.b, p.b_orientation, p.a, p.a_orientation));
+    if (precedes(p.b, p.a)) return core_overlap(CorePair::of(p.b, p.b_orientation, p.a, p.a_orientation));
   }
   return core_overlap(CorePair::of(p.a, p.a_orientation, p.b, p.b_orientation));
 }

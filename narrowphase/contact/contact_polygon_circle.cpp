@@ -28,6 +28,10 @@ Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orie
   const PolygonOutline& o = *a.outline;
   const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
+  if (detail::has_limit(options)) {  // as the cores' contact
+    const detail::DiscGap discs = detail::disc_gap(c, o.reach + b.radius);
+    if (detail::beyond_limit(discs.gap, discs.scale, options)) return Contact::beyond(discs.gap);
+  }
   int face = 0;
   double s = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < o.count; ++i) {

@@ -35,25 +35,10 @@ Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double 
     std::copy(vertices.begin(), vertices.end(), c.v.begin());
     std::copy(normals.begin(), normals.end(), c.n.begin());
   }
-  std::fill(c.v.begin() + c.count, c.v.end(), c.v[0]);  // lowest() reads all kMaxPolygonVertices
+  std::fill(c.v.begin() + c.count, c.v.end(), c.v[0]);  // the axes' kernel reads all kMaxPolygonVertices
   std::fill(c.n.begin() + static_cast<std::ptrdiff_t>(normals.size()), c.n.end(), Vec2::Zero());
   for (int i = 0; i < kMaxPolygonVertices; ++i) c.x[i] = c.v[i].x(), c.y[i] = c.v[i].y();
   return c;
-}
-
-// y's vertex j along d.
-double projection(const Core& y, int j, const Vec2& d) { return d.x() * y.x[j] + d.y() * y.y[j]; }
-
-// The least of d.w over y's vertices w: a tree of minima over every slot (those past the count
-// repeat the first vertex), no branch to mispredict. Less d.o, it is y's least height over the
-// line through o normal to d.
-double lowest(const Core& y, const Vec2& d) {
-  std::array<double, kMaxPolygonVertices> s;
-  for (int j = 0; j < kMaxPolygonVertices; ++j) s[j] = projection(y, j, d);
-  for (int width = kMaxPolygonVertices / 2; width > 0; width /= 2) {
-    for (int j = 0; j < width; ++j) s[j] = std::min(s[j], s[j + width]);
-  }
-  return s[0];
 }
 
 // A separating axis of core x against core y: a face of x, or a segment's end (face -1, the end's
@@ -76,26 +61,12 @@ Plane plane_of(const Core& x, const Axis& axis) {
 }
 
 // The best axis, or the first beyond `stop`: past it, the caller needs no other (the overlap test,
-// whose pair is apart). The running best is selected, not branched to: which axis leads is
-// unpredictable.
-Axis best_axis(const Core& x, const Core& y, double stop = kInf) {
-  const int faces = x.faces(), axes = faces + (x.count == 2 ? 2 : 0);
-  double best = -kInf, best_least = 0.0;
-  int at = -1;
-  for (int i = 0; i < axes && !(best > stop); ++i) {
-    const Plane plane = plane_of(x, i < faces ? Axis{-kInf, i} : Axis{-kInf, -1, i - faces});
-    const double least = lowest(y, plane.normal);
-    const double s = least - plane.normal.dot(plane.origin);
-    const bool better = s > best;
-    best = better ? s : best;
-    best_least = better ? least : best_least;
-    at = better ? i : at;
-  }
-  if (at < 0) return {};  // a point core has no axis
-  Axis out = at < faces ? Axis{best, at} : Axis{best, -1, at - faces};
-  const Vec2 normal = plane_of(x, out).normal;
-  while (out.vertex + 1 < y.count && projection(y, out.vertex, normal) != best_least) ++out.vertex;
-  return out;
+// whose pair is apart).
+Axis best_axis_of(const Core& x, const Core& y, double stop = kInf) {
+  if (x.axes() == 0) return {};  // a point core has no axis
+  const BestAxis best = best_axis(x, y, stop);
+  const int faces = x.faces();
+  return best.axis < faces ? Axis{best.s, best.axis, 0, best.vertex} : Axis{best.s, -1, best.axis - faces, best.vertex};
 }
 
 // Every edge of a core once: a segment's one edge, a point's none.
@@ -145,8 +116,8 @@ struct Axes {
   const Axis& best() const { return b_best() ? of_b : of_a; }
 };
 Axes axes_of(const CorePair& p, double stop = kInf) {
-  const Axis of_a = best_axis(p.a, p.b, stop);
-  return {of_a, of_a.s > stop ? Axis{} : best_axis(p.b, p.a, stop)};
+  const Axis of_a = best_axis_of(p.a, p.b, stop);
+  return {of_a, of_a.s > stop ? Axis{} : best_axis_of(p.b, p.a, stop)};
 }
 
 // Where w lies along x's face i: over it (0), before its start (-1) or beyond its end (1).
@@ -427,6 +398,20 @@ Vec2 touching_point(const CorePair& p, const Axes& axes) {
 
 }  // namespace
 
+void set_axes(Core& c) {
+  const int faces = c.faces(), axes = c.axes();
+  for (int i = 0; i < faces; ++i) {
+    c.ax[i] = c.n[i].x(), c.ay[i] = c.n[i].y(), c.ad[i] = c.ax[i] * c.x[i] + c.ay[i] * c.y[i];  // n.v, as plane_of's
+  }
+  for (int i = faces; i < axes; ++i) {
+    const Plane plane = plane_of(c, Axis{-kInf, -1, i - faces});
+    c.ax[i] = plane.normal.x(), c.ay[i] = plane.normal.y(), c.ad[i] = plane.normal.dot(plane.origin);
+  }
+  std::fill(c.ax.begin() + axes, c.ax.end(), 0.0);
+  std::fill(c.ay.begin() + axes, c.ay.end(), 0.0);
+  std::fill(c.ad.begin() + axes, c.ad.end(), kInf);
+}
+
 Core core_of(const Rect& r, const Placement& at) {
   const double hx = r.half_extents.x(), hy = r.half_extents.y();
   const Vec2 v[] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
@@ -500,6 +485,10 @@ DistanceResult core_distance(const CorePair& p) {
 
 // With a limit, the axes stop at the first that shows the pair beyond it.
 Contact core_contact(const CorePair& p, const ContactOptions& options) {
+  if (has_limit(options)) {
+    const DiscGap discs = disc_gap(p.b.center, p.a.discs.reach + p.b.discs.reach);
+    if (beyond_limit(discs.gap, discs.scale, options)) return Contact::beyond(discs.gap);
+  }
   const double stop = has_limit(options) ? separation_limit(p.scale(), options) + radii(p) : kInf;
   const Axes axes = axes_of(p, stop);
   // The cores' separation along an axis is at most their distance.

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 namespace collide2d::detail {
 
@@ -55,12 +56,18 @@ struct Core {
   std::array<Vec2, kMaxPolygonVertices> v;
   std::array<double, kMaxPolygonVertices> x, y;  // v's coordinates apart, for the separating axes
   std::array<Vec2, kMaxPolygonVertices> n;
+  // The separating axes (the faces, then a segment's two ends, away from the other): directions
+  // and offsets (the direction's dot product with the axis' point of the core) apart, for their
+  // vector kernel; past axes(), no direction and an infinite offset, so that no other core is
+  // ever found separated along them. Set by set_axes() for a pair of cores.
+  std::array<double, kMaxPolygonVertices> ax, ay, ad;
   int count = 0;
   double radius = 0.0;
   Discs discs{0.0, -1.0};      // about its own centre
   Vec2 center = Vec2::Zero();  // its own centre, in the frame
 
   int faces() const { return count == 1 ? 0 : count; }
+  int axes() const { return faces() + (count == 2 ? 2 : 0); }
   int next(int i) const { return i + 1 == count ? 0 : i + 1; }
   int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
 };
@@ -94,10 +101,33 @@ struct Placement {
   Vec2 direction(const Vec2& d) const { return rot.apply(d); }
 };
 
+// The gap between the discs of two reaches (Discs::reach) whose centres lie `offset` apart: a lower
+// bound of the solids' distance, and the scale its rounding is a few u of.
+struct DiscGap {
+  double gap, scale;
+};
+inline DiscGap disc_gap(const Vec2& offset, double reaches) {
+  const double d = offset.norm();
+  return {d - reaches, d + reaches};
+}
+
 // A capsule's core: its segment's two ends in its own frame.
 inline std::array<Vec2, 2> segment_of(const Capsule& c) { return {Vec2(-c.half_length, 0), Vec2(c.half_length, 0)}; }
 
+// Core y's greatest separation along an axis of core x (its least projection on the axis' direction
+// less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
+// vertex there. Every axis at once in SIMD lanes (axis_separations.cpp); x has an axis.
+struct BestAxis {
+  double s = -std::numeric_limits<double>::infinity();
+  int axis = 0;
+  int vertex = 0;
+};
+BestAxis best_axis(const Core& x, const Core& y, double stop);
+
 Core core_of(const Rect& r, const Placement& at);
+// Sets the core's axes (Core::ax, ay, ad), which a pair of cores needs and a core against an
+// ellipse does not.
+void set_axes(Core& c);
 Core core_of(const ConvexPolygon& p, const Placement& at);
 Core core_of(const Capsule& c, const Placement& at);
 Core core_of(const Circle& c, const Placement& at);
@@ -110,7 +140,10 @@ struct CorePair {
 
   template <class A, class B>
   static CorePair of(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-    return {core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), {ao.c, ao.s}, a.center};
+    CorePair p{core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), {ao.c, ao.s}, a.center};
+    set_axes(p.a);
+    set_axes(p.b);
+    return p;
   }
   Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }

@@ -1,0 +1,60 @@
+// The separations of one core along every separating axis of another at once (convex_core.h): the
+// axes' directions across the lanes of a vector, each of the other core's vertices broadcast, a
+// running minimum and the first vertex at it, then the first axis beyond the caller's stop or else
+// the first of the greatest. The same products, sums and minima as one axis at a time, so the
+// result is the same to the bit; Google Highway picks the widest vectors the CPU has at the first
+// call.
+#include "narrowphase/polygon/convex_core.h"
+
+#include <cstddef>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "narrowphase/polygon/axis_separations.cpp"
+#include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace collide2d::HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+detail::BestAxis best_axis(const detail::Core& x, const detail::Core& y, double stop) {
+  const hn::CappedTag<double, kMaxPolygonVertices> d;
+  detail::BestAxis best;
+  for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
+    const auto ax = hn::LoadU(d, x.ax.data() + k), ay = hn::LoadU(d, x.ay.data() + k);
+    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y.x[0])), hn::Mul(ay, hn::Set(d, y.y[0])));
+    auto vertex = hn::Zero(d);
+    for (std::size_t j = 1; j < kMaxPolygonVertices; ++j) {
+      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y.x[j])), hn::Mul(ay, hn::Set(d, y.y[j])));
+      vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
+      least = hn::Min(least, p);
+    }
+    const auto s = hn::Sub(least, hn::LoadU(d, x.ad.data() + k));
+    const auto take = [&](intptr_t lane) {
+      const auto i = static_cast<std::size_t>(lane);
+      best = {hn::ExtractLane(s, i), static_cast<int>(k + i), static_cast<int>(hn::ExtractLane(vertex, i))};
+    };
+    const intptr_t beyond = hn::FindFirstTrue(d, hn::Gt(s, hn::Set(d, stop)));
+    if (beyond >= 0) {
+      take(beyond);
+      break;
+    }
+    const auto top = hn::MaxOfLanes(d, s);
+    if (hn::GetLane(top) > best.s) take(hn::FindFirstTrue(d, hn::Eq(s, top)));
+  }
+  return best;
+}
+
+}  // namespace collide2d::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace collide2d::detail {
+
+HWY_EXPORT(best_axis);
+
+BestAxis best_axis(const Core& x, const Core& y, double stop) { return HWY_DYNAMIC_DISPATCH(best_axis)(x, y, stop); }
+
+}  // namespace collide2d::detail
+#endif
