@@ -196,6 +196,16 @@ BENCHMARK(ours_shape<ConvexPolygon, Ellipse, true>)
 BENCHMARK(box2d<ConvexPolygon, Ellipse>)
     ->Name("box2d_collide_polygons/polygon_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Capsule, Circle>)->Name("ours/capsule_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Capsule, Circle, true>)->Name("ours/capsule_circle_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<Capsule, Circle>)
+    ->Name("box2d_collide_polygon_and_circle/capsule_circle")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Capsule, Ellipse>)->Name("ours/capsule_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Capsule, Ellipse, true>)->Name("ours/capsule_ellipse_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<Capsule, Ellipse>)
+    ->Name("box2d_collide_polygons/capsule_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
 
 }  // namespace
 }  // namespace collide2d

@@ -213,9 +213,17 @@ BENCHMARK(box2d_batch_overlap<ConvexPolygon, Circle>)
     ->Name("box2d_batch_overlap/polygon_circle")
     ->Apply(bench::polygon_workloads);
 BENCHMARK(posed_overlap<Capsule, Ellipse>)->Name("posed_overlap/capsule_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<Capsule, Ellipse>)->Name("box2d_overlap/capsule_ellipse_8gon")->Apply(bench::polygon_workloads);
 BENCHMARK(batch_overlap<Capsule, Ellipse>)->Name("batch_overlap/capsule_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_batch_overlap<Capsule, Ellipse>)
+    ->Name("box2d_batch_overlap/capsule_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
 BENCHMARK(posed_overlap<Capsule, Circle>)->Name("posed_overlap/capsule_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<Capsule, Circle>)->Name("box2d_overlap/capsule_circle")->Apply(bench::polygon_workloads);
 BENCHMARK(batch_overlap<Capsule, Circle>)->Name("batch_overlap/capsule_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_batch_overlap<Capsule, Circle>)
+    ->Name("box2d_batch_overlap/capsule_circle")
+    ->Apply(bench::polygon_workloads);
 // The robust ellipse distance with the orientations kept, against b2Distance with its transforms
 // prepared (box2d_distance_ellipse_ellipse).
 void posed_distance_ellipse_ellipse(benchmark::State& state) {

@@ -32,6 +32,22 @@ Polygon ellipse_polygon(const Ellipse& e, int sides, Fit fit, const Vec2& origin
   return p;
 }
 
+// Box2D 2.4.1 has no capsule. Its nearest equivalent is a rounded box (b2PolygonShape's m_radius):
+// half extents (h + w, w) rounded by r - w, whose support function passes the capsule's by at most
+// w (|cos| + |sin| - 1) <= 0.42 w. w = 0.003, just wider than the 0.0025 within which Box2D welds
+// two vertices into one.
+Polygon capsule_polygon(const Capsule& c, const Vec2& origin) {
+  constexpr double w = 0.003;
+  if (!(c.radius > w)) throw std::invalid_argument("a capsule of radius below 0.003 has no Box2D 2.4.1 equivalent");
+  Polygon p;
+  for (const Vec2& corner : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {
+    const Vec2 local = corner.cwiseProduct(Vec2(c.half_length + w, w));
+    p.vertices.push_back(to_float(c.center - origin + rotate(c.angle, local)));
+  }
+  p.radius = static_cast<float>(c.radius - w);
+  return p;
+}
+
 }  // namespace
 
 b2AABB to_box2d(const Aabb& box) {
@@ -45,6 +61,7 @@ Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
   if (const auto* e = std::get_if<Ellipse>(&shape)) return ellipse_polygon(*e, sides, fit, origin);
   if (const auto* c = std::get_if<Circle>(&shape))
     return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
+  if (const auto* c = std::get_if<Capsule>(&shape)) return capsule_polygon(*c, origin);
   if (const auto* q = std::get_if<ConvexPolygon>(&shape)) {
     if (q->radius() != 0.0) throw std::invalid_argument("Box2D 2.4.1 has no rounded polygons");
     Polygon p;
@@ -81,7 +98,7 @@ Box2dShape to_box2d_shape(const Polygon& p) {
     out.circle.m_radius = p.radius;
   } else {
     out.polygon.Set(p.vertices.data(), static_cast<int32>(p.vertices.size()));
-    out.polygon.m_radius = 0.0f;
+    out.polygon.m_radius = p.radius;
   }
   return out;
 }

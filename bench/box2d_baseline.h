@@ -7,7 +7,9 @@
 // (the first shape's centre) before they are rounded to Box2D's float.
 //
 // Box2D gives every b2PolygonShape a skin of b2_polygonRadius (about 1 cm) and b2TestOverlap uses
-// shape radii; the polygons built here have radius 0, so overlap means the polygons themselves meet.
+// shape radii; the polygons built here have radius 0, so overlap means the polygons themselves meet,
+// except a capsule's, a box rounded by its radius (Box2D 2.4.1 has no capsule; to_box2d says how
+// near it comes).
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -39,14 +41,15 @@ struct Polygon {
 // A box in Box2D's float, rounded to nearest.
 b2AABB to_box2d(const Aabb& box);
 
-// `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact.
+// `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact; a
+// capsule is a box of half extents (h + 0.003, 0.003) rounded by r - 0.003, within 0.0013 of it.
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
 
 // b2Distance between the two polygons (their radii included), in double.
 double box2d_distance(const Polygon& a, const Polygon& b);
 
-// One shape as a b2PolygonShape with radius 0 (at most b2_maxPolygonVertices = 8 vertices), or a
-// circle as a b2CircleShape.
+// One shape as a b2PolygonShape with the polygon's radius (at most b2_maxPolygonVertices = 8
+// vertices), or a circle as a b2CircleShape.
 struct Box2dShape {
   b2PolygonShape polygon;
   b2CircleShape circle;

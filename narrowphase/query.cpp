@@ -125,6 +125,9 @@ requires(on_cores<X> || on_cores<Y>) Contact
 Contact contact_kernel(const ConvexPolygon& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
   return contact_polygon_circle(a, oa, b, o);
 }
+Contact contact_kernel(const Capsule& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
+  return contact_capsule_circle(a, oa, b, o);
+}
 
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 

@@ -35,7 +35,14 @@ OVERLAP = [
     ('circle–ellipse, batch', 'batch_overlap/circle_ellipse/candidates:{w}', 'box2d_batch_overlap/circle_ellipse_8gon/candidates:{w}'),
     ('polygon–polygon (8-gons), one pair', 'posed_overlap/polygon_polygon/candidates:{w}', 'box2d_overlap/polygon_polygon_8gons/candidates:{w}'),
     ('polygon–circle, one pair', 'posed_overlap/polygon_circle/candidates:{w}', 'box2d_overlap/polygon_circle/candidates:{w}'),
+    ('polygon–polygon (8-gons), batch', 'batch_overlap/polygon_polygon/candidates:{w}', 'box2d_batch_overlap/polygon_polygon_8gons/candidates:{w}'),
+    ('polygon–circle, batch', 'batch_overlap/polygon_circle/candidates:{w}', 'box2d_batch_overlap/polygon_circle/candidates:{w}'),
     ('polygon–ellipse vs 8-gon, one pair', 'posed_overlap/polygon_ellipse/candidates:{w}', 'box2d_overlap/polygon_ellipse_8gon/candidates:{w}'),
+    ('polygon–ellipse vs 8-gon, batch', 'batch_overlap/polygon_ellipse/candidates:{w}', 'box2d_batch_overlap/polygon_ellipse_8gon/candidates:{w}'),
+    ('capsule–circle, one pair', 'posed_overlap/capsule_circle/candidates:{w}', 'box2d_overlap/capsule_circle/candidates:{w}'),
+    ('capsule–circle, batch', 'batch_overlap/capsule_circle/candidates:{w}', 'box2d_batch_overlap/capsule_circle/candidates:{w}'),
+    ('capsule–ellipse vs 8-gon, one pair', 'posed_overlap/capsule_ellipse/candidates:{w}', 'box2d_overlap/capsule_ellipse_8gon/candidates:{w}'),
+    ('capsule–ellipse vs 8-gon, batch', 'batch_overlap/capsule_ellipse/candidates:{w}', 'box2d_batch_overlap/capsule_ellipse_8gon/candidates:{w}'),
 ]
 DISTANCE = [
     ('ellipse–ellipse vs 8-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:8'),
@@ -66,6 +73,10 @@ CONTACT = [
     ('polygon–circle, one pair, max_separation 0', 'ours/polygon_circle_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/polygon_circle/candidates:{w}'),
     ('polygon–ellipse vs 8-gon, one pair', 'ours/polygon_ellipse/candidates:{w}', 'box2d_collide_polygons/polygon_ellipse_8gon/candidates:{w}'),
     ('polygon–ellipse vs 8-gon, one pair, max_separation 0', 'ours/polygon_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/polygon_ellipse_8gon/candidates:{w}'),
+    ('capsule–circle, one pair', 'ours/capsule_circle/candidates:{w}', 'box2d_collide_polygon_and_circle/capsule_circle/candidates:{w}'),
+    ('capsule–circle, one pair, max_separation 0', 'ours/capsule_circle_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/capsule_circle/candidates:{w}'),
+    ('capsule–ellipse vs 8-gon, one pair', 'ours/capsule_ellipse/candidates:{w}', 'box2d_collide_polygons/capsule_ellipse_8gon/candidates:{w}'),
+    ('capsule–ellipse vs 8-gon, one pair, max_separation 0', 'ours/capsule_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/capsule_ellipse_8gon/candidates:{w}'),
 ]
 TOI = [
     ('ellipse–ellipse translating vs 8-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_8gons'),
@@ -335,8 +346,11 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 ## Overlap tests
 
 Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (a circle is a
-`b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/workload.h);
-the scene has none, so their rows are the random and candidate pairs.
+`b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/workload.h).
+Box2D 2.4.1 has no capsule: its nearest equivalent is a box rounded by a radius
+(`b2PolygonShape::m_radius`), of half extents (h + 0.003, 0.003) and radius r - 0.003, within
+0.0013 of the capsule (bench/box2d_baseline.h). The scene has no polygons or capsules, so their
+rows are the random and candidate pairs.
 
 {table(OVERLAP, med, WORKLOADS)}
 
@@ -348,9 +362,10 @@ Box2D: `b2Distance` on the ellipses' inscribed N-gons.
 
 ## Contacts
 
-Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons; its
-manifold is empty for pairs apart, where collide2d's contact carries the exact distance and normal.
-The scene has no polygons: their rows have no scene columns.
+Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons (a
+capsule its rounded box, as above); its manifold is empty for pairs apart, where collide2d's
+contact carries the exact distance and normal. The scene has no polygons or capsules: their rows
+have no scene columns.
 
 {table(CONTACT, med, CONTACT_WORKLOADS)}
 

@@ -76,6 +76,10 @@ Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, co
 Contact contact_polygon_circle(const ConvexPolygon& a, const Circle& b, const ContactOptions& options = {});
 Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options = {});
+/// A capsule and a circle: the same, on the capsule's segment (two faces, one each way).
+Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options = {});
 Contact contact_circle_circle(const Circle& a, const Circle& b);
 Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options = {});

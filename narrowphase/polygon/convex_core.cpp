@@ -426,8 +426,7 @@ Core core_of(const ConvexPolygon& p, const Placement& at) {
 }
 
 Core core_of(const Capsule& c, const Placement& at) {
-  const Vec2 n[] = {{0, -1}, {0, 1}};
-  return make(segment_of(c), n, c.radius, discs_of(c), at);
+  return make(segment_of(c), segment_normals(), c.radius, discs_of(c), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {

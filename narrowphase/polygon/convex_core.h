@@ -113,6 +113,8 @@ inline DiscGap disc_gap(const Vec2& offset, double reaches) {
 
 // A capsule's core: its segment's two ends in its own frame.
 inline std::array<Vec2, 2> segment_of(const Capsule& c) { return {Vec2(-c.half_length, 0), Vec2(c.half_length, 0)}; }
+// Its two faces' outward normals: from the first end to the second, and back.
+inline std::array<Vec2, 2> segment_normals() { return {Vec2(0, -1), Vec2(0, 1)}; }
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first

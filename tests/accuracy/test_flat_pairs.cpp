@@ -35,8 +35,8 @@ constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 Orientation orientation_of(const Shape& s) { return Orientation::of(angle_of(s)); }
 
-// The kernels under test for a pair: two cores, or a core and an ellipse (B); a polygon's contact
-// with a circle, its typed kernel.
+// The kernels under test for a pair: two cores, or a core and an ellipse (B); a polygon's or a
+// capsule's contact with a circle, its typed kernel.
 struct Kernels {
   std::function<Contact(const ContactOptions&)> contact;
   std::function<DistanceResult()> distance;
@@ -78,6 +78,11 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
   if (polygon && circle) {
     out.contact = [x = *polygon, y = *circle](const ContactOptions& o) {
       return contact_polygon_circle(x, orientation_of(x), y, o);
+    };
+  }
+  if (const auto* capsule = std::get_if<Capsule>(&a); capsule && circle) {
+    out.contact = [x = *capsule, y = *circle](const ContactOptions& o) {
+      return contact_capsule_circle(x, orientation_of(x), y, o);
     };
   }
   return out;
@@ -289,19 +294,26 @@ TEST(FlatPairs, KnownSeparations) {
   EXPECT_NEAR(c.separation, 3 - 1e-9 * std::cos(0.7) - 2.5, 8 * kU * 3);
 }
 
-// The polygon–circle kernel (the centre's Voronoi regions) against the cores' contact (separating
-// axes, then the nearest of every vertex–edge pair): the same separation, normal, points and
-// feature, on every polygon–circle family and with the contact limited.
-TEST(FlatPairs, PolygonCircleKernelIsTheCoresContact) {
+// The polygon–circle and capsule–circle kernels (the centre's Voronoi regions) against the cores'
+// contact (separating axes, then the nearest of every vertex–edge pair): the same separation,
+// normal, points and feature, on every polygon–circle and capsule–circle family and with the
+// contact limited.
+TEST(FlatPairs, CircleKernelsAreTheCoresContact) {
   int compared = 0;
   for (const FlatFamily& f : flat_families()) {
-    if (f.b != Flat::circle || (f.a != Flat::polygon && f.a != Flat::rounded)) continue;
+    if (f.b != Flat::circle || (f.a != Flat::polygon && f.a != Flat::rounded && f.a != Flat::capsule)) continue;
     for (const FlatCase& c : cases_of(f)) {
-      const auto& x = std::get<ConvexPolygon>(c.a);
       const auto& y = std::get<Circle>(c.b);
       for (const double limit : {HUGE_VAL, 0.0}) {
         const ContactOptions o{.max_separation = limit};
-        const Contact got = contact_polygon_circle(x, orientation_of(x), y, o);
+        const Contact got = std::visit(
+            [&](const auto& x) -> Contact {
+              using X = std::decay_t<decltype(x)>;
+              if constexpr (std::is_same_v<X, ConvexPolygon>) return contact_polygon_circle(x, orientation_of(x), y, o);
+              if constexpr (std::is_same_v<X, Capsule>) return contact_capsule_circle(x, orientation_of(x), y, o);
+              throw std::logic_error("not a polygon or a capsule");
+            },
+            c.a);
         const Contact want = detail::core_contact(pair_of(c.a, c.b), o);
         ASSERT_EQ(got.separation, want.separation) << f.name << " " << compared;
         ASSERT_EQ(got.manifold_size, want.manifold_size) << f.name;

@@ -1,31 +1,42 @@
+// A polygon or a capsule against a circle: one kernel on the flat shape's core (its vertices and
+// face normals in its own frame; a capsule's segment has two faces, one each way).
 #include <collide2d/kernels.h>
 
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/frames/unit_vector.h"
 #include "narrowphase/polygon/convex_core.h"
 
+#include <array>
 #include <limits>
 
 namespace collide2d {
 namespace {
 
+// The core as the kernel reads it.
+struct CoreView {
+  const Vec2* vertices;
+  const Vec2* normals;
+  int count;
+  double radius;
+  double reach;
+};
+
 // Out of line: the cores take a large frame that the common paths do without.
-[[gnu::noinline]] Contact on_cores(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
+template <class A>
+[[gnu::noinline]] Contact on_cores(const A& a, const Orientation& a_orientation, const Circle& b,
                                    const ContactOptions& options) {
   return detail::core_contact(detail::CorePair::of(a, a_orientation, b, Orientation{}), options);
 }
 
-}  // namespace
-
-// In the polygon's frame, with c the circle's centre: the face of greatest separation s, then, as
+// In the shape's frame, with c the circle's centre: the face of greatest separation s, then, as
 // Box2D's b2CollidePolygonAndCircle, the face where c lies over it or within the core (s <= 0),
-// else the face's end beyond which c lies (the polygon's separation from a point falls away on
-// either side of its greatest face, so the nearest point of the core lies on that face). Where
-// rounding leaves that end not the core's farthest point towards c, the convex cores' contact
-// decides (narrowphase/polygon/convex_core.h), as it does for every other flat pair.
-Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
-                               const ContactOptions& options) {
-  const PolygonOutline& o = *a.outline;
+// else the face's end beyond which c lies (the core's separation from a point falls away on either
+// side of its greatest face, so the nearest point of the core lies on that face). Where rounding
+// leaves that end not the core's farthest point towards c, the convex cores' contact decides
+// (narrowphase/polygon/convex_core.h), as it does for every other flat pair.
+template <class A>
+Contact core_circle(const A& a, const CoreView& o, const Orientation& a_orientation, const Circle& b,
+                    const ContactOptions& options) {
   const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
   if (detail::has_limit(options)) {  // as the cores' contact
@@ -60,8 +71,27 @@ Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orie
   return one(o.vertices[end], u.direction, u.length - radii, feature_id(FeatureKind::corner_corner, end, 0));
 }
 
+}  // namespace
+
+Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options) {
+  const PolygonOutline& o = *a.outline;
+  return core_circle(a, {o.vertices.data(), o.normals.data(), o.count, o.radius, o.reach}, a_orientation, b, options);
+}
+
 Contact contact_polygon_circle(const ConvexPolygon& a, const Circle& b, const ContactOptions& options) {
   return contact_polygon_circle(a, Orientation::of(a.angle), b, options);
+}
+
+Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options) {
+  const std::array<Vec2, 2> ends = detail::segment_of(a), normals = detail::segment_normals();
+  const detail::Discs discs = detail::discs_of(a);
+  return core_circle(a, {ends.data(), normals.data(), 2, a.radius, discs.reach}, a_orientation, b, options);
+}
+
+Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options) {
+  return contact_capsule_circle(a, Orientation::of(a.angle), b, options);
 }
 
 }  // namespace collide2d
