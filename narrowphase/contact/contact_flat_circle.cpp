@@ -40,8 +40,7 @@ Contact core_circle(const A& a, const CoreView& o, const Orientation& a_orientat
   const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
   if (detail::has_limit(options)) {  // as the cores' contact
-    const detail::DiscGap discs = detail::disc_gap(c, o.reach + b.radius);
-    if (detail::beyond_limit(discs.gap, discs.scale, options)) return Contact::beyond(discs.gap);
+    if (const auto gap = detail::discs_beyond(c, o.reach + b.radius, options)) return Contact::beyond(*gap);
   }
   int face = 0;
   double s = -std::numeric_limits<double>::infinity();

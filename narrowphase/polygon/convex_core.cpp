@@ -485,8 +485,9 @@ DistanceResult core_distance(const CorePair& p) {
 // With a limit, the axes stop at the first that shows the pair beyond it.
 Contact core_contact(const CorePair& p, const ContactOptions& options) {
   if (has_limit(options)) {
-    const DiscGap discs = disc_gap(p.b.center, p.a.discs.reach + p.b.discs.reach);
-    if (beyond_limit(discs.gap, discs.scale, options)) return Contact::beyond(discs.gap);
+    if (const auto gap = discs_beyond(p.b.center, p.a.discs.reach + p.b.discs.reach, options)) {
+      return Contact::beyond(*gap);
+    }
   }
   const double stop = has_limit(options) ? separation_limit(p.scale(), options) + radii(p) : kInf;
   const Axes axes = axes_of(p, stop);

@@ -26,11 +26,14 @@
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
+#include "narrowphase/contact/contact_limit.h"
 #include "shapes/internal.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 namespace collide2d::detail {
 
@@ -101,14 +104,16 @@ struct Placement {
   Vec2 direction(const Vec2& d) const { return rot.apply(d); }
 };
 
-// The gap between the discs of two reaches (Discs::reach) whose centres lie `offset` apart: a lower
-// bound of the solids' distance, and the scale its rounding is a few u of.
-struct DiscGap {
-  double gap, scale;
-};
-inline DiscGap disc_gap(const Vec2& offset, double reaches) {
-  const double d = offset.norm();
-  return {d - reaches, d + reaches};
+// Where the discs of two reaches (Discs::reach) whose centres lie `offset` apart are beyond the
+// contact limit, the gap between them, a lower bound of the solids' distance that passes it. The
+// square root only for pairs apart by more than the limit.
+inline std::optional<double> discs_beyond(const Vec2& offset, double reaches, const ContactOptions& options) {
+  const double near = options.max_separation + reaches;
+  const double d2 = offset.squaredNorm();
+  if (near >= 0.0 && !(d2 > near * near)) return std::nullopt;
+  const double d = std::sqrt(d2);
+  if (!beyond_limit(d - reaches, d + reaches, options)) return std::nullopt;
+  return d - reaches;
 }
 
 // A capsule's core: its segment's two ends in its own frame.
