@@ -1,7 +1,8 @@
 // Box2D as an independent check: for convex shapes the true distance lies between the distance of
 // the circumscribed polygon approximations and that of the inscribed ones, and the bracket closes
 // on collide2d's value as the polygons get finer. Sharp convex polygons Box2D has exactly: its
-// float answers lie within their float error of ours.
+// float answers lie within their float error of ours; a capsule it has only as a rounded box that
+// holds it, within a known reach.
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
 #include "bench/box2d_baseline.h"
@@ -313,6 +314,48 @@ TEST(Box2dBracket, PolygonsMatchBox2dWithinFloatError) {
   EXPECT_GT(apart, 1000);
   EXPECT_GT(overlapping, 500);
   EXPECT_GT(deepest_kept, polygon_pairs_overlapping * 9 / 10);
+}
+
+// Box2D 2.4.1 has no capsule; its rounded box (bench/box2d_baseline.h) holds the capsule and lies
+// within 0.42 w of it (w = 0.003, the box's half width), so that against any shape Box2D's
+// separation lies between ours less that for each capsule and ours, to float error: apart from a
+// polygon, a circle or another capsule (b2Distance), overlapping a circle
+// (b2CollidePolygonAndCircle).
+TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
+  std::mt19937_64 rng(53);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto capsule = [&] {
+    return Capsule{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
+  };
+  const auto others = polygon_pairs(3000, 55);
+  constexpr double kBoxReach = 0.42 * 0.003;
+  int apart = 0, overlapping = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Shape a = capsule();
+    const Shape placed = k % 3 == 0   ? Shape(capsule())
+                         : k % 3 == 1 ? others[k].first
+                                      : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + 0.5 * u(rng)});
+    const double slack = kBoxReach * (std::holds_alternative<Capsule>(placed) ? 2 : 1);
+    const Vec2 origin = center_of(a);
+    const auto pa = baseline::to_box2d(a, 8, Fit::inscribed, origin),
+               pb = baseline::to_box2d(placed, 8, Fit::inscribed, origin);
+    const Contact c = contact(a, placed);
+    if (c.separation > 0) {
+      const double d = baseline::box2d_distance(pa, pb);
+      ASSERT_LE(d, c.separation + kFloatTolerance) << describe_pair(a, placed);
+      ASSERT_GE(d, c.separation - slack - kFloatTolerance) << describe_pair(a, placed);
+      ++apart;
+    } else if (std::holds_alternative<Circle>(placed) && c.separation < -slack - kFloatTolerance) {
+      const auto box2d = baseline::box2d_contact(baseline::to_box2d_shapes(pa, pb));
+      ASSERT_TRUE(box2d) << describe_pair(a, placed);
+      ASSERT_LE(box2d->separation, c.separation + kFloatTolerance) << describe_pair(a, placed);
+      ASSERT_GE(box2d->separation, c.separation - slack - kFloatTolerance) << describe_pair(a, placed);
+      ++overlapping;
+    }
+  }
+  std::printf("[box2d bracket] capsules: %d apart, %d overlapping circles\n", apart, overlapping);
+  EXPECT_GT(apart, 1000);
+  EXPECT_GT(overlapping, 100);
 }
 
 }  // namespace
