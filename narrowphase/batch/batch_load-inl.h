@@ -16,7 +16,11 @@ using M = hn::Mask<D>;
 // The lanes i ... i + Lanes(D()) - 1 of the chunk's fields.
 template <class Lanes, std::size_t kStride, std::size_t... I>
 Lanes load(const double (&field)[sizeof...(I)][kStride], std::size_t i, std::index_sequence<I...>) {
-  return Lanes{hn::LoadU(D(), field[I] + i)...};
+  if constexpr (requires { Lanes::of(std::array<V, sizeof...(I)>{}); }) {
+    return Lanes::of({hn::LoadU(D(), field[I] + i)...});
+  } else {
+    return Lanes{hn::LoadU(D(), field[I] + i)...};
+  }
 }
 
 #endif  // COLLIDE2D_BATCH_LOAD_INL_H_

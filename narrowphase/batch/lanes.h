@@ -205,7 +205,18 @@ struct CoreEllipseLanes {
     out[kFields - 4] = count, out[kFields - 3] = radius, out[kFields - 2] = a, out[kFields - 1] = b;
     return out;
   }
+  // The lanes of fields() (the batch's loads: the arrays rule out brace-initialising the fields).
+  static CoreEllipseLanes of(const std::array<V, kFields>& in) {
+    CoreEllipseLanes f;
+    f.ox = in[0], f.oy = in[1], f.c = in[2], f.s = in[3];
+    std::copy_n(in.begin() + 4, N, f.vx.begin());
+    std::copy_n(in.begin() + 4 + N, N, f.vy.begin());
+    f.count = in[kFields - 4], f.radius = in[kFields - 3], f.a = in[kFields - 2], f.b = in[kFields - 1];
+    return f;
+  }
 };
+template <class V>
+using PolygonEllipseLanes = CoreEllipseLanes<V, kMaxPolygonVertices>;
 template <class V>
 using SegmentEllipseLanes = CoreEllipseLanes<V, 2>;
 

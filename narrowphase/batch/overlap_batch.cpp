@@ -100,7 +100,7 @@ void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
 }
 
 void core_ellipse_chunk(detail::Chunk<detail::CoreEllipseLanes<double>::kFields>& chunk, std::size_t count) {
-  decide_chunk<detail::CoreEllipseLanes>(chunk, count);
+  decide_chunk<detail::PolygonEllipseLanes>(chunk, count);
 }
 
 void segment_ellipse_chunk(detail::Chunk<detail::SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count) {
