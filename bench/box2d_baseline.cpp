@@ -37,7 +37,7 @@ Polygon ellipse_polygon(const Ellipse& e, int sides, Fit fit, const Vec2& origin
 // w (|cos| + |sin| - 1) <= 0.42 w. w = 0.003, just wider than the 0.0025 within which Box2D welds
 // two vertices into one.
 Polygon capsule_polygon(const Capsule& c, const Vec2& origin) {
-  constexpr double w = 0.003;
+  constexpr double w = kCapsuleBoxHalfWidth;
   if (!(c.radius > w)) throw std::invalid_argument("a capsule of radius below 0.003 has no Box2D 2.4.1 equivalent");
   Polygon p;
   for (const Vec2& corner : {Vec2(1, 1), Vec2(-1, 1), Vec2(-1, -1), Vec2(1, -1)}) {

@@ -41,8 +41,11 @@ struct Polygon {
 // A box in Box2D's float, rounded to nearest.
 b2AABB to_box2d(const Aabb& box);
 
+// A capsule's Box2D equivalent, a rounded box: its half width w (to_box2d).
+inline constexpr double kCapsuleBoxHalfWidth = 0.003;
+
 // `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact; a
-// capsule is a box of half extents (h + 0.003, 0.003) rounded by r - 0.003, within 0.0013 of it.
+// capsule is a box of half extents (h + w, w) rounded by r - w, within 0.42 w = 0.0013 of it.
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
 
 // b2Distance between the two polygons (their radii included), in double.

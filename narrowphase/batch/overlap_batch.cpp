@@ -99,7 +99,7 @@ void ellipse_ellipse_chunk(detail::Chunk<10>& chunk, std::size_t count) {
   decide_chunk<detail::EllipseEllipseLanes>(chunk, count);
 }
 
-void core_ellipse_chunk(detail::Chunk<detail::CoreEllipseLanes<double>::kFields>& chunk, std::size_t count) {
+void core_ellipse_chunk(detail::Chunk<detail::PolygonEllipseLanes<double>::kFields>& chunk, std::size_t count) {
   decide_chunk<detail::PolygonEllipseLanes>(chunk, count);
 }
 
@@ -144,44 +144,37 @@ HWY_EXPORT(disc_pair_chunk);
 
 }  // namespace
 
-void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>) {
+void detail::decide(Chunk<8>& chunk, std::size_t count, KernelOf<RectEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(rect_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>) {
+void detail::decide(Chunk<8>& chunk, std::size_t count, KernelOf<RectRectLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(rect_rect_chunk)(chunk, count);
 }
-void detail::decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>) {
+void detail::decide(Chunk<4>& chunk, std::size_t count, KernelOf<CircleCircleLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(circle_circle_chunk)(chunk, count);
 }
-void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>) {
+void detail::decide(Chunk<5>& chunk, std::size_t count, KernelOf<RectCircleLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(rect_circle_chunk)(chunk, count);
 }
-void detail::decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>) {
+void detail::decide(Chunk<5>& chunk, std::size_t count, KernelOf<CircleEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(circle_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>) {
+void detail::decide(Chunk<10>& chunk, std::size_t count, KernelOf<EllipseEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(ellipse_ellipse_chunk)(chunk, count);
 }
-
-void detail::decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Ellipse>) {
+void detail::decide(Chunk<PolygonEllipseLanes<double>::kFields>& chunk, std::size_t count,
+                    KernelOf<PolygonEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(core_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Ellipse>) {
+void detail::decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count,
+                    KernelOf<SegmentEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(segment_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Circle>) {
-  HWY_DYNAMIC_DISPATCH(core_ellipse_chunk)(chunk, count);
-}
-void detail::decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Circle>) {
-  HWY_DYNAMIC_DISPATCH(segment_ellipse_chunk)(chunk, count);
-}
-
 void detail::decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t count,
-                    Kinds<DiscEllipseLanes<double>, void>) {
+                    KernelOf<DiscEllipseLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(disc_ellipse_chunk)(chunk, count);
 }
-void detail::decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count,
-                    Kinds<DiscPairLanes<double>, void>) {
+void detail::decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count, KernelOf<DiscPairLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(disc_pair_chunk)(chunk, count);
 }
 

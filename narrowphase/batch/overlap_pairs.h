@@ -141,22 +141,23 @@ bool exact(const PairRef<A, B>&) {
   throw std::logic_error("a kernel that decides every pair left one uncertain");
 }
 
-// The vector kernel of a pair kind on the chunk's first `count` pairs (overlap_batch.cpp: the best
-// SIMD target the CPU has).
-template <class A, class B>
-struct Kinds {};
-void decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Ellipse>);
-void decide(Chunk<8>& chunk, std::size_t count, Kinds<Rect, Rect>);
-void decide(Chunk<4>& chunk, std::size_t count, Kinds<Circle, Circle>);
-void decide(Chunk<5>& chunk, std::size_t count, Kinds<Rect, Circle>);
-void decide(Chunk<5>& chunk, std::size_t count, Kinds<Circle, Ellipse>);
-void decide(Chunk<10>& chunk, std::size_t count, Kinds<Ellipse, Ellipse>);
-void decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Ellipse>);
-void decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Ellipse>);
-void decide(Chunk<CoreEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<ConvexPolygon, Circle>);
-void decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<Capsule, Circle>);
-void decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t count, Kinds<DiscEllipseLanes<double>, void>);
-void decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count, Kinds<DiscPairLanes<double>, void>);
+// The vector kernel of a kind of lanes on the chunk's first `count` pairs (overlap_batch.cpp: the
+// best SIMD target the CPU has). Kernels are named by their lanes, so that pair kinds whose lanes
+// are one kind (a polygon against an ellipse or a circle) share one.
+template <class Lanes>
+struct KernelOf {};
+void decide(Chunk<8>& chunk, std::size_t count, KernelOf<RectEllipseLanes<double>>);
+void decide(Chunk<8>& chunk, std::size_t count, KernelOf<RectRectLanes<double>>);
+void decide(Chunk<4>& chunk, std::size_t count, KernelOf<CircleCircleLanes<double>>);
+void decide(Chunk<5>& chunk, std::size_t count, KernelOf<RectCircleLanes<double>>);
+void decide(Chunk<5>& chunk, std::size_t count, KernelOf<CircleEllipseLanes<double>>);
+void decide(Chunk<10>& chunk, std::size_t count, KernelOf<EllipseEllipseLanes<double>>);
+void decide(Chunk<PolygonEllipseLanes<double>::kFields>& chunk, std::size_t count,
+            KernelOf<PolygonEllipseLanes<double>>);
+void decide(Chunk<SegmentEllipseLanes<double>::kFields>& chunk, std::size_t count,
+            KernelOf<SegmentEllipseLanes<double>>);
+void decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t count, KernelOf<DiscEllipseLanes<double>>);
+void decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count, KernelOf<DiscPairLanes<double>>);
 
 // The verdict the vector kernel left in a chunk's slot, or else the exact fallback's.
 template <class Ref>
@@ -176,7 +177,7 @@ void settle(Pair pair, std::size_t n, At at, std::span<std::uint8_t> overlapping
     for (std::size_t start = 0; start < n; start += chunk.kPairs) {
       const std::size_t count = std::min(chunk.kPairs, n - start);
       fill_chunk(chunk, start, count, [&](std::size_t i) { return lanes_of(pair(at(i))); });
-      decide(chunk, count, Kinds<A, B>());
+      decide(chunk, count, KernelOf<Lanes>());
       for (std::size_t i = 0; i < count; ++i) {
         overlapping[at(start + i)] = verdict_or_exact(chunk.verdict[i], pair(at(start + i))) ? 1 : 0;
       }
@@ -198,7 +199,7 @@ void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
     for (std::size_t start = 0; start < overlapping.size(); start += discs.kPairs) {
       const std::size_t count = std::min(discs.kPairs, overlapping.size() - start);
       fill_chunk(discs, start, count, [&](std::size_t k) { return disc_lanes_of(pair(k)); });
-      decide(discs, count, Kinds<Lanes, void>());
+      decide(discs, count, KernelOf<Lanes>());
       std::size_t n = 0;
       for (std::size_t i = 0; i < count; ++i) {
         const auto verdict = static_cast<FilterVerdict>(discs.verdict[i]);

@@ -123,7 +123,7 @@ inline std::array<Vec2, 2> segment_normals() { return {Vec2(0, -1), Vec2(0, 1)};
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
-// vertex there. Every axis at once in SIMD lanes (axis_separations.cpp); x has an axis.
+// vertex there. Every axis at once in SIMD lanes (best_axis.cpp); x has an axis.
 struct BestAxis {
   double s = -std::numeric_limits<double>::infinity();
   int axis = 0;

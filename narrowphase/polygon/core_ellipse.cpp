@@ -178,11 +178,12 @@ namespace {
 // Overlapping where the core's least ellipse quadratic is below 1 by more than its rounding (that
 // point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
 // a long edge's nearest point, which the bound follows) or a rounded core's radius certainly reaches
-// the ellipse; apart where it certainly does not (quadratic_verdicts); else where the signed distance is within the
-// radius (a vertex or face point of the core inside the ellipse is a witness, or the ellipse's
-// nearest point within the radius of a rounded core), unless a face normal's separation (a lower
-// bound of the signed distance) shows them apart. The one verdict of the overlap test and the
-// distance, so that they agree to the bit; the deepest peak into `d` where it was needed.
+// the ellipse; apart where it certainly does not (quadratic_verdicts); else where the signed
+// distance is within the radius (a vertex or face point of the core inside the ellipse is a
+// witness, or the ellipse's nearest point within the radius of a rounded core), unless a face
+// normal's separation (a lower bound of the signed distance) shows them apart. The one verdict of
+// the overlap test and the distance, so that they agree to the bit; the deepest peak into `d` where
+// it was needed.
 bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, Peak& d) {
   const LaneVerdicts<bool> certain = quadratic_verdicts(Scalar{}, least, p.core.x, p.core.y, p.core.radius, p.a, p.b);
   if (certain.overlap || certain.separated) return certain.overlap;

@@ -16,6 +16,7 @@
 #include <random>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
@@ -56,9 +57,20 @@ std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   return out;
 }
 
-double box2d(const Shape& a, const Shape& b, int sides, Fit fit) {
+// The pair as Box2D polygons (ellipses as N-gons), coordinates taken from A's centre.
+std::pair<baseline::Polygon, baseline::Polygon> box2d_pair(const Shape& a, const Shape& b, int sides, Fit fit) {
   const Vec2 origin = center_of(a);
-  return baseline::box2d_distance(baseline::to_box2d(a, sides, fit, origin), baseline::to_box2d(b, sides, fit, origin));
+  return {baseline::to_box2d(a, sides, fit, origin), baseline::to_box2d(b, sides, fit, origin)};
+}
+
+baseline::ShapePair box2d_shapes(const Shape& a, const Shape& b, int sides, Fit fit) {
+  const auto [pa, pb] = box2d_pair(a, b, sides, fit);
+  return baseline::to_box2d_shapes(pa, pb);
+}
+
+double box2d(const Shape& a, const Shape& b, int sides, Fit fit) {
+  const auto [pa, pb] = box2d_pair(a, b, sides, fit);
+  return baseline::box2d_distance(pa, pb);
 }
 
 // Box2D works in float: its distances carry errors of a few float ulps of the coordinates (here
@@ -119,11 +131,8 @@ TEST(Box2dBracket, OverlapOfPolygonsBracketsTheExactVerdict) {
   const auto pairs = random_pairs(3000, 13);
   int decided = 0;
   for (const auto& [a, b] : pairs) {
-    const Vec2 origin = center_of(a);
-    const auto outer = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::circumscribed, origin),
-                                                 baseline::to_box2d(b, 8, Fit::circumscribed, origin));
-    const auto inner = baseline::to_box2d_shapes(baseline::to_box2d(a, 8, Fit::inscribed, origin),
-                                                 baseline::to_box2d(b, 8, Fit::inscribed, origin));
+    const auto outer = box2d_shapes(a, b, 8, Fit::circumscribed);
+    const auto inner = box2d_shapes(a, b, 8, Fit::inscribed);
     const bool exact = overlaps(a, b);
     if (!baseline::box2d_overlap(outer)) {  // apart, unless Box2D's float rounding decided it
       EXPECT_FALSE(exact && box2d(a, b, 8, Fit::circumscribed) > kFloatTolerance);
@@ -151,16 +160,11 @@ TEST(Box2dBracket, ContactDepthLiesBetweenCircumscribedAndInscribed) {
   for (const auto& [a, b] : pairs) {
     const Contact c = contact(a, b);
     if (c.separation > -0.05) continue;  // deep enough that the inscribed polygons overlap too
-    const Vec2 origin = center_of(a);
     double width[2];
     bool both = true;
     for (int i = 0; i < 2; ++i) {
-      const auto outer = baseline::box2d_contact(
-          baseline::to_box2d_shapes(baseline::to_box2d(a, sides[i], Fit::circumscribed, origin),
-                                    baseline::to_box2d(b, sides[i], Fit::circumscribed, origin)));
-      const auto inner =
-          baseline::box2d_contact(baseline::to_box2d_shapes(baseline::to_box2d(a, sides[i], Fit::inscribed, origin),
-                                                            baseline::to_box2d(b, sides[i], Fit::inscribed, origin)));
+      const auto outer = baseline::box2d_contact(box2d_shapes(a, b, sides[i], Fit::circumscribed));
+      const auto inner = baseline::box2d_contact(box2d_shapes(a, b, sides[i], Fit::inscribed));
       ASSERT_TRUE(outer) << "circumscribed polygons of an overlapping pair apart";
       ASSERT_LE(outer->separation, c.separation + kFloatTolerance) << "sides " << sides[i];
       if (!inner) {
@@ -283,9 +287,7 @@ TEST(Box2dBracket, PolygonsMatchBox2dWithinFloatError) {
   int apart = 0, overlapping = 0, deepest_kept = 0, polygon_pairs_overlapping = 0;
   double worst = 0;
   for (const auto& [a, b] : polygon_pairs(4000, 51)) {
-    const Vec2 origin = center_of(a);
-    const auto pa = baseline::to_box2d(a, 8, Fit::inscribed, origin),
-               pb = baseline::to_box2d(b, 8, Fit::inscribed, origin);
+    const auto [pa, pb] = box2d_pair(a, b, 8, Fit::inscribed);
     const Contact c = contact(a, b);
     if (c.separation > 0) {
       const double d = baseline::box2d_distance(pa, pb);
@@ -317,7 +319,7 @@ TEST(Box2dBracket, PolygonsMatchBox2dWithinFloatError) {
 }
 
 // Box2D 2.4.1 has no capsule; its rounded box (bench/box2d_baseline.h) holds the capsule and lies
-// within 0.42 w of it (w = 0.003, the box's half width), so that against any shape Box2D's
+// within 0.42 w of it (w, the box's half width), so that against any shape Box2D's
 // separation lies between ours less that for each capsule and ours, to float error: apart from a
 // polygon, a circle or another capsule (b2Distance), overlapping a circle
 // (b2CollidePolygonAndCircle).
@@ -328,7 +330,7 @@ TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
     return Capsule{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
   };
   const auto others = polygon_pairs(3000, 55);
-  constexpr double kBoxReach = 0.42 * 0.003;
+  constexpr double kBoxReach = 0.42 * baseline::kCapsuleBoxHalfWidth;
   int apart = 0, overlapping = 0;
   for (int k = 0; k < 3000; ++k) {
     const Shape a = capsule();
@@ -336,9 +338,7 @@ TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
                          : k % 3 == 1 ? others[k].first
                                       : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + 0.5 * u(rng)});
     const double slack = kBoxReach * (std::holds_alternative<Capsule>(placed) ? 2 : 1);
-    const Vec2 origin = center_of(a);
-    const auto pa = baseline::to_box2d(a, 8, Fit::inscribed, origin),
-               pb = baseline::to_box2d(placed, 8, Fit::inscribed, origin);
+    const auto [pa, pb] = box2d_pair(a, placed, 8, Fit::inscribed);
     const Contact c = contact(a, placed);
     if (c.separation > 0) {
       const double d = baseline::box2d_distance(pa, pb);

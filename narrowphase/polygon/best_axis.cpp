@@ -9,7 +9,7 @@
 #include <cstddef>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "narrowphase/polygon/axis_separations.cpp"
+#define HWY_TARGET_INCLUDE "narrowphase/polygon/best_axis.cpp"
 #include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
 #include "hwy/highway.h"
 
