@@ -1,15 +1,20 @@
 #include "flat_families.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <functional>
 #include <numbers>
 #include <ostream>
+#include <type_traits>
 #include <variant>
+#include <vector>
 
 namespace collide2d::testing {
 
 const char* name_of(Flat k) {
-  constexpr const char* names[] = {"rect", "polygon", "rounded", "capsule", "circle", "ellipse"};
+  constexpr const char* names[] = {"rect",     "polygon", "rounded", "capsule", "circle", "ellipse",
+                                   "triangle", "octagon", "kinked",  "needle",  "stub"};
   return names[static_cast<int>(k)];
 }
 
@@ -24,10 +29,40 @@ Shape moved_to(Shape s, const Vec2& center) {
 
 }  // namespace
 
+namespace {
+
+// n vertices on the ellipse of half axes size and thin, one to each of n equal arcs at a random
+// place within its first 0.6.
+std::vector<Vec2> polygon_around(int n, double size, double thin, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec2> v;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * kPi * (k + 0.6 * unit(rng)) / n;
+    v.emplace_back(size * std::cos(t), thin * std::sin(t));
+  }
+  return v;
+}
+
+// A vertex added 1e-12 of the size outside the middle of a random edge.
+std::vector<Vec2> kinked(std::vector<Vec2> v, double size, std::mt19937_64& rng) {
+  const std::size_t k = std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(rng);
+  const Vec2 from = v[k], to = v[(k + 1) % v.size()];
+  const Vec2 edge = to - from;
+  const Vec2 out = Vec2(edge.y(), -edge.x()).normalized();
+  v.insert(v.begin() + static_cast<std::ptrdiff_t>(k + 1), (from + to) / 2 + 1e-12 * size * out);
+  return v;
+}
+
+}  // namespace
+
 Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double angle = 2 * kPi * unit(rng);
   const double thin = size / std::exp(std::log(aspect) * unit(rng));
+  const auto polygon = [&](const std::vector<Vec2>& v, double radius) -> Shape {
+    return ConvexPolygon::of(v, radius).at(Vec2::Zero(), angle);
+  };
+  const auto count = [&](int least, int most) { return least + static_cast<int>(unit(rng) * (most - least + 1)); };
   switch (kind) {
     case Flat::rect:
       return Rect{Vec2::Zero(), Vec2(size, thin), angle};
@@ -39,17 +74,22 @@ Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) 
       const bool long_one = unit(rng) < 0.5;
       return Capsule{Vec2::Zero(), long_one ? size : thin, long_one ? thin : size, angle};
     }
+    case Flat::needle:
+      return Capsule{Vec2::Zero(), size, 1e-9 * size, angle};
+    case Flat::stub:
+      return Capsule{Vec2::Zero(), 1e-9 * size, size, angle};
     case Flat::polygon:
+      return polygon(polygon_around(count(3, 8), size, thin, rng), 0.0);
     case Flat::rounded: {
-      const int n = 3 + static_cast<int>(unit(rng) * 6);
-      std::vector<Vec2> v;
-      for (int k = 0; k < n; ++k) {
-        const double t = 2 * kPi * (k + 0.6 * unit(rng)) / n;
-        v.emplace_back(size * std::cos(t), thin * std::sin(t));
-      }
-      const double radius = kind == Flat::rounded ? thin * (0.05 + unit(rng)) : 0.0;
-      return ConvexPolygon::of(v, radius).at(Vec2::Zero(), angle);
+      const std::vector<Vec2> v = polygon_around(count(3, 8), size, thin, rng);
+      return polygon(v, thin * (0.05 + unit(rng)));
     }
+    case Flat::triangle:
+      return polygon(polygon_around(3, size, thin, rng), 0.0);
+    case Flat::octagon:
+      return polygon(polygon_around(8, size, thin, rng), 0.0);
+    case Flat::kinked:
+      return polygon(kinked(polygon_around(count(3, 7), size, thin, rng), size, rng), 0.0);
   }
   return Circle{};
 }
@@ -60,20 +100,90 @@ std::vector<FlatFamily> flat_families() {
   const Flat kinds[] = {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle};
   const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
   std::vector<FlatFamily> out;
+  const auto add = [&out](Flat a, Flat b, const std::string& what, double size, double offset, double aspect,
+                          const std::vector<double>& deltas, Touch touch = Touch::any) {
+    const std::string name = std::string(name_of(a)) + "_" + name_of(b) + "_" + what;
+    out.push_back({name, a, b, size, offset, aspect, deltas, 24, touch});
+  };
   for (const Flat a : kinds) {
     for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse}) {
       if ((a == Flat::circle && b == Flat::circle) || (a == Flat::circle && b == Flat::ellipse)) continue;
-      const std::string pair = std::string(name_of(a)) + "_" + name_of(b);
-      out.push_back({pair + "_touching", a, b, 1.0, 0.0, 4.0, near});
-      out.push_back({pair + "_deep", a, b, 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5}});
-      out.push_back({pair + "_slivers", a, b, 1.0, 0.0, 1e6, near});
-      out.push_back({pair + "_far", a, b, 1.0, 1e9, 4.0, near});
-      out.push_back({pair + "_small", a, b, 1e-6, 1e6, 4.0, near});
-      out.push_back({pair + "_large", a, b, 1e6, 0.0, 4.0, near});
+      add(a, b, "touching", 1.0, 0.0, 4.0, near);
+      add(a, b, "deep", 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5});
+      add(a, b, "slivers", 1.0, 0.0, 1e6, near);
+      add(a, b, "far", 1.0, 1e9, 4.0, near);
+      add(a, b, "small", 1e-6, 1e6, 4.0, near);
+      add(a, b, "large", 1e6, 0.0, 4.0, near);
+    }
+  }
+  const Flat faced[] = {Flat::rect,    Flat::polygon, Flat::rounded, Flat::capsule, Flat::triangle,
+                        Flat::octagon, Flat::kinked,  Flat::needle,  Flat::stub};
+  for (const Flat a : faced) {
+    for (const Flat b : {Flat::ellipse, Flat::circle, Flat::polygon, Flat::capsule}) {
+      add(a, b, "faces", 1.0, 0.0, 4.0, near, Touch::face);
+    }
+  }
+  for (const Flat a : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::needle}) {
+    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule}) {
+      add(a, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
+    }
+  }
+  for (const Flat a : {Flat::triangle, Flat::octagon, Flat::kinked, Flat::needle, Flat::stub}) {
+    for (const Flat b : {Flat::ellipse, Flat::circle, Flat::polygon, Flat::capsule, Flat::needle}) {
+      add(a, b, "touching", 1.0, 0.0, 4.0, near);
     }
   }
   return out;
 }
+
+namespace {
+
+// A face of a shape's core, from one end to the other counter-clockwise, with its outward unit normal
+// and the rounding radius that moves it out along that normal.
+struct Face {
+  Vec2 from, to, normal;
+  double radius;
+};
+
+std::vector<Face> faces_of(const ConvexPolygon& p) {
+  const Eigen::Rotation2Dd turn(p.angle);
+  const PolygonOutline& o = *p.outline;
+  std::vector<Face> out;
+  for (int k = 0; k < o.count; ++k) {
+    const Vec2 from = p.center + turn * o.vertices[k], to = p.center + turn * o.vertices[(k + 1) % o.count];
+    out.push_back({from, to, turn * o.normals[k], o.radius});
+  }
+  return out;
+}
+
+std::vector<Face> faces_of(const Shape& s) {
+  if (const auto* r = std::get_if<Rect>(&s)) {
+    return faces_of(ConvexPolygon::box(r->half_extents.x(), r->half_extents.y()).at(r->center, r->angle));
+  }
+  if (const auto* p = std::get_if<ConvexPolygon>(&s)) return faces_of(*p);
+  if (const auto* c = std::get_if<Capsule>(&s)) {
+    const Vec2 axis(std::cos(c->angle), std::sin(c->angle));
+    const Vec2 end = c->half_length * axis, side(axis.y(), -axis.x());
+    return {{c->center - end, c->center + end, side, c->radius}, {c->center + end, c->center - end, -side, c->radius}};
+  }
+  return {};
+}
+
+// The point of the rounded face a fraction t of the way along it.
+Vec2 point_of(const Face& f, double t) { return f.from + t * (f.to - f.from) + f.radius * f.normal; }
+
+Shape turned(Shape s, double by) {
+  std::visit(
+      [by](auto& x) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, Circle>) x.angle += by;
+      },
+      s);
+  return s;
+}
+
+double direction_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
+
+}  // namespace
 
 std::vector<FlatCase> cases_of(const FlatFamily& f) {
   std::mt19937_64 rng(std::hash<std::string>{}(f.name));
@@ -84,11 +194,25 @@ std::vector<FlatCase> cases_of(const FlatFamily& f) {
     const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
     const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
     const Shape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
-    const Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
+    Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
     const double t = 2 * kPi * unit(rng);
-    const Vec2 n(std::cos(t), std::sin(t));
-    const Vec2 pa = support(a, n);
-    const Vec2 pb = support(b0, Vec2(-n));  // b0 is about the origin
+    Vec2 n(std::cos(t), std::sin(t));
+    Vec2 pa = support(a, n);
+    Vec2 pb = support(b0, Vec2(-n));  // b0 is about the origin
+    const std::vector<Face> faces = faces_of(a);
+    if (f.touch != Touch::any && !faces.empty()) {
+      const Face& face = faces[static_cast<std::size_t>(unit(rng) * faces.size())];
+      n = face.normal;
+      pa = point_of(face, unit(rng));
+      pb = support(b0, Vec2(-n));
+      const std::vector<Face> b_faces = faces_of(b0);
+      if (f.touch == Touch::parallel && !b_faces.empty()) {
+        const Face& b_face = b_faces[static_cast<std::size_t>(unit(rng) * b_faces.size())];
+        b0 = turned(b0, direction_of(-n) - direction_of(b_face.normal));
+        const std::vector<Face> b_turned = faces_of(b0);
+        pb = point_of(b_turned[static_cast<std::size_t>(&b_face - b_faces.data())], unit(rng));
+      }
+    }
     out.push_back({a, moved_to(b0, pa + delta * n - pb), delta});
   }
   return out;

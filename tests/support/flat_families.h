@@ -5,14 +5,32 @@
 
 #include <collide2d/shapes.h>
 
+#include <algorithm>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace collide2d::testing {
 
-enum class Flat { rect, polygon, rounded, capsule, circle, ellipse };
+// polygon: 3 to 8 vertices; triangle and octagon: 3 and 8; kinked: a polygon with a vertex 1e-12
+// of the size off the line of its neighbours; needle: a capsule of radius 1e-9 of its half length;
+// stub: a capsule of half length 1e-9 of its radius.
+enum class Flat { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub };
 const char* name_of(Flat k);
+
+// The flat kinds held in a ConvexPolygon and in a Capsule.
+inline constexpr Flat kPolygonKinds[] = {Flat::polygon, Flat::rounded, Flat::triangle, Flat::octagon, Flat::kinked};
+inline constexpr Flat kCapsuleKinds[] = {Flat::capsule, Flat::needle, Flat::stub};
+inline bool is_one_of(std::span<const Flat> kinds, Flat k) {
+  return std::find(kinds.begin(), kinds.end(), k) != kinds.end();
+}
+
+// Where B meets A: at A's support point along a random direction (a polygon's vertex, almost
+// surely); at a random point of one of A's faces, against B's support point there (a vertex on a
+// face, a curve tangent to it); or face to face, B turned so that one of its faces lies along one of
+// A's, the two overlapping along it. Where A or B has no face, B meets A along a random direction.
+enum class Touch { any, face, parallel };
 
 // A random shape of the kind about the origin, of size about `size` (its longest half-size) and
 // aspect up to `aspect`: a polygon has 3 to 8 vertices on an ellipse of that aspect, a rounded one
@@ -27,13 +45,16 @@ struct FlatFamily {
   double aspect = 4.0;
   std::vector<double> deltas;  // of the size: B's support point that far along A's
   int cases = 24;
+  Touch touch = Touch::any;
 };
 
 void PrintTo(const FlatFamily& f, std::ostream* os);
 
 // Every pair of a flat kind A with a flat kind or an ellipse B (not circle–circle or
 // circle–ellipse, which have families of their own): touching at gaps of +-1e-3 ... 1e-12 and 0 of
-// the size, deep, slivers (aspect 1e6), far off (1e9), small (1e-6) and large (1e6).
+// the size, deep, slivers (aspect 1e6), far off (1e9), small (1e-6) and large (1e6); faces touching
+// curves, vertices and capsules' sides at those gaps, and parallel faces; the degenerate kinds
+// (triangles, octagons, kinked polygons, needles and stubs) touching at those gaps.
 std::vector<FlatFamily> flat_families();
 
 struct FlatCase {
@@ -42,7 +63,8 @@ struct FlatCase {
 };
 
 // B placed so that its support point along -n lies at A's along n plus delta n (delta in units of
-// the size): for delta >= 0 the pair's distance is delta, to the rounding of B's centre.
+// the size), n chosen as the family's touch says: for delta >= 0 the pair's distance is delta, to
+// the rounding of B's centre.
 std::vector<FlatCase> cases_of(const FlatFamily& f);
 
 }  // namespace collide2d::testing

@@ -241,13 +241,10 @@ bool left_uncertain(const Pairs<A, B>& p, std::size_t k) {
 // candidate pairs at random sizes, half of them at a gap of either sign down to 1e-16 along a random
 // direction.
 template <class A, class B>
-void check_flat(std::initializer_list<Flat> as, std::initializer_list<Flat> bs) {
-  const auto among = [](std::initializer_list<Flat> kinds, Flat k) {
-    return std::find(kinds.begin(), kinds.end(), k) != kinds.end();
-  };
+void check_flat(std::span<const Flat> as, std::span<const Flat> bs) {
   Pairs<A, B> p;
   for (FlatFamily f : flat_families()) {
-    if (!among(as, f.a) || !among(bs, f.b)) continue;
+    if (!is_one_of(as, f.a) || !is_one_of(bs, f.b)) continue;
     f.cases = 240;
     for (const FlatCase& c : cases_of(f)) p.add(std::get<A>(c.a), std::get<B>(c.b));
   }
@@ -255,7 +252,7 @@ void check_flat(std::initializer_list<Flat> as, std::initializer_list<Flat> bs) 
   std::mt19937_64 rng(37);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (std::size_t k = 0; p.size() < family_pairs + 300'000; ++k) {
-    const auto random = [&](std::initializer_list<Flat> kinds) {
+    const auto random = [&](std::span<const Flat> kinds) {
       return random_shape(*(kinds.begin() + k % kinds.size()), 0.05 + u(rng), std::pow(10.0, 3 * u(rng)), rng);
     };
     const Shape a = random(as);
@@ -272,20 +269,23 @@ void check_flat(std::initializer_list<Flat> as, std::initializer_list<Flat> bs) 
   on_every_target([&](const char* target) { EXPECT_EQ(mismatches_in_ragged_batches(p, target), 0) << target; });
 }
 
+constexpr Flat kEllipse[] = {Flat::ellipse};
+constexpr Flat kCircle[] = {Flat::circle};
+
 TEST(OverlapBatch, PolygonEllipsePairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, Ellipse>({Flat::polygon, Flat::rounded}, {Flat::ellipse});
+  check_flat<ConvexPolygon, Ellipse>(testing::kPolygonKinds, kEllipse);
 }
 TEST(OverlapBatch, CapsuleEllipsePairsMatchTheOneOffKernel) {
-  check_flat<Capsule, Ellipse>({Flat::capsule}, {Flat::ellipse});
+  check_flat<Capsule, Ellipse>(testing::kCapsuleKinds, kEllipse);
 }
 TEST(OverlapBatch, PolygonCirclePairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, Circle>({Flat::polygon, Flat::rounded}, {Flat::circle});
+  check_flat<ConvexPolygon, Circle>(testing::kPolygonKinds, kCircle);
 }
 TEST(OverlapBatch, CapsuleCirclePairsMatchTheOneOffKernel) {
-  check_flat<Capsule, Circle>({Flat::capsule}, {Flat::circle});
+  check_flat<Capsule, Circle>(testing::kCapsuleKinds, kCircle);
 }
 TEST(OverlapBatch, PolygonPairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, ConvexPolygon>({Flat::polygon, Flat::rounded}, {Flat::polygon, Flat::rounded});
+  check_flat<ConvexPolygon, ConvexPolygon>(testing::kPolygonKinds, testing::kPolygonKinds);
 }
 
 TEST(OverlapBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {
