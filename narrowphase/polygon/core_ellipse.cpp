@@ -53,28 +53,33 @@ void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
   }
 }
 
-// The largest face normal's separation, a lower bound of the signed distance, and along each face
-// normal n the ellipse's support value h and its support point q along -n.
+// The largest face normal's separation, a lower bound of the signed distance; along each face normal
+// n the ellipse's support value h, its support point q along -n and its radius of curvature there,
+// (ab)^2 / h^3; and the ellipse's least radius of curvature, min(a, b)^2 / max(a, b).
 struct Faces {
   Peak best;
   int face = -1;             // best's
   double runner_up = -kInf;  // the largest separation of the other faces
-  std::array<double, kMaxPolygonVertices> h{};
-  std::array<Vec2, kMaxPolygonVertices> q{};
+  std::array<double, kMaxPolygonVertices> h, rho;
+  std::array<Vec2, kMaxPolygonVertices> q;
+  double least_rho = 0.0;
 };
 
-// Along face i's normal n the separation is n.(q - v), v the face's first vertex: q lies over the
-// face there. The faces apart first, so that their square roots and divisions overlap.
+// Along face i's normal n the separation is n.(q - v) = -h - n.v, v the face's first vertex: q lies
+// over the face there. The faces apart first, so that their square roots and divisions overlap.
 Faces best_face(const CoreEllipse& p) {
   const Core& c = p.core;
   Faces out;
-  std::array<double, kMaxPolygonVertices> s{};
+  const double ab = p.a * p.b;
+  std::array<double, kMaxPolygonVertices> s;
   for (int i = 0; i < c.faces(); ++i) {
     const Vec2& n = c.n[i];
     const Vec2 aa(p.a * p.a * n.x(), p.b * p.b * n.y());
-    out.h[i] = std::sqrt(aa.dot(n));
-    out.q[i] = aa * (-1 / out.h[i]);
-    s[i] = n.dot(out.q[i] - c.v[i]);
+    const double h = std::sqrt(aa.dot(n)), inverse = 1 / h;
+    out.h[i] = h;
+    out.q[i] = aa * -inverse;
+    out.rho[i] = ab * ab * (inverse * inverse * inverse);
+    s[i] = -h - n.dot(c.v[i]);
   }
   for (int i = 0; i < c.faces(); ++i) {
     if (s[i] > out.best.s) {
@@ -87,6 +92,8 @@ Faces best_face(const CoreEllipse& p) {
     const Vec2 &n = c.n[out.face], &q = out.q[out.face];
     out.best = {out.best.s, n, Vec2(q - out.best.s * n), q};
   }
+  const double minor = std::min(p.a, p.b);
+  out.least_rho = minor * minor / std::max(p.a, p.b);
   return out;
 }
 
@@ -95,16 +102,20 @@ double scale(const CoreEllipse& p) {
   return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
-// Whether u.w <= s all over vertex k's cone: at its ends, and along w where w lies inside it.
-bool within(const Core& c, int k, const Vec2& w, double s) {
-  if (std::max(c.n[c.prev(k)].dot(w), c.n[k].dot(w)) > s) return false;
+// Whether u.w <= s over vertex k's cone: at `end`, one of its ends (or both), and along w where w
+// lies inside it.
+bool within(const Core& c, int k, const Vec2& end, const Vec2& w, double s) {
+  if (end.dot(w) > s) return false;
   return !in_cone(c, k, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
 }
 
-// Whether the separation over vertex k's cone stays at most s, by any of three bounds. Along u it is
-// -(u.v + h(u)), h the ellipse's support value, so
-// - at most u.(q - v) for any point q of the ellipse (h(u) >= -u.q): for each of the ellipse's
-//   points q that the cone's two face normals found;
+// Whether the separation over vertex k's cone stays at most s, at least every face's, by any of
+// three bounds. Along u it is -(u.v + h(u)), h the ellipse's support value, and
+// - at a face normal e of the cone's ends, the ellipse holds the disc of radius r tangent at its
+//   support point q there, r its least radius of curvature (ab)^2 / h^3 over the cone (h greatest
+//   at an end, or at the major axis where the cone holds it), as far as the support values along
+//   the cone go: the separation is at most u.(q + r e - v) - r, which is e's own face's separation
+//   at e (at most s, and not checked, lest rounding lose it), a sinusoid over the cone;
 // - at most minus the least u.v less the least h over the cone, that at the cone's ends or along
 //   the ellipse's minor axis where the cone holds it.
 bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
@@ -113,11 +124,19 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const double minor = std::min(p.a, p.b);
   if (c.count == 1) return v.norm() - minor <= s;
   const int before = c.prev(k);
-  if (within(c, k, Vec2(faces.q[k] - v), s) || within(c, k, Vec2(faces.q[before] - v), s)) return true;
-  const Vec2 axis = p.a <= p.b ? Vec2::UnitX() : Vec2::UnitY();
-  const bool minor_inside = in_cone(c, k, axis) || in_cone(c, k, Vec2(-axis));
-  const double least_h = minor_inside ? minor : std::min(faces.h[before], faces.h[k]);
-  return within(c, k, Vec2(-v), s + least_h);
+  // The cone (under a half turn, or a half turn at a segment's end) holds the x axis or its opposite
+  // where its ends' normals lie on either side of it, and so for y.
+  const Vec2 &from = c.n[before], &to = c.n[k];
+  const bool holds_x = from.y() * to.y() <= 0.0, holds_y = from.x() * to.x() <= 0.0;
+  const bool wide = p.a >= p.b;
+  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(faces.rho[before], faces.rho[k]);
+  const auto disc_within = [&](int face, const Vec2& other_end) {
+    return within(c, k, other_end, Vec2(faces.q[face] + r * c.n[face] - v), s + r);
+  };
+  if (disc_within(k, c.n[before]) || disc_within(before, c.n[k])) return true;
+  const double least_h = (wide ? holds_y : holds_x) ? minor : std::min(faces.h[before], faces.h[k]);
+  const Vec2 w = -v;
+  return c.n[before].dot(w) <= s + least_h && within(c, k, c.n[k], w, s + least_h);
 }
 
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
