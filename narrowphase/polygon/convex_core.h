@@ -178,6 +178,15 @@ struct CoreEllipse {
   Vec2 world_direction(const Vec2& d) const { return e_rot.apply(d); }
 };
 
+// Along each face normal n of a core, an ellipse's (semi-axes a along x and b along y, centred at the
+// origin): its support value h, its support point q along -n, its radius of curvature there,
+// (ab)^2 / h^3, and the face's separation from it, n.(q - v) = -h - n.v for the face's first vertex
+// v. Every slot at once in SIMD lanes (face_supports.cpp); the slots past the faces hold no face.
+struct FaceSupports {
+  std::array<double, kMaxPolygonVertices> h, rho, qx, qy, s;
+};
+void face_supports(const Core& c, double a, double b, FaceSupports& out);
+
 bool core_ellipse_overlap(const CoreEllipse& p);
 DistanceResult core_ellipse_distance(const CoreEllipse& p);
 Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options);

@@ -53,44 +53,34 @@ void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
   }
 }
 
-// The largest face normal's separation, a lower bound of the signed distance; along each face normal
-// n the ellipse's support value h, its support point q along -n and its radius of curvature there,
-// (ab)^2 / h^3; and the ellipse's least radius of curvature, min(a, b)^2 / max(a, b).
+// The largest face normal's separation, a lower bound of the signed distance; the ellipse's support
+// along each face normal (FaceSupports) and its least radius of curvature, min(a, b)^2 / max(a, b).
 struct Faces {
   Peak best;
   int face = -1;             // best's
   double runner_up = -kInf;  // the largest separation of the other faces
-  std::array<double, kMaxPolygonVertices> h, rho;
-  std::array<Vec2, kMaxPolygonVertices> q;
+  FaceSupports along;
   double least_rho = 0.0;
+
+  Vec2 q(int i) const { return {along.qx[i], along.qy[i]}; }
 };
 
-// Along face i's normal n the separation is n.(q - v) = -h - n.v, v the face's first vertex: q lies
-// over the face there. The faces apart first, so that their square roots and divisions overlap.
 Faces best_face(const CoreEllipse& p) {
   const Core& c = p.core;
   Faces out;
-  const double ab = p.a * p.b;
-  std::array<double, kMaxPolygonVertices> s;
+  face_supports(c, p.a, p.b, out.along);
+  double best = -kInf, runner_up = -kInf;
+  int face = -1;
   for (int i = 0; i < c.faces(); ++i) {
-    const Vec2& n = c.n[i];
-    const Vec2 aa(p.a * p.a * n.x(), p.b * p.b * n.y());
-    const double h = std::sqrt(aa.dot(n)), inverse = 1 / h;
-    out.h[i] = h;
-    out.q[i] = aa * -inverse;
-    out.rho[i] = ab * ab * (inverse * inverse * inverse);
-    s[i] = -h - n.dot(c.v[i]);
+    const double s = out.along.s[i];
+    runner_up = std::max(runner_up, std::min(best, s));
+    face = s > best ? i : face;
+    best = std::max(best, s);
   }
-  for (int i = 0; i < c.faces(); ++i) {
-    if (s[i] > out.best.s) {
-      out.runner_up = out.best.s, out.best.s = s[i], out.face = i;
-    } else {
-      out.runner_up = std::max(out.runner_up, s[i]);
-    }
-  }
-  if (out.face >= 0) {
-    const Vec2 &n = c.n[out.face], &q = out.q[out.face];
-    out.best = {out.best.s, n, Vec2(q - out.best.s * n), q};
+  out.face = face, out.runner_up = runner_up;
+  if (face >= 0) {
+    const Vec2 &n = c.n[face], q = out.q(face);
+    out.best = {best, n, Vec2(q - best * n), q};
   }
   const double minor = std::min(p.a, p.b);
   out.least_rho = minor * minor / std::max(p.a, p.b);
@@ -129,12 +119,12 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const Vec2 &from = c.n[before], &to = c.n[k];
   const bool holds_x = from.y() * to.y() <= 0.0, holds_y = from.x() * to.x() <= 0.0;
   const bool wide = p.a >= p.b;
-  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(faces.rho[before], faces.rho[k]);
+  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(faces.along.rho[before], faces.along.rho[k]);
   const auto disc_within = [&](int face, const Vec2& other_end) {
-    return within(c, k, other_end, Vec2(faces.q[face] + r * c.n[face] - v), s + r);
+    return within(c, k, other_end, Vec2(faces.q(face) + r * c.n[face] - v), s + r);
   };
   if (disc_within(k, c.n[before]) || disc_within(before, c.n[k])) return true;
-  const double least_h = (wide ? holds_y : holds_x) ? minor : std::min(faces.h[before], faces.h[k]);
+  const double least_h = (wide ? holds_y : holds_x) ? minor : std::min(faces.along.h[before], faces.along.h[k]);
   const Vec2 w = -v;
   return c.n[before].dot(w) <= s + least_h && within(c, k, c.n[k], w, s + least_h);
 }
