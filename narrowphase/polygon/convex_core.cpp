@@ -426,7 +426,9 @@ Core core_of(const ConvexPolygon& p, const Placement& at) {
 }
 
 Core core_of(const Capsule& c, const Placement& at) {
-  return make(segment_of(c), segment_normals(), c.radius, discs_of(c), at);
+  const std::array<Vec2, 2> faces = segment_normals();
+  const Vec2 n[] = {faces[0], faces[1], {1, 0}, {-1, 0}};
+  return make(segment_of(c), n, c.radius, discs_of(c), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {

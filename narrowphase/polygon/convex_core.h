@@ -51,9 +51,10 @@ inline Discs discs_of(const Capsule& c) { return {c.half_length + c.radius, c.ra
 inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
 
 // A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
-// count repeating the first), each face's outward
-// unit normal (face i from vertex i to vertex i + 1), and the radius around it. A segment has two
-// faces, one each way; a point none.
+// count repeating the first), each face's outward unit normal (face i from vertex i to vertex
+// i + 1), and the radius around it. A segment has two faces, one each way, and in the normals' slots
+// 2 and 3 its directions from its first end to its second and back (each end's half turn of
+// directions is two quarter turns about them); a point has none.
 struct Core {
   // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
   std::array<Vec2, kMaxPolygonVertices> v;

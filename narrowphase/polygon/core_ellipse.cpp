@@ -24,14 +24,14 @@ struct Peak {
   Vec2 on_a = Vec2::Zero(), on_e = Vec2::Zero();
 };
 
+// Whether u lies in the arc of directions from `from` counter-clockwise to `to` (a half turn at
+// most).
+bool in_arc(const Vec2& from, const Vec2& to, const Vec2& u) { return cross(from, u) >= 0.0 && cross(u, to) >= 0.0; }
+
 // Whether u lies in the cone of directions where vertex k is A's support point: from the normal of
 // the face that ends at k to the normal of the face that starts there (a half turn at a segment's
 // end; every direction at a point).
-bool in_cone(const Core& c, int k, const Vec2& u) {
-  if (c.count == 1) return true;
-  const Vec2& before = c.n[c.prev(k)];
-  return cross(before, u) >= 0.0 && cross(u, c.n[k]) >= 0.0;
-}
+bool in_cone(const Core& c, int k, const Vec2& u) { return c.count == 1 || in_arc(c.n[c.prev(k)], c.n[k], u); }
 
 // The maxima of the separation over vertex k's cone that lie inside it, into `best`; each root
 // counted in `roots`. Where the nearest foot's normal lies in the cone it is the greatest
@@ -92,41 +92,60 @@ double scale(const CoreEllipse& p) {
   return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
-// Whether u.w <= s over vertex k's cone: at `end`, one of its ends (or both), and along w where w
-// lies inside it.
-bool within(const Core& c, int k, const Vec2& end, const Vec2& w, double s) {
+// An end of an arc of directions: the direction e, and the ellipse's support value h, support
+// point q and radius of curvature rho along it (FaceSupports' slot).
+struct ArcEnd {
+  Vec2 e, q;
+  double h, rho;
+
+  static ArcEnd of(const Core& c, const Faces& faces, int slot) {
+    return {c.n[slot], faces.q(slot), faces.along.h[slot], faces.along.rho[slot]};
+  }
+};
+
+// Whether u.w <= s over the arc from `from` to `to`: at `end`, one of its ends, and along w where w
+// lies inside.
+bool within(const Vec2& from, const Vec2& to, const Vec2& end, const Vec2& w, double s) {
   if (end.dot(w) > s) return false;
-  return !in_cone(c, k, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
+  return !in_arc(from, to, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
 }
 
-// Whether the separation over vertex k's cone stays at most s, at least every face's, by any of
-// three bounds. Along u it is -(u.v + h(u)), h the ellipse's support value, and
-// - at a face normal e of the cone's ends, the ellipse holds the disc of radius r tangent at its
-//   support point q there, r its least radius of curvature (ab)^2 / h^3 over the cone (h greatest
-//   at an end, or at the major axis where the cone holds it), as far as the support values along
-//   the cone go: the separation is at most u.(q + r e - v) - r, which is e's own face's separation
-//   at e (at most s, and not checked, lest rounding lose it), a sinusoid over the cone;
-// - at most minus the least u.v less the least h over the cone, that at the cone's ends or along
-//   the ellipse's minor axis where the cone holds it.
+// Whether the separation of the point v and the ellipse stays at most s over an arc (a half turn at
+// most) whose ends' separations are at most s, by any of three bounds. Along u it is -(u.v + h(u)),
+// h the ellipse's support value, and
+// - at an end e, the ellipse holds the disc of radius r tangent at its support point q there, r its
+//   least radius of curvature (ab)^2 / h^3 over the arc (h greatest at an end, or at the major axis
+//   where the arc holds it), as far as the support values along the arc go: the separation is at
+//   most u.(q + r e - v) - r, which is e's own separation at e (not checked, lest rounding lose
+//   it), a sinusoid over the arc;
+// - at most minus the least u.v less the least h over the arc, that at the arc's ends or along the
+//   ellipse's minor axis where the arc holds it.
+bool arc_within(const CoreEllipse& p, const Faces& faces, const Vec2& v, const ArcEnd& from, const ArcEnd& to,
+                double s) {
+  // The arc holds the x axis or its opposite where its ends lie on either side of it, and so for y.
+  const bool holds_x = from.e.y() * to.e.y() <= 0.0, holds_y = from.e.x() * to.e.x() <= 0.0;
+  const bool wide = p.a >= p.b;
+  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(from.rho, to.rho);
+  const auto disc_within = [&](const ArcEnd& end, const Vec2& other) {
+    return within(from.e, to.e, other, Vec2(end.q + r * end.e - v), s + r);
+  };
+  if (disc_within(to, from.e) || disc_within(from, to.e)) return true;
+  const double least_h = (wide ? holds_y : holds_x) ? std::min(p.a, p.b) : std::min(from.h, to.h);
+  const Vec2 w = -v;
+  return from.e.dot(w) <= s + least_h && within(from.e, to.e, to.e, w, s + least_h);
+}
+
+// Whether the separation over vertex k's cone stays at most s, at least every face's (arc_within).
+// A segment's end takes its half turn as two quarter turns about the segment's direction there,
+// whose separation is checked first.
 bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const Core& c = p.core;
   const Vec2& v = c.v[k];
-  const double minor = std::min(p.a, p.b);
-  if (c.count == 1) return v.norm() - minor <= s;
-  const int before = c.prev(k);
-  // The cone (under a half turn, or a half turn at a segment's end) holds the x axis or its opposite
-  // where its ends' normals lie on either side of it, and so for y.
-  const Vec2 &from = c.n[before], &to = c.n[k];
-  const bool holds_x = from.y() * to.y() <= 0.0, holds_y = from.x() * to.x() <= 0.0;
-  const bool wide = p.a >= p.b;
-  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(faces.along.rho[before], faces.along.rho[k]);
-  const auto disc_within = [&](int face, const Vec2& other_end) {
-    return within(c, k, other_end, Vec2(faces.q(face) + r * c.n[face] - v), s + r);
-  };
-  if (disc_within(k, c.n[before]) || disc_within(before, c.n[k])) return true;
-  const double least_h = (wide ? holds_y : holds_x) ? minor : std::min(faces.along.h[before], faces.along.h[k]);
-  const Vec2 w = -v;
-  return c.n[before].dot(w) <= s + least_h && within(c, k, c.n[k], w, s + least_h);
+  if (c.count == 1) return v.norm() - std::min(p.a, p.b) <= s;
+  const ArcEnd from = ArcEnd::of(c, faces, c.prev(k)), to = ArcEnd::of(c, faces, k);
+  if (c.count > 2) return arc_within(p, faces, v, from, to, s);
+  const ArcEnd mid = ArcEnd::of(c, faces, k == 1 ? 2 : 3);
+  return -mid.h - mid.e.dot(v) <= s && arc_within(p, faces, v, from, mid, s) && arc_within(p, faces, v, mid, to, s);
 }
 
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
