@@ -6,6 +6,7 @@
 #include "narrowphase/frames/unit_vector.h"
 #include "narrowphase/polygon/convex_core.h"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -46,7 +47,8 @@ Contact core_circle(const A& a, const CoreView& o, const Orientation& a_orientat
   double s = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < o.count; ++i) {
     const double si = o.normals[i].dot(c) - o.normals[i].dot(o.vertices[i]);  // as the cores' axes
-    if (si > s) s = si, face = i;
+    face = si > s ? i : face;  // a select, not a branch: which face leads is a coin toss
+    s = std::max(s, si);
   }
   const double radii = o.radius + b.radius;
   const double scale = 2 * std::max(o.reach, c.cwiseAbs().maxCoeff()) + radii;
