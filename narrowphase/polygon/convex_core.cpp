@@ -181,8 +181,11 @@ FaceClip clip_face(const Core& x, int i, const Core& y) {
   const Vec2 t = perp(n);
   const double length = t.dot(x.v[x.next(i)] - v0);
   int k = 0;
+  double least = y.faces() > 0 ? y.n[0].dot(n) : 0.0;
   for (int j = 1; j < y.faces(); ++j) {
-    if (y.n[j].dot(n) < y.n[k].dot(n)) k = j;
+    const double along = y.n[j].dot(n);
+    k = along < least ? j : k;  // selects, not branches: which face is the incident one is a coin toss
+    least = std::min(least, along);
   }
   const int ends = y.count == 1 ? 1 : 2;
   std::array<Clipped, 2> end;
