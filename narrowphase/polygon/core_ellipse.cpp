@@ -92,17 +92,6 @@ double scale(const CoreEllipse& p) {
   return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
-// An end of an arc of directions: the direction e, and the ellipse's support value h, support
-// point q and radius of curvature rho along it (FaceSupports' slot).
-struct ArcEnd {
-  Vec2 e, q;
-  double h, rho;
-
-  static ArcEnd of(const Core& c, const Faces& faces, int slot) {
-    return {c.n[slot], faces.q(slot), faces.along.h[slot], faces.along.rho[slot]};
-  }
-};
-
 // Whether u.w <= s over the arc from `from` to `to`: at `end`, one of its ends, and along w where w
 // lies inside.
 bool within(const Vec2& from, const Vec2& to, const Vec2& end, const Vec2& w, double s) {
@@ -110,9 +99,9 @@ bool within(const Vec2& from, const Vec2& to, const Vec2& end, const Vec2& w, do
   return !in_arc(from, to, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
 }
 
-// Whether the separation of the point v and the ellipse stays at most s over an arc (a half turn at
-// most) whose ends' separations are at most s, by any of three bounds. Along u it is -(u.v + h(u)),
-// h the ellipse's support value, and
+// Whether the separation of the point v and the ellipse stays at most s over the arc from the
+// normal slot `from` to `to` (a half turn at most), whose ends' separations are at most s, by any of
+// three bounds. Along u it is -(u.v + h(u)), h the ellipse's support value, and
 // - at an end e, the ellipse holds the disc of radius r tangent at its support point q there, r its
 //   least radius of curvature (ab)^2 / h^3 over the arc (h greatest at an end, or at the major axis
 //   where the arc holds it), as far as the support values along the arc go: the separation is at
@@ -120,32 +109,35 @@ bool within(const Vec2& from, const Vec2& to, const Vec2& end, const Vec2& w, do
 //   it), a sinusoid over the arc;
 // - at most minus the least u.v less the least h over the arc, that at the arc's ends or along the
 //   ellipse's minor axis where the arc holds it.
-bool arc_within(const CoreEllipse& p, const Faces& faces, const Vec2& v, const ArcEnd& from, const ArcEnd& to,
-                double s) {
+bool arc_within(const CoreEllipse& p, const Faces& faces, const Vec2& v, int from, int to, double s) {
+  const Core& c = p.core;
+  const Vec2 &e0 = c.n[from], &e1 = c.n[to];
   // The arc holds the x axis or its opposite where its ends lie on either side of it, and so for y.
-  const bool holds_x = from.e.y() * to.e.y() <= 0.0, holds_y = from.e.x() * to.e.x() <= 0.0;
+  const bool holds_x = e0.y() * e1.y() <= 0.0, holds_y = e0.x() * e1.x() <= 0.0;
   const bool wide = p.a >= p.b;
-  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(from.rho, to.rho);
-  const auto disc_within = [&](const ArcEnd& end, const Vec2& other) {
-    return within(from.e, to.e, other, Vec2(end.q + r * end.e - v), s + r);
+  const auto& along = faces.along;
+  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(along.rho[from], along.rho[to]);
+  const auto disc_within = [&](int end, const Vec2& other) {
+    return within(e0, e1, other, Vec2(faces.q(end) + r * c.n[end] - v), s + r);
   };
-  if (disc_within(to, from.e) || disc_within(from, to.e)) return true;
-  const double least_h = (wide ? holds_y : holds_x) ? std::min(p.a, p.b) : std::min(from.h, to.h);
+  if (disc_within(to, e0) || disc_within(from, e1)) return true;
+  const double least_h = (wide ? holds_y : holds_x) ? std::min(p.a, p.b) : std::min(along.h[from], along.h[to]);
   const Vec2 w = -v;
-  return from.e.dot(w) <= s + least_h && within(from.e, to.e, to.e, w, s + least_h);
+  return e0.dot(w) <= s + least_h && within(e0, e1, e1, w, s + least_h);
 }
 
 // Whether the separation over vertex k's cone stays at most s, at least every face's (arc_within).
-// A segment's end takes its half turn as two quarter turns about the segment's direction there,
-// whose separation is checked first.
+// A segment's end takes its half turn as two quarter turns about the segment's direction there
+// (the normals' slots 2 and 3), whose separation is checked first.
 bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const Core& c = p.core;
   const Vec2& v = c.v[k];
   if (c.count == 1) return v.norm() - std::min(p.a, p.b) <= s;
-  const ArcEnd from = ArcEnd::of(c, faces, c.prev(k)), to = ArcEnd::of(c, faces, k);
-  if (c.count > 2) return arc_within(p, faces, v, from, to, s);
-  const ArcEnd mid = ArcEnd::of(c, faces, k == 1 ? 2 : 3);
-  return -mid.h - mid.e.dot(v) <= s && arc_within(p, faces, v, from, mid, s) && arc_within(p, faces, v, mid, to, s);
+  const int before = c.prev(k);
+  if (c.count > 2) return arc_within(p, faces, v, before, k, s);
+  const int mid = k == 1 ? 2 : 3;
+  return -faces.along.h[mid] - c.n[mid].dot(v) <= s && arc_within(p, faces, v, before, mid, s) &&
+         arc_within(p, faces, v, mid, k, s);
 }
 
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
