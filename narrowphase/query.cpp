@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 namespace collide2d {
@@ -102,9 +103,16 @@ struct CoreContact {
   Contact operator()(const detail::CoreEllipse& p) const { return detail::core_ellipse_contact(p, options); }
 };
 
+// The discs about the two centres first: they settle most pairs before any core is built.
 template <class X, class Y>
 requires(on_cores<X> || on_cores<Y>) bool posed_overlap(const X& a, const O& oa, const Y& b, const O& ob) {
-  return on_core_pair(a, oa, b, ob, CoreOverlap{});
+  std::optional<bool> discs;
+  if constexpr (std::is_same_v<Y, Ellipse>) {
+    discs = detail::disc_verdict(detail::disc_ellipse_lanes(a, oa, b, ob));
+  } else {
+    discs = detail::disc_verdict(detail::disc_pair_lanes(a, oa, b, ob));
+  }
+  return discs ? *discs : on_core_pair(a, oa, b, ob, CoreOverlap{});
 }
 template <class X, class Y>
 requires(on_cores<X> || on_cores<Y>) bool overlap_kernel(const X& a, const Y& b) {

@@ -97,15 +97,7 @@ auto lanes_of(const PairRef<A, Circle>& p) {
 // places it (CoreEllipse::of, CorePair::of), both shapes' discs.
 template <class A>
 DiscEllipseLanes<double> disc_lanes_of(const PairRef<A, Ellipse>& p) {
-  const Vec2 o = Placement::of(p.a.center, p.a_orientation, p.b.center, p.b_orientation).offset;
-  const Discs d = discs_of(p.a);
-  return {o.x(), o.y(), d.reach, d.inner, p.b.a, p.b.b};
-}
-template <class A, class B>
-DiscPairLanes<double> disc_pair_lanes(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-  const Vec2 o = Placement::of(b.center, bo, a.center, ao).offset;
-  const Discs da = discs_of(a), db = discs_of(b);
-  return {o.x(), o.y(), da.reach, da.inner, db.reach, db.inner};
+  return disc_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 template <class A, class B>
 DiscPairLanes<double> disc_lanes_of(const PairRef<A, B>& p) {

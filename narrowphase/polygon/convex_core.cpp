@@ -11,8 +11,6 @@
 #include <span>
 
 namespace collide2d::detail {
-#include "narrowphase/polygon/disc_filter-inl.h"
-
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -462,10 +460,6 @@ bool overlapping(const CorePair& p, const Axes& axes, Closest& c) {
 }  // namespace
 
 bool core_overlap(const CorePair& p) {
-  const DiscPairLanes<double> discs{p.b.center.x(),  p.b.center.y(),  p.a.discs.reach,
-                                    p.a.discs.inner, p.b.discs.reach, p.b.discs.inner};
-  const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
-  if (certain.overlap || certain.separated) return certain.overlap;
   Closest c;
   return overlapping(p, axes_of(p, radii(p)), c);
 }

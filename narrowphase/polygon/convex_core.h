@@ -26,6 +26,7 @@
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
+#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
 #include "shapes/internal.h"
 
@@ -158,6 +159,26 @@ struct CorePair {
   // The pair's scale: the offset of B and both cores' sizes, what their rounding is a few u of.
   double scale() const;
 };
+
+// The disc test (disc_filter-inl.h) on one pair, before any core is built: the fields from the two
+// shapes (B's centre in A's frame, as CorePair::of and CoreEllipse::of place it, and each shape's
+// discs), and the verdict where the discs settle it. The overlap tests below take the pairs it
+// leaves.
+template <class A, class B>
+DiscPairLanes<double> disc_pair_lanes(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+  const Vec2 o = Placement::of(b.center, bo, a.center, ao).offset;
+  const Discs da = discs_of(a), db = discs_of(b);
+  return {o.x(), o.y(), da.reach, da.inner, db.reach, db.inner};
+}
+template <class A>
+DiscEllipseLanes<double> disc_ellipse_lanes(const A& a, const Orientation& ao, const Ellipse& e,
+                                            const Orientation& eo) {
+  const Vec2 o = Placement::of(a.center, ao, e.center, eo).offset;
+  const Discs d = discs_of(a);
+  return {o.x(), o.y(), d.reach, d.inner, e.a, e.b};
+}
+std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs);
+std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs);
 
 bool core_overlap(const CorePair& p);
 DistanceResult core_distance(const CorePair& p);

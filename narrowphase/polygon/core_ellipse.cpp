@@ -216,11 +216,21 @@ bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, Peak
 
 }  // namespace
 
-bool core_ellipse_overlap(const CoreEllipse& p) {
-  const Core& c = p.core;
-  const DiscEllipseLanes<double> discs{c.center.x(), c.center.y(), c.discs.reach, c.discs.inner, p.a, p.b};
+namespace {
+
+template <class Lanes>
+std::optional<bool> certain_verdict(const Lanes& discs) {
   const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
   if (certain.overlap || certain.separated) return certain.overlap;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs) { return certain_verdict(discs); }
+std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs) { return certain_verdict(discs); }
+
+bool core_ellipse_overlap(const CoreEllipse& p) {
   Peak d;
   return overlapping(p, least_quadratic(p), d);
 }
