@@ -120,8 +120,10 @@ std::shared_ptr<const PolygonOutline> outline_of(std::span<const Vec2> vertices,
     o->reach = std::max(o->reach, vertices[i].norm());
   }
   std::fill(o->vertices.begin() + o->count, o->vertices.end(), vertices[0]);
+  std::fill(o->normals.begin() + o->count, o->normals.end(), o->normals[0]);
+  for (int i = 0; i < kMaxPolygonVertices; ++i) o->offsets[i] = o->normals[i].dot(o->vertices[i]);
   double nearest_face = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < o->count; ++i) nearest_face = std::min(nearest_face, o->normals[i].dot(o->vertices[i]));
+  for (int i = 0; i < o->count; ++i) nearest_face = std::min(nearest_face, o->offsets[i]);
   o->inner = nearest_face >= 0.0 ? nearest_face + radius : -1.0;
   o->reach += radius;
   set_mass(*o);

@@ -71,8 +71,11 @@ inline constexpr int kMaxPolygonVertices = 8;
 struct PolygonOutline {
   /// The vertices, and past the count copies of the first (so that every slot is a vertex).
   std::array<Vec2, kMaxPolygonVertices> vertices{};
-  /// normals[i] is the outward unit normal of the edge from vertices[i] to vertices[(i + 1) % count].
+  /// normals[i] is the outward unit normal of the edge from vertices[i] to vertices[(i + 1) % count],
+  /// and past the count copies of the first.
   std::array<Vec2, kMaxPolygonVertices> normals{};
+  /// offsets[i] = normals[i].dot(vertices[i]): face i's line is {p : normals[i].dot(p) = offsets[i]}.
+  std::array<double, kMaxPolygonVertices> offsets{};
   int count = 0;
   double radius = 0.0;
   double area = 0.0;             ///< of the rounded solid

@@ -13,14 +13,36 @@
 namespace collide2d {
 namespace {
 
-// The core as the kernel reads it.
+// The core as the kernel reads it: Slots faces, those past the count copies of the first.
+template <int Slots>
 struct CoreView {
   const Vec2* vertices;
   const Vec2* normals;
+  const double* offsets;
   int count;
   double radius;
   double reach;
 };
+
+// The face of greatest separation s of point c (the first of equals), as a tree of selects: which
+// face leads is a coin toss, and a tree keeps the chain of dependent maxima short.
+struct Lead {
+  double s;
+  int face;
+};
+
+template <int Slots>
+Lead leading_face(const Vec2* normals, const double* offsets, const Vec2& c) {
+  std::array<Lead, Slots> lead;
+  for (int i = 0; i < Slots; ++i) lead[i] = {normals[i].dot(c) - offsets[i], i};  // as the cores' axes
+  for (int width = Slots; width > 1; width /= 2) {
+    for (int i = 0; i < width / 2; ++i) {
+      const Lead &l = lead[2 * i], &r = lead[2 * i + 1];
+      lead[i] = {std::max(l.s, r.s), r.s > l.s ? r.face : l.face};
+    }
+  }
+  return lead[0];
+}
 
 // Out of line: the cores take a large frame that the common paths do without.
 template <class A>
@@ -35,21 +57,15 @@ template <class A>
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
 // leaves that end not the core's farthest point towards c, the convex cores' contact decides
 // (narrowphase/polygon/convex_core.h), as it does for every other flat pair.
-template <class A>
-Contact core_circle(const A& a, const CoreView& o, const Orientation& a_orientation, const Circle& b,
+template <class A, int Slots>
+Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
                     const ContactOptions& options) {
   const detail::Rotation<double> rot{a_orientation.c, a_orientation.s};
   const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
   if (detail::has_limit(options)) {  // as the cores' contact
     if (const auto gap = detail::discs_beyond(c, o.reach + b.radius, options)) return Contact::beyond(*gap);
   }
-  int face = 0;
-  double s = -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < o.count; ++i) {
-    const double si = o.normals[i].dot(c) - o.normals[i].dot(o.vertices[i]);  // as the cores' axes
-    face = si > s ? i : face;  // a select, not a branch: which face leads is a coin toss
-    s = std::max(s, si);
-  }
+  const auto [s, face] = leading_face<Slots>(o.normals, o.offsets, c);
   const double radii = o.radius + b.radius;
   const double scale = 2 * std::max(o.reach, c.cwiseAbs().maxCoeff()) + radii;
   if (detail::beyond_limit(s - radii, scale, options)) return Contact::beyond(s - radii);
@@ -77,18 +93,25 @@ Contact core_circle(const A& a, const CoreView& o, const Orientation& a_orientat
 Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options) {
   const PolygonOutline& o = *a.outline;
-  return core_circle(a, {o.vertices.data(), o.normals.data(), o.count, o.radius, o.reach}, a_orientation, b, options);
+  return core_circle(
+      a,
+      CoreView<kMaxPolygonVertices>{o.vertices.data(), o.normals.data(), o.offsets.data(), o.count, o.radius, o.reach},
+      a_orientation, b, options);
 }
 
 Contact contact_polygon_circle(const ConvexPolygon& a, const Circle& b, const ContactOptions& options) {
   return contact_polygon_circle(a, Orientation::of(a.angle), b, options);
 }
 
+// The segment's faces' lines pass through its centre.
+constexpr std::array<double, 2> kSegmentOffsets{};
+
 Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options) {
   const std::array<Vec2, 2> ends = detail::segment_of(a), normals = detail::segment_normals();
   const detail::Discs discs = detail::discs_of(a);
-  return core_circle(a, {ends.data(), normals.data(), 2, a.radius, discs.reach}, a_orientation, b, options);
+  return core_circle(a, CoreView<2>{ends.data(), normals.data(), kSegmentOffsets.data(), 2, a.radius, discs.reach},
+                     a_orientation, b, options);
 }
 
 Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options) {
