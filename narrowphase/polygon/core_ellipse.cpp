@@ -126,15 +126,20 @@ bool arc_within(const CoreEllipse& p, const Faces& faces, const Vec2& v, int fro
   return e0.dot(w) <= s + least_h && within(e0, e1, e1, w, s + least_h);
 }
 
+// A core's kind, by its count: its vertex cones' shapes. Each kind has its own code for the cones,
+// so that a polygon's carries no segment's or point's branches.
+enum class CoreKind { point, segment, polygon };
+
 // Whether the separation over vertex k's cone stays at most s, at least every face's (arc_within).
 // A segment's end takes its half turn as two quarter turns about the segment's direction there
 // (the normals' slots 2 and 3), whose separation is checked first.
+template <CoreKind kind>
 bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
   const Core& c = p.core;
   const Vec2& v = c.v[k];
-  if (c.count == 1) return v.norm() - std::min(p.a, p.b) <= s;
+  if constexpr (kind == CoreKind::point) return v.norm() - std::min(p.a, p.b) <= s;
   const int before = c.prev(k);
-  if (c.count > 2) return arc_within(p, faces, v, before, k, s);
+  if constexpr (kind == CoreKind::polygon) return arc_within(p, faces, v, before, k, s);
   const int mid = k == 1 ? 2 : 3;
   return -faces.along.h[mid] - c.n[mid].dot(v) <= s && arc_within(p, faces, v, before, mid, s) &&
          arc_within(p, faces, v, mid, k, s);
@@ -147,16 +152,28 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
 // beyond their rounding, the greatest lies between that face's neighbours: in the cones of its two
 // ends. (Faces tied to rounding, as a needle's long sides, may have a far higher peak between
 // them.)
-Peak deepest(const CoreEllipse& p, const Faces& faces, int& roots) {
+template <CoreKind kind>
+Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
   const Core& c = p.core;
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * scale(p);
   const bool leads = faces.best.s > rounding && faces.best.s - faces.runner_up > rounding;
   Peak best = faces.best;
   for (int k = 0; k < c.count; ++k) {
     const bool end_of_best = k == faces.face || k == c.next(faces.face);
-    if ((!leads || end_of_best) && !cone_within(p, faces, k, best.s)) vertex_peaks(p, k, best, roots);
+    if ((!leads || end_of_best) && !cone_within<kind>(p, faces, k, best.s)) vertex_peaks(p, k, best, roots);
   }
   return best;
+}
+
+Peak deepest(const CoreEllipse& p, const Faces& faces, int& roots) {
+  switch (p.core.count) {
+    case 1:
+      return deepest_of<CoreKind::point>(p, faces, roots);
+    case 2:
+      return deepest_of<CoreKind::segment>(p, faces, roots);
+    default:
+      return deepest_of<CoreKind::polygon>(p, faces, roots);
+  }
 }
 
 // The point of A's core least in the ellipse's quadratic (least_quadratic-inl.h), in the scaled
