@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -208,6 +209,10 @@ struct FaceSupports {
   std::array<double, kMaxPolygonVertices> h, rho, qx, qy, s;
 };
 void face_supports(const Core& c, double a, double b, FaceSupports& out);
+// Bit k set where vertex k's cone of a polygon core certainly holds no separation above s against
+// the ellipse (arc_bound-inl.h on the arc from face k - 1's normal to face k's), every vertex at once
+// in SIMD lanes; least_rho the ellipse's least radius of curvature.
+std::uint32_t cones_within(const Core& c, const FaceSupports& along, double least_rho, double a, double b, double s);
 
 bool core_ellipse_overlap(const CoreEllipse& p);
 DistanceResult core_ellipse_distance(const CoreEllipse& p);

@@ -9,6 +9,7 @@
 #include <limits>
 
 namespace collide2d::detail {
+#include "narrowphase/polygon/arc_bound-inl.h"
 #include "narrowphase/polygon/disc_filter-inl.h"
 #include "narrowphase/polygon/least_quadratic-inl.h"
 
@@ -92,38 +93,16 @@ double scale(const CoreEllipse& p) {
   return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
-// Whether u.w <= s over the arc from `from` to `to`: at `end`, one of its ends, and along w where w
-// lies inside.
-bool within(const Vec2& from, const Vec2& to, const Vec2& end, const Vec2& w, double s) {
-  if (end.dot(w) > s) return false;
-  return !in_arc(from, to, w) || (s >= 0.0 && w.squaredNorm() <= s * s);
-}
-
 // Whether the separation of the point v and the ellipse stays at most s over the arc from the
-// normal slot `from` to `to` (a half turn at most), whose ends' separations are at most s, by any of
-// three bounds. Along u it is -(u.v + h(u)), h the ellipse's support value, and
-// - at an end e, the ellipse holds the disc of radius r tangent at its support point q there, r its
-//   least radius of curvature (ab)^2 / h^3 over the arc (h greatest at an end, or at the major axis
-//   where the arc holds it), as far as the support values along the arc go: the separation is at
-//   most u.(q + r e - v) - r, which is e's own separation at e (not checked, lest rounding lose
-//   it), a sinusoid over the arc;
-// - at most minus the least u.v less the least h over the arc, that at the arc's ends or along the
-//   ellipse's minor axis where the arc holds it.
+// normal slot `from` to `to`, whose ends' separations are at most s (arc_bound-inl.h).
 bool arc_within(const CoreEllipse& p, const Faces& faces, const Vec2& v, int from, int to, double s) {
   const Core& c = p.core;
   const Vec2 &e0 = c.n[from], &e1 = c.n[to];
-  // The arc holds the x axis or its opposite where its ends lie on either side of it, and so for y.
-  const bool holds_x = e0.y() * e1.y() <= 0.0, holds_y = e0.x() * e1.x() <= 0.0;
-  const bool wide = p.a >= p.b;
-  const auto& along = faces.along;
-  const double r = (wide ? holds_x : holds_y) ? faces.least_rho : std::min(along.rho[from], along.rho[to]);
-  const auto disc_within = [&](int end, const Vec2& other) {
-    return within(e0, e1, other, Vec2(faces.q(end) + r * c.n[end] - v), s + r);
-  };
-  if (disc_within(to, e0) || disc_within(from, e1)) return true;
-  const double least_h = (wide ? holds_y : holds_x) ? std::min(p.a, p.b) : std::min(along.h[from], along.h[to]);
-  const Vec2 w = -v;
-  return e0.dot(w) <= s + least_h && within(e0, e1, e1, w, s + least_h);
+  const FaceSupports& along = faces.along;
+  const ArcLanes<double> arc{e0.x(),       e0.y(),       e1.x(),          e1.y(),        along.qx[from], along.qy[from],
+                             along.qx[to], along.qy[to], along.rho[from], along.rho[to], along.h[from],  along.h[to],
+                             v.x(),        v.y()};
+  return arc_within(Scalar{}, arc, faces.least_rho, p.a, p.b, s);
 }
 
 // A core's kind, by its count: its vertex cones' shapes. Each kind has its own code for the cones,
@@ -158,9 +137,18 @@ Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * scale(p);
   const bool leads = faces.best.s > rounding && faces.best.s - faces.runner_up > rounding;
   Peak best = faces.best;
+  // A polygon's every vertex open: every cone's bound at once, at the face's separation. A bound
+  // that holds there holds at every later best, which only grows; one that fails is taken again
+  // once the best has grown.
+  const bool at_once = kind == CoreKind::polygon && !leads;
+  const std::uint32_t settled = at_once ? cones_within(c, faces.along, faces.least_rho, p.a, p.b, best.s) : 0;
+  const double settled_at = at_once ? best.s : std::numeric_limits<double>::quiet_NaN();
   for (int k = 0; k < c.count; ++k) {
     const bool end_of_best = k == faces.face || k == c.next(faces.face);
-    if ((!leads || end_of_best) && !cone_within<kind>(p, faces, k, best.s)) vertex_peaks(p, k, best, roots);
+    if (!leads || end_of_best) {
+      const bool within = (settled >> k & 1) || (best.s != settled_at && cone_within<kind>(p, faces, k, best.s));
+      if (!within) vertex_peaks(p, k, best, roots);
+    }
   }
   return best;
 }

@@ -1,9 +1,13 @@
 // An ellipse's support along every face normal of a core at once (convex_core.h): the faces'
-// normals and first vertices across the lanes of a vector, a square root and a division a lane.
-// Google Highway picks the widest vectors the CPU has at the first call.
+// normals and first vertices across the lanes of a vector, a square root and a division a lane; and
+// the bound of every vertex cone of a polygon at once (arc_bound-inl.h). Google Highway picks the
+// widest vectors the CPU has at the first call.
+#include "narrowphase/batch/lanes.h"
 #include "narrowphase/polygon/convex_core.h"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "narrowphase/polygon/face_supports.cpp"
@@ -14,6 +18,8 @@ HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
+
+#include "narrowphase/polygon/arc_bound-inl.h"
 
 void face_supports(const detail::Core& c, double a, double b, detail::FaceSupports& out) {
   const hn::CappedTag<double, kMaxPolygonVertices> d;
@@ -34,6 +40,35 @@ void face_supports(const detail::Core& c, double a, double b, detail::FaceSuppor
   }
 }
 
+std::uint32_t cones_within(const detail::Core& c, const detail::FaceSupports& along, double least_rho, double a,
+                           double b, double s) {
+  const hn::CappedTag<double, kMaxPolygonVertices> d;
+  // Slot k of each array below holds face prev(k)'s value: the face whose normal starts k's cone.
+  std::array<double, kMaxPolygonVertices> e0x, e0y, q0x, q0y, rho0, h0;
+  for (int k = 0; k < kMaxPolygonVertices; ++k) {
+    const int from = k == 0 ? c.count - 1 : k - 1;
+    e0x[k] = c.n[from].x(), e0y[k] = c.n[from].y(), q0x[k] = along.qx[from], q0y[k] = along.qy[from];
+    rho0[k] = along.rho[from], h0[k] = along.h[from];
+  }
+  const double* normals = c.n[0].data();  // x and y of each normal in turn
+  std::uint32_t bits = 0;
+  for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
+    ArcLanes<hn::Vec<decltype(d)>> arc;
+    hn::LoadInterleaved2(d, normals + 2 * k, arc.e1x, arc.e1y);
+    arc.e0x = hn::LoadU(d, e0x.data() + k), arc.e0y = hn::LoadU(d, e0y.data() + k);
+    arc.q0x = hn::LoadU(d, q0x.data() + k), arc.q0y = hn::LoadU(d, q0y.data() + k);
+    arc.q1x = hn::LoadU(d, along.qx.data() + k), arc.q1y = hn::LoadU(d, along.qy.data() + k);
+    arc.rho0 = hn::LoadU(d, rho0.data() + k), arc.rho1 = hn::LoadU(d, along.rho.data() + k);
+    arc.h0 = hn::LoadU(d, h0.data() + k), arc.h1 = hn::LoadU(d, along.h.data() + k);
+    arc.vx = hn::LoadU(d, c.x.data() + k), arc.vy = hn::LoadU(d, c.y.data() + k);
+    const auto within = arc_within(d, arc, hn::Set(d, least_rho), hn::Set(d, a), hn::Set(d, b), hn::Set(d, s));
+    std::uint8_t lanes[8] = {};
+    hn::StoreMaskBits(d, within, lanes);
+    bits |= static_cast<std::uint32_t>(lanes[0]) << k;
+  }
+  return bits & ((1u << c.count) - 1);
+}
+
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -41,9 +76,14 @@ HWY_AFTER_NAMESPACE();
 namespace collide2d::detail {
 
 HWY_EXPORT(face_supports);
+HWY_EXPORT(cones_within);
 
 void face_supports(const Core& c, double a, double b, FaceSupports& out) {
   HWY_DYNAMIC_DISPATCH(face_supports)(c, a, b, out);
+}
+
+std::uint32_t cones_within(const Core& c, const FaceSupports& along, double least_rho, double a, double b, double s) {
+  return HWY_DYNAMIC_DISPATCH(cones_within)(c, along, least_rho, a, b, s);
 }
 
 }  // namespace collide2d::detail
