@@ -5,6 +5,7 @@
 #include "narrowphase/batch/lanes.h"
 #include "narrowphase/polygon/convex_core.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -21,11 +22,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 #include "narrowphase/polygon/arc_bound-inl.h"
 
-void face_supports(const detail::Core& c, double a, double b, detail::FaceSupports& out) {
-  const hn::CappedTag<double, kMaxPolygonVertices> d;
+// The first N slots; the rest, slots of no face, zero.
+template <std::size_t N>
+void supports_over(const detail::Core& c, double a, double b, detail::FaceSupports& out) {
+  const hn::CappedTag<double, N> d;
   const auto aa = hn::Set(d, a * a), bb = hn::Set(d, b * b), ab = hn::Set(d, a * b);
   const double* normals = c.n[0].data();  // x and y of each normal in turn
-  for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
+  for (std::size_t k = 0; k < N; k += hn::Lanes(d)) {
     hn::Vec<decltype(d)> nx, ny;
     hn::LoadInterleaved2(d, normals + 2 * k, nx, ny);
     const auto ax = hn::Mul(aa, nx), by = hn::Mul(bb, ny);
@@ -38,6 +41,14 @@ void face_supports(const detail::Core& c, double a, double b, detail::FaceSuppor
     hn::StoreU(hn::Mul(hn::Mul(ab, ab), hn::Mul(inverse, hn::Mul(inverse, inverse))), d, out.rho.data() + k);
     hn::StoreU(hn::Neg(hn::Add(h, along)), d, out.s.data() + k);
   }
+}
+
+// A capsule's four slots (two faces and the segment's two directions) or a polygon's eight: the
+// widest vectors are the slowest at square roots and divisions, which half of them would waste.
+void face_supports(const detail::Core& c, double a, double b, detail::FaceSupports& out) {
+  if (c.axes() > 4) return supports_over<kMaxPolygonVertices>(c, a, b, out);
+  supports_over<4>(c, a, b, out);
+  for (auto* slots : {&out.h, &out.rho, &out.qx, &out.qy, &out.s}) std::fill(slots->begin() + 4, slots->end(), 0.0);
 }
 
 std::uint32_t cones_within(const detail::Core& c, const detail::FaceSupports& along, double least_rho, double a,
