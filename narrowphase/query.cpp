@@ -106,12 +106,7 @@ struct CoreContact {
 // The discs about the two centres first: they settle most pairs before any core is built.
 template <class X, class Y>
 requires(on_cores<X> || on_cores<Y>) bool posed_overlap(const X& a, const O& oa, const Y& b, const O& ob) {
-  std::optional<bool> discs;
-  if constexpr (std::is_same_v<Y, Ellipse>) {
-    discs = detail::disc_verdict(detail::disc_ellipse_lanes(a, oa, b, ob));
-  } else {
-    discs = detail::disc_verdict(detail::disc_pair_lanes(a, oa, b, ob));
-  }
+  const std::optional<bool> discs = detail::disc_verdict(detail::disc_lanes(a, oa, b, ob));
   return discs ? *discs : on_core_pair(a, oa, b, ob, CoreOverlap{});
 }
 template <class X, class Y>

@@ -93,18 +93,14 @@ auto lanes_of(const PairRef<A, Circle>& p) {
   return core_ellipse_lanes(p.a, p.a_orientation, p.b.center, Orientation{}, p.b.radius, p.b.radius);
 }
 
-// Pair k's disc lanes (disc_filter-inl.h), for a flat shape A: its centre where the one-off test
-// places it (CoreEllipse::of, CorePair::of), both shapes' discs.
-template <class A>
-DiscEllipseLanes<double> disc_lanes_of(const PairRef<A, Ellipse>& p) {
-  return disc_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
-}
+// Pair k's disc lanes (disc_filter-inl.h, convex_core.h's disc_lanes) for a flat shape A, two
+// shapes of one kind in the dispatcher's key order.
 template <class A, class B>
-DiscPairLanes<double> disc_lanes_of(const PairRef<A, B>& p) {
+auto disc_lanes_of(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {
-    if (precedes(p.b, p.a)) return disc_pair_lanes(p.b, p.b_orientation, p.a, p.a_orientation);
+    if (precedes(p.b, p.a)) return disc_lanes(p.b, p.b_orientation, p.a, p.a_orientation);
   }
-  return disc_pair_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
+  return disc_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 
 // The verdict of a pair the vector kernel left uncertain.

@@ -166,14 +166,13 @@ struct CorePair {
 // discs), and the verdict where the discs settle it. The overlap tests below take the pairs it
 // leaves.
 template <class A, class B>
-DiscPairLanes<double> disc_pair_lanes(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+DiscPairLanes<double> disc_lanes(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
   const Vec2 o = Placement::of(b.center, bo, a.center, ao).offset;
   const Discs da = discs_of(a), db = discs_of(b);
   return {o.x(), o.y(), da.reach, da.inner, db.reach, db.inner};
 }
 template <class A>
-DiscEllipseLanes<double> disc_ellipse_lanes(const A& a, const Orientation& ao, const Ellipse& e,
-                                            const Orientation& eo) {
+DiscEllipseLanes<double> disc_lanes(const A& a, const Orientation& ao, const Ellipse& e, const Orientation& eo) {
   const Vec2 o = Placement::of(a.center, ao, e.center, eo).offset;
   const Discs d = discs_of(a);
   return {o.x(), o.y(), d.reach, d.inner, e.a, e.b};

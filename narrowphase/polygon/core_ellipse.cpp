@@ -219,10 +219,6 @@ bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, Peak
   return d.s <= p.core.radius;
 }
 
-}  // namespace
-
-namespace {
-
 template <class Lanes>
 std::optional<bool> certain_verdict(const Lanes& discs) {
   const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
