@@ -139,14 +139,15 @@ Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
   Peak best = faces.best;
   // A polygon's every vertex open: every cone's bound at once, at the face's separation. A bound
   // that holds there holds at every later best, which only grows; one that fails is taken again
-  // once the best has grown.
+  // only once the best has grown.
   const bool at_once = kind == CoreKind::polygon && !leads;
-  const std::uint32_t settled = at_once ? cones_within(c, faces.along, faces.least_rho, p.a, p.b, best.s) : 0;
-  const double settled_at = at_once ? best.s : std::numeric_limits<double>::quiet_NaN();
+  const double first = best.s;
+  const std::uint32_t settled = at_once ? cones_within(c, faces.along, faces.least_rho, p.a, p.b, first) : 0;
   for (int k = 0; k < c.count; ++k) {
     const bool end_of_best = k == faces.face || k == c.next(faces.face);
     if (!leads || end_of_best) {
-      const bool within = (settled >> k & 1) || (best.s != settled_at && cone_within<kind>(p, faces, k, best.s));
+      const bool retake = !at_once || best.s > first;
+      const bool within = (settled >> k & 1) || (retake && cone_within<kind>(p, faces, k, best.s));
       if (!within) vertex_peaks(p, k, best, roots);
     }
   }
