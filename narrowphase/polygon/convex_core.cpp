@@ -19,10 +19,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kCutAtStart = kMaxPolygonVertices;
 constexpr int kCutAtEnd = kMaxPolygonVertices + 1;
 
-Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, const Discs& discs,
+// The core of `count` vertices from the shape's slots: a polygon's outline gives all of them (those
+// past the count repeating the first), so that the loops run a fixed length; the slots not given
+// repeat the first vertex, and the normals not given are zero.
+Core make(int count, std::span<const Vec2> vertices, std::span<const Vec2> normals, double radius, const Discs& discs,
           const Placement& at) {
   Core c;
-  c.count = static_cast<int>(vertices.size());
+  c.count = count;
   c.radius = radius;
   c.discs = discs;
   c.center = at.offset;
@@ -33,7 +36,8 @@ Core make(std::span<const Vec2> vertices, std::span<const Vec2> normals, double 
     std::copy(vertices.begin(), vertices.end(), c.v.begin());
     std::copy(normals.begin(), normals.end(), c.n.begin());
   }
-  std::fill(c.v.begin() + c.count, c.v.end(), c.v[0]);  // the axes' kernel reads all kMaxPolygonVertices
+  // The axes' kernel reads all kMaxPolygonVertices.
+  std::fill(c.v.begin() + static_cast<std::ptrdiff_t>(vertices.size()), c.v.end(), c.v[0]);
   std::fill(c.n.begin() + static_cast<std::ptrdiff_t>(normals.size()), c.n.end(), Vec2::Zero());
   for (int i = 0; i < kMaxPolygonVertices; ++i) c.x[i] = c.v[i].x(), c.y[i] = c.v[i].y();
   return c;
@@ -401,46 +405,46 @@ Vec2 touching_point(const CorePair& p, const Axes& axes) {
 
 void set_axes(Core& c) {
   const int faces = c.faces(), axes = c.axes();
-  for (int i = 0; i < faces; ++i) {
-    c.ax[i] = c.n[i].x(), c.ay[i] = c.n[i].y(), c.ad[i] = c.ax[i] * c.x[i] + c.ay[i] * c.y[i];  // n.v, as plane_of's
+  // Every slot in one loop of fixed length, the slots of no face set apart by a select.
+  for (int i = 0; i < kMaxPolygonVertices; ++i) {
+    const bool face = i < faces;
+    const double nx = c.n[i].x(), ny = c.n[i].y();
+    c.ax[i] = face ? nx : 0.0, c.ay[i] = face ? ny : 0.0;
+    c.ad[i] = face ? nx * c.x[i] + ny * c.y[i] : kInf;  // n.v, as plane_of's
   }
   for (int i = faces; i < axes; ++i) {
     const Plane plane = plane_of(c, Axis{-kInf, -1, i - faces});
     c.ax[i] = plane.normal.x(), c.ay[i] = plane.normal.y(), c.ad[i] = plane.normal.dot(plane.origin);
   }
-  std::fill(c.ax.begin() + axes, c.ax.end(), 0.0);
-  std::fill(c.ay.begin() + axes, c.ay.end(), 0.0);
-  std::fill(c.ad.begin() + axes, c.ad.end(), kInf);
 }
 
 Core core_of(const Rect& r, const Placement& at) {
   const double hx = r.half_extents.x(), hy = r.half_extents.y();
   const Vec2 v[] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
   const Vec2 n[] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-  return make(v, n, 0.0, discs_of(r), at);
+  return make(4, v, n, 0.0, discs_of(r), at);
 }
 
 Core core_of(const ConvexPolygon& p, const Placement& at) {
   const PolygonOutline& o = *p.outline;
-  const auto count = static_cast<std::size_t>(o.count);
-  return make({o.vertices.data(), count}, {o.normals.data(), count}, o.radius, discs_of(p), at);
+  return make(o.count, o.vertices, o.normals, o.radius, discs_of(p), at);
 }
 
 Core core_of(const Capsule& c, const Placement& at) {
   const std::array<Vec2, 2> faces = segment_normals();
   const Vec2 n[] = {faces[0], faces[1], {1, 0}, {-1, 0}};
-  return make(segment_of(c), n, c.radius, discs_of(c), at);
+  return make(2, segment_of(c), n, c.radius, discs_of(c), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {
   const Vec2 v[] = {{0, 0}};
-  return make(v, {}, c.radius, discs_of(c), at);
+  return make(1, v, {}, c.radius, discs_of(c), at);
 }
 
 double CorePair::scale() const {
   double reach = 0.0;
-  for (const Core* c : {&a, &b}) {
-    for (int i = 0; i < c->count; ++i) reach = std::max(reach, c->v[i].cwiseAbs().maxCoeff());
+  for (const Core* c : {&a, &b}) {  // every slot: those past the count repeat a vertex
+    for (int i = 0; i < kMaxPolygonVertices; ++i) reach = std::max({reach, std::abs(c->x[i]), std::abs(c->y[i])});
   }
   return 2 * reach + a.radius + b.radius;
 }

@@ -54,7 +54,8 @@ inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
 
 // A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
 // count repeating the first), each face's outward unit normal (face i from vertex i to vertex
-// i + 1), and the radius around it. A segment has two faces, one each way, and in the normals' slots
+// i + 1; past the faces, a polygon's first face's again, other shapes' zero), and the radius around
+// it. A segment has two faces, one each way, and in the normals' slots
 // 2 and 3 its directions from its first end to its second and back (each end's half turn of
 // directions is two quarter turns about them); a point has none.
 struct Core {
