@@ -442,11 +442,16 @@ Core core_of(const Circle& c, const Placement& at) {
 }
 
 double CorePair::scale() const {
-  double reach = 0.0;
-  for (const Core* c : {&a, &b}) {  // every slot: those past the count repeat a vertex
-    for (int i = 0; i < kMaxPolygonVertices; ++i) reach = std::max({reach, std::abs(c->x[i]), std::abs(c->y[i])});
+  // Every slot (those past the count repeat a vertex), slot by slot and then as a tree: one chain
+  // of maxima would wait on each.
+  std::array<double, kMaxPolygonVertices> reach;
+  for (int i = 0; i < kMaxPolygonVertices; ++i) {
+    reach[i] = std::max(std::max(std::abs(a.x[i]), std::abs(a.y[i])), std::max(std::abs(b.x[i]), std::abs(b.y[i])));
   }
-  return 2 * reach + a.radius + b.radius;
+  for (int width = kMaxPolygonVertices / 2; width > 0; width /= 2) {
+    for (int i = 0; i < width; ++i) reach[i] = std::max(reach[i], reach[i + width]);
+  }
+  return 2 * reach[0] + a.radius + b.radius;
 }
 
 namespace {
