@@ -329,7 +329,8 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 - **Workloads** for pairs (bench/workload.h): *random* pairs (centres in a 4 × 4 square, sizes 0.05
   to 1, ellipse aspect up to 10; most far apart), *candidate* pairs (the same generator, only pairs
   whose boxes overlap, as a broad phase hands them over), and *scene* pairs (those the built-in
-  scene's broad phase hands over, frame after frame).
+  scene's broad phase hands over, frame after frame). Both libraries' shapes are made in pair
+  order: Box2D's into one array, collide2d's polygon outlines one after another in memory.
 
 ## The machine
 
