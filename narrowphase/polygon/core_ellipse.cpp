@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace collide2d::detail {
 #include "narrowphase/polygon/arc_bound-inl.h"
@@ -208,16 +209,23 @@ namespace {
 // distance is within the radius (a vertex or face point of the core inside the ellipse is a
 // witness, or the ellipse's nearest point within the radius of a rounded core), unless a face
 // normal's separation (a lower bound of the signed distance) shows them apart. The one verdict of
-// the overlap test and the distance, so that they agree to the bit; the deepest peak into `d` where
-// it was needed.
-bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, Peak& d) {
+// the overlap test and the distance, so that they agree to the bit; the faces' separations into
+// `faces` and the deepest peak into `d` where they were needed.
+bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, std::optional<Faces>& faces, Peak& d) {
   const LaneVerdicts<bool> certain = quadratic_verdicts(Scalar{}, least, p.core.x, p.core.y, p.core.radius, p.a, p.b);
   if (certain.overlap || certain.separated) return certain.overlap;
-  const Faces faces = best_face(p);
-  if (faces.best.s > p.core.radius) return false;
+  faces = best_face(p);
+  if (faces->best.s > p.core.radius) return false;
   int roots = 0;
-  d = deepest(p, faces, roots);
+  d = deepest(p, *faces, roots);
   return d.s <= p.core.radius;
+}
+
+// The deepest peak, unless `overlapping` found it, from the faces it found or else from new ones.
+Peak deepest_after(const CoreEllipse& p, const std::optional<Faces>& faces, const Peak& d) {
+  if (d.s != -kInf) return d;
+  int roots = 0;
+  return deepest(p, faces ? *faces : best_face(p), roots);
 }
 
 template <class Lanes>
@@ -233,26 +241,22 @@ std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs) { return
 std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs) { return certain_verdict(discs); }
 
 bool core_ellipse_overlap(const CoreEllipse& p) {
+  std::optional<Faces> faces;
   Peak d;
-  return overlapping(p, least_quadratic(p), d);
+  return overlapping(p, least_quadratic(p), faces, d);
 }
 
 DistanceResult core_ellipse_distance(const CoreEllipse& p) {
   const LeastQuadratic<double> least = least_quadratic(p);
+  std::optional<Faces> faces;
   Peak d;
-  if (overlapping(p, least, d)) {
+  if (overlapping(p, least, faces, d)) {
     // The least point is in the ellipse, unless a rounded core's reach decided.
-    if (d.s == -kInf && least.q > 1.0 - least.bound) {
-      int roots = 0;
-      d = deepest(p, best_face(p), roots);
-    }
+    if (least.q > 1.0 - least.bound) d = deepest_after(p, faces, d);
     const Vec2 witness = d.s == -kInf ? Vec2(least.wx * p.a, least.wy * p.b) : d.s <= 0.0 ? d.on_a : d.on_e;
     return DistanceResult::touching(p.world_point(witness));
   }
-  if (d.s == -kInf) {
-    int roots = 0;
-    d = deepest(p, best_face(p), roots);
-  }
+  d = deepest_after(p, faces, d);
   const double r = p.core.radius;
   return DistanceResult::apart(d.s - r, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));
 }
