@@ -11,7 +11,6 @@
 
 namespace collide2d::detail {
 #include "narrowphase/polygon/arc_bound-inl.h"
-#include "narrowphase/polygon/disc_filter-inl.h"
 #include "narrowphase/polygon/least_quadratic-inl.h"
 
 namespace {
@@ -228,17 +227,7 @@ Peak deepest_after(const CoreEllipse& p, const std::optional<Faces>& faces, cons
   return deepest(p, faces ? *faces : best_face(p), roots);
 }
 
-template <class Lanes>
-std::optional<bool> certain_verdict(const Lanes& discs) {
-  const LaneVerdicts<bool> certain = disc_verdicts(Scalar{}, discs);
-  if (certain.overlap || certain.separated) return certain.overlap;
-  return std::nullopt;
-}
-
 }  // namespace
-
-std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs) { return certain_verdict(discs); }
-std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs) { return certain_verdict(discs); }
 
 bool core_ellipse_overlap(const CoreEllipse& p) {
   std::optional<Faces> faces;

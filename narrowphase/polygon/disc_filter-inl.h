@@ -1,6 +1,6 @@
 // Private: the disc test that settles most pairs of a flat shape (a polygon or a capsule) before its
 // vertices are read, written once over lanes (lanes.h): the one-off overlap tests run it first on
-// one pair (disc_verdict, core_ellipse.cpp, called from query.cpp), the batch (overlap_batch.cpp) on
+// one pair (disc_verdict, disc_filter.cpp, called from query.cpp), the batch (overlap_batch.cpp) on
 // Highway vectors of pairs, so that the batch's verdicts are the one-off's.
 //
 // A flat shape lies within the disc of its reach about its centre and, where its core holds the
