@@ -24,8 +24,8 @@ struct CoreView {
   double reach;
 };
 
-// The face of greatest separation s of point c (the first of equals), as a tree of selects: which
-// face leads is a coin toss, and a tree keeps the chain of dependent maxima short.
+// The face of greatest separation s of point c (the first of equals), as a tree of selects
+// (tree_fold): which face leads is a coin toss.
 struct Lead {
   double s;
   int face;
@@ -35,13 +35,9 @@ template <int Slots>
 Lead leading_face(const Vec2* normals, const double* offsets, const Vec2& c) {
   std::array<Lead, Slots> lead;
   for (int i = 0; i < Slots; ++i) lead[i] = {normals[i].dot(c) - offsets[i], i};  // as the cores' axes
-  for (int width = Slots; width > 1; width /= 2) {
-    for (int i = 0; i < width / 2; ++i) {
-      const Lead &l = lead[2 * i], &r = lead[2 * i + 1];
-      lead[i] = {std::max(l.s, r.s), r.s > l.s ? r.face : l.face};
-    }
-  }
-  return lead[0];
+  return detail::tree_fold(lead, [](const Lead& l, const Lead& r) {
+    return Lead{std::max(l.s, r.s), r.s > l.s ? r.face : l.face};
+  });
 }
 
 // Out of line: the cores take a large frame that the common paths do without.

@@ -442,16 +442,12 @@ Core core_of(const Circle& c, const Placement& at) {
 }
 
 double CorePair::scale() const {
-  // Every slot (those past the count repeat a vertex), slot by slot and then as a tree: one chain
-  // of maxima would wait on each.
+  // Every slot (those past the count repeat a vertex), slot by slot and then as a tree.
   std::array<double, kMaxPolygonVertices> reach;
   for (int i = 0; i < kMaxPolygonVertices; ++i) {
     reach[i] = std::max(std::max(std::abs(a.x[i]), std::abs(a.y[i])), std::max(std::abs(b.x[i]), std::abs(b.y[i])));
   }
-  for (int width = kMaxPolygonVertices / 2; width > 0; width /= 2) {
-    for (int i = 0; i < width; ++i) reach[i] = std::max(reach[i], reach[i + width]);
-  }
-  return 2 * reach[0] + a.radius + b.radius;
+  return 2 * tree_fold(reach, [](double l, double r) { return std::max(l, r); }) + a.radius + b.radius;
 }
 
 namespace {

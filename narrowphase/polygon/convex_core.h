@@ -54,10 +54,10 @@ inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
 
 // A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
 // count repeating the first), each face's outward unit normal (face i from vertex i to vertex
-// i + 1; past the faces, a polygon's first face's again, other shapes' zero), and the radius around
-// it. A segment has two faces, one each way, and in the normals' slots
-// 2 and 3 its directions from its first end to its second and back (each end's half turn of
-// directions is two quarter turns about them); a point has none.
+// i + 1), and the radius around it. A segment has two faces, one each way, and in the normals'
+// slots 2 and 3 its directions from its first end to its second and back (each end's half turn of
+// directions is two quarter turns about them); a point has none. The normals' slots past those
+// hold a polygon's first face's normal again, other shapes' zero.
 struct Core {
   // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
   std::array<Vec2, kMaxPolygonVertices> v;
@@ -85,6 +85,18 @@ inline int along_face(const Vec2& n, const Vec2& v0, const Vec2& v1, const Vec2&
   const Vec2 t = perp(n);
   const double at = t.dot(w - v0);
   return at >= 0.0 ? (at <= t.dot(v1 - v0) ? 0 : 1) : -1;
+}
+
+// Every slot folded into one by `pick`, neighbours paired off as a tree: a tree keeps the chain of
+// dependent picks short, and as the left of each pair holds the earlier slots, a pick that keeps
+// the left on ties keeps the first of equals.
+template <class T, std::size_t N, class Pick>
+T tree_fold(std::array<T, N> slots, Pick pick) {
+  static_assert(N > 0 && (N & (N - 1)) == 0, "a power of two");
+  for (std::size_t width = N; width > 1; width /= 2) {
+    for (std::size_t i = 0; i < width / 2; ++i) slots[i] = pick(slots[2 * i], slots[2 * i + 1]);
+  }
+  return slots[0];
 }
 
 // Whether a convex outline lies farthest along d at its vertex v, between `before` and `after`
