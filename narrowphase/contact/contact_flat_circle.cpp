@@ -48,7 +48,7 @@ template <class A>
 }
 
 // In the shape's frame, with c the circle's centre: the face of greatest separation s, then, as
-// Box2D's b2CollidePolygonAndCircle, the face where c lies over it or within the core (s <= 0),
+// Box2D's b2CollidePolygonAndCircle, the face where c lies over it or within a polygon (s <= 0),
 // else the face's end beyond which c lies (the core's separation from a point falls away on either
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
 // leaves that end not the core's farthest point towards c, the convex cores' contact decides
@@ -72,7 +72,8 @@ Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_o
   };
   const Vec2& n = o.normals[face];
   const int next = face + 1 == o.count ? 0 : face + 1;
-  const int side = s > 0.0 ? detail::along_face(n, o.vertices[face], o.vertices[next], c) : 0;
+  // A segment's two faces hold no point: s = 0 says only that c lies on its line.
+  const int side = Slots != 2 && s <= 0.0 ? 0 : detail::along_face(n, o.vertices[face], o.vertices[next], c);
   if (side == 0) return one(Vec2(c - s * n), n, s - radii, feature_id(FeatureKind::face_of_a, face, 0));
   const int end = side < 0 ? face : next;
   const Vec2 d = c - o.vertices[end];

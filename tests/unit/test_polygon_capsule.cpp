@@ -434,6 +434,24 @@ TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
   EXPECT_GT(overlapping, 500);
 }
 
+// A circle whose centre lies on a capsule's axis: both of the segment's faces measure 0 there, which
+// says nothing of whether the centre lies over the segment or beyond an end. Binary fractions, so
+// that every answer is exact.
+TEST(PolygonCapsuleQueries, CircleOnTheCapsuleAxis) {
+  const Capsule capsule{Vec2(-7.875, -8), 0.1875, 1.5625, 0.0};
+  for (const double side : {1.0, -1.0}) {
+    const Circle beyond{Vec2(-7.875 + side * 11.3125, -8), 8};
+    const Contact c = contact(Shape(capsule), Shape(beyond));
+    EXPECT_EQ(c.separation, 1.5625);
+    EXPECT_EQ(c.normal, Vec2(side, 0));
+    EXPECT_EQ(c.point_a, Vec2(-7.875 + side * 1.75, -8));
+    EXPECT_EQ(c.point_b, Vec2(-7.875 + side * 3.3125, -8));
+    EXPECT_EQ(distance(Shape(capsule), Shape(beyond)).distance, 1.5625);
+  }
+  const Circle over{Vec2(-7.75, -8), 8};  // its centre on the segment
+  EXPECT_EQ(contact(Shape(capsule), Shape(over)).separation, -9.5625);
+}
+
 TEST(PolygonCapsuleQueries, RayCasts) {
   const Vec2 right(1, 0);
   // A unit square's left face at x = -1: from x = -3 the ray enters at 2, normal -x.
