@@ -69,21 +69,21 @@ inline constexpr int kMaxPolygonVertices = 8;
 /// every edge it is not on, beyond the rounding of the orientation test), each edge's outward unit
 /// normal, and a rounding radius (0, or a size) that grows the polygon into a rounded one.
 struct PolygonOutline {
-  /// The vertices, and past the count copies of the first (so that every slot is a vertex).
-  std::array<Vec2, kMaxPolygonVertices> vertices{};
+  int count = 0;
+  double radius = 0.0;
+  double reach = 0.0;  ///< the largest |vertex| plus the radius: the farthest point from the origin
+  /// Where the origin lies within the core, the radius of a disc about it within the solid (the
+  /// distance to the nearest face's line, plus the radius); else -1.
+  double inner = -1.0;
   /// normals[i] is the outward unit normal of the edge from vertices[i] to vertices[(i + 1) % count],
   /// and past the count copies of the first.
   std::array<Vec2, kMaxPolygonVertices> normals{};
   /// offsets[i] = normals[i].dot(vertices[i]): face i's line is {p : normals[i].dot(p) = offsets[i]}.
   std::array<double, kMaxPolygonVertices> offsets{};
-  int count = 0;
-  double radius = 0.0;
+  /// The vertices, and past the count copies of the first (so that every slot is a vertex).
+  std::array<Vec2, kMaxPolygonVertices> vertices{};
   double area = 0.0;             ///< of the rounded solid
   Vec2 centroid = Vec2::Zero();  ///< of the rounded solid, in the polygon's frame
-  double reach = 0.0;            ///< the largest |vertex| plus the radius: the farthest point from the origin
-  /// Where the origin lies within the core, the radius of a disc about it within the solid (the
-  /// distance to the nearest face's line, plus the radius); else -1.
-  double inner = -1.0;
 
   /// The vertices, counter-clockwise.
   std::span<const Vec2> points() const { return {vertices.data(), static_cast<std::size_t>(count)}; }
