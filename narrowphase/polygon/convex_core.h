@@ -120,14 +120,19 @@ struct Placement {
   Vec2 direction(const Vec2& d) const { return rot.apply(d); }
 };
 
-// Where the discs of two reaches (Discs::reach) whose centres lie `offset` apart are beyond the
-// contact limit, the gap between them, a lower bound of the solids' distance that passes it. The
-// square root only for pairs apart by more than the limit.
-inline std::optional<double> discs_beyond(const Vec2& offset, double reaches, const ContactOptions& options) {
+// Whether a disc of radius `reaches` about a point `offset` from another point may lie beyond the
+// contact limit from it: false, with no square root, where the offset is within the limit plus the
+// reach.
+inline bool may_pass_limit(const Vec2& offset, double reaches, const ContactOptions& options) {
   const double near = options.max_separation + reaches;
-  const double d2 = offset.squaredNorm();
-  if (near >= 0.0 && !(d2 > near * near)) return std::nullopt;
-  const double d = std::sqrt(d2);
+  return !(near >= 0.0 && !(offset.squaredNorm() > near * near));
+}
+
+// Where the discs of two reaches (Discs::reach) whose centres lie `offset` apart are beyond the
+// contact limit, the gap between them, a lower bound of the solids' distance that passes it.
+inline std::optional<double> discs_beyond(const Vec2& offset, double reaches, const ContactOptions& options) {
+  if (!may_pass_limit(offset, reaches, options)) return std::nullopt;
+  const double d = offset.norm();
   if (!beyond_limit(d - reaches, d + reaches, options)) return std::nullopt;
   return d - reaches;
 }

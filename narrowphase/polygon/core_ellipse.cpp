@@ -178,11 +178,11 @@ LeastQuadratic<double> least_quadratic(const CoreEllipse& p) {
 }  // namespace
 
 Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options) {
-  if (has_limit(options)) {
+  const Vec2& o = p.core.center;
+  const Vec2 box(std::clamp(o.x(), -p.a, p.a), std::clamp(o.y(), -p.b, p.b));
+  if (has_limit(options) && may_pass_limit(o - box, p.core.discs.reach, options)) {
     // The disc of A's reach apart from the ellipse's bounding box: that gap is at most the solids'
     // distance.
-    const Vec2& o = p.core.center;
-    const Vec2 box(std::clamp(o.x(), -p.a, p.a), std::clamp(o.y(), -p.b, p.b));
     const double gap = (o - box).norm() - p.core.discs.reach;
     if (beyond_limit(gap, o.norm() + p.core.discs.reach + p.a + p.b, options)) return Contact::beyond(gap);
   }
