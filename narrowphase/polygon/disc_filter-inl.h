@@ -18,8 +18,10 @@
 #endif
 
 // A flat shape A against an ellipse: A's centre o inside the ellipse; else the ellipse's point q
-// on the ray from its centre through o within A's inner disc, or the tangent line at q (the
-// ellipse lies behind it) beyond A's reach.
+// on the ray from its centre through o within A's inner disc, or, o outside the ellipse, the tangent
+// line at q (the ellipse lies behind it) beyond A's reach. (A centre inside the ellipse that A's core
+// does not hold, as a polygon's whose outline lies off its origin, or a segment's first point,
+// settles nothing.)
 template <class D, class V>
 detail::LaneVerdicts<decltype(V() < V())> disc_verdicts(D d, const detail::DiscEllipseLanes<V>& f) {
   const V zero = Set(d, 0.0), one = Set(d, 1.0);
@@ -41,7 +43,7 @@ detail::LaneVerdicts<decltype(V() < V())> disc_verdicts(D d, const detail::DiscE
   const V held = f.inner - margin;
   const V o2 = f.ox * f.ox + f.oy * f.oy;
   const auto within = And(held > zero, o2 * past * past < held * held * w2);
-  const auto beyond = along * along > clear * clear * w2 * (nx * nx + ny * ny);
+  const auto beyond = And(past > zero, along * along > clear * clear * w2 * (nx * nx + ny * ny));
   out.overlap = Or(out.overlap, And(open, And(holds, within)));
   out.separated = Or(out.separated, And(open, beyond));
   return out;

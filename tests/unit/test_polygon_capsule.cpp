@@ -1,6 +1,7 @@
 // Convex polygons and capsules as shapes: what their makers refuse and why, hulls whose answer is
 // known by construction, areas and centroids against closed forms and a dense outline traced
 // independently, and support points, containment and boxes against points sampled on the outline.
+#include <collide2d/batch.h>
 #include <collide2d/query.h>
 #include <collide2d/ray_cast.h>
 #include <collide2d/shapes.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -450,6 +452,22 @@ TEST(PolygonCapsuleQueries, CircleOnTheCapsuleAxis) {
   }
   const Circle over{Vec2(-7.75, -8), 8};  // its centre on the segment
   EXPECT_EQ(contact(Shape(capsule), Shape(over)).separation, -9.5625);
+}
+
+// A polygon whose outline lies off its own origin, that origin deep inside an ellipse: the disc
+// test's tangent line stands for an ellipse seen from outside, and must not call the pair apart.
+// The outline lies inside the ellipse, so that every test must find them overlapping, the batch too.
+TEST(PolygonCapsuleQueries, OriginOffTheOutlineInsideAnEllipse) {
+  const ConvexPolygon p = ConvexPolygon::of(std::vector<Vec2>{{10, 0}, {11, 0}, {10, 1}}).at(Vec2(1, 0));
+  const Ellipse e{Vec2(0, 0), 100, 50, 0};
+  EXPECT_TRUE(overlaps(p, e));
+  EXPECT_TRUE(distance(p, e).overlapping);
+  const std::vector<ConvexPolygon> polygons{p};
+  const std::vector<Ellipse> ellipses{e};
+  const std::vector<Orientation> unturned{Orientation{}};
+  std::vector<std::uint8_t> out(1, 0);
+  overlap_polygon_ellipse(polygons, unturned, ellipses, unturned, out);
+  EXPECT_EQ(out[0], 1);
 }
 
 TEST(PolygonCapsuleQueries, RayCasts) {
