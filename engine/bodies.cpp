@@ -243,12 +243,24 @@ void WorldState::free_part(std::uint32_t index) {
   free_parts_.push_back(index);
 }
 
+namespace {
+
+// A segment is level geometry: its body must be static (BodyDef::is_static).
+void require_static_for(const Shape& shape, bool is_static, const char* call) {
+  if (!is_static && std::holds_alternative<Segment>(shape)) {
+    throw std::invalid_argument(std::string(call) + ": a segment is level geometry, and its body must be static");
+  }
+}
+
+}  // namespace
+
 BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
   require_not_querying("add");
   validate_point(pose.position, "add position");
   require_finite(pose.angle, "add angle");
   if (shapes.empty()) throw std::invalid_argument("add needs at least one shape for the body");
   for (const ShapeDef& s : shapes) validate(s.shape);
+  for (const ShapeDef& s : shapes) require_static_for(s.shape, def.is_static, "add");
   const std::uint32_t index = take_slot(bodies_, free_bodies_);
   Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
   b.pose = pose;
@@ -267,8 +279,9 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
 
 ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
   require_not_querying("add_shape");
-  body(id);
+  const Body& b = body(id);
   validate(def.shape);
+  require_static_for(def.shape, b.is_static, "add_shape");
   return shape_id(new_part(id.index, def));
 }
 
@@ -288,8 +301,9 @@ void WorldState::remove_shape(ShapeId id) {
 
 void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   require_not_querying("set_local_shape");
-  part(id);
+  const Part& p = part(id);
   validate(local);
+  require_static_for(local, p.is_static, "set_local_shape");
   set_local(id.index, local);
   place(id.index);
 }
@@ -337,6 +351,7 @@ void WorldState::set_static(BodyId id, bool is_static) {
   require_not_querying("set_static");
   Body& b = body(id);
   if (b.is_static == is_static) return;
+  each_part(b, [&](std::uint32_t k) { require_static_for(parts_[k].shape, is_static, "set_static"); });
   if (b.continuous) set_continuous(id, false);
   each_part(b, [&](std::uint32_t k) {
     leave(k);

@@ -1,5 +1,5 @@
 // Private: the order in which kernels take their shapes: by rank across kinds (a rectangle, a
-// polygon, a capsule, a circle, an ellipse), and by key within one.
+// polygon, a capsule, a segment, a circle, an ellipse), and by key within one.
 //
 // The key is a total order on shapes of one kind (precedes()). Same-kind pairs are put in this order
 // before the kernel runs (query.cpp, and the batch in overlap_batch.cpp), so that swapping A and B
@@ -18,18 +18,23 @@ constexpr int rank() {
   if constexpr (std::is_same_v<T, Rect>) return 0;
   if constexpr (std::is_same_v<T, ConvexPolygon>) return 1;
   if constexpr (std::is_same_v<T, Capsule>) return 2;
-  if constexpr (std::is_same_v<T, Circle>) return 3;
-  return 4;
+  if constexpr (std::is_same_v<T, Segment>) return 3;
+  if constexpr (std::is_same_v<T, Circle>) return 4;
+  return 5;
 }
 
 template <class T>
 constexpr bool one_of_first_kinds = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
 // The kinds the kernels settle on convex cores (narrowphase/polygon/convex_core.h).
 template <class T>
-constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule>;
+constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule> || std::is_same_v<T, Segment>;
 
+// A polygon or a capsule (not a segment: level geometry, tested one pair at a time) with a circle or
+// an ellipse.
 template <class X, class Y>
-constexpr bool core_with_round = on_cores<X> && (std::is_same_v<Y, Circle> || std::is_same_v<Y, Ellipse>);
+constexpr bool core_with_round = (std::is_same_v<X, ConvexPolygon> ||
+                                  std::is_same_v<X, Capsule>)&&(std::is_same_v<Y, Circle> ||
+                                                                std::is_same_v<Y, Ellipse>);
 
 // Whether the batched overlap tests (batch.h) take the pair of kinds, either way round: any two of
 // rectangles, circles and ellipses, a polygon or a capsule with a circle or an ellipse, and two
@@ -46,6 +51,9 @@ inline std::array<double, 5> key(const Rect& r) {
 }
 inline std::array<double, 5> key(const Capsule& c) {
   return {c.center.x(), c.center.y(), c.half_length, c.radius, c.angle};
+}
+inline std::array<double, 5> key(const Segment& s) {
+  return {s.center.x(), s.center.y(), s.end.x(), s.end.y(), s.angle};
 }
 // Whether x comes before y, the order the kernels take two shapes of one kind in.
 template <class T>

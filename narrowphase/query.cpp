@@ -68,8 +68,9 @@ Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O&
   return contact_ellipse_ellipse(a, oa, b, ob, o);
 }
 
-// The pairs with a polygon or a capsule (on_cores, kernel_order.h), in kernel order: a flat shape
-// (rectangle, polygon, capsule) first, settled on convex cores (narrowphase/polygon/convex_core.h).
+// The pairs with a polygon, a capsule or a segment (on_cores, kernel_order.h), in kernel order: a
+// flat shape (rectangle, polygon, capsule, segment) first, settled on convex cores
+// (narrowphase/polygon/convex_core.h).
 template <class T>
 Orientation orientation_of(const T& x) {
   if constexpr (std::is_same_v<T, Circle>) {
@@ -158,7 +159,8 @@ DistanceResult boundary_kernel(const Circle& a, const Ellipse& b) {
 DistanceResult boundary_kernel(const Ellipse& a, const Ellipse& b) { return boundary_distance_ellipse_ellipse(a, b); }
 template <class X, class Y>
 requires(std::is_same_v<X, Rect> || on_cores<X>) DistanceResult boundary_kernel(const X&, const Y&) {
-  throw UnsupportedPair("the boundary distance covers circles and ellipses, not rectangles, polygons or capsules");
+  throw UnsupportedPair(
+      "the boundary distance covers circles and ellipses, not rectangles, polygons, capsules or segments");
 }
 
 // Calls kernel(x, y, swapped) with the pair in kernel order: by rank across kinds, by key within one.

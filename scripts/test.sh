@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing, configures, builds, and runs the whole suite with ctest;
 # then builds it again with AddressSanitizer and UndefinedBehaviorSanitizer and runs it there too;
-# then runs each of the six libFuzzer targets for 10 seconds on its corpus (scripts/fuzz.sh).
+# then runs each of the eight libFuzzer targets for 10 seconds on its corpus (scripts/fuzz.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"

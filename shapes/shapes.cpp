@@ -102,6 +102,20 @@ void validate(const Capsule& c) {
   require_finite("capsule", "angle", c.angle);
 }
 
+void validate(const Segment& s) {
+  require_coordinate("segment", "x1", s.center.x());
+  require_coordinate("segment", "y1", s.center.y());
+  require_coordinate("segment", "end x", s.end.x());
+  require_coordinate("segment", "end y", s.end.y());
+  require_finite("segment", "angle", s.angle);
+  const double length = s.end.norm();
+  if (length == 0.0) reject("segment", "length", length, "must be positive (its two points are one)");
+  if (length < kMinSize || length > kMaxMagnitude)
+    reject("segment", "length", length, "is outside the supported range 1e-50 to 1e50");
+}
+
+Vec2 Segment::point2() const { return center + Rot::of(angle).apply(end); }
+
 void validate(const Shape& s) {
   std::visit([](const auto& shape) { validate(shape); }, s);
 }
@@ -127,6 +141,7 @@ double reach_of(const Shape& s) {
   if (const auto* e = std::get_if<Ellipse>(&s)) return std::max(e->a, e->b);
   if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length + c->radius;
   if (const auto* p = std::get_if<ConvexPolygon>(&s)) return p->outline->reach;
+  if (const auto* g = std::get_if<Segment>(&s)) return g->end.norm();
   return std::get<Rect>(s).half_extents.norm();
 }
 
@@ -139,7 +154,7 @@ bool encloses(const Aabb& outer, const Aabb& inner) {
 }
 
 const char* shape_name(const Shape& s) {
-  constexpr const char* names[] = {"circle", "ellipse", "rect", "capsule", "polygon"};
+  constexpr const char* names[] = {"circle", "ellipse", "rect", "capsule", "polygon", "segment"};
   return names[s.index()];
 }
 
@@ -166,9 +181,15 @@ Aabb oriented_box(const Capsule& c, const Orientation& o) {
 
 Aabb oriented_box(const ConvexPolygon& p, const Orientation& o) { return detail::polygon_box(p, o); }
 
+Aabb oriented_box(const Segment& s, const Orientation& o) {
+  const Vec2 to = Rot{o.c, o.s}.apply(s.end);
+  return detail::around(s.center, to.cwiseMin(0.0).cwiseAbs(), to.cwiseMax(0.0), to.cwiseAbs());
+}
+
 }  // namespace
 
 Aabb aabb(const Capsule& c) { return oriented_box(c, Orientation::of(c.angle)); }
+Aabb aabb(const Segment& s) { return oriented_box(s, Orientation::of(s.angle)); }
 Aabb aabb(const Ellipse& e) { return oriented_box(e, Orientation::of(e.angle)); }
 Aabb aabb(const Rect& r) { return oriented_box(r, Orientation::of(r.angle)); }
 Aabb aabb(const Shape& s) {
@@ -211,6 +232,11 @@ Vec2 support(const Capsule& c, const Vec2& d) {
   return n > 0.0 ? Vec2(end + (c.radius / n) * d) : end;
 }
 
+Vec2 support(const Segment& s, const Vec2& d) {
+  const Vec2 to = Rot::of(s.angle).apply(s.end);
+  return d.dot(to) >= 0.0 ? Vec2(s.center + to) : s.center;
+}
+
 Vec2 support(const Shape& s, const Vec2& d) {
   return std::visit([&d](const auto& shape) { return support(shape, d); }, s);
 }
@@ -233,6 +259,13 @@ bool contains(const Capsule& c, const Vec2& p) {
   const Vec2 q = Rot::of(c.angle).apply_inverse(Vec2(p - c.center));
   const double along = q.x() - std::clamp(q.x(), -c.half_length, c.half_length);
   return along * along + q.y() * q.y() <= c.radius * c.radius;
+}
+
+// On the segment: on its line (the orientation test's sign exactly 0) and between its points.
+bool contains(const Segment& s, const Vec2& p) {
+  const Vec2 q = Rot::of(s.angle).apply_inverse(Vec2(p - s.center));
+  const double along = q.dot(s.end);
+  return q.x() * s.end.y() == q.y() * s.end.x() && along >= 0.0 && along <= s.end.squaredNorm();
 }
 
 bool contains(const Shape& s, const Vec2& p) {

@@ -52,17 +52,19 @@ struct ShapeGrammar {
   std::size_t count;
   std::string_view fields;
 };
-constexpr std::array<ShapeGrammar, 4> kGrammar{{
+constexpr std::array<ShapeGrammar, 5> kGrammar{{
     {"circle", 3, "cx cy r"},
     {"ellipse", 5, "cx cy a b theta"},
     {"rect", 5, "cx cy hx hy theta"},
     {"capsule", 5, "cx cy h r theta"},
+    {"segment", 4, "x1 y1 x2 y2"},
 }};
 
 Shape make_shape(std::string_view word, const std::vector<double>& v) {
   if (word == "circle") return Circle{Vec2(v[0], v[1]), v[2]};
   if (word == "ellipse") return Ellipse{Vec2(v[0], v[1]), v[2], v[3], v[4]};
   if (word == "capsule") return Capsule{Vec2(v[0], v[1]), v[2], v[3], v[4]};
+  if (word == "segment") return Segment::between(Vec2(v[0], v[1]), Vec2(v[2], v[3]));
   return Rect{Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]};
 }
 
@@ -104,7 +106,7 @@ Shape parse_shape(std::string_view text, const char* side) {
     return shape;
   }
   throw ParseError("unknown shape '" + std::string(words[0]) +
-                   "' (expected circle, ellipse, rect, capsule or polygon)");
+                   "' (expected circle, ellipse, rect, capsule, polygon or segment)");
 }
 
 struct Side {

@@ -1,15 +1,15 @@
 /// @file
-/// Shapes: solid circles, ellipses, oriented rectangles, capsules and convex polygons in double
-/// precision.
+/// Shapes: solid circles, ellipses, oriented rectangles, capsules and convex polygons, and segments,
+/// in double precision.
 ///
 /// Shapes are plain value structs (no virtuals); a convex polygon shares its immutable outline among
 /// its copies. Angles are in radians, counter-clockwise from +x. A shape is the closed solid region:
 /// its boundary belongs to it.
 ///
-/// Validity: every field finite, every size in [1e-50, 1e50], every centre coordinate and every
-/// polygon vertex within +-1e50. In that range no ratio of lengths in a query exceeds about 1e100, so no square or cube
-/// of one overflows. The queries of query.h, the World and the command line validate their shapes; the kernels of
-/// kernels.h and batch.h trust them.
+/// Validity: every field finite, every size (a segment's length too) in [1e-50, 1e50], every centre
+/// coordinate, every polygon vertex and a segment's end within +-1e50. In that range no ratio of lengths in a query
+/// exceeds about 1e100, so no square or cube of one overflows. The queries of query.h, the World and the command line
+/// validate their shapes; the kernels of kernels.h and batch.h trust them.
 #pragma once
 
 #include <Eigen/Core>
@@ -59,6 +59,23 @@ struct Capsule {
   double half_length = 1.0;
   double radius = 0.5;
   double angle = 0.0;
+};
+
+/// A segment: the points `center` and center + R(angle) end, with no thickness (Box2D's b2Segment).
+/// Its first point is the origin of its frame, as a polygon's centre is of its outline, so that its
+/// second point follows from the first by a difference that is exact wherever the two lie within a
+/// factor 2 of each other (Sterbenz): far from the world's origin the segment stays exact at its own
+/// scale. Level geometry: the World takes it on static bodies only.
+struct Segment {
+  Vec2 center = Vec2::Zero();  ///< the first point
+  Vec2 end = Vec2::UnitX();    ///< the second point, in the segment's frame
+  double angle = 0.0;
+
+  /// The segment from point1 to point2, unturned: end = point2 - point1.
+  static Segment between(const Vec2& point1, const Vec2& point2) { return {point1, point2 - point1, 0.0}; }
+  /// Its two points in the world.
+  Vec2 point1() const { return center; }
+  Vec2 point2() const;
 };
 
 /// The most vertices a convex polygon has (Box2D's cap): its outline stays inline, 2 x 8 points.
@@ -132,7 +149,7 @@ struct ConvexPolygon {
 };
 
 /// Any shape.
-using Shape = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon>;
+using Shape = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon, Segment>;
 
 /// A closed axis-aligned box; min <= max on each axis. A box may have no width or height.
 struct Aabb {
@@ -162,6 +179,7 @@ void validate(const Circle& c);
 void validate(const Ellipse& e);
 void validate(const Rect& r);
 void validate(const Capsule& c);
+void validate(const Segment& s);
 void validate(const ConvexPolygon& p);
 void validate(const Shape& s);
 /// Throws InvalidShape unless both coordinates are finite and within +-1e50; the message calls the
@@ -170,16 +188,17 @@ void validate_point(const Vec2& p, const char* what);
 /// Throws InvalidShape unless both corners are valid points and min <= max on each axis.
 void validate(const Aabb& box);
 
-/// "circle", "ellipse", "rect", "capsule" or "polygon": the word of the command line and of error
-/// messages.
+/// "circle", "ellipse", "rect", "capsule", "polygon" or "segment": the word of the command line and
+/// of error messages.
 const char* shape_name(const Shape& s);
 
-/// The centre of any shape.
+/// The centre of any shape (a segment's first point).
 Vec2 center_of(const Shape& s);
-/// The angle of an ellipse, rectangle, capsule or polygon; 0 for a circle.
+/// The angle of an ellipse, rectangle, capsule, polygon or segment; 0 for a circle.
 double angle_of(const Shape& s);
 /// The distance from the centre to the farthest point: the radius, the longer semi-axis, the half
-/// diagonal, the half length plus the radius, a polygon's farthest vertex plus its radius.
+/// diagonal, the half length plus the radius, a polygon's farthest vertex plus its radius, a segment's
+/// length.
 double reach_of(const Shape& s);
 
 /// Whether two closed boxes share a point.
@@ -193,6 +212,7 @@ Aabb aabb(const Circle& c);
 Aabb aabb(const Ellipse& e);
 Aabb aabb(const Rect& r);
 Aabb aabb(const Capsule& c);
+Aabb aabb(const Segment& s);
 Aabb aabb(const ConvexPolygon& p);
 Aabb aabb(const Shape& s);
 /// The same box, given Orientation::of(angle_of(s)).
@@ -206,8 +226,9 @@ Vec2 support(const Ellipse& e, const Vec2& d);
 Vec2 support(const Rect& r, const Vec2& d);
 /// A capsule's: the segment's end along d (the end at +half_length on a tie) plus radius d / |d|. A
 /// polygon's: its vertex farthest along d (the first counter-clockwise from vertex 0 on a tie) plus
-/// radius d / |d|.
+/// radius d / |d|. A segment's: its point farthest along d (the second on a tie).
 Vec2 support(const Capsule& c, const Vec2& d);
+Vec2 support(const Segment& s, const Vec2& d);
 Vec2 support(const ConvexPolygon& p, const Vec2& d);
 Vec2 support(const Shape& s, const Vec2& d);
 
@@ -216,6 +237,7 @@ bool contains(const Circle& c, const Vec2& p);
 bool contains(const Ellipse& e, const Vec2& p);
 bool contains(const Rect& r, const Vec2& p);
 bool contains(const Capsule& c, const Vec2& p);
+bool contains(const Segment& s, const Vec2& p);
 bool contains(const ConvexPolygon& poly, const Vec2& p);
 bool contains(const Shape& s, const Vec2& p);
 

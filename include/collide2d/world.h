@@ -128,8 +128,10 @@ struct QueryFilter {
 struct BodyDef {
   std::uint64_t user_id = 0;  ///< the caller's, returned by user_id()
   Filter filter{};
-  bool is_static = false;  ///< level geometry: never moves by itself, never pairs with a static body
-  bool sensor = false;     ///< its shapes report the solid shapes that overlap them, and are not solid
+  /// Level geometry: never moves by itself, never pairs with a static body. A body with a segment
+  /// must be static: add(), add_shape(), set_local_shape() and set_static() refuse otherwise.
+  bool is_static = false;
+  bool sensor = false;  ///< its shapes report the solid shapes that overlap them, and are not solid
 };
 
 /// One shape of a body: `shape` is placed in the body's frame (its centre and angle are its offset

@@ -178,6 +178,15 @@ struct FaceClip {
   int count = 0;                // 0 when the incident face lies beyond a side plane
 };
 
+// The point where an edge of y, from heights b0 to b1 over face x's line at positions a0 to a1
+// along it, crosses the side plane at `limit`: on the plane exactly, in the face's coordinates
+// (interpolated, its position along the face would carry the rounding of the whole edge).
+Clipped cut(const Vec2& v0, const Vec2& t, const Vec2& n, double limit, double a0, double b0, double a1, double b1,
+            int id) {
+  const double b = b0 + (b1 - b0) * ((limit - a0) / (a1 - a0));
+  return {v0 + limit * t + b * n, b, id};
+}
+
 FaceClip clip_face(const Core& x, int i, const Core& y) {
   const Vec2 &n = x.n[i], &v0 = x.v[i];
   const Vec2 t = perp(n);
@@ -207,14 +216,34 @@ FaceClip clip_face(const Core& x, int i, const Core& y) {
     const int other = 1 - e;
     const bool below = a[e] < 0.0;
     if (ends == 1 || (below ? a[other] < 0.0 : a[other] > length)) continue;  // wholly beyond that plane
-    const double limit = below ? 0.0 : length;
-    // On the side plane exactly, in the face's coordinates: interpolated, the cut point's position
-    // along the face would carry the rounding of the whole incident face.
-    const double b = end[e].b + (end[other].b - end[e].b) * ((limit - a[e]) / (a[other] - a[e]));
-    out.kept[out.count++] = {v0 + limit * t + b * n, b, below ? kCutAtStart : kCutAtEnd};
+    out.kept[out.count++] =
+        cut(v0, t, n, below ? 0.0 : length, a[e], end[e].b, a[other], end[other].b, below ? kCutAtStart : kCutAtEnd);
   }
   if (out.count == 2 && out.kept[1].b < out.kept[0].b) std::swap(out.kept[0], out.kept[1]);
   return out;
+}
+
+// The deepest point of core y over face i of core x (between its side planes): a vertex of y there,
+// or where an edge of y crosses a side plane; b infinite where y has none. Where the incident face
+// lies wholly beyond a side plane, as one of two faces of y nearly in line may, it stands in for
+// its deeper end, which lies off the face.
+Clipped deepest_over_face(const Core& x, int i, const Core& y) {
+  const Vec2 &n = x.n[i], &v0 = x.v[i];
+  const Vec2 t = perp(n);
+  const double length = t.dot(x.v[x.next(i)] - v0);
+  Clipped best{Vec2::Zero(), std::numeric_limits<double>::infinity(), 0};
+  const auto keep = [&best](const Clipped& c) { best = c.b < best.b ? c : best; };
+  for (int j = 0; j < y.count; ++j) {
+    const int k = y.next(j);
+    const double a0 = t.dot(y.v[j] - v0), a1 = t.dot(y.v[k] - v0);
+    const double b0 = n.dot(y.v[j]) - n.dot(v0), b1 = n.dot(y.v[k]) - n.dot(v0);  // as the axes measure it
+    if (a0 >= 0.0 && a0 <= length) keep({y.v[j], b0, j});
+    for (const double limit : {0.0, length}) {
+      if ((a0 < limit) != (a1 < limit))
+        keep(cut(v0, t, n, limit, a0, b0, a1, b1, limit == 0.0 ? kCutAtStart : kCutAtEnd));
+    }
+  }
+  return best;
 }
 
 // Builds contacts in the world from points in A's frame.
@@ -270,8 +299,9 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
 // nearest features beside the face give the distance; the face stays the reference if its clipped
 // incident face comes that near (parallel faces, whose ids then hold whichever side of touching the
 // pair is), else the nearest features make the contact. Overlapping with the deepest vertex beyond
-// the face's ends, the deepest clipped point stands in for it as the main point, so that both
-// points lie on their shapes (the separation stays s).
+// the face's ends, the deepest clipped point stands in for it as the main point, or where the clip
+// keeps none, the deepest point of y over the face, so that both points lie on their shapes (the
+// separation stays s).
 Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
   const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
   const int i = axis.face;
@@ -287,9 +317,13 @@ Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const Con
     if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);
     return on_face(p, x_is_a, i, distance, c.kept[0], c, options);
   }
+  if (c.count == 0) {
+    const Clipped over = deepest_over_face(x, i, y);
+    return on_face(p, x_is_a, i, s, over.b < std::numeric_limits<double>::infinity() ? over : c.deep, c, options);
+  }
   const bool deep_kept =
       std::any_of(c.kept.begin(), c.kept.begin() + c.count, [&](const Clipped& k) { return k.id == c.deep.id; });
-  return on_face(p, x_is_a, i, s, deep_kept || c.count == 0 ? c.deep : c.kept[0], c, options);
+  return on_face(p, x_is_a, i, s, deep_kept ? c.deep : c.kept[0], c, options);
 }
 
 Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOptions& options) {
@@ -434,6 +468,16 @@ Core core_of(const Capsule& c, const Placement& at) {
   const std::array<Vec2, 2> faces = segment_normals();
   const Vec2 n[] = {faces[0], faces[1], {1, 0}, {-1, 0}};
   return make(2, segment_of(c), n, c.radius, discs_of(c), at);
+}
+
+// A segment's core is a capsule's of radius 0 from its frame's origin: its faces' normals the
+// direction's two perpendiculars, in the same slots.
+Core core_of(const Segment& s, const Placement& at) {
+  const Vec2 d = s.end.normalized();
+  const Vec2 right(d.y(), -d.x());
+  const Vec2 n[] = {right, -right, d, -d};
+  const Vec2 ends[] = {Vec2::Zero(), s.end};
+  return make(2, ends, n, 0.0, discs_of(s), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {

@@ -51,6 +51,7 @@ inline Discs discs_of(const Rect& r) {
 inline Discs discs_of(const ConvexPolygon& p) { return {p.outline->reach, p.outline->inner}; }
 inline Discs discs_of(const Capsule& c) { return {c.half_length + c.radius, c.radius}; }
 inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
+inline Discs discs_of(const Segment& s) { return {s.end.norm(), -1.0}; }
 
 // A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
 // count repeating the first), each face's outward unit normal (face i from vertex i to vertex
@@ -158,6 +159,7 @@ Core core_of(const Rect& r, const Placement& at);
 void set_axes(Core& c);
 Core core_of(const ConvexPolygon& p, const Placement& at);
 Core core_of(const Capsule& c, const Placement& at);
+Core core_of(const Segment& s, const Placement& at);
 Core core_of(const Circle& c, const Placement& at);
 
 // A pair of flat shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.

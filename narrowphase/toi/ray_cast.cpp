@@ -10,6 +10,7 @@ namespace collide2d {
 namespace {
 
 using Rot = detail::Rotation<double>;
+using detail::cross;
 
 std::optional<RayShapeHit> hit_at(double t, const Vec2& origin, const Vec2& direction, const Vec2& normal,
                                   double max_distance) {
@@ -131,6 +132,23 @@ std::optional<RayShapeHit> cast(const Capsule& s, const Vec2& origin, const Vec2
 std::optional<RayShapeHit> cast(const ConvexPolygon& s, const Vec2& origin, const Vec2& direction,
                                 double max_distance) {
   return cast_core(detail::core_of(s, {}), Rot::of(s.angle), s.center, origin, direction, max_distance);
+}
+
+// In the segment's frame the ray o + t d meets the line of its points s e (s in [0, 1]) where
+// t = (o x e) / D and s = (o x d) / D, D = e x d; the segment's sides are its two faces, and the ray
+// takes the normal of the one it crosses. A ray along the segment's line (D = 0) has no crossing, as
+// Box2D's b2RayCastSegment: it meets the segment, which has no area, in no single point of entry.
+std::optional<RayShapeHit> cast(const Segment& s, const Vec2& origin, const Vec2& direction, double max_distance) {
+  const Rot rot = Rot::of(s.angle);
+  const Vec2 o = rot.apply_inverse(Vec2(origin - s.center));
+  const Vec2 d = rot.apply_inverse(direction);
+  const Vec2& e = s.end;
+  const double sign = cross(e, d) < 0.0 ? -1.0 : 1.0;
+  const double denominator = sign * cross(e, d), along = sign * cross(o, d), t = sign * cross(o, e);
+  if (!(denominator > 0.0) || along < 0.0 || along > denominator || t < 0.0) return std::nullopt;
+  const Vec2 right = Vec2(e.y(), -e.x()).normalized();
+  const Vec2 normal = right.dot(d) > 0.0 ? Vec2(-right) : right;
+  return hit_at(t / denominator, origin, direction, rot.apply(normal), max_distance);
 }
 
 }  // namespace

@@ -62,6 +62,7 @@ double turning_reach(const Shape& s) {
   if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.maxCoeff();
   if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length;
   if (const auto* p = std::get_if<ConvexPolygon>(&s)) return p->outline->reach - p->radius();
+  if (const auto* g = std::get_if<Segment>(&s)) return g->end.norm();
   return 0.0;
 }
 
@@ -82,7 +83,8 @@ void validate(const Shape& s, const Motion& m, const char* which) {
 // A world direction in a shape's own axes, with its kept orientation.
 Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<double>{o.c, o.s}.apply_inverse(n); }
 
-// The support function of a shape along a unit direction given in its own axes.
+// The support function of a shape along a unit direction given in its own axes (a segment's from its
+// first point).
 double support_in_axes(const Shape& s, const Vec2& local) {
   if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
   if (const auto* e = std::get_if<Ellipse>(&s))
@@ -93,13 +95,18 @@ double support_in_axes(const Shape& s, const Vec2& local) {
     for (const Vec2& v : p->vertices()) top = std::max(top, local.dot(v));
     return top + p->radius();
   }
+  if (const auto* g = std::get_if<Segment>(&s)) return std::max(0.0, local.dot(g->end));
   return std::get<Circle>(s).radius;
 }
 
-// A capsule's or polygon's core vertices in its own axes.
+// A capsule's, segment's or polygon's core vertices in its own axes.
 std::span<const Vec2> core_vertices(const Shape& s, std::array<Vec2, 2>& ends) {
   if (const auto* c = std::get_if<Capsule>(&s)) {
     ends = {Vec2(-c->half_length, 0), Vec2(c->half_length, 0)};
+    return ends;
+  }
+  if (const auto* g = std::get_if<Segment>(&s)) {
+    ends = {Vec2::Zero(), g->end};
     return ends;
   }
   return std::get<ConvexPolygon>(s).vertices();
@@ -147,7 +154,7 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
       out.pieces[i] = {top - along, w * across, w * w * (std::abs(along) + std::abs(across))};
     }
     out.count = 4;
-  } else if (std::holds_alternative<Capsule>(s) || std::holds_alternative<ConvexPolygon>(s)) {
+  } else if (!std::holds_alternative<Circle>(s)) {  // a capsule, a segment or a polygon
     // Each vertex's sinusoid (the radius adds a constant) is at most A + B x + (|A| + |B|) x^2 / 2,
     // and A is at most h now: one parabola with the largest slope and bend covers them all.
     std::array<Vec2, 2> ends;

@@ -16,8 +16,8 @@
 namespace collide2d::fuzz {
 
 // `any`: a circle, an ellipse or a rectangle, as the bytes choose (the corpora were written so);
-// `flat`: a capsule or a polygon; `all`: any of the five.
-enum class Kind { circle, ellipse, rect, any, capsule, polygon, flat, all };
+// `flat`: a capsule or a polygon; `all`: any of those five; `segment`: a segment.
+enum class Kind { circle, ellipse, rect, any, capsule, polygon, flat, all, segment };
 
 class Input {
  public:
@@ -53,6 +53,7 @@ class Input {
     }
     if (wanted == Kind::capsule) return capsule();
     if (wanted == Kind::polygon) return polygon();
+    if (wanted == Kind::segment) return segment();
     const double x = number();
     const double y = number();
     const int chosen = byte() % 3;
@@ -90,6 +91,12 @@ class Input {
     } catch (const InvalidShape&) {
       return {c, angle, nullptr};
     }
+  }
+  // Its first point, its second in its frame, and its angle.
+  Segment segment() {
+    const Vec2 first = point();
+    const Vec2 end = point();
+    return {first, end, number()};
   }
   Vec2 point() {
     const double x = number();

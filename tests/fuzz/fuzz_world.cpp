@@ -199,6 +199,7 @@ void check_impacts(const World& w, const Starts& starts) {
             for (int i = 0; i < x.count(); ++i) inner = std::min(inner, -x.outline->normals[i].dot(x.vertices()[i]));
             return std::max(inner, 0.0) + x.radius();
           }
+          if constexpr (std::is_same_v<T, Segment>) return 0.0;  // static: never continuous
         },
         now);
     const Vec2 c0 = center_of(*start), c1 = center_of(now);

@@ -14,7 +14,7 @@ namespace collide2d::testing {
 
 const char* name_of(Flat k) {
   constexpr const char* names[] = {"rect",     "polygon", "rounded", "capsule", "circle", "ellipse",
-                                   "triangle", "octagon", "kinked",  "needle",  "stub"};
+                                   "triangle", "octagon", "kinked",  "needle",  "stub",   "segment"};
   return names[static_cast<int>(k)];
 }
 
@@ -22,8 +22,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Shape moved_to(Shape s, const Vec2& center) {
-  std::visit([&center](auto& x) { x.center = center; }, s);
+// Every shape made here is about the origin, its centre there but a segment's (its first point):
+// each is moved by its centre's shift.
+Shape shifted_by(Shape s, const Vec2& offset) {
+  std::visit([&offset](auto& x) { x.center += offset; }, s);
   return s;
 }
 
@@ -78,6 +80,8 @@ Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) 
       return Capsule{Vec2::Zero(), size, 1e-9 * size, angle};
     case Flat::stub:
       return Capsule{Vec2::Zero(), 1e-9 * size, size, angle};
+    case Flat::segment:
+      return Segment{Vec2(-size * std::cos(angle), -size * std::sin(angle)), Vec2(2 * size, 0), angle};
     case Flat::polygon:
       return polygon(polygon_around(count(3, 8), size, thin, rng), 0.0);
     case Flat::rounded: {
@@ -124,7 +128,7 @@ std::vector<FlatFamily> flat_families() {
     }
   }
   for (const Flat a : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::needle}) {
-    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule}) {
+    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::kinked}) {
       add(a, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
     }
   }
@@ -132,6 +136,17 @@ std::vector<FlatFamily> flat_families() {
     for (const Flat b : {Flat::ellipse, Flat::circle, Flat::polygon, Flat::capsule, Flat::needle}) {
       add(a, b, "touching", 1.0, 0.0, 4.0, near);
     }
+  }
+  for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse,
+                       Flat::triangle, Flat::kinked, Flat::needle, Flat::stub}) {
+    add(Flat::segment, b, "touching", 1.0, 0.0, 4.0, near);
+    add(Flat::segment, b, "deep", 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5});
+    add(Flat::segment, b, "slivers", 1.0, 0.0, 1e6, near);
+    add(Flat::segment, b, "far", 1.0, 1e9, 4.0, near);
+    add(Flat::segment, b, "small", 1e-6, 1e6, 4.0, near);
+    add(Flat::segment, b, "large", 1e6, 0.0, 4.0, near);
+    add(Flat::segment, b, "faces", 1.0, 0.0, 4.0, near, Touch::face);
+    add(Flat::segment, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
   }
   return out;
 }
@@ -166,6 +181,10 @@ std::vector<Face> faces_of(const Shape& s) {
     const Vec2 end = c->half_length * axis, side(axis.y(), -axis.x());
     return {{c->center - end, c->center + end, side, c->radius}, {c->center + end, c->center - end, -side, c->radius}};
   }
+  if (const auto* g = std::get_if<Segment>(&s)) {
+    const Vec2 to = g->point2(), side = Vec2((to - g->center).y(), -(to - g->center).x()).normalized();
+    return {{g->center, to, side, 0.0}, {to, g->center, -side, 0.0}};
+  }
   return {};
 }
 
@@ -193,7 +212,7 @@ std::vector<FlatCase> cases_of(const FlatFamily& f) {
     const double delta = f.deltas[k % f.deltas.size()] * f.size;
     const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
     const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
-    const Shape a = moved_to(random_shape(f.a, f.size, f.aspect, rng), at);
+    const Shape a = shifted_by(random_shape(f.a, f.size, f.aspect, rng), at);
     Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
     const double t = 2 * kPi * unit(rng);
     Vec2 n(std::cos(t), std::sin(t));
@@ -213,7 +232,7 @@ std::vector<FlatCase> cases_of(const FlatFamily& f) {
         pb = point_of(b_turned[static_cast<std::size_t>(&b_face - b_faces.data())], unit(rng));
       }
     }
-    out.push_back({a, moved_to(b0, pa + delta * n - pb), delta});
+    out.push_back({a, shifted_by(b0, pa + delta * n - pb), delta});
   }
   return out;
 }

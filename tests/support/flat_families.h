@@ -1,5 +1,5 @@
-// Families of flat pairs for the tests (rectangles, convex polygons sharp and rounded, capsules and
-// circles against each other and against ellipses): B placed against A at a known gap along a
+// Families of flat pairs for the tests (rectangles, convex polygons sharp and rounded, capsules,
+// segments and circles against each other and against ellipses): B placed against A at a known gap along a
 // random direction, on near-tangent, deep, sliver, far-off and extreme-scale families.
 #pragma once
 
@@ -15,8 +15,8 @@ namespace collide2d::testing {
 
 // polygon: 3 to 8 vertices; triangle and octagon: 3 and 8; kinked: a polygon with a vertex 1e-12
 // of the size off the line of its neighbours; needle: a capsule of radius 1e-9 of its half length;
-// stub: a capsule of half length 1e-9 of its radius.
-enum class Flat { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub };
+// stub: a capsule of half length 1e-9 of its radius; segment: a segment of half length the size.
+enum class Flat { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub, segment };
 const char* name_of(Flat k);
 
 // The flat kinds held in a ConvexPolygon and in a Capsule.
@@ -51,10 +51,11 @@ struct FlatFamily {
 void PrintTo(const FlatFamily& f, std::ostream* os);
 
 // Every pair of a flat kind A with a flat kind or an ellipse B (not circle–circle or
-// circle–ellipse, which have families of their own): touching at gaps of +-1e-3 ... 1e-12 and 0 of
-// the size, deep, slivers (aspect 1e6), far off (1e9), small (1e-6) and large (1e6); faces touching
-// curves, vertices and capsules' sides at those gaps, and parallel faces; the degenerate kinds
-// (triangles, octagons, kinked polygons, needles and stubs) touching at those gaps.
+// circle–ellipse, which have families of their own, nor segment–segment, which never pair in a
+// World): touching at gaps of +-1e-3 ... 1e-12 and 0 of the size, deep, slivers (aspect 1e6), far
+// off (1e9), small (1e-6) and large (1e6); faces touching curves, vertices and capsules' sides at
+// those gaps, and parallel faces (a capsule lying on a segment); the degenerate kinds (triangles,
+// octagons, kinked polygons, needles and stubs) touching at those gaps.
 std::vector<FlatFamily> flat_families();
 
 struct FlatCase {

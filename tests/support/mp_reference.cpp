@@ -438,6 +438,13 @@ std::pair<Real, Real> half_widths(const Shape& s) {
 
 Aabb bounding_box(const Shape& s) {
   const Point c = to_mp(center_of(s));
+  if (const auto* g = std::get_if<Segment>(&s)) {  // its two points' box
+    const Frame f = frame_of(g->center, g->angle);
+    const Real ex(g->end.x()), ey(g->end.y());
+    const Real x = c.x + f.c * ex - f.s * ey, y = c.y + f.s * ex + f.c * ey;
+    return {Vec2(rounded(std::min(c.x, x), true), rounded(std::min(c.y, y), true)),
+            Vec2(rounded(std::max(c.x, x), false), rounded(std::max(c.y, y), false))};
+  }
   const auto [wx, wy] = half_widths(s);
   return {Vec2(rounded(c.x - wx, true), rounded(c.y - wy, true)),
           Vec2(rounded(c.x + wx, false), rounded(c.y + wy, false))};
@@ -463,6 +470,10 @@ Real distance_to(const Shape& s, const Point& p) {
     }
     const Real d = nearest - Real(poly->radius());
     return inside || d <= 0 ? Real(0) : d;
+  }
+  if (const auto* g = std::get_if<Segment>(&s)) {
+    const Point q = to_local(frame_of(g->center, g->angle), p);
+    return point_segment(q, {Real(0), Real(0)}, to_mp(g->end));
   }
   if (const auto* c = std::get_if<Circle>(&s)) return point_circle(*c, p);
   if (const auto* e = std::get_if<Ellipse>(&s)) return point_ellipse(*e, p);
@@ -499,7 +510,7 @@ namespace {
 template <class R>
 struct Dual {
   struct Side {
-    int kind;  // 0 circle, 1 ellipse, 2 rectangle, 3 capsule, 4 polygon
+    int kind;  // 0 circle, 1 ellipse, 2 rectangle, 3 capsule, 4 polygon or segment
     R c, s, p, q;
     std::vector<std::pair<R, R>> vertices;  // a polygon's
   };
@@ -514,6 +525,9 @@ struct Dual {
       Side out{4, c, s, R(0), R(x->radius()), {}};
       for (const Vec2& v : x->vertices()) out.vertices.emplace_back(R(v.x()), R(v.y()));
       return out;
+    }
+    if (const auto* x = std::get_if<Segment>(&shape)) {  // its two points, as a polygon's vertices
+      return {4, c, s, R(0), R(0), {{R(0), R(0)}, {R(x->end.x()), R(x->end.y())}}};
     }
     const auto& r = std::get<Rect>(shape);
     return {2, c, s, R(r.half_extents.x()), R(r.half_extents.y()), {}};
@@ -551,6 +565,10 @@ std::vector<double> axes_of(const Shape& s) {
       out.push_back(phi + std::atan2(-e.x(), e.y()));
       out.push_back(out.back() + std::numbers::pi);
     }
+    return out;
+  }
+  if (const auto* g = std::get_if<Segment>(&s)) {  // its normals and its direction, each way
+    for (int k = 0; k < 4; ++k) out.push_back(phi + std::atan2(g->end.y(), g->end.x()) + k * std::numbers::pi / 2);
     return out;
   }
   for (int k = 0; k < 4; ++k) out.push_back(phi + k * std::numbers::pi / 2);

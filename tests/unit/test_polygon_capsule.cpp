@@ -389,9 +389,9 @@ TYPED_TEST(CurvedOutline, AabbIsTight) {
   }
 }
 
-// Every query of query.h on the pairs with a polygon or a capsule: the same result bit for bit with
-// the pair swapped (features renamed, normal reversed), the distance 0 exactly when they overlap,
-// the contact's separation the distance when apart.
+// Every query of query.h on the pairs with a polygon, a capsule or a segment: the same result bit
+// for bit with the pair swapped (features renamed, normal reversed), the distance 0 exactly when
+// they overlap, the contact's separation the distance when apart.
 TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -408,13 +408,15 @@ TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
         return Ellipse{c, 0.3 + 2 * unit(rng), 0.2 + unit(rng), angle};
       case 3:
         return Capsule{c, 0.2 + unit(rng), 0.1 + unit(rng), angle};
+      case 6:
+        return Segment::between(c, c + Vec2(4 * unit(rng) - 2, 4 * unit(rng) - 2));
       default:
         return ConvexPolygon::of(kite, kind == 4 ? 0.0 : 0.2).at(c, angle);
     }
   };
   int apart = 0, overlapping = 0;
-  for (int k = 0; k < 3000; ++k) {
-    const int ka = 3 + k % 3, kb = (k / 3) % 6;
+  for (int k = 0; k < 4000; ++k) {
+    const int ka = 3 + k % 4, kb = (k / 4) % 6;
     const Shape a = random_shape(ka), b = random_shape(kb);
     const bool hit = overlaps(a, b);
     EXPECT_EQ(hit, overlaps(b, a));

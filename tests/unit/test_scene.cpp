@@ -25,9 +25,15 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
       {.pose = {Vec2(10, 30), 0.1},
        .shapes = {Capsule{Vec2(0, 0), 1.5, 0.25, 0.0}, ConvexPolygon::regular(5, 0.7, 0.1).at(Vec2(0, 1), 0.3)},
        .id = 1000});
+  // A static ledge of two segments, its points binary fractions so that each reads back exactly.
+  scene.bodies.push_back(
+      {.pose = {Vec2(40, 8), 0.0},
+       .shapes = {Segment::between(Vec2(-2, 0), Vec2(0.5, 0.25)), Segment::between(Vec2(0.5, 0.25), Vec2(3, 0))},
+       .id = 1001,
+       .is_static = true});
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
-  EXPECT_EQ(back.bodies.size(), 60u + level(60) + 2u);  // and the ship and the lamp
+  EXPECT_EQ(back.bodies.size(), 60u + level(60) + 3u);  // and the ship, the lamp and the ledge
   // One bullet per 500 bodies, continuous, and read back so.
   const Scene big = default_scene(1000, 10, 3);
   ASSERT_EQ(big.bodies.size(), 1002u + level(1000));
@@ -138,6 +144,14 @@ TEST(Scene, BrokenFilesNameTheField) {
        "bodies[0]: a capsule has no field 'a' (its own are half_length, radius and angle)"},
       {with_body(R"({"shape": "polygon", "center": [1, 1], "vertices": [[0, 0], [0, 1], [1, 0]]})"),
        "bodies[0]: polygon vertex 2 lies right of the edge from vertex 0 to 1"},
+      {with_body(R"({"shape": "segment", "points": [[0, 0], [1, 0]]})"),
+       "bodies[0]: a segment is level geometry: its body must be static (\"static\": true)"},
+      {with_body(R"({"shape": "segment", "center": [1, 1], "points": [[0, 0], [1, 0]], "static": true})"),
+       "bodies[0].center: a segment has no centre: its two points place it"},
+      {with_body(R"({"shape": "segment", "points": [[0, 0]], "static": true})"),
+       "bodies[0].points: expected two [x, y] points"},
+      {with_body(R"({"shape": "segment", "points": [[2, 1], [2, 1]], "static": true})"),
+       "bodies[0]: segment length must be positive (its two points are one) (got 0)"},
       {with_body(R"({"shape": "polygon", "center": [1, 1], "vertices": [[0, 0], [1]]})"),
        "bodies[0].vertices[1]: expected an array of 2 numbers"},
       {with_body(R"({"center": [1, 1], "radius": 1})"), "bodies[0].shape: missing"},

@@ -79,7 +79,8 @@ constexpr ShapeFields kShapeFields[] = {
     {"ellipse", {"a", "b", "angle"}, "a, b and angle"},
     {"rect", {"half_extents", "angle"}, "half_extents and angle"},
     {"capsule", {"half_length", "radius", "angle"}, "half_length, radius and angle"},
-    {"polygon", {"vertices", "radius", "angle"}, "vertices, radius and angle"}};
+    {"polygon", {"vertices", "radius", "angle"}, "vertices, radius and angle"},
+    {"segment", {"points"}, "points"}};
 
 bool listed(std::initializer_list<const char*> names, const std::string& key) {
   return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
@@ -118,12 +119,23 @@ Shape parse_polygon(const json& b, const std::string& field, const Vec2& center,
   }
 }
 
+// A segment's two points (in its body's frame, for a shape of several): it has no centre or angle of
+// its own, its first point being its frame's origin.
+Shape parse_segment(const json& b, const std::string& field) {
+  if (b.contains("center")) fail(field + ".center", "a segment has no centre: its two points place it");
+  const json& points = member(b, "points", field);
+  if (!points.is_array() || points.size() != 2)
+    fail(field + ".points", "expected two [x, y] points, got " + points.dump());
+  return Segment::between(vec2(points[0], field + ".points[0]"), vec2(points[1], field + ".points[1]"));
+}
+
 Shape parse_shape(const json& b, const std::string& field, std::initializer_list<const char*> others) {
   if (!b.is_object()) fail(field, "expected an object");
   const json& word = member(b, "shape", field);
   if (!word.is_string()) fail(field + ".shape", "expected a string, got " + word.dump());
   const std::string kind = word.get<std::string>();
   reject_unknown_fields(b, kind, field, others);
+  if (kind == "segment") return parse_segment(b, field);
   const Vec2 center = vec2(member(b, "center", field), field + ".center");
   const double angle = optional_number(b, "angle", field, 0.0);
   if (kind == "circle") {
@@ -152,7 +164,7 @@ Shape parse_shape(const json& b, const std::string& field, std::initializer_list
     return Capsule{center, h, r, angle};
   }
   if (kind == "polygon") return parse_polygon(b, field, center, angle);
-  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule or polygon)");
+  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule, polygon or segment)");
 }
 
 // A shape the library takes: the ranges it supports.
@@ -222,6 +234,9 @@ SceneBody parse_body(const json& b, std::size_t index) {
     fail(field, "a static body does not move: remove its velocity and angular_velocity");
   }
   if (body.is_static && body.continuous) fail(field, "a static body cannot be continuous");
+  const auto segment = [](const Shape& s) { return std::holds_alternative<Segment>(s); };
+  if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), segment))
+    fail(field, "a segment is level geometry: its body must be static (\"static\": true)");
   body.filter.category = bits(b, "category", field, body.filter.category);
   body.filter.mask = bits(b, "mask", field, body.filter.mask);
   if (const auto it = b.find("group"); it != b.end()) {
@@ -238,7 +253,10 @@ json shape_json(const Shape& s) {
       [](const auto& x) -> json {
         using T = std::decay_t<decltype(x)>;
         json j{{"center", {x.center.x(), x.center.y()}}};
-        if constexpr (std::is_same_v<T, Circle>) {
+        if constexpr (std::is_same_v<T, Segment>) {
+          const Vec2 to = x.point2();
+          return {{"shape", "segment"}, {"points", {{x.center.x(), x.center.y()}, {to.x(), to.y()}}}};
+        } else if constexpr (std::is_same_v<T, Circle>) {
           j["shape"] = "circle";
           j["radius"] = x.radius;
         } else if constexpr (std::is_same_v<T, Ellipse>) {
@@ -285,6 +303,7 @@ bool same_shape(const Shape& a, const Shape& b) {
           return x.center == y.center && x.angle == y.angle && x.radius() == y.radius() &&
                  std::equal(x.vertices().begin(), x.vertices().end(), y.vertices().begin(), y.vertices().end());
         }
+        if constexpr (std::is_same_v<T, Segment>) return x.center == y.center && x.end == y.end && x.angle == y.angle;
       },
       a);
 }

@@ -197,6 +197,7 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   out << ".body.hit{fill:#e74c3c;stroke:#7b241c}"
          ".static{fill:#5d6d7e;stroke:#1c2833;vector-effect:non-scaling-stroke;stroke-width:0.5}"
          ".static.hit{fill:#943126}"
+         "line.static{stroke-width:1.5}"
          ".sensor{fill:none;stroke:#b9770e;vector-effect:non-scaling-stroke;stroke-width:1.5;stroke-dasharray:6 4}"
          ".sensor.sensing{fill:#f8c471;fill-opacity:0.35}"
          ".near{fill:none;stroke:#1e8449;vector-effect:non-scaling-stroke;stroke-width:1}"

@@ -50,6 +50,10 @@ void svg_shape(std::ostream& out, const Shape& s, const char* css) {
           out << "<rect class=\"" << css << "\" x=\"" << cx - x.half_extents.x() << "\" y=\"" << cy - x.half_extents.y()
               << "\" width=\"" << 2 * x.half_extents.x() << "\" height=\"" << 2 * x.half_extents.y()
               << "\" transform=\"rotate(" << degrees(x.angle) << ' ' << cx << ' ' << cy << ")\"/>\n";
+        } else if constexpr (std::is_same_v<T, Segment>) {
+          const Vec2 to = x.point2();
+          out << "<line class=\"" << css << "\" x1=\"" << cx << "\" y1=\"" << cy << "\" x2=\"" << to.x() << "\" y2=\""
+              << to.y() << "\"/>\n";
         } else if constexpr (std::is_same_v<T, Capsule>) {
           const double h = x.half_length, r = x.radius;
           out << "<rect class=\"" << css << "\" x=\"" << cx - h - r << "\" y=\"" << cy - r << "\" width=\""
