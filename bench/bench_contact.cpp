@@ -207,6 +207,25 @@ BENCHMARK(box2d<Capsule, Ellipse>)
     ->Name("box2d_collide_polygons/capsule_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
 
+// A segment (Box2D's two-sided b2EdgeShape) against the flat kinds, a circle and an ellipse.
+BENCHMARK(ours_shape<Segment, ConvexPolygon>)->Name("ours/segment_polygon")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Segment, ConvexPolygon, true>)
+    ->Name("ours/segment_polygon_limited")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<Segment, ConvexPolygon>)
+    ->Name("box2d_collide_edge_and_polygon/segment_polygon")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Segment, Circle>)->Name("ours/segment_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Segment, Circle, true>)->Name("ours/segment_circle_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<Segment, Circle>)
+    ->Name("box2d_collide_edge_and_circle/segment_circle")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Segment, Ellipse>)->Name("ours/segment_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_shape<Segment, Ellipse, true>)->Name("ours/segment_ellipse_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d<Segment, Ellipse>)
+    ->Name("box2d_collide_edge_and_polygon/segment_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
+
 }  // namespace
 }  // namespace collide2d
 

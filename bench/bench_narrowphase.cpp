@@ -218,6 +218,14 @@ BENCHMARK(batch_overlap<Capsule, Ellipse>)->Name("batch_overlap/capsule_ellipse"
 BENCHMARK(box2d_batch_overlap<Capsule, Ellipse>)
     ->Name("box2d_batch_overlap/capsule_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
+BENCHMARK(posed_overlap<Segment, ConvexPolygon>)
+    ->Name("posed_overlap/segment_polygon")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<Segment, ConvexPolygon>)
+    ->Name("box2d_overlap/segment_polygon")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(posed_overlap<Segment, Ellipse>)->Name("posed_overlap/segment_ellipse")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_overlap<Segment, Ellipse>)->Name("box2d_overlap/segment_ellipse_8gon")->Apply(bench::polygon_workloads);
 BENCHMARK(posed_overlap<Capsule, Circle>)->Name("posed_overlap/capsule_circle")->Apply(bench::polygon_workloads);
 BENCHMARK(box2d_overlap<Capsule, Circle>)->Name("box2d_overlap/capsule_circle")->Apply(bench::polygon_workloads);
 BENCHMARK(batch_overlap<Capsule, Circle>)->Name("batch_overlap/capsule_circle")->Apply(bench::polygon_workloads);

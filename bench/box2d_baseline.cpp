@@ -62,6 +62,9 @@ Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin) {
   if (const auto* c = std::get_if<Circle>(&shape))
     return {{to_float(c->center - origin)}, static_cast<float>(c->radius)};
   if (const auto* c = std::get_if<Capsule>(&shape)) return capsule_polygon(*c, origin);
+  if (const auto* g = std::get_if<Segment>(&shape)) {
+    return {{to_float(g->point1() - origin), to_float(g->point2() - origin)}, 0.0f};
+  }
   if (const auto* q = std::get_if<ConvexPolygon>(&shape)) {
     if (q->radius() != 0.0) throw std::invalid_argument("Box2D 2.4.1 has no rounded polygons");
     Polygon p;
@@ -93,7 +96,11 @@ double box2d_distance(const Polygon& a, const Polygon& b) {
 Box2dShape to_box2d_shape(const Polygon& p) {
   Box2dShape out;
   out.round = p.vertices.size() == 1;
-  if (out.round) {
+  out.is_edge = p.vertices.size() == 2;
+  if (out.is_edge) {
+    out.edge.SetTwoSided(p.vertices[0], p.vertices[1]);
+    out.edge.m_radius = p.radius;  // no skin, as the polygons
+  } else if (out.round) {
     out.circle.m_p = p.vertices[0];
     out.circle.m_radius = p.radius;
   } else {
@@ -128,7 +135,14 @@ void box2d_manifold(const ShapePair& pair, b2Manifold* manifold) {
   identity.SetIdentity();
   const Box2dShape& a = pair.side[0];
   const Box2dShape& b = pair.side[1];
-  if (a.round && b.round) {
+  if (a.is_edge || b.is_edge) {
+    const Box2dShape &edge = a.is_edge ? a : b, &other = a.is_edge ? b : a;
+    if (other.round) {
+      b2CollideEdgeAndCircle(manifold, &edge.edge, identity, &other.circle, identity);
+    } else {
+      b2CollideEdgeAndPolygon(manifold, &edge.edge, identity, &other.polygon, identity);
+    }
+  } else if (a.round && b.round) {
     b2CollideCircles(manifold, &a.circle, identity, &b.circle, identity);
   } else if (b.round) {
     b2CollidePolygonAndCircle(manifold, &a.polygon, identity, &b.circle, identity);
@@ -143,7 +157,7 @@ std::optional<Box2dContact> box2d_contact(const ShapePair& pair) {
   b2Manifold manifold;
   box2d_manifold(pair, &manifold);
   if (manifold.pointCount == 0) return std::nullopt;
-  const bool swapped = pair.side[0].round && !pair.side[1].round;
+  const bool swapped = pair.side[1].is_edge ? !pair.side[0].is_edge : pair.side[0].round && !pair.side[1].round;
   const int first = swapped ? 1 : 0;
   b2Transform identity;
   identity.SetIdentity();

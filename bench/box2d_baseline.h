@@ -19,6 +19,7 @@
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_time_of_impact.h>
 
@@ -45,19 +46,25 @@ b2AABB to_box2d(const Aabb& box);
 inline constexpr double kCapsuleBoxHalfWidth = 0.003;
 
 // `sides` applies to ellipses (any N >= 3); rectangles have 4 vertices and circles are exact; a
-// capsule is a box of half extents (h + w, w) rounded by r - w, within 0.42 w = 0.0013 of it.
+// capsule is a box of half extents (h + w, w) rounded by r - w, within 0.42 w = 0.0013 of it; a
+// segment is its two points (a two-sided b2EdgeShape).
 Polygon to_box2d(const Shape& shape, int sides, Fit fit, const Vec2& origin);
 
 // b2Distance between the two polygons (their radii included), in double.
 double box2d_distance(const Polygon& a, const Polygon& b);
 
 // One shape as a b2PolygonShape with the polygon's radius (at most b2_maxPolygonVertices = 8
-// vertices), or a circle as a b2CircleShape.
+// vertices), a circle as a b2CircleShape, or a segment as a two-sided b2EdgeShape.
 struct Box2dShape {
   b2PolygonShape polygon;
   b2CircleShape circle;
+  b2EdgeShape edge;
   bool round = false;
-  const b2Shape* shape() const { return round ? static_cast<const b2Shape*>(&circle) : &polygon; }
+  bool is_edge = false;
+  const b2Shape* shape() const {
+    if (is_edge) return &edge;
+    return round ? static_cast<const b2Shape*>(&circle) : &polygon;
+  }
 };
 Box2dShape to_box2d_shape(const Polygon& p);
 
@@ -72,9 +79,10 @@ bool box2d_overlap(const ShapePair& pair);
 // pairs, the rival of collide2d's batches. overlapping[i] is 1 or 0.
 void box2d_overlaps(std::span<const ShapePair> pairs, std::span<std::uint8_t> overlapping);
 
-// Box2D's contact manifold for the pair: b2CollidePolygons, b2CollidePolygonAndCircle or
-// b2CollideCircles by kind (a circle first is passed second, so the manifold is then B's against
-// A's). With radius-0 polygons Box2D keeps only points that overlap or touch.
+// Box2D's contact manifold for the pair: b2CollidePolygons, b2CollidePolygonAndCircle,
+// b2CollideCircles, b2CollideEdgeAndPolygon or b2CollideEdgeAndCircle by kind (a circle first is
+// passed second, and an edge second first, so the manifold is then B's against A's). With radius-0
+// polygons Box2D keeps only points that overlap or touch.
 void box2d_manifold(const ShapePair& pair, b2Manifold* manifold);
 // box2d_manifold on every pair of the list, in one loop (the rival of the batched contacts).
 void box2d_manifolds(std::span<const ShapePair> pairs, std::span<b2Manifold> manifolds);

@@ -73,6 +73,14 @@ struct Generator {
     const double h = size();
     c = Capsule{center(), h, h / uniform(1, 4), uniform(0, 6.3)};
   }
+  // A segment of half length size() through a random centre.
+  void make(Segment& s) {
+    const double h = size();
+    const Vec2 c = center();
+    const double t = uniform(0, 6.3);
+    const Vec2 d(std::cos(t), std::sin(t));
+    s = Segment::between(c - h * d, c + h * d);
+  }
   // A convex 8-gon: vertices on an ellipse of aspect up to 2, each within a sixteenth of a turn of
   // its regular place.
   void make(ConvexPolygon& p) {
@@ -193,8 +201,8 @@ inline void contact_workloads(benchmark::internal::Benchmark* b) {
   workloads(b);
   b->Arg(3)->Arg(4);
 }
-// The built-in scene has no polygons or capsules: pairs with one run on the random pairs (0), the
-// generator's candidates (1) and the overlapping ones among them (3).
+// The built-in scene has no polygons, capsules or segments: pairs with one run on the random pairs
+// (0), the generator's candidates (1) and the overlapping ones among them (3).
 inline void polygon_workloads(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(0)->Arg(1)->Arg(3); }
 
 }  // namespace collide2d::bench

@@ -132,6 +132,9 @@ Contact contact_kernel(const ConvexPolygon& a, const O& oa, const Circle& b, con
 Contact contact_kernel(const Capsule& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
   return contact_capsule_circle(a, oa, b, o);
 }
+Contact contact_kernel(const Segment& a, const O& oa, const Circle& b, const O&, const ContactOptions& o, bool) {
+  return contact_segment_circle(a, oa, b, o);
+}
 
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 

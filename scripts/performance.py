@@ -43,6 +43,8 @@ OVERLAP = [
     ('capsule–circle, batch', 'batch_overlap/capsule_circle/candidates:{w}', 'box2d_batch_overlap/capsule_circle/candidates:{w}'),
     ('capsule–ellipse vs 8-gon, one pair', 'posed_overlap/capsule_ellipse/candidates:{w}', 'box2d_overlap/capsule_ellipse_8gon/candidates:{w}'),
     ('capsule–ellipse vs 8-gon, batch', 'batch_overlap/capsule_ellipse/candidates:{w}', 'box2d_batch_overlap/capsule_ellipse_8gon/candidates:{w}'),
+    ('segment–polygon (8-gon), one pair', 'posed_overlap/segment_polygon/candidates:{w}', 'box2d_overlap/segment_polygon/candidates:{w}'),
+    ('segment–ellipse vs 8-gon, one pair', 'posed_overlap/segment_ellipse/candidates:{w}', 'box2d_overlap/segment_ellipse_8gon/candidates:{w}'),
 ]
 DISTANCE = [
     ('ellipse–ellipse vs 8-gons', 'posed_distance_ellipse_ellipse/candidates:{w}', 'box2d_distance_ellipse_ellipse/candidates:{w}/sides:8'),
@@ -77,6 +79,12 @@ CONTACT = [
     ('capsule–circle, one pair, max_separation 0', 'ours/capsule_circle_limited/candidates:{w}', 'box2d_collide_polygon_and_circle/capsule_circle/candidates:{w}'),
     ('capsule–ellipse vs 8-gon, one pair', 'ours/capsule_ellipse/candidates:{w}', 'box2d_collide_polygons/capsule_ellipse_8gon/candidates:{w}'),
     ('capsule–ellipse vs 8-gon, one pair, max_separation 0', 'ours/capsule_ellipse_limited/candidates:{w}', 'box2d_collide_polygons/capsule_ellipse_8gon/candidates:{w}'),
+    ('segment–polygon (8-gon), one pair', 'ours/segment_polygon/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_polygon/candidates:{w}'),
+    ('segment–polygon (8-gon), one pair, max_separation 0', 'ours/segment_polygon_limited/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_polygon/candidates:{w}'),
+    ('segment–circle, one pair', 'ours/segment_circle/candidates:{w}', 'box2d_collide_edge_and_circle/segment_circle/candidates:{w}'),
+    ('segment–circle, one pair, max_separation 0', 'ours/segment_circle_limited/candidates:{w}', 'box2d_collide_edge_and_circle/segment_circle/candidates:{w}'),
+    ('segment–ellipse vs 8-gon, one pair', 'ours/segment_ellipse/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_ellipse_8gon/candidates:{w}'),
+    ('segment–ellipse vs 8-gon, one pair, max_separation 0', 'ours/segment_ellipse_limited/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_ellipse_8gon/candidates:{w}'),
 ]
 TOI = [
     ('ellipse–ellipse translating vs 8-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_8gons'),
@@ -350,8 +358,8 @@ Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (
 `b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/workload.h).
 Box2D 2.4.1 has no capsule: its nearest equivalent is a box rounded by a radius
 (`b2PolygonShape::m_radius`), of half extents (h + 0.003, 0.003) and radius r - 0.003, within
-0.0013 of the capsule (bench/box2d_baseline.h). The scene has no polygons or capsules, so their
-rows are the random and candidate pairs.
+0.0013 of the capsule (bench/box2d_baseline.h). A segment is a two-sided `b2EdgeShape`. The scene
+has no polygons, capsules or segments, so their rows are the random and candidate pairs.
 
 {table(OVERLAP, med, WORKLOADS)}
 
@@ -364,9 +372,10 @@ Box2D: `b2Distance` on the ellipses' inscribed N-gons.
 ## Contacts
 
 Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons (a
-capsule its rounded box, as above); its manifold is empty for pairs apart, where collide2d's
-contact carries the exact distance and normal. The scene has no polygons or capsules: their rows
-have no scene columns.
+capsule its rounded box, as above), `b2CollideEdgeAndPolygon` and `b2CollideEdgeAndCircle` on a
+segment's two-sided edge; its manifold is empty for pairs apart, where collide2d's contact carries
+the exact distance and normal. The scene has no polygons, capsules or segments: their rows have no
+scene columns.
 
 {table(CONTACT, med, CONTACT_WORKLOADS)}
 

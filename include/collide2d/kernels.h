@@ -80,6 +80,10 @@ Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orie
 Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options = {});
 Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options = {});
+/// A segment and a circle: the same, on the segment.
+Contact contact_segment_circle(const Segment& a, const Circle& b, const ContactOptions& options = {});
+Contact contact_segment_circle(const Segment& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options = {});
 Contact contact_circle_circle(const Circle& a, const Circle& b);
 Contact contact_circle_circle(const Circle& a, const Circle& b, const ContactOptions& options);
 Contact contact_circle_ellipse(const Circle& a, const Ellipse& b, const ContactOptions& options = {});

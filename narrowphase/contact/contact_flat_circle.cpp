@@ -1,5 +1,5 @@
-// A polygon or a capsule against a circle: one kernel on the flat shape's core (its vertices and
-// face normals in its own frame; a capsule's segment has two faces, one each way).
+// A polygon, a capsule or a segment against a circle: one kernel on the flat shape's core (its
+// vertices and face normals in its own frame; a segment has two faces, one each way).
 #include <collide2d/kernels.h>
 
 #include "narrowphase/contact/contact_limit.h"
@@ -113,6 +113,21 @@ Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientatio
 
 Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options) {
   return contact_capsule_circle(a, Orientation::of(a.angle), b, options);
+}
+
+// The segment from its frame's origin to its end; its faces' lines pass through the origin.
+Contact contact_segment_circle(const Segment& a, const Orientation& a_orientation, const Circle& b,
+                               const ContactOptions& options) {
+  const std::array<Vec2, 2> ends{Vec2::Zero(), a.end};
+  const Vec2 d = a.end.normalized(), right(d.y(), -d.x());
+  const std::array<Vec2, 2> normals{right, -right};
+  const detail::Discs discs = detail::discs_of(a);
+  return core_circle(a, CoreView<2>{ends.data(), normals.data(), kSegmentOffsets.data(), 2, 0.0, discs.reach},
+                     a_orientation, b, options);
+}
+
+Contact contact_segment_circle(const Segment& a, const Circle& b, const ContactOptions& options) {
+  return contact_segment_circle(a, Orientation::of(a.angle), b, options);
 }
 
 }  // namespace collide2d

@@ -358,5 +358,45 @@ TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
   EXPECT_GT(overlapping, 100);
 }
 
+// A segment is Box2D's two-sided b2EdgeShape, exactly: apart from a polygon or a circle, b2Distance
+// is our distance; overlapping a circle, b2CollideEdgeAndCircle's depth is ours; overlapping a
+// polygon, b2CollideEdgeAndPolygon's deepest point is ours where it pushes the polygon out on the
+// same side and keeps that point (it takes the side of the polygon's centroid, which may be the
+// deeper way out, and it may clip the deepest point away).
+TEST(Box2dBracket, SegmentsMatchBox2dsEdgesWithinFloatError) {
+  std::mt19937_64 rng(57);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto others = polygon_pairs(3000, 59);
+  int apart = 0, overlapping = 0, polygons_overlapping = 0, deepest_kept = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Vec2 p(3 * u(rng), 3 * u(rng));
+    const Shape a = Segment::between(p, p + Vec2(4 * u(rng) - 2, 4 * u(rng) - 2));
+    const Shape placed = k % 2 == 0 ? others[k].first : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + 0.5 * u(rng)});
+    const auto [pa, pb] = box2d_pair(a, placed, 8, Fit::inscribed);
+    const Contact c = contact(a, placed);
+    if (c.separation > 0) {
+      ASSERT_NEAR(baseline::box2d_distance(pa, pb), c.separation, kFloatTolerance) << describe_pair(a, placed);
+      ++apart;
+      continue;
+    }
+    if (c.separation > -kFloatTolerance) continue;  // touching to Box2D's rounding: it may keep no point
+    const auto box2d = baseline::box2d_contact(baseline::to_box2d_shapes(pa, pb));
+    ASSERT_TRUE(box2d) << describe_pair(a, placed);
+    ++overlapping;
+    if (std::holds_alternative<Circle>(placed)) {
+      ASSERT_NEAR(box2d->separation, c.separation, kFloatTolerance) << describe_pair(a, placed);
+    } else {
+      ++polygons_overlapping;
+      deepest_kept += std::abs(box2d->separation - c.separation) <= kFloatTolerance;
+    }
+  }
+  std::printf(
+      "[box2d bracket] segments: %d apart, %d overlapping; polygon pairs' deepest point kept by Box2D in %d of %d\n",
+      apart, overlapping, deepest_kept, polygons_overlapping);
+  EXPECT_GT(apart, 1000);
+  EXPECT_GT(overlapping, 300);
+  EXPECT_GT(deepest_kept, polygons_overlapping * 9 / 10);
+}
+
 }  // namespace
 }  // namespace collide2d

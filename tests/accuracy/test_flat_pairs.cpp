@@ -35,8 +35,8 @@ constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 Orientation orientation_of(const Shape& s) { return Orientation::of(angle_of(s)); }
 
-// The kernels under test for a pair: two cores, or a core and an ellipse (B); a polygon's or a
-// capsule's contact with a circle, its typed kernel.
+// The kernels under test for a pair: two cores, or a core and an ellipse (B); a polygon's, a
+// capsule's or a segment's contact with a circle, its typed kernel.
 struct Kernels {
   std::function<Contact(const ContactOptions&)> contact;
   std::function<DistanceResult()> distance;
@@ -83,6 +83,11 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
   if (const auto* capsule = std::get_if<Capsule>(&a); capsule && circle) {
     out.contact = [x = *capsule, y = *circle](const ContactOptions& o) {
       return contact_capsule_circle(x, orientation_of(x), y, o);
+    };
+  }
+  if (const auto* segment = std::get_if<Segment>(&a); segment && circle) {
+    out.contact = [x = *segment, y = *circle](const ContactOptions& o) {
+      return contact_segment_circle(x, orientation_of(x), y, o);
     };
   }
   return out;
@@ -294,15 +299,16 @@ TEST(FlatPairs, KnownSeparations) {
   EXPECT_NEAR(c.separation, 3 - 1e-9 * std::cos(0.7) - 2.5, 8 * kU * 3);
 }
 
-// The polygon–circle and capsule–circle kernels (the centre's Voronoi regions) against the cores'
-// contact (separating axes, then the nearest of every vertex–edge pair): the same separation,
-// normal, points and feature, on every polygon–circle and capsule–circle family; with the contact
+// The polygon–circle, capsule–circle and segment–circle kernels (the centre's Voronoi regions)
+// against the cores' contact (separating axes, then the nearest of every vertex–edge pair): the same
+// separation, normal, points and feature, on every polygon–, capsule– and segment–circle family; with the contact
 // limited, the same contact or both beyond the limit, each by a lower bound of the separation (the
 // two may find different ones).
 TEST(FlatPairs, CircleKernelsAreTheCoresContact) {
   int compared = 0;
   for (const FlatFamily& f : flat_families()) {
-    if (f.b != Flat::circle || !(is_one_of(testing::kPolygonKinds, f.a) || is_one_of(testing::kCapsuleKinds, f.a))) {
+    const bool flat = is_one_of(testing::kPolygonKinds, f.a) || is_one_of(testing::kCapsuleKinds, f.a);
+    if (f.b != Flat::circle || !(flat || f.a == Flat::segment)) {
       continue;
     }
     for (const FlatCase& c : cases_of(f)) {
@@ -314,7 +320,8 @@ TEST(FlatPairs, CircleKernelsAreTheCoresContact) {
               using X = std::decay_t<decltype(x)>;
               if constexpr (std::is_same_v<X, ConvexPolygon>) return contact_polygon_circle(x, orientation_of(x), y, o);
               if constexpr (std::is_same_v<X, Capsule>) return contact_capsule_circle(x, orientation_of(x), y, o);
-              throw std::logic_error("not a polygon or a capsule");
+              if constexpr (std::is_same_v<X, Segment>) return contact_segment_circle(x, orientation_of(x), y, o);
+              throw std::logic_error("not a polygon, a capsule or a segment");
             },
             c.a);
         const Contact want = detail::core_contact(pair_of(c.a, c.b), o);

@@ -306,21 +306,24 @@ std::vector<ToiFamily> toi_families() {
   const auto turn = [&] { return 6.283185307179586 * u(rng); };
   const auto unit = [](double angle) { return Vec2(std::cos(angle), std::sin(angle)); };
   std::vector<ToiFamily> out;
-  // Bullets (radius r) at 10 to 1e6 of their size per step through a turned wall 10 sizes thick,
-  // at scales 1e-6, 1 and 1e6 and offsets 0 and 1e6.
-  for (const auto& [scale, offset] : {std::pair{1.0, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1.0, 1e6}}) {
-    char name[64];
-    std::snprintf(name, sizeof name, "bullets, size %g, offset %g", scale, offset);
-    ToiFamily f{name, {}};
-    for (const double sizes : {10.0, 1e2, 1e3, 1e4, 1e5, 1e6}) {
-      const double r = 0.001 * scale, angle = turn(), speed = sizes * 2 * r;
-      const Vec2 c = Vec2::Constant(offset), normal = unit(angle);
-      const Vec2 along(-normal.y(), normal.x());
-      const Rect wall{c, {0.01 * scale, scale}, angle};
-      const Circle bullet{c - (speed / 2) * normal + (0.5 * scale * (u(rng) - 0.5)) * along, r};
-      f.cases.push_back({wall, {}, bullet, {speed * normal, 0}, 1e-12 * scale, false});
+  // Bullets (radius r) at 10 to 1e6 of their size per step through a turned wall 10 sizes thick, then
+  // through a segment (a wall of no thickness), at scales 1e-6, 1 and 1e6 and offsets 0 and 1e6.
+  for (const bool segment : {false, true}) {
+    for (const auto& [scale, offset] : {std::pair{1.0, 0.0}, {1e-6, 0.0}, {1e6, 0.0}, {1.0, 1e6}}) {
+      char name[64];
+      std::snprintf(name, sizeof name, "bullets%s, size %g, offset %g", segment ? " at a segment" : "", scale, offset);
+      ToiFamily f{name, {}};
+      for (const double sizes : {10.0, 1e2, 1e3, 1e4, 1e5, 1e6}) {
+        const double r = 0.001 * scale, angle = turn(), speed = sizes * 2 * r;
+        const Vec2 c = Vec2::Constant(offset), normal = unit(angle);
+        const Vec2 along(-normal.y(), normal.x());
+        const Shape wall = segment ? Shape(Segment::between(c - scale * along, c + scale * along))
+                                   : Shape(Rect{c, {0.01 * scale, scale}, angle});
+        const Circle bullet{c - (speed / 2) * normal + (0.5 * scale * (u(rng) - 0.5)) * along, r};
+        f.cases.push_back({wall, {}, bullet, {speed * normal, 0}, 1e-12 * scale, false});
+      }
+      out.push_back(f);
     }
-    out.push_back(f);
   }
   // Needles of aspect 1e3 crossing a needle at 10 to 1e6 of their width per step.
   ToiFamily needles{"needles crossing", {}};
@@ -408,7 +411,7 @@ TEST(TimeOfImpact, MatchesTheReferenceOnEveryFamily) {
       if (!c.grazing) EXPECT_GE(got.t, ref->apart - 1e-9 - resolution) << what;
       earliest = std::max(earliest, ref->apart - got.t);
     }
-    std::printf("[toi] %-34s %2d hits %2d misses, worst %.1e before the reference's bracket, at most %d steps\n",
+    std::printf("[toi] %-44s %2d hits %2d misses, worst %.1e before the reference's bracket, at most %d steps\n",
                 f.name.c_str(), hits, misses, earliest, most);
   }
 }
