@@ -32,9 +32,8 @@ constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, 
 // A polygon or a capsule (not a segment: level geometry, tested one pair at a time) with a circle or
 // an ellipse.
 template <class X, class Y>
-constexpr bool core_with_round = (std::is_same_v<X, ConvexPolygon> ||
-                                  std::is_same_v<X, Capsule>)&&(std::is_same_v<Y, Circle> ||
-                                                                std::is_same_v<Y, Ellipse>);
+constexpr bool core_with_round =
+    on_cores<X> && !std::is_same_v<X, Segment> && (std::is_same_v<Y, Circle> || std::is_same_v<Y, Ellipse>);
 
 // Whether the batched overlap tests (batch.h) take the pair of kinds, either way round: any two of
 // rectangles, circles and ellipses, a polygon or a capsule with a circle or an ellipse, and two

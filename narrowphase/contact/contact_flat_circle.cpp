@@ -120,9 +120,8 @@ Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactO
 // The segment from its frame's origin to its end; its faces' lines pass through the origin.
 Contact contact_segment_circle(const Segment& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options) {
-  const std::array<Vec2, 2> ends{Vec2::Zero(), a.end};
-  const Vec2 d = a.end.normalized(), right(d.y(), -d.x());
-  const std::array<Vec2, 2> normals{right, -right};
+  const std::array<Vec2, 2> ends = detail::segment_of(a);
+  const std::array<Vec2, 4> normals = detail::segment_normals(a);  // the faces' two first
   const detail::Discs discs = detail::discs_of(a);
   return core_circle(a, CoreView<2>{ends.data(), normals.data(), kSegmentOffsets.data(), 2, 0.0, discs.reach},
                      a_orientation, b, options);

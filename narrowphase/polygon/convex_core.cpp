@@ -470,14 +470,9 @@ Core core_of(const Capsule& c, const Placement& at) {
   return make(2, segment_of(c), n, c.radius, discs_of(c), at);
 }
 
-// A segment's core is a capsule's of radius 0 from its frame's origin: its faces' normals the
-// direction's two perpendiculars, in the same slots.
+// A segment's core is a capsule's of radius 0 from its frame's origin.
 Core core_of(const Segment& s, const Placement& at) {
-  const Vec2 d = s.end.normalized();
-  const Vec2 right(d.y(), -d.x());
-  const Vec2 n[] = {right, -right, d, -d};
-  const Vec2 ends[] = {Vec2::Zero(), s.end};
-  return make(2, ends, n, 0.0, discs_of(s), at);
+  return make(2, segment_of(s), segment_normals(s), 0.0, discs_of(s), at);
 }
 
 Core core_of(const Circle& c, const Placement& at) {

@@ -142,6 +142,14 @@ inline std::optional<double> discs_beyond(const Vec2& offset, double reaches, co
 inline std::array<Vec2, 2> segment_of(const Capsule& c) { return {Vec2(-c.half_length, 0), Vec2(c.half_length, 0)}; }
 // Its two faces' outward normals: from the first end to the second, and back.
 inline std::array<Vec2, 2> segment_normals() { return {Vec2(0, -1), Vec2(0, 1)}; }
+// A segment's core: its two points in its own frame, the first at the origin.
+inline std::array<Vec2, 2> segment_of(const Segment& s) { return {Vec2::Zero(), s.end}; }
+// Its normals in the slots a core keeps them (Core::n): its two faces' outward normals (right of its
+// direction, then left), then its direction from the first point to the second, and back.
+inline std::array<Vec2, 4> segment_normals(const Segment& s) {
+  const Vec2 d = s.end.normalized(), right(d.y(), -d.x());
+  return {right, -right, d, -d};
+}
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first

@@ -146,7 +146,7 @@ std::optional<RayShapeHit> cast(const Segment& s, const Vec2& origin, const Vec2
   const double sign = cross(e, d) < 0.0 ? -1.0 : 1.0;
   const double denominator = sign * cross(e, d), along = sign * cross(o, d), t = sign * cross(o, e);
   if (!(denominator > 0.0) || along < 0.0 || along > denominator || t < 0.0) return std::nullopt;
-  const Vec2 right = Vec2(e.y(), -e.x()).normalized();
+  const Vec2 right = detail::segment_normals(s)[0];
   const Vec2 normal = right.dot(d) > 0.0 ? Vec2(-right) : right;
   return hit_at(t / denominator, origin, direction, rot.apply(normal), max_distance);
 }

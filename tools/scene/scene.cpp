@@ -252,11 +252,12 @@ json shape_json(const Shape& s) {
   return std::visit(
       [](const auto& x) -> json {
         using T = std::decay_t<decltype(x)>;
-        json j{{"center", {x.center.x(), x.center.y()}}};
-        if constexpr (std::is_same_v<T, Segment>) {
+        if constexpr (std::is_same_v<T, Segment>) {  // no centre of its own: its two points
           const Vec2 to = x.point2();
           return {{"shape", "segment"}, {"points", {{x.center.x(), x.center.y()}, {to.x(), to.y()}}}};
-        } else if constexpr (std::is_same_v<T, Circle>) {
+        }
+        json j{{"center", {x.center.x(), x.center.y()}}};
+        if constexpr (std::is_same_v<T, Circle>) {
           j["shape"] = "circle";
           j["radius"] = x.radius;
         } else if constexpr (std::is_same_v<T, Ellipse>) {
@@ -273,7 +274,7 @@ json shape_json(const Shape& s) {
           j["half_length"] = x.half_length;
           j["radius"] = x.radius;
           j["angle"] = x.angle;
-        } else {
+        } else if constexpr (std::is_same_v<T, ConvexPolygon>) {
           j["shape"] = "polygon";
           j["vertices"] = json::array();
           for (const Vec2& v : x.vertices()) j["vertices"].push_back({v.x(), v.y()});
