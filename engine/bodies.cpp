@@ -223,12 +223,12 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   p.sensor = def.sensor.value_or(b.sensor);
   p.is_static = b.is_static;
   p.continuous = b.continuous;
+  p.chain = false;
   p.alive = true;
   set_local(index, def.shape);
   if (b.continuous) continuous_.push_back(index);
-  std::uint32_t* link = &b.first;
-  while (*link != kNone) link = &parts_[*link].next;
-  *link = index;
+  (b.first == kNone ? b.first : parts_[b.last].next) = index;
+  b.last = index;
   ++b.count;
   enter(index);
   return index;
@@ -244,6 +244,14 @@ void WorldState::free_part(std::uint32_t index) {
 }
 
 namespace {
+
+// A chain changes only whole: its segments' ghosts name their neighbours.
+void require_not_chain(bool chain, ShapeId id, const char* call) {
+  if (chain) {
+    throw std::invalid_argument(std::string(call) + ": shape " + std::to_string(id.index) +
+                                " is a chain's segment; a chain changes only whole (remove its body)");
+  }
+}
 
 // A segment is level geometry: its body must be static (BodyDef::is_static).
 void require_static_for(const Shape& shape, bool is_static, const char* call) {
@@ -271,10 +279,34 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
   b.continuous = false;
   b.alive = true;
   b.first = kNone;
+  b.last = kNone;
   b.count = 0;
   for (const ShapeDef& s : shapes) new_part(index, s);
   ++live_;
   return body_id(index);
+}
+
+BodyId WorldState::add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def) {
+  require_not_querying("add_chain");
+  const std::vector<ChainSegment> chain = chain_segments(points, loop);
+  if (!def.is_static) throw std::invalid_argument("add_chain: a chain is level geometry, and its body must be static");
+  std::vector<ShapeDef> defs;
+  defs.reserve(chain.size());
+  for (const ChainSegment& s : chain) defs.push_back({.shape = s.segment});
+  const BodyId id = add({}, defs, def);
+  ghosts_.resize(parts_.size());
+  auto next = chain.begin();
+  each_part(bodies_[id.index], [&](std::uint32_t k) {
+    parts_[k].chain = true;
+    ghosts_[k] = {next->ghost1, next->ghost2};
+    ++next;
+  });
+  return id;
+}
+
+std::optional<ChainSegment> WorldState::chain_segment(ShapeId id) const {
+  if (!part(id).chain) return std::nullopt;
+  return chain_of(id.index);
 }
 
 ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
@@ -287,14 +319,20 @@ ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
 
 void WorldState::remove_shape(ShapeId id) {
   require_not_querying("remove_shape");
+  require_not_chain(part(id).chain, id, "remove_shape");
   Body& b = bodies_[part(id).body.index];
   if (b.count == 1) {
     throw std::invalid_argument("remove_shape: shape " + std::to_string(id.index) +
                                 " is its body's last; remove the body instead");
   }
   std::uint32_t* link = &b.first;
-  while (*link != id.index) link = &parts_[*link].next;
+  std::uint32_t before = kNone;
+  while (*link != id.index) {
+    before = *link;
+    link = &parts_[*link].next;
+  }
   *link = parts_[id.index].next;
+  if (b.last == id.index) b.last = before;
   --b.count;
   free_part(id.index);
 }
@@ -302,6 +340,7 @@ void WorldState::remove_shape(ShapeId id) {
 void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   require_not_querying("set_local_shape");
   const Part& p = part(id);
+  require_not_chain(p.chain, id, "set_local_shape");
   validate(local);
   require_static_for(local, p.is_static, "set_local_shape");
   set_local(id.index, local);

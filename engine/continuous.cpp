@@ -61,6 +61,10 @@ void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
     return p.continuous ? posed(p.shape, p.start.position, p.start.angle) : p.shape;
   };
   const auto motion = [](const Part& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
+  // A chain's segment stops only what comes at it from the front (chain.h's one-sided rule, at the
+  // step's start).
+  if (x.chain && !in_front(chain_of(a), from(y))) return;
+  if (y.chain && !in_front(chain_of(b), from(x))) return;
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
     Impact& i = out.impacts.emplace_back(record_of<Impact>(a, b));

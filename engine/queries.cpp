@@ -108,6 +108,7 @@ void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<d
   const auto meet = [&](const BodyShape& found) {
     const Shape& target = parts_[found.shape.index].shape;
     if (options.skip_initial_overlap && overlaps(shape, target)) return true;
+    if (parts_[found.shape.index].chain && !in_front(chain_of(found.shape.index), shape)) return true;  // one-sided
     const auto hit = shape_cast(shape, translation, target);
     if (hit && hit->fraction <= reach)
       reach = next_reach(visit({found.body, found.shape, hit->fraction, hit->point, hit->normal}), reach);
@@ -132,7 +133,8 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
   const auto visit_shape = [&](std::uint32_t index, double reach) {
     const Part& p = parts_[index];
     if (p.sensor || !lets_through(filter, p.filter)) return reach;
-    const auto hit = collide2d::ray_cast(p.shape, origin, unit, reach);
+    const auto hit = p.chain ? collide2d::ray_cast(chain_of(index), origin, unit, reach)
+                             : collide2d::ray_cast(p.shape, origin, unit, reach);
     if (!hit || (!options.from_inside && hit->normal == Vec2::Zero())) return reach;
     return next_reach(visit(RayHit{p.body, shape_id(index), hit->distance, hit->point, hit->normal}), reach);
   };

@@ -284,6 +284,14 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
       x.shape, y.shape);
 }
 
+Contact WorldState::pair_contact(std::uint32_t a, std::uint32_t b, const ContactOptions& options) const {
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
+  if (x.chain) return contact(chain_of(a), x.orientation, y.shape, y.orientation, options);
+  if (y.chain) return contact(chain_of(b), y.orientation, x.shape, x.orientation, options).swapped();
+  return contact(x.shape, x.orientation, y.shape, y.orientation, options);
+}
+
 // One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
 // solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
 void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
@@ -300,9 +308,17 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
     r.touching = solids_touch;
     r.contact = c;
   };
-  if (touching) {
+  if (touching && (x.chain || y.chain)) {
+    // A chain's segment touches only where its rules give a contact (chain.h).
+    const Contact c = pair_contact(a, b, manifold);
+    if (!c.empty()) {
+      out.overlapping.push_back(record_of<ShapePair>(a, b));
+      if (contacts_on_) record(true, c);
+      return;
+    }
+  } else if (touching) {
     out.overlapping.push_back(record_of<ShapePair>(a, b));
-    if (contacts_on_) record(true, contact(x.shape, x.orientation, y.shape, y.orientation, manifold));
+    if (contacts_on_) record(true, pair_contact(a, b, manifold));
     return;
   }
   if (proximity_margin_ > 0.0) {
@@ -314,8 +330,8 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
     // Only the pairs within the margin are recorded: the kernels stop as soon as a pair is beyond.
     const ContactOptions speculative{.margin = speculative_margin_, .max_separation = speculative_margin_};
-    const Contact c = contact(x.shape, x.orientation, y.shape, y.orientation, speculative);
-    if (c.separation <= speculative_margin_) record(false, c);
+    const Contact c = pair_contact(a, b, speculative);
+    if (!c.empty() && c.separation <= speculative_margin_) record(false, c);
   }
 }
 

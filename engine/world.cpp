@@ -24,6 +24,9 @@ BodyId World::add(const Shape& shape, const BodyDef& def) {
 BodyId World::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
   return state_->add(pose, shapes, def);
 }
+BodyId World::add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def) {
+  return state_->add_chain(points, loop, def);
+}
 ShapeId World::add_shape(BodyId body, const ShapeDef& shape) { return state_->add_shape(body, shape); }
 void World::remove_shape(ShapeId id) { state_->remove_shape(id); }
 void World::set_pose(BodyId id, const Vec2& position, double angle) { state_->set_pose(id, position, angle); }
@@ -56,6 +59,7 @@ std::vector<ShapeId> World::shapes(BodyId id) const { return state_->shapes(id);
 const Shape& World::shape(ShapeId id) const { return state_->shape(id); }
 const Shape& World::local_shape(ShapeId id) const { return state_->local_shape(id); }
 BodyId World::body(ShapeId id) const { return state_->body_of(id); }
+std::optional<ChainSegment> World::chain_segment(ShapeId id) const { return state_->chain_segment(id); }
 std::uint64_t World::user_id(ShapeId id) const { return state_->user_id(id); }
 const Filter& World::filter(ShapeId id) const { return state_->filter(id); }
 bool World::is_sensor(ShapeId id) const { return state_->is_sensor(id); }

@@ -29,16 +29,19 @@
 
 #include <collide2d/aabb_tree.h>
 #include <collide2d/broad_phase.h>
+#include <collide2d/chain.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 
 #include "engine/thread_pool.h"
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <type_traits>
@@ -53,6 +56,7 @@ class WorldState {
 
   // bodies.cpp
   BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def);
+  BodyId add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def);
   ShapeId add_shape(BodyId id, const ShapeDef& def);
   void remove_shape(ShapeId id);
   void set_pose(BodyId id, const Vec2& position, double angle);
@@ -83,6 +87,7 @@ class WorldState {
     return locals_[id.index];
   }
   BodyId body_of(ShapeId id) const { return part(id).body; }
+  std::optional<ChainSegment> chain_segment(ShapeId id) const;
   std::uint64_t user_id(ShapeId id) const { return part(id).user_id; }
   const Filter& filter(ShapeId id) const { return part(id).filter; }
   bool is_sensor(ShapeId id) const { return part(id).sensor; }
@@ -134,6 +139,7 @@ class WorldState {
     bool sensor = false;  // its shapes' default
     bool continuous = false;
     std::uint32_t first = kNone;  // its first shape
+    std::uint32_t last = kNone;   // its last shape, where the next one joins
     std::uint32_t count = 0;      // its shapes
   };
   // A shape of a body, where the broad and the narrow phase work: what a pair's test and record read
@@ -146,6 +152,7 @@ class WorldState {
     bool sensor = false;
     bool is_static = false;   // its body's kind, kept here for the pair loops
     bool continuous = false;  // its body's
+    bool chain = false;       // a chain's segment, its ghosts in ghosts_
     bool alive = false;
     std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
@@ -205,11 +212,12 @@ class WorldState {
   std::vector<Shape> locals_;  // by ShapeId::index: each shape in its body's frame, apart from the
                                // parts that every frame reads
   std::vector<std::uint32_t> free_parts_;
-  SweepAndPrune broad_;                 // the moving shapes
-  std::vector<std::uint32_t> part_of_;  // by sweep-and-prune proxy: its shape, or kNone
-  AabbTree moving_tree_;                // the moving shapes' fat boxes as of the last update
-  double moving_perimeter_ = 0.0;       // its inner boxes' perimeters right after its last rebuild
-  std::vector<std::uint32_t> loose_;    // moving shapes whose fat box changed since the last update
+  std::vector<std::array<Vec2, 2>> ghosts_;  // by ShapeId::index, for a chain's segments: its ghosts
+  SweepAndPrune broad_;                      // the moving shapes
+  std::vector<std::uint32_t> part_of_;       // by sweep-and-prune proxy: its shape, or kNone
+  AabbTree moving_tree_;                     // the moving shapes' fat boxes as of the last update
+  double moving_perimeter_ = 0.0;            // its inner boxes' perimeters right after its last rebuild
+  std::vector<std::uint32_t> loose_;         // moving shapes whose fat box changed since the last update
   std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
   AabbTree static_tree_;                                     // the static shapes' broad-phase boxes
   bool statics_changed_ = false;
@@ -251,6 +259,12 @@ class WorldState {
   void set_local(std::uint32_t index, const Shape& local);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
+  // A chain's segment where it is, with its ghosts.
+  ChainSegment chain_of(std::uint32_t index) const {
+    return {std::get<Segment>(parts_[index].shape), ghosts_[index][0], ghosts_[index][1]};
+  }
+  // The contact of shapes a and b, as of a chain's rules where either is a chain's segment.
+  Contact pair_contact(std::uint32_t a, std::uint32_t b, const ContactOptions& options) const;
   // f(index) for each shape of the body.
   template <class F>
   void each_part(const Body& b, F f) const {

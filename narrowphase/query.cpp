@@ -1,6 +1,7 @@
 #include <collide2d/query.h>
 
 #include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
@@ -197,6 +198,11 @@ auto ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
 
 }  // namespace
 
+void detail::validate(const ContactOptions& options) {
+  if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
+  if (std::isnan(options.max_separation)) throw std::invalid_argument("contact max_separation must not be NaN");
+}
+
 bool overlaps(const Shape& a, const Shape& b) {
   validate(a);
   validate(b);
@@ -235,8 +241,7 @@ DistanceResult boundary_distance(const Shape& a, const Shape& b) {
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
   validate(a);
   validate(b);
-  if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
-  if (std::isnan(options.max_separation)) throw std::invalid_argument("contact max_separation must not be NaN");
+  detail::validate(options);
   return contact(a, Orientation::of(angle_of(a)), b, Orientation::of(angle_of(b)), options);
 }
 

@@ -7,6 +7,7 @@
 #include <collide2d/aabb_tree.h>
 #include <collide2d/batch.h>
 #include <collide2d/broad_phase.h>
+#include <collide2d/chain.h>
 #include <collide2d/function_ref.h>
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>

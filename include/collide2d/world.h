@@ -27,6 +27,7 @@
 /// says which, and each leaves the World exactly as it was.
 #pragma once
 
+#include <collide2d/chain.h>
 #include <collide2d/function_ref.h>
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
@@ -310,10 +311,16 @@ class World {
   BodyId add(const Shape& shape, const BodyDef& def = {});
   /// Adds a body at `pose` with the shapes (at least one), each placed in the body's frame.
   BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def = {});
+  /// Adds a chain (chain.h) of points in the world as one static body at the origin (def.is_static
+  /// must be set), one segment shape per chain segment in the chain's order (shapes(id)[k] is
+  /// segment k of chain_segments()), each one-sided and smooth as chain.h says. Throws InvalidShape
+  /// for the points as chain_segments() does; std::invalid_argument for a body that is not static.
+  BodyId add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def);
   /// Adds a shape to a body, placed in its frame; it pairs from the next update.
   ShapeId add_shape(BodyId body, const ShapeDef& shape);
   /// Removes a shape; its pairs end at the next update, and its handle is stale from now on. A
-  /// body's last shape is refused (std::invalid_argument): remove the body instead.
+  /// body's last shape and a chain's segment are refused (std::invalid_argument): remove the body
+  /// instead.
   void remove_shape(ShapeId id);
   /// Puts a body at a pose: a teleport, as Box2D's b2Body_SetTransform. A continuous body's step
   /// starts there, so nothing between the old pose and the new one is hit. Static bodies too (each
@@ -334,7 +341,7 @@ class World {
   /// Makes a shape a sensor or solid; its pairs of the other kind end at the next update.
   void set_sensor(ShapeId id, bool sensor);
   /// Places a shape anew in its body's frame (its centre and angle are the offset and angle). On a
-  /// continuous body the shape's step starts at its new place.
+  /// continuous body the shape's step starts at its new place. A chain's segment is refused.
   void set_local_shape(ShapeId id, const Shape& local);
   /// A test of the caller's, called for the candidate pairs of shapes that pass both filters, with
   /// their bodies (a.index < b.index), before any narrow-phase work; false drops the pair. An empty
@@ -375,6 +382,8 @@ class World {
   const Shape& shape(ShapeId id) const;
   const Shape& local_shape(ShapeId id) const;
   BodyId body(ShapeId id) const;
+  /// The chain segment a shape is, with its ghosts, where it is; nullopt for a shape of no chain.
+  std::optional<ChainSegment> chain_segment(ShapeId id) const;
   std::uint64_t user_id(ShapeId id) const;
   const Filter& filter(ShapeId id) const;
   bool is_sensor(ShapeId id) const;

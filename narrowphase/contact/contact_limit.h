@@ -7,6 +7,9 @@
 
 namespace collide2d::detail {
 
+// Throws std::invalid_argument for a guess that is not finite or a limit that is NaN.
+void validate(const ContactOptions& options);
+
 // Whether the caller set a limit (a bound costs work that the full contact would not need).
 inline bool has_limit(const ContactOptions& options) {
   return options.max_separation < std::numeric_limits<double>::infinity();

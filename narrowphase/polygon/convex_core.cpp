@@ -525,6 +525,13 @@ DistanceResult core_distance(const CorePair& p) {
                                p.world_point(Vec2(c.on_b - p.b.radius * d.direction)));
 }
 
+Contact core_face_contact(const CorePair& p, int i, const ContactOptions& options) {
+  const Clipped over = deepest_over_face(p.a, i, p.b);
+  if (!(over.b < kInf)) return Contact::beyond(kInf);
+  if (over.b - radii(p) > options.max_separation) return Contact::beyond(over.b - radii(p));
+  return on_face(p, true, i, over.b, over, clip_face(p.a, i, p.b), options);
+}
+
 // With a limit, the axes stop at the first that shows the pair beyond it.
 Contact core_contact(const CorePair& p, const ContactOptions& options) {
   if (has_limit(options)) {

@@ -211,6 +211,10 @@ std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs);
 bool core_overlap(const CorePair& p);
 DistanceResult core_distance(const CorePair& p);
 Contact core_contact(const CorePair& p, const ContactOptions& options);
+// The contact on A's face i with its normal held there: B's deepest point over the face (between
+// its side planes) and B's incident face clipped to it; empty, its separation infinite, where no
+// point of B's core lies over the face.
+Contact core_face_contact(const CorePair& p, int i, const ContactOptions& options);
 
 // A flat shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
 // ellipse is centred at the origin with semi-axis a along x and b along y.

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "refusals.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -24,15 +26,7 @@ namespace {
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
-template <class Error>
-void expect_refused(const std::function<void()>& call, const std::string& words) {
-  try {
-    call();
-    ADD_FAILURE() << "accepted, expected: " << words;
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-  }
-}
+using testing::expect_refused;
 
 TEST(SegmentShape, RefusesBadFields) {
   const auto refused = [](const Segment& s, const std::string& words) {

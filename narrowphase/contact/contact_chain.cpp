@@ -1,0 +1,155 @@
+// A chain segment against any shape: the segment's exact contact, under the one-sided, shared-vertex
+// and smooth rules of include/collide2d/chain.h. The rules follow E. Catto's ghost-collision
+// treatment in Box2D v3 ("Ghost Collisions", box2d.org, 2020): the shape's centre decides the side,
+// separating axes decide which of two segments owns the space around a convex vertex, and a normal
+// outside the vertex cones gives way to the segment's own.
+#include <collide2d/chain.h>
+
+#include <collide2d/kernels.h>
+#include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/polygon/convex_core.h"
+#include "shapes/internal.h"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+namespace collide2d {
+namespace {
+
+using detail::cross;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+// How far past a cone's edge a normal may lie and still be in it: the rounding of unit normals.
+constexpr double kTurn = 64 * kEpsilon;
+
+Vec2 turned(const Orientation& o, const Vec2& v) { return {o.c * v.x() - o.s * v.y(), o.s * v.x() + o.c * v.y()}; }
+Vec2 right_of(const Vec2& d) { return {d.y(), -d.x()}; }
+
+// The chain segment in the world: its points, its unit direction e and its normal n (e turned
+// clockwise, towards the side it collides from), and at each end whether the vertex is convex and
+// the neighbour's normal there.
+struct Faces {
+  Vec2 p1, p2, e, n;
+  double length = 0.0;
+  bool convex1 = false, convex2 = false;
+  Vec2 n0, n2;
+};
+
+Faces faces_of(const ChainSegment& s, const Orientation& o) {
+  const Vec2& end = s.segment.end;
+  const Vec2 in = -s.ghost1, out = s.ghost2 - end;  // the neighbours' directions, in the segment's frame
+  Faces f;
+  f.p1 = s.segment.center;
+  f.p2 = f.p1 + turned(o, end);
+  f.length = end.norm();
+  f.e = turned(o, Vec2(end / f.length));
+  f.n = right_of(f.e);
+  f.convex1 = cross(in, end) > 0.0;
+  f.convex2 = cross(end, out) > 0.0;
+  f.n0 = right_of(turned(o, in.normalized()));
+  f.n2 = right_of(turned(o, out.normalized()));
+  return f;
+}
+
+// The point whose side decides: a shape's centre, a polygon's centroid (its centre may lie outside).
+Vec2 reference_point(const Shape& shape) {
+  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->centroid();
+  return center_of(shape);
+}
+
+bool in_front(const Faces& f, const Vec2& r) {
+  const Vec2 from1 = r - f.p1;
+  return f.n.dot(from1) >= 0.0 || (f.convex1 && f.n0.dot(from1) >= 0.0) ||
+         (f.convex2 && f.n2.dot(Vec2(r - f.p2)) >= 0.0);
+}
+
+// The shape's separation from the line through q of unit normal u.
+double separation_along(const Shape& shape, const Vec2& u, const Vec2& q) { return u.dot(support(shape, -u) - q); }
+
+// Whether no convex neighbour's line lies farther from the shape than the segment's, beyond the
+// rounding of the separations. They are measured in the world, from points a segment and its
+// neighbour each round on their own, so the slack is of the coordinates' size: with less, where a
+// chain's points in line carry their rounding (turns of 1e-14 rad at 1000 from the origin), both
+// segments at a vertex could give the body to the other.
+bool owns(const Faces& f, const Shape& shape, const Vec2& r) {
+  if (!f.convex1 && !f.convex2) return true;
+  const double own = separation_along(shape, f.n, f.p1);
+  const double scale = f.p1.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + reach_of(shape) + f.length;
+  const double slack = 64 * kEpsilon * scale;
+  return !(f.convex1 && separation_along(shape, f.n0, f.p1) > own + slack) &&
+         !(f.convex2 && separation_along(shape, f.n2, f.p2) > own + slack);
+}
+
+// Whether n lies in the closed cone from `from` counter-clockwise to `to`.
+bool within(const Vec2& from, const Vec2& n, const Vec2& to) {
+  return cross(from, n) >= -kTurn && cross(n, to) >= -kTurn;
+}
+
+// Whether n is the segment's normal or lies in the cone of the convex vertex it leans towards.
+bool admitted(const Faces& f, const Vec2& n) {
+  if (!(n.dot(f.n) > 0.0)) return false;
+  if (n.dot(f.e) >= 0.0) return f.convex2 ? within(f.n, n, f.n2) : cross(f.n, n) <= kTurn;
+  return f.convex1 ? within(f.n0, n, f.n) : cross(n, f.n) <= kTurn;
+}
+
+// A curved shape's contact along the segment's normal: its support point q along -n, where it lies
+// over the segment.
+Contact held_at(const Faces& f, const Vec2& q, const ContactOptions& options) {
+  const Vec2 from1 = q - f.p1;
+  const double along = f.e.dot(from1);
+  if (!(along >= 0.0 && along <= f.length)) return Contact::beyond(kInf);
+  const double s = f.n.dot(from1);
+  return detail::limited(options, [&] { return Contact::of(s, f.n, Vec2(q - s * f.n), q); });
+}
+
+// The contact with the segment's normal held: the shape's deepest points over the segment.
+Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const Shape& b, const Orientation& bo,
+             const ContactOptions& options) {
+  return std::visit(
+      [&](const auto& x) {
+        using X = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<X, Circle> || std::is_same_v<X, Ellipse>) {
+          return held_at(f, support(x, Vec2(-f.n)), options);
+        } else {
+          return detail::core_face_contact(detail::CorePair::of(a.segment, ao, x, bo), 0, options);
+        }
+      },
+      b);
+}
+
+}  // namespace
+
+bool in_front(const ChainSegment& s, const Shape& shape) {
+  return in_front(faces_of(s, Orientation::of(s.segment.angle)), reference_point(shape));
+}
+
+Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
+                const ContactOptions& options) {
+  const Faces f = faces_of(a, ao);
+  const Vec2 r = reference_point(b);
+  if (!in_front(f, r) || !owns(f, b, r)) return Contact::beyond(kInf);
+  const Contact c = contact(Shape(a.segment), ao, b, bo, options);
+  if (c.empty() || admitted(f, c.normal)) return c;
+  return held(a, ao, f, b, bo, options);
+}
+
+Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& options) {
+  validate(a);
+  validate(b);
+  detail::validate(options);
+  if (std::holds_alternative<Segment>(b))
+    throw UnsupportedPair("a chain segment does not pair with a segment: both are level geometry");
+  return contact(a, Orientation::of(a.segment.angle), b, Orientation::of(angle_of(b)), options);
+}
+
+std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
+                                    double max_distance) {
+  const Faces f = faces_of(s, Orientation::of(s.segment.angle));
+  if (f.n.dot(Vec2(origin - f.p1)) < 0.0) return std::nullopt;
+  return ray_cast(Shape(s.segment), origin, direction, max_distance);
+}
+
+}  // namespace collide2d
