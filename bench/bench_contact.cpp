@@ -8,6 +8,7 @@
 // runs (max_separation 0) are empty there too. Convex 8-gons (bench/workload.h's) against 8-gons,
 // circles and ellipses' 8-gons, on workloads 0, 1 and 3 (the scene has no polygons).
 #include <collide2d/batch.h>
+#include <collide2d/chain.h>
 #include <collide2d/kernels.h>
 
 #include "bench/box2d_baseline.h"
@@ -224,6 +225,65 @@ BENCHMARK(ours_shape<Segment, Ellipse>)->Name("ours/segment_ellipse")->Apply(ben
 BENCHMARK(ours_shape<Segment, Ellipse, true>)->Name("ours/segment_ellipse_limited")->Apply(bench::polygon_workloads);
 BENCHMARK(box2d<Segment, Ellipse>)
     ->Name("box2d_collide_edge_and_polygon/segment_ellipse_8gon")
+    ->Apply(bench::polygon_workloads);
+
+// The workload's segments as chain segments, each end's neighbour turned 0.3 rad one way or the
+// other by the pair's index (convex and concave vertices alike).
+std::vector<ChainSegment> chain_segments_of(const std::vector<Segment>& segments) {
+  std::vector<ChainSegment> out;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const Segment& s = segments[k];
+    const auto turned = [&](double t) {
+      return Vec2(std::cos(t) * s.end.x() - std::sin(t) * s.end.y(), std::sin(t) * s.end.x() + std::cos(t) * s.end.y());
+    };
+    out.push_back({s, -turned(k % 2 == 0 ? 0.3 : -0.3), s.end + turned(k % 4 < 2 ? 0.3 : -0.3)});
+  }
+  return out;
+}
+
+// A chain segment against B, no contact beyond separation 0 (as Box2D's), through chain.h's contact
+// with kept orientations (the World's call).
+template <class B>
+void ours_chain(benchmark::State& state) {
+  const auto& w = bench::pairs<Segment, B>(state);
+  const std::vector<ChainSegment> chain = chain_segments_of(w.a);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
+  const std::vector<Shape> sb(w.b.begin(), w.b.end());
+  const ContactOptions options{.max_separation = 0.0};
+  bench::time_queries(state, [&](std::size_t k) { return contact(chain[k], oa[k], sb[k], ob[k], options); });
+}
+
+// The same chain segments as child edges of Box2D's b2ChainShape (one-sided, with ghost vertices).
+template <class B>
+void box2d_chain(benchmark::State& state) {
+  const auto& w = bench::pairs<Segment, B>(state);
+  const std::vector<ChainSegment> chain = chain_segments_of(w.a);
+  std::vector<baseline::ShapePair> pairs;
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    const Segment& s = chain[k].segment;
+    const Vec2 origin = s.center, p2 = s.point2();
+    const Vec2 points[] = {origin + chain[k].ghost1, origin, p2, origin + chain[k].ghost2};
+    const baseline::Box2dShape edge = baseline::to_box2d_chain(points, origin)[0];
+    pairs.push_back(
+        {{edge, baseline::to_box2d_shape(baseline::to_box2d(w.b[k], 8, baseline::Fit::inscribed, origin))}});
+  }
+  b2Manifold manifold;
+  bench::time_queries(state, [&](std::size_t k) {
+    baseline::box2d_manifold(pairs[k], &manifold);
+    return manifold.pointCount;
+  });
+}
+
+// A chain segment (Box2D's b2ChainShape child edge) against the flat kinds, a circle and an ellipse.
+BENCHMARK(ours_chain<ConvexPolygon>)->Name("ours/chain_polygon_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_chain<ConvexPolygon>)
+    ->Name("box2d_collide_edge_and_polygon/chain_polygon")
+    ->Apply(bench::polygon_workloads);
+BENCHMARK(ours_chain<Circle>)->Name("ours/chain_circle_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_chain<Circle>)->Name("box2d_collide_edge_and_circle/chain_circle")->Apply(bench::polygon_workloads);
+BENCHMARK(ours_chain<Ellipse>)->Name("ours/chain_ellipse_limited")->Apply(bench::polygon_workloads);
+BENCHMARK(box2d_chain<Ellipse>)
+    ->Name("box2d_collide_edge_and_polygon/chain_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
 
 }  // namespace

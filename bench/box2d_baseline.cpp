@@ -110,6 +110,20 @@ Box2dShape to_box2d_shape(const Polygon& p) {
   return out;
 }
 
+std::vector<Box2dShape> to_box2d_chain(std::span<const Vec2> points, const Vec2& origin) {
+  std::vector<b2Vec2> v;
+  for (const Vec2& p : points) v.push_back(to_float(p - origin));
+  b2ChainShape chain;
+  chain.CreateChain(v.data() + 1, static_cast<int32>(v.size() - 2), v.front(), v.back());
+  std::vector<Box2dShape> out(v.size() - 3);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].is_edge = true;
+    chain.GetChildEdge(&out[k].edge, static_cast<int32>(k));
+    out[k].edge.m_radius = 0.0f;  // no skin, as the polygons
+  }
+  return out;
+}
+
 ShapePair to_box2d_shapes(const Polygon& a, const Polygon& b) { return {{to_box2d_shape(a), to_box2d_shape(b)}}; }
 
 bool box2d_overlap(const ShapePair& pair) {

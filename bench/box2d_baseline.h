@@ -16,6 +16,7 @@
 #include <collide2d/time_of_impact.h>
 
 #include <box2d/b2_broad_phase.h>
+#include <box2d/b2_chain_shape.h>
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
@@ -67,6 +68,10 @@ struct Box2dShape {
   }
 };
 Box2dShape to_box2d_shape(const Polygon& p);
+
+// An open chain of points (the first and last ghosts only, as ours) as Box2D's b2ChainShape, points
+// taken from `origin`: its child edges, one-sided with their ghost vertices (GetChildEdge), radius 0.
+std::vector<Box2dShape> to_box2d_chain(std::span<const Vec2> points, const Vec2& origin);
 
 // The same pair as Box2dShapes, and b2TestOverlap on them.
 struct ShapePair {

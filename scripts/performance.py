@@ -85,6 +85,9 @@ CONTACT = [
     ('segment–circle, one pair, max_separation 0', 'ours/segment_circle_limited/candidates:{w}', 'box2d_collide_edge_and_circle/segment_circle/candidates:{w}'),
     ('segment–ellipse vs 8-gon, one pair', 'ours/segment_ellipse/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_ellipse_8gon/candidates:{w}'),
     ('segment–ellipse vs 8-gon, one pair, max_separation 0', 'ours/segment_ellipse_limited/candidates:{w}', 'box2d_collide_edge_and_polygon/segment_ellipse_8gon/candidates:{w}'),
+    ('chain segment–polygon (8-gon), one pair, max_separation 0', 'ours/chain_polygon_limited/candidates:{w}', 'box2d_collide_edge_and_polygon/chain_polygon/candidates:{w}'),
+    ('chain segment–circle, one pair, max_separation 0', 'ours/chain_circle_limited/candidates:{w}', 'box2d_collide_edge_and_circle/chain_circle/candidates:{w}'),
+    ('chain segment–ellipse vs 8-gon, one pair, max_separation 0', 'ours/chain_ellipse_limited/candidates:{w}', 'box2d_collide_edge_and_polygon/chain_ellipse_8gon/candidates:{w}'),
 ]
 TOI = [
     ('ellipse–ellipse translating vs 8-gons', 'ours/ellipse_ellipse_translating', 'box2d_toi/ellipse_ellipse_translating_8gons'),
@@ -373,9 +376,10 @@ Box2D: `b2Distance` on the ellipses' inscribed N-gons.
 
 Box2D: `b2CollidePolygons`, `b2CollidePolygonAndCircle` and `b2CollideCircles` on the polygons (a
 capsule its rounded box, as above), `b2CollideEdgeAndPolygon` and `b2CollideEdgeAndCircle` on a
-segment's two-sided edge; its manifold is empty for pairs apart, where collide2d's contact carries
-the exact distance and normal. The scene has no polygons, capsules or segments: their rows have no
-scene columns.
+segment's two-sided edge, and on a chain segment's one-sided child edge of `b2ChainShape` with its
+ghost vertices (each end's neighbour turned 0.3 rad, convex or concave by the pair's index); its
+manifold is empty for pairs apart, where collide2d's contact carries the exact distance and normal.
+The scene has no polygons, capsules, segments or chains: their rows have no scene columns.
 
 {table(CONTACT, med, CONTACT_WORKLOADS)}
 

@@ -28,6 +28,9 @@ auto cross(const Eigen::MatrixBase<P>& p, const Eigen::MatrixBase<Q>& q) {
   return p[0] * q[1] - p[1] * q[0];
 }
 
+// A polygon's support point (support()) given its rotation.
+Vec2 support_turned(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d);
+
 // Throws InvalidShape("<what> <field> <rule> (got <value>)"), the form of every validation message
 // ("ellipse a must be positive (got -1)"), for the checks of other modules to share.
 [[noreturn]] void reject(const char* what, const char* field, double value, const char* rule);

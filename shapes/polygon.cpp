@@ -231,8 +231,9 @@ Aabb detail::polygon_box(const ConvexPolygon& p, const Orientation& o) {
   return detail::around(p.center, p.radius() - lo.array(), hi.array() + p.radius(), reach);
 }
 
-Vec2 support(const ConvexPolygon& p, const Vec2& d) {
-  const Rot rot = Rot::of(p.angle);
+Vec2 support(const ConvexPolygon& p, const Vec2& d) { return detail::support_turned(p, Rot::of(p.angle), d); }
+
+Vec2 detail::support_turned(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d) {
   const Vec2 local = rot.apply_inverse(d);
   const std::span<const Vec2> v = p.vertices();
   const Vec2* best = &v[0];

@@ -204,37 +204,51 @@ Vec2 support(const Circle& c, const Vec2& d) {
   return n > 0.0 ? Vec2(c.center + (c.radius / n) * d) : c.center;
 }
 
-Vec2 support(const Ellipse& e, const Vec2& d) {
+namespace {
+
+Vec2 support(const Circle& c, const Rot&, const Vec2& d) { return support(c, d); }
+
+Vec2 support(const Ellipse& e, const Rot& r, const Vec2& d) {
   // Support of {K + V diag(a,b) u : |u| <= 1} in direction d is K + V diag(a,b)^2 w / |diag(a,b) w|
   // with w = V^T d; d is scaled by its largest component first so that squares cannot overflow.
   const double m = d.cwiseAbs().maxCoeff();
   if (!(m > 0.0)) return e.center;
-  const Rot r = Rot::of(e.angle);
   const Vec2 w = r.apply_inverse(Vec2(d / m));
   const Vec2 scaled(e.a * w.x(), e.b * w.y());
   const Vec2 local(e.a * scaled.x(), e.b * scaled.y());
   return e.center + r.apply(Vec2(local / scaled.norm()));
 }
 
-Vec2 support(const Rect& r, const Vec2& d) {
-  const Rot rot = Rot::of(r.angle);
+Vec2 support(const Rect& r, const Rot& rot, const Vec2& d) {
   const Vec2 w = rot.apply_inverse(d);
   const Vec2 corner(w.x() >= 0.0 ? r.half_extents.x() : -r.half_extents.x(),
                     w.y() >= 0.0 ? r.half_extents.y() : -r.half_extents.y());
   return r.center + rot.apply(corner);
 }
 
-Vec2 support(const Capsule& c, const Vec2& d) {
-  const Rot rot = Rot::of(c.angle);
+Vec2 support(const Capsule& c, const Rot& rot, const Vec2& d) {
   const Vec2 axis(rot.c, rot.s);
   const double n = d.norm();
   const Vec2 end = c.center + (d.dot(axis) >= 0.0 ? c.half_length : -c.half_length) * axis;
   return n > 0.0 ? Vec2(end + (c.radius / n) * d) : end;
 }
 
-Vec2 support(const Segment& s, const Vec2& d) {
-  const Vec2 to = Rot::of(s.angle).apply(s.end);
+Vec2 support(const Segment& s, const Rot& rot, const Vec2& d) {
+  const Vec2 to = rot.apply(s.end);
   return d.dot(to) >= 0.0 ? Vec2(s.center + to) : s.center;
+}
+
+Vec2 support(const ConvexPolygon& p, const Rot& rot, const Vec2& d) { return detail::support_turned(p, rot, d); }
+
+}  // namespace
+
+Vec2 support(const Ellipse& e, const Vec2& d) { return support(e, Rot::of(e.angle), d); }
+Vec2 support(const Rect& r, const Vec2& d) { return support(r, Rot::of(r.angle), d); }
+Vec2 support(const Capsule& c, const Vec2& d) { return support(c, Rot::of(c.angle), d); }
+Vec2 support(const Segment& s, const Vec2& d) { return support(s, Rot::of(s.angle), d); }
+
+Vec2 support(const Shape& s, const Orientation& o, const Vec2& d) {
+  return std::visit([&](const auto& shape) { return support(shape, Rot{o.c, o.s}, d); }, s);
 }
 
 Vec2 support(const Shape& s, const Vec2& d) {

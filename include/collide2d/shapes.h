@@ -231,6 +231,8 @@ Vec2 support(const Capsule& c, const Vec2& d);
 Vec2 support(const Segment& s, const Vec2& d);
 Vec2 support(const ConvexPolygon& p, const Vec2& d);
 Vec2 support(const Shape& s, const Vec2& d);
+/// The same point, given Orientation::of(angle_of(s)).
+Vec2 support(const Shape& s, const Orientation& orientation, const Vec2& d);
 
 /// Whether p lies in the closed solid shape.
 bool contains(const Circle& c, const Vec2& p);

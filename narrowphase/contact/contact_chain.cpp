@@ -38,6 +38,7 @@ struct Faces {
   Vec2 n0, n2;
 };
 
+// A neighbour's normal is read only at a convex vertex, and made only there.
 Faces faces_of(const ChainSegment& s, const Orientation& o) {
   const Vec2& end = s.segment.end;
   const Vec2 in = -s.ghost1, out = s.ghost2 - end;  // the neighbours' directions, in the segment's frame
@@ -49,14 +50,14 @@ Faces faces_of(const ChainSegment& s, const Orientation& o) {
   f.n = right_of(f.e);
   f.convex1 = cross(in, end) > 0.0;
   f.convex2 = cross(end, out) > 0.0;
-  f.n0 = right_of(turned(o, in.normalized()));
-  f.n2 = right_of(turned(o, out.normalized()));
+  if (f.convex1) f.n0 = right_of(turned(o, in.normalized()));
+  if (f.convex2) f.n2 = right_of(turned(o, out.normalized()));
   return f;
 }
 
 // The point whose side decides: a shape's centre, a polygon's centroid (its centre may lie outside).
-Vec2 reference_point(const Shape& shape) {
-  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->centroid();
+Vec2 reference_point(const Shape& shape, const Orientation& o) {
+  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->center + turned(o, p->outline->centroid);
   return center_of(shape);
 }
 
@@ -67,20 +68,22 @@ bool in_front(const Faces& f, const Vec2& r) {
 }
 
 // The shape's separation from the line through q of unit normal u.
-double separation_along(const Shape& shape, const Vec2& u, const Vec2& q) { return u.dot(support(shape, -u) - q); }
+double separation_along(const Shape& shape, const Orientation& o, const Vec2& u, const Vec2& q) {
+  return u.dot(support(shape, o, -u) - q);
+}
 
 // Whether no convex neighbour's line lies farther from the shape than the segment's, beyond the
 // rounding of the separations. They are measured in the world, from points a segment and its
 // neighbour each round on their own, so the slack is of the coordinates' size: with less, where a
 // chain's points in line carry their rounding (turns of 1e-14 rad at 1000 from the origin), both
 // segments at a vertex could give the body to the other.
-bool owns(const Faces& f, const Shape& shape, const Vec2& r) {
+bool owns(const Faces& f, const Shape& shape, const Orientation& o, const Vec2& r) {
   if (!f.convex1 && !f.convex2) return true;
-  const double own = separation_along(shape, f.n, f.p1);
+  const double own = separation_along(shape, o, f.n, f.p1);
   const double scale = f.p1.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + reach_of(shape) + f.length;
   const double slack = 64 * kEpsilon * scale;
-  return !(f.convex1 && separation_along(shape, f.n0, f.p1) > own + slack) &&
-         !(f.convex2 && separation_along(shape, f.n2, f.p2) > own + slack);
+  return !(f.convex1 && separation_along(shape, o, f.n0, f.p1) > own + slack) &&
+         !(f.convex2 && separation_along(shape, o, f.n2, f.p2) > own + slack);
 }
 
 // Whether n lies in the closed cone from `from` counter-clockwise to `to`.
@@ -112,7 +115,7 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
       [&](const auto& x) {
         using X = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<X, Circle> || std::is_same_v<X, Ellipse>) {
-          return held_at(f, support(x, Vec2(-f.n)), options);
+          return held_at(f, support(b, bo, Vec2(-f.n)), options);
         } else {
           return detail::core_face_contact(detail::CorePair::of(a.segment, ao, x, bo), 0, options);
         }
@@ -123,16 +126,20 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
 }  // namespace
 
 bool in_front(const ChainSegment& s, const Shape& shape) {
-  return in_front(faces_of(s, Orientation::of(s.segment.angle)), reference_point(shape));
+  return in_front(faces_of(s, Orientation::of(s.segment.angle)),
+                  reference_point(shape, Orientation::of(angle_of(shape))));
 }
 
 Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
                 const ContactOptions& options) {
   const Faces f = faces_of(a, ao);
-  const Vec2 r = reference_point(b);
-  if (!in_front(f, r) || !owns(f, b, r)) return Contact::beyond(kInf);
+  const Vec2 r = reference_point(b, bo);
+  if (!in_front(f, r)) return Contact::beyond(kInf);
+  // The segment's contact first: with a limit it ends soonest for the pairs apart.
   const Contact c = contact(Shape(a.segment), ao, b, bo, options);
-  if (c.empty() || admitted(f, c.normal)) return c;
+  if (c.empty()) return c;
+  if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
+  if (admitted(f, c.normal)) return c;
   return held(a, ao, f, b, bo, options);
 }
 

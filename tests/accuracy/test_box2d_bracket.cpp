@@ -3,8 +3,10 @@
 // on collide2d's value as the polygons get finer. Sharp convex polygons Box2D has exactly: its
 // float answers lie within their float error of ours; a capsule it has only as a rounded box that
 // holds it, within a known reach.
+#include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
+#include <collide2d/world.h>
 #include "bench/box2d_baseline.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -396,6 +399,66 @@ TEST(Box2dBracket, SegmentsMatchBox2dsEdgesWithinFloatError) {
   EXPECT_GT(apart, 1000);
   EXPECT_GT(overlapping, 300);
   EXPECT_GT(deepest_kept, polygons_overlapping * 9 / 10);
+}
+
+// Box2D's b2ChainShape on the same chains: a floor in line, a hill and a valley bending 0.05 rad at
+// each vertex, and a box, a circle, a hexagon and an ellipse's inscribed 8-gon (Box2D's own
+// shapes, exactly, so that the two libraries see the same solids) posed along each, upright on the
+// segment under them and sunk 0.02 into it. At every pose both give the body a contact, and the
+// deepest over the chain's segments agrees within Box2D's float error (separation and normal)
+// wherever the body's lowest point is not on a vertex. On a vertex the rules differ: at a hill's
+// (convex) the neighbour owns the corner and gives the least way out of the solid corner, along its
+// own normal, where Box2D's segment gives its own, deeper; in a valley (concave) both segments
+// keep their contacts and the deeper is the segment's own, where Box2D keeps the neighbour's.
+TEST(Box2dBracket, ChainsMatchBox2dsChainsWithinFloatError) {
+  std::vector<Vec2> octagon;
+  for (int k = 0; k < 8; ++k)
+    octagon.emplace_back(0.6 * std::cos(k * std::numbers::pi / 4), 0.3 * std::sin(k * std::numbers::pi / 4));
+  const Shape bodies[] = {Rect{Vec2::Zero(), Vec2(0.5, 0.25), 0.0}, Circle{Vec2::Zero(), 0.4},
+                          ConvexPolygon::regular(6, 0.5), ConvexPolygon::of(octagon)};
+  int poses = 0, matched = 0, off_vertex_mismatches = 0;
+  double worst_matched = 0;
+  for (const double bend : {0.0, 0.05, -0.05}) {
+    std::vector<Vec2> points{Vec2(20, 0)};
+    for (int k = 0; k < 42; ++k) points.push_back(points.back() + Vec2(-std::cos(k * bend), -std::sin(k * bend)));
+    const std::vector<ChainSegment> ours = chain_segments(points, false);
+    const std::vector<baseline::Box2dShape> theirs = baseline::to_box2d_chain(points, Vec2::Zero());
+    for (const Shape& local : bodies) {
+      for (double s = 5.0; s < 35.0; s += 0.0625) {
+        const int k = static_cast<int>(s);
+        const Vec2 e = (points[k + 2] - points[k + 1]).normalized(), n(e.y(), -e.x());
+        const double angle = std::atan2(e.y(), e.x());
+        const Shape turned = placed(local, {Vec2::Zero(), angle}, Orientation::of(angle));
+        const double below = -n.dot(support(turned, -n));
+        const Vec2 on = points[k + 1] + (s - k) * (points[k + 2] - points[k + 1]);
+        const Shape body = placed(local, {on + (below - 0.02) * n, angle}, Orientation::of(angle));
+        const baseline::Box2dShape shape =
+            baseline::to_box2d_shape(baseline::to_box2d(body, 8, Fit::inscribed, Vec2::Zero()));
+        std::optional<Contact> deepest;
+        std::optional<baseline::Box2dContact> box2d;
+        for (std::size_t j = 0; j < ours.size(); ++j) {
+          const Contact c = contact(ours[j], body);
+          if (!c.empty() && c.separation <= 0 && (!deepest || c.separation < deepest->separation)) deepest = c;
+          const auto b = baseline::box2d_contact(baseline::ShapePair{{theirs[j], shape}});
+          if (b && (!box2d || b->separation < box2d->separation)) box2d = b;
+        }
+        ASSERT_TRUE(deepest) << shape_name(body) << " at " << s << " bend " << bend;
+        ASSERT_TRUE(box2d) << shape_name(body) << " at " << s << " bend " << bend;
+        ++poses;
+        const double gap = std::abs(box2d->separation - deepest->separation);
+        if (gap <= kFloatTolerance && (box2d->normal - deepest->normal).norm() <= 1e-4) {
+          ++matched;
+          worst_matched = std::max(worst_matched, gap);
+        } else if (s != std::floor(s)) {
+          ++off_vertex_mismatches;
+        }
+      }
+    }
+  }
+  std::printf("[box2d bracket] chains: deepest contact matched at %d of %d poses (worst |difference| %.2e)\n", matched,
+              poses, worst_matched);
+  EXPECT_EQ(off_vertex_mismatches, 0);
+  EXPECT_GT(matched, poses * 9 / 10);
 }
 
 }  // namespace
