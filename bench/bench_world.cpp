@@ -333,9 +333,19 @@ void box2d_scene_frame(benchmark::State& state) {
   tool::Scene scene = tool::default_scene(static_cast<int>(state.range(0)), 1);
   std::vector<Shape> shapes;
   std::vector<Filter> filters;
+  // The built-in scene's bodies are of one shape but its cave, a chain: its first segment stands at
+  // the cave's index and the others follow every body, each a proxy of its own, as b2ChainShape's
+  // children are (never posed: static).
   for (const tool::SceneBody& b : scene.bodies) {
-    shapes.push_back(tool::placed_shapes(b).front());  // the built-in scene's bodies are of one shape
+    shapes.push_back(tool::placed_shapes(b).front());
     filters.push_back(b.filter);
+  }
+  for (const tool::SceneBody& b : scene.bodies) {
+    const std::vector<Shape> segments = b.chain.empty() ? std::vector<Shape>{} : tool::placed_shapes(b);
+    for (std::size_t k = 1; k < segments.size(); ++k) {
+      shapes.push_back(segments[k]);
+      filters.push_back(b.filter);
+    }
   }
   Box2dWorld world(shapes, filters);
   const auto pose = [&] {

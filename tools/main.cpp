@@ -39,12 +39,13 @@ constexpr const char* kQueryUsage =
 constexpr const char* kRunUsage =
     "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
-    "  rectangles on two layers that never pair, 8 continuous bullets, a static level of\n"
-    "  walls, slopes and rocks, and 4 static sensors) through the broad phase (sweep and\n"
-    "  prune for moving bodies, a tree for static ones) and the narrow phase, frame by\n"
-    "  frame, then prints what they found (bullets: their impacts within each frame; the\n"
-    "  pairs the filters drop; each sensor's contents) and how long it took. --svg draws\n"
-    "  the last frame; --frames overrides the scene's frame count.\n";
+    "  rectangles on two layers that never pair, 8 continuous bullets, a static level (a\n"
+    "  chain cave with a hilly floor, slopes and rocks), and 4 static sensors) through\n"
+    "  the broad phase (sweep and prune for moving bodies, a tree for static ones) and\n"
+    "  the narrow phase, frame by frame, then prints what they found (bullets: their\n"
+    "  impacts within each frame; the pairs the filters drop; each sensor's contents)\n"
+    "  and how long it took. --svg draws the last frame; --frames overrides the scene's\n"
+    "  frame count.\n";
 
 constexpr const char* kReportNote =
     "The speed-against-error report of the ellipse distance methods is a separate program\n"

@@ -420,9 +420,10 @@ void worlds() {
         {.fat_margin = 0.1, .proximity_margin = 0.4, .contacts = true, .speculative_margin = 0.2, .threads = 1});
     std::vector<BodyId> ids;
     for (const tool::SceneBody& b : scene.bodies) {
-      // The built-in scene's bodies are of one shape each.
-      ids.push_back(world.add(tool::placed_shapes(b).front(),
-                              {.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}));
+      // The built-in scene's bodies are of one shape each but its cave.
+      const BodyDef def{.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
+      ids.push_back(b.chain.empty() ? world.add(tool::placed_shapes(b).front(), def)
+                                    : world.add_chain(b.chain, b.loop, def));
       if (b.continuous) world.set_continuous(ids.back());
     }
     Hash& h = at("world", "contacts_scene");

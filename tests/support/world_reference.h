@@ -45,13 +45,21 @@ inline std::vector<ShapePair> exact_box_pairs(const World& world, double grow) {
 
 // What a World should report, from every pair of shapes tested directly with the narrow phase it
 // uses, under its rules: no pair of one body's shapes, none of two static bodies, none the filters
-// refuse; a pair with one sensor goes to sensing (sensors sense no sensor); solid pairs overlap, or
-// lie within `margin` (near). Sorted.
+// refuse; a pair with one sensor goes to sensing (sensors sense no sensor); solid pairs overlap (a
+// chain's segment's where its rules give a contact), or lie within `margin` (near). Sorted.
 struct AllPairs {
   std::vector<ShapePair> overlapping;
   std::vector<SensorPair> sensing;
   std::vector<ShapePair> near;
 };
+
+// Whether a pair that overlaps passes a chain's rules (chain.h): where one shape is a chain's
+// segment, its contact with the other has points.
+inline bool admitted_by_chain(const World& world, ShapeId x, ShapeId y) {
+  if (const auto chain = world.chain_segment(x)) return !contact(*chain, world.shape(y)).empty();
+  if (const auto chain = world.chain_segment(y)) return !contact(*chain, world.shape(x)).empty();
+  return true;
+}
 
 inline AllPairs all_pairs(const World& world, double margin) {
   const std::vector<BodyShape> all = all_shapes(world);
@@ -71,7 +79,7 @@ inline AllPairs all_pairs(const World& world, double margin) {
           out.sensing.push_back(sx ? SensorPair{x.body, y.body, x.shape, y.shape}
                                    : SensorPair{y.body, x.body, y.shape, x.shape});
         }
-      } else if (collide2d::overlaps(a, b)) {
+      } else if (collide2d::overlaps(a, b) && admitted_by_chain(world, x.shape, y.shape)) {
         out.overlapping.push_back(pair_of(x, y));
       } else if (margin > 0 && collide2d::distance(a, b).distance <= margin) {
         out.near.push_back(pair_of(x, y));

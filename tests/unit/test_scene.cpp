@@ -14,8 +14,8 @@ namespace collide2d::tool {
 namespace {
 
 TEST(Scene, WrittenSceneReadsBackTheSame) {
-  // The level: 4 walls, a slope or a rock per 200 bodies, and 4 sensors, all static.
-  const auto level = [](int n) { return 4u + static_cast<std::size_t>(n / 200) + 4u; };
+  // The level: the cave (a chain), a slope or a rock per 200 bodies, and 4 sensors, all static.
+  const auto level = [](int n) { return 1u + static_cast<std::size_t>(n / 200) + 4u; };
   Scene scene = default_scene(60, 10, 3);
   scene.bodies.push_back({.pose = {Vec2(30, 30), 0.4},
                           .shapes = {Ellipse{Vec2(0, 0), 2, 0.5, 0.0}, Rect{Vec2(0, 1), Vec2(0.3, 0.8), 0.2}},
@@ -34,6 +34,8 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
   EXPECT_EQ(back.bodies.size(), 60u + level(60) + 3u);  // and the ship, the lamp and the ledge
+  EXPECT_FALSE(back.bodies[60].chain.empty()) << "the level's cave, a chain loop";
+  EXPECT_TRUE(back.bodies[60].loop);
   // One bullet per 500 bodies, continuous, and read back so.
   const Scene big = default_scene(1000, 10, 3);
   ASSERT_EQ(big.bodies.size(), 1002u + level(1000));
@@ -96,12 +98,16 @@ TEST(Scene, ExampleFileParses) {
   std::stringstream text;
   text << in.rdbuf();
   const Scene scene = parse_scene(text.str());
-  EXPECT_EQ(scene.bodies.size(), 12u);
+  EXPECT_EQ(scene.bodies.size(), 13u);
   EXPECT_EQ(scene.bodies[11].shapes.size(), 3u);  // a ship: a hull and two wings
   EXPECT_EQ(scene.bodies[6].id, 42u);
   EXPECT_EQ(scene.bodies[5].id, 5u);
   EXPECT_TRUE(scene.bodies[8].is_static && !scene.bodies[8].sensor);
   EXPECT_TRUE(scene.bodies[10].is_static && scene.bodies[10].sensor);
+  // A hill of 4 segments, its first and last points ghosts.
+  EXPECT_EQ(scene.bodies[12].chain.size(), 7u);
+  EXPECT_EQ(scene.bodies[12].shapes.size(), 4u);
+  EXPECT_FALSE(scene.bodies[12].loop);
 }
 
 std::size_t occurrences(const std::string& text, const std::string& needle) {
@@ -152,6 +158,16 @@ TEST(Scene, BrokenFilesNameTheField) {
        "bodies[0].points: expected two [x, y] points"},
       {with_body(R"({"shape": "segment", "points": [[2, 1], [2, 1]], "static": true})"),
        "bodies[0]: segment length must be positive (its two points are one) (got 0)"},
+      {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0], [0, 0]]})"),
+       "bodies[0]: a chain is level geometry: its body must be static (\"static\": true)"},
+      {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0]], "static": true})"),
+       "bodies[0]: an open chain needs at least 4 points, its first and last ghosts only (got 3)"},
+      {with_body(R"({"shape": "chain", "points": [[0, 0], [1, 0], [1, 1]], "loop": 1, "static": true})"),
+       "bodies[0].loop: expected true or false"},
+      {with_body(R"({"shape": "chain", "points": [[0, 0], [1, 0], [1, 1]], "radius": 1, "static": true})"),
+       "bodies[0]: a chain has no field 'radius' (its own are points and loop)"},
+      {with_body(R"({"center": [0, 0], "shapes": [{"shape": "chain", "points": [[0, 0], [1, 0], [1, 1]]}]})"),
+       "bodies[0].shapes[0].shape: a chain is a body of its own, not one shape of a body"},
       {with_body(R"({"shape": "polygon", "center": [1, 1], "vertices": [[0, 0], [1]]})"),
        "bodies[0].vertices[1]: expected an array of 2 numbers"},
       {with_body(R"({"center": [1, 1], "radius": 1})"), "bodies[0].shape: missing"},
@@ -246,8 +262,8 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   SceneRun run(default_scene(300, 30, 5));
   const RunSummary s = run.run(nullptr);
   EXPECT_EQ(s.frames, 30);
-  EXPECT_EQ(s.bodies, 309u);
-  EXPECT_EQ(s.statics, 9u);
+  EXPECT_EQ(s.bodies, 306u);
+  EXPECT_EQ(s.statics, 6u);
   const World& w = run.world();
   const reference::AllPairs expected = reference::all_pairs(w, 0.0);
   EXPECT_EQ(w.overlapping(), expected.overlapping);
@@ -268,7 +284,10 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   const std::string text = svg.str();
   std::size_t shapes = 0;
   for (const char* css : {"class=\"body", "class=\"static", "class=\"sensor"}) shapes += occurrences(text, css);
-  EXPECT_EQ(shapes, 309u);
+  std::size_t in_world = 0;
+  for (const BodyId id : w.bodies()) in_world += w.shapes(id).size();
+  EXPECT_EQ(shapes, in_world);  // each body's shape, and each segment of the cave
+  EXPECT_GT(in_world, 306u);
   EXPECT_GT(occurrences(text, "class=\"sensor"), 0u);
   EXPECT_GT(occurrences(text, "class=\"static"), 0u);
   EXPECT_NE(text.find("</svg>"), std::string::npos);

@@ -80,7 +80,8 @@ constexpr ShapeFields kShapeFields[] = {
     {"rect", {"half_extents", "angle"}, "half_extents and angle"},
     {"capsule", {"half_length", "radius", "angle"}, "half_length, radius and angle"},
     {"polygon", {"vertices", "radius", "angle"}, "vertices, radius and angle"},
-    {"segment", {"points"}, "points"}};
+    {"segment", {"points"}, "points"},
+    {"chain", {"points", "loop"}, "points and loop"}};
 
 bool listed(std::initializer_list<const char*> names, const std::string& key) {
   return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
@@ -136,6 +137,7 @@ Shape parse_shape(const json& b, const std::string& field, std::initializer_list
   const std::string kind = word.get<std::string>();
   reject_unknown_fields(b, kind, field, others);
   if (kind == "segment") return parse_segment(b, field);
+  if (kind == "chain") fail(field + ".shape", "a chain is a body of its own, not one shape of a body");
   const Vec2 center = vec2(member(b, "center", field), field + ".center");
   const double angle = optional_number(b, "angle", field, 0.0);
   if (kind == "circle") {
@@ -164,7 +166,8 @@ Shape parse_shape(const json& b, const std::string& field, std::initializer_list
     return Capsule{center, h, r, angle};
   }
   if (kind == "polygon") return parse_polygon(b, field, center, angle);
-  fail(field + ".shape", "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule, polygon or segment)");
+  fail(field + ".shape",
+       "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule, polygon, segment or chain)");
 }
 
 // A shape the library takes: the ranges it supports.
@@ -209,12 +212,36 @@ bool flag(const json& object, const char* key, const std::string& field) {
 
 std::string body_field(std::size_t index) { return "bodies[" + std::to_string(index) + "]"; }
 
+// A chain's points and "loop", checked as World::add_chain checks them; its segments are the body's
+// shapes, at the origin.
+void parse_chain(const json& b, const std::string& field, SceneBody& body) {
+  reject_unknown_fields(b, "chain", field, kBodyFields);
+  if (b.contains("center")) fail(field + ".center", "a chain has no centre: its points place it");
+  const json& points = member(b, "points", field);
+  if (!points.is_array()) fail(field + ".points", "expected an array of [x, y] points, got " + points.dump());
+  for (std::size_t k = 0; k < points.size(); ++k)
+    body.chain.push_back(vec2(points[k], field + ".points[" + std::to_string(k) + "]"));
+  body.loop = flag(b, "loop", field);
+  try {
+    for (const ChainSegment& s : chain_segments(body.chain, body.loop)) body.shapes.emplace_back(s.segment);
+  } catch (const InvalidShape& e) {
+    fail(field, e.what());
+  }
+}
+
+bool is_chain(const json& b) {
+  const auto it = b.find("shape");
+  return it != b.end() && it->is_string() && it->get<std::string>() == "chain";
+}
+
 SceneBody parse_body(const json& b, std::size_t index) {
   const std::string field = body_field(index);
   if (!b.is_object()) fail(field, "expected an object");
   SceneBody body;
   if (b.contains("shapes")) {
     parse_shapes(b, field, body);
+  } else if (is_chain(b)) {
+    parse_chain(b, field, body);
   } else {
     const Shape shape = valid_shape(parse_shape(b, field, kBodyFields), field);
     body.pose = pose_of(shape);
@@ -235,8 +262,10 @@ SceneBody parse_body(const json& b, std::size_t index) {
   }
   if (body.is_static && body.continuous) fail(field, "a static body cannot be continuous");
   const auto segment = [](const Shape& s) { return std::holds_alternative<Segment>(s); };
-  if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), segment))
-    fail(field, "a segment is level geometry: its body must be static (\"static\": true)");
+  if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), segment)) {
+    fail(field, std::string("a ") + (body.chain.empty() ? "segment" : "chain") +
+                    " is level geometry: its body must be static (\"static\": true)");
+  }
   body.filter.category = bits(b, "category", field, body.filter.category);
   body.filter.mask = bits(b, "mask", field, body.filter.mask);
   if (const auto it = b.find("group"); it != b.end()) {
@@ -349,7 +378,7 @@ bool SceneBody::operator==(const SceneBody& o) const {
   return pose.position == o.pose.position && pose.angle == o.pose.angle &&
          std::equal(shapes.begin(), shapes.end(), o.shapes.begin(), o.shapes.end(), same_shape) &&
          velocity == o.velocity && angular_velocity == o.angular_velocity && id == o.id && continuous == o.continuous &&
-         filter == o.filter && is_static == o.is_static && sensor == o.sensor;
+         filter == o.filter && is_static == o.is_static && sensor == o.sensor && chain == o.chain && loop == o.loop;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -431,7 +460,10 @@ std::string write_scene(const Scene& scene) {
   json bodies = json::array();
   for (const SceneBody& b : scene.bodies) {
     json j;
-    if (b.shapes.size() == 1 && center_of(b.shapes[0]) == Vec2::Zero() && angle_of(b.shapes[0]) == 0.0) {
+    if (!b.chain.empty()) {
+      j = {{"shape", "chain"}, {"points", json::array()}, {"loop", b.loop}};
+      for (const Vec2& p : b.chain) j["points"].push_back({p.x(), p.y()});
+    } else if (b.shapes.size() == 1 && center_of(b.shapes[0]) == Vec2::Zero() && angle_of(b.shapes[0]) == 0.0) {
       j = shape_json(placed_shapes(b).front());
     } else {
       j["center"] = {b.pose.position.x(), b.pose.position.y()};
@@ -471,12 +503,26 @@ namespace {
 constexpr Filter kFirstLayer{.category = 1, .mask = 1};
 constexpr Filter kSecondLayer{.category = 2, .mask = 2};
 
-// The built-in scene's level (on both layers): walls along the arena's sides, slopes and rocks,
-// and four sensors at the quarter points.
+// The built-in scene's cave: a clockwise loop half a unit inside the arena's sides, the floor (run
+// from right to left) rolling in hills 3 high and 48 long, a point every unit or so.
+std::vector<Vec2> cave(const Aabb& arena) {
+  const Vec2 lo = arena.min.array() + 0.5, hi = arena.max.array() - 0.5;
+  std::vector<Vec2> points{Vec2(lo.x(), hi.y()), hi, Vec2(hi.x(), lo.y())};
+  const int steps = static_cast<int>(hi.x() - lo.x());
+  for (int k = 1; k < steps; ++k) {
+    const double x = hi.x() - (hi.x() - lo.x()) * k / steps;
+    points.emplace_back(x, lo.y() + 1.5 * (1 - std::cos(2 * std::numbers::pi * (x - lo.x()) / 48)));
+  }
+  points.push_back(lo);
+  return points;
+}
+
+// The built-in scene's level (on both layers): the cave, slopes and rocks, and four sensors at the
+// quarter points.
 template <class Uniform>
 void add_level(Scene& scene, int count, Uniform& uniform) {
   const Filter both{.category = 3, .mask = 3};
-  const Vec2 size = scene.arena.max - scene.arena.min, mid = 0.5 * (scene.arena.min + scene.arena.max);
+  const Vec2 size = scene.arena.max - scene.arena.min;
   auto next_id = static_cast<std::uint64_t>(scene.bodies.size());
   const auto add = [&](const Shape& shape, bool sensor) {
     scene.bodies.push_back({.pose = pose_of(shape),
@@ -486,12 +532,10 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
                             .is_static = true,
                             .sensor = sensor});
   };
-  for (int side = 0; side < 2; ++side) {
-    const double h = side == 0 ? scene.arena.min.y() + 0.5 : scene.arena.max.y() - 0.5;
-    const double v = side == 0 ? scene.arena.min.x() + 0.5 : scene.arena.max.x() - 0.5;
-    add(Rect{Vec2(mid.x(), h), Vec2(0.5 * size.x(), 0.5), 0.0}, false);
-    add(Rect{Vec2(v, mid.y()), Vec2(0.5, 0.5 * size.y()), 0.0}, false);
-  }
+  scene.bodies.push_back(
+      {.id = next_id++, .filter = both, .is_static = true, .chain = cave(scene.arena), .loop = true});
+  for (const ChainSegment& s : chain_segments(scene.bodies.back().chain, true))
+    scene.bodies.back().shapes.emplace_back(s.segment);
   for (int k = 0; k < count / 200; ++k) {
     const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8),
                   uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));

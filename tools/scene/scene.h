@@ -30,8 +30,8 @@ class SceneError : public std::runtime_error {
 };
 
 struct SceneBody {
-  Pose pose;                  // where the body's origin is
-  std::vector<Shape> shapes;  // in its frame; a body of one shape has it at the origin
+  Pose pose{};                  // where the body's origin is
+  std::vector<Shape> shapes{};  // in its frame; a body of one shape has it at the origin
   Vec2 velocity = Vec2::Zero();
   double angular_velocity = 0.0;
   std::uint64_t id = 0;
@@ -39,6 +39,10 @@ struct SceneBody {
   Filter filter;
   bool is_static = false;
   bool sensor = false;
+  // A chain's points and whether it closes (World::add_chain): its body is static at the origin and
+  // `shapes` are its segments. Empty for the other bodies.
+  std::vector<Vec2> chain{};
+  bool loop = false;
   bool operator==(const SceneBody&) const;
 };
 
@@ -71,9 +75,10 @@ std::string write_scene(const Scene& scene);  // JSON that parse_scene reads bac
 // 2, random velocities up to 6 per second, in an arena sized for about 8% coverage, and one bullet
 // per 500 of them (continuous circles of radius 0.1 at 300 per second: 25 radii a frame at 60 Hz);
 // seeded. Every fourth body is on a second layer (category 2, mask 2) that never pairs with the
-// first (category 1, mask 1; the bullets too). A static level on both layers: walls along the arena's
-// sides, and one slope (a tilted rectangle) and one rock (an ellipse) per 200 bodies; and four static
-// sensors (circles a twelfth of the arena across) at the quarter points, which sense both layers.
+// first (category 1, mask 1; the bullets too). A static level on both layers: a chain loop inside the
+// arena's sides, clockwise (the inside of a cave), its floor rolling in hills 3 high, and one slope
+// (a tilted rectangle) and one rock (an ellipse) per 200 bodies; and four static sensors (circles a
+// twelfth of the arena across) at the quarter points, which sense both layers.
 Scene default_scene(int count = 4000, int frames = 600, std::uint64_t seed = 1);
 
 // One frame of kinematics: each body advances by dt and bounces off the walls.
