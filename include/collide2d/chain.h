@@ -18,7 +18,8 @@
 /// - smooth: the normal is the segment's, or lies in a convex vertex's cone between the two faces'
 ///   normals. Any other (a corner of the shape catching a vertex, a shape pushed in deeper than its
 ///   way out along the segment's normal) gives way to the segment's normal held fixed: the shape's
-///   deepest points over the segment, none where no point of it lies over the segment.
+///   deepest points over the segment; none where no point of it lies over the segment, or where
+///   the shape is apart and its points over the segment lie behind it.
 /// Overlap, distance, proximity and queries see the segment's geometry, from either side.
 #pragma once
 

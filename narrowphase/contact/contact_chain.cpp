@@ -91,11 +91,12 @@ bool within(const Vec2& from, const Vec2& n, const Vec2& to) {
   return cross(from, n) >= -kTurn && cross(n, to) >= -kTurn;
 }
 
-// Whether n is the segment's normal or lies in the cone of the convex vertex it leans towards.
+// Whether n is the segment's normal or lies in the cone of the convex vertex it leans towards (a
+// cone of a sharp vertex spans more than a quarter turn, past the segment's direction).
 bool admitted(const Faces& f, const Vec2& n) {
-  if (!(n.dot(f.n) > 0.0)) return false;
-  if (n.dot(f.e) >= 0.0) return f.convex2 ? within(f.n, n, f.n2) : cross(f.n, n) <= kTurn;
-  return f.convex1 ? within(f.n0, n, f.n) : cross(n, f.n) <= kTurn;
+  const bool front = n.dot(f.n) > 0.0;
+  if (n.dot(f.e) >= 0.0) return f.convex2 ? within(f.n, n, f.n2) : front && cross(f.n, n) <= kTurn;
+  return f.convex1 ? within(f.n0, n, f.n) : front && cross(n, f.n) <= kTurn;
 }
 
 // A curved shape's contact along the segment's normal: its support point q along -n, where it lies
@@ -140,7 +141,11 @@ Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, co
   if (c.empty()) return c;
   if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
-  return held(a, ao, f, b, bo, options);
+  const Contact h = held(a, ao, f, b, bo, options);
+  // Apart, a shape's points over the segment lie in front of it, or all behind it where the shape
+  // comes round from the back (a sliver whose centre is in front beyond the segment's end): none.
+  if (c.separation > 0 && !(h.separation >= 0)) return Contact::beyond(kInf);
+  return h;
 }
 
 Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& options) {

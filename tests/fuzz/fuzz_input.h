@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <span>
 
 namespace collide2d::fuzz {
@@ -113,6 +115,15 @@ class Input {
 inline double extent(const Shape& s) {
   const Aabb b = aabb(s);
   return std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff());
+}
+
+// Aborts naming the property that failed, so that the fuzzer keeps the input.
+[[noreturn]] inline void fail(const char* what) {
+  std::fprintf(stderr, "property failed: %s\n", what);
+  std::abort();
+}
+inline void check(bool ok, const char* what) {
+  if (!ok) fail(what);
 }
 
 // Whether the shape passes validation (the fuzzers check the properties on valid shapes only).

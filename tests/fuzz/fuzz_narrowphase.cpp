@@ -24,14 +24,8 @@ namespace {
 
 using namespace collide2d;
 
-[[noreturn]] void fail(const char* what) {
-  std::fprintf(stderr, "property failed: %s\n", what);
-  std::abort();
-}
-
-void check(bool ok, const char* what) {
-  if (!ok) fail(what);
-}
+using fuzz::check;
+using fuzz::fail;
 
 Shape moved(const Shape& s, double c, double sn, const Vec2& t) {
   return std::visit(

@@ -1,12 +1,14 @@
 // World fuzzer: a random sequence of add (one shape, or several placed in the body's frame; with a
 // filter, static or moving, sensor or solid), add_shape, remove_shape, set_pose or move_to,
 // set_filter (of a body or of a shape), set_sensor, set_local_shape, set_static, set_continuous,
-// remove, update and filtered queries from the bytes. Bad input (an unknown body or shape, a handle
+// remove, update and filtered queries from the bytes, and past 64 of them a chain (a static body of
+// one-sided segments) and 64 more. Bad input (an unknown body or shape, a handle
 // kept past its removal, a body's last shape removed, a static body made continuous) must throw and
 // leave the World as it was; after every update the overlapping shape pairs, the began/ended lists
 // (of shapes and of bodies), the sensor pairs with their began/ended lists and the proximity pairs
 // must equal an all-pairs check over the pairs of shapes the World's rules let through (no two
-// shapes of one body; filters; no two static bodies; a sensor only with a solid shape), and the
+// shapes of one body; filters; no two static bodies; a sensor only with a solid shape; a chain's
+// segment only where its rules give a contact; rays through a chain's back), and the
 // impacts must be those of time_of_impact on such solid pairs with a continuous body, from the
 // poses the fuzzer saw at the last update, the earliest for each pair of bodies: every pair of
 // bodies with a hit where the boxes over the step meet, and none that time_of_impact does not find.
@@ -16,6 +18,7 @@
 #include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
+#include "../support/chain_rules.h"
 #include "fuzz_input.h"
 
 #include <algorithm>
@@ -34,12 +37,7 @@ namespace {
 
 using namespace collide2d;
 
-void check(bool ok, const char* what) {
-  if (!ok) {
-    std::fprintf(stderr, "property failed: %s\n", what);
-    std::abort();
-  }
-}
+using fuzz::check;
 
 // Every shape of the World with its body, by body index.
 std::vector<BodyShape> all_shapes(const World& w) {
@@ -110,7 +108,7 @@ void compare_with_all_pairs(const World& w, double margin, const std::vector<Sha
         continue;
       }
       if (intersects(aabb(a), aabb(b)) && overlaps(a, b)) {
-        hit.push_back(pair_of(ids[i], ids[j]));
+        if (reference::admitted_by_chain(w, ids[i].shape, ids[j].shape)) hit.push_back(pair_of(ids[i], ids[j]));
         continue;
       }
       if (margin == 0) continue;
@@ -218,6 +216,10 @@ void check_impacts(const World& w, const Starts& starts) {
       const Shape* si = start_of(ids[i].shape);
       const Shape* sj = start_of(ids[j].shape);
       if (!si && !sj) continue;
+      // A chain's segment stops only what starts in front of it.
+      const auto chain_i = w.chain_segment(ids[i].shape), chain_j = w.chain_segment(ids[j].shape);
+      if (chain_i && !in_front(*chain_i, sj ? *sj : w.shape(ids[j].shape))) continue;
+      if (chain_j && !in_front(*chain_j, si ? *si : w.shape(ids[i].shape))) continue;
       const auto motion = [&](const Shape* start, ShapeId id) {
         const Shape& now = w.shape(id);
         return start ? Motion{center_of(now) - center_of(*start), angle_of(now) - angle_of(*start)} : Motion{};
@@ -297,7 +299,10 @@ void check_rays(const World& world, fuzz::Input& in) {
     if (world.is_sensor(s.shape) || !lets_through(QueryFilter{}, world.filter(s.shape))) continue;
     const Shape& shape = world.shape(s.shape);
     if (contains(shape, origin)) continue;  // rays skip the shapes they start in
-    const auto h = collide2d::ray_cast(shape, origin, Vec2(direction / direction.norm()), 100.0);
+    const Vec2 unit = direction / direction.norm();
+    const auto chain = world.chain_segment(s.shape);  // one-sided
+    const auto h =
+        chain ? collide2d::ray_cast(*chain, origin, unit, 100.0) : collide2d::ray_cast(shape, origin, unit, 100.0);
     if (h) expected.emplace_back(h->distance, s.body.index, s.shape.index);
   }
   std::sort(expected.begin(), expected.end());
@@ -307,6 +312,21 @@ void check_rays(const World& world, fuzz::Input& in) {
     check(world.body(all[k].shape) == all[k].body, "a ray hit names the shape's body");
   }
   if (hit) check(hit->shape == all.front().shape, "ray_cast is ray_cast_all's first");
+}
+
+// A chain of 4 to 8 points, open or closed, on a static body; where its points are refused
+// (InvalidShape), nothing changes.
+void add_chain(World& world, fuzz::Input& in) {
+  const auto state = snapshot(world);
+  std::vector<Vec2> points(4 + in.byte() % 5);
+  for (Vec2& p : points) p = in.point();
+  const bool loop = in.byte() & 1;
+  const Filter filter = filter_from(in);
+  try {
+    world.add_chain(points, loop, {.filter = filter, .is_static = true});
+  } catch (const InvalidShape&) {
+    check(snapshot(world) == state, "a refused chain changed nothing");
+  }
 }
 
 }  // namespace
@@ -323,7 +343,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!world.is_continuous(id)) return;
     for (const ShapeId s : world.shapes(id)) starts[s] = world.shape(s);
   };
-  for (int op = 0; op < 64 && !in.empty(); ++op) {
+  // The first 64 ops decode as the corpus was written; bytes past them add a chain, then 64 more.
+  for (int op = 0; op < 129 && !in.empty(); ++op) {
+    if (op == 64) {
+      add_chain(world, in);
+      continue;
+    }
     const auto state = snapshot(world);
     const std::vector<BodyId> ids = world.bodies();
     const BodyId some = ids.empty() ? BodyId{7, 1} : ids[in.byte() % ids.size()];

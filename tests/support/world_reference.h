@@ -3,6 +3,7 @@
 #pragma once
 
 #include <collide2d/world.h>
+#include "chain_rules.h"
 #include "mp_reference.h"
 
 #include <algorithm>
@@ -52,14 +53,6 @@ struct AllPairs {
   std::vector<SensorPair> sensing;
   std::vector<ShapePair> near;
 };
-
-// Whether a pair that overlaps passes a chain's rules (chain.h): where one shape is a chain's
-// segment, its contact with the other has points.
-inline bool admitted_by_chain(const World& world, ShapeId x, ShapeId y) {
-  if (const auto chain = world.chain_segment(x)) return !contact(*chain, world.shape(y)).empty();
-  if (const auto chain = world.chain_segment(y)) return !contact(*chain, world.shape(x)).empty();
-  return true;
-}
 
 inline AllPairs all_pairs(const World& world, double margin) {
   const std::vector<BodyShape> all = all_shapes(world);
