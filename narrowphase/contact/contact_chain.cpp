@@ -28,30 +28,39 @@ constexpr double kTurn = 64 * kEpsilon;
 Vec2 turned(const Orientation& o, const Vec2& v) { return {o.c * v.x() - o.s * v.y(), o.s * v.x() + o.c * v.y()}; }
 Vec2 right_of(const Vec2& d) { return {d.y(), -d.x()}; }
 
-// The chain segment in the world: its points, its unit direction e and its normal n (e turned
-// clockwise, towards the side it collides from), and at each end whether the vertex is convex and
-// the neighbour's normal there.
+// The chain segment in the world: its points, its normal n (its direction turned clockwise, towards
+// the side it collides from), and at each end whether the vertex is convex and the neighbour's
+// normal there (read only at a convex vertex). The one-sided rule reads the normals' signs alone,
+// so sides_of() leaves them as long as their edges, and unit() scales them for the other rules,
+// which only pairs within the contact's limit reach.
 struct Faces {
-  Vec2 p1, p2, e, n;
-  double length = 0.0;
+  Vec2 p1, p2, n, n0, n2;
   bool convex1 = false, convex2 = false;
-  Vec2 n0, n2;
+  Vec2 e = Vec2::Zero();  // the unit direction, once unit
+  double length = 0.0;
 };
 
-// A neighbour's normal is read only at a convex vertex, and made only there.
-Faces faces_of(const ChainSegment& s, const Orientation& o) {
+Faces sides_of(const ChainSegment& s, const Orientation& o) {
   const Vec2& end = s.segment.end;
   const Vec2 in = -s.ghost1, out = s.ghost2 - end;  // the neighbours' directions, in the segment's frame
   Faces f;
   f.p1 = s.segment.center;
-  f.p2 = f.p1 + turned(o, end);
-  f.length = end.norm();
-  f.e = turned(o, Vec2(end / f.length));
-  f.n = right_of(f.e);
+  const Vec2 d = turned(o, end);
+  f.p2 = f.p1 + d;
+  f.n = right_of(d);
   f.convex1 = cross(in, end) > 0.0;
   f.convex2 = cross(end, out) > 0.0;
-  if (f.convex1) f.n0 = right_of(turned(o, in.normalized()));
-  if (f.convex2) f.n2 = right_of(turned(o, out.normalized()));
+  if (f.convex1) f.n0 = right_of(turned(o, in));
+  if (f.convex2) f.n2 = right_of(turned(o, out));
+  return f;
+}
+
+Faces unit(Faces f, const ChainSegment& s) {
+  f.length = s.segment.end.norm();
+  f.n /= f.length;
+  f.e = Vec2(-f.n.y(), f.n.x());
+  if (f.convex1) f.n0.normalize();
+  if (f.convex2) f.n2.normalize();
   return f;
 }
 
@@ -127,18 +136,19 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
 }  // namespace
 
 bool in_front(const ChainSegment& s, const Shape& shape) {
-  return in_front(faces_of(s, Orientation::of(s.segment.angle)),
+  return in_front(sides_of(s, Orientation::of(s.segment.angle)),
                   reference_point(shape, Orientation::of(angle_of(shape))));
 }
 
 Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
                 const ContactOptions& options) {
-  const Faces f = faces_of(a, ao);
+  const Faces sides = sides_of(a, ao);
   const Vec2 r = reference_point(b, bo);
-  if (!in_front(f, r)) return Contact::beyond(kInf);
+  if (!in_front(sides, r)) return Contact::beyond(kInf);
   // The segment's contact first: with a limit it ends soonest for the pairs apart.
   const Contact c = contact(Shape(a.segment), ao, b, bo, options);
   if (c.empty()) return c;
+  const Faces f = unit(sides, a);
   if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
   const Contact h = held(a, ao, f, b, bo, options);
@@ -159,7 +169,7 @@ Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& opt
 
 std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
                                     double max_distance) {
-  const Faces f = faces_of(s, Orientation::of(s.segment.angle));
+  const Faces f = sides_of(s, Orientation::of(s.segment.angle));
   if (f.n.dot(Vec2(origin - f.p1)) < 0.0) return std::nullopt;
   return ray_cast(Shape(s.segment), origin, direction, max_distance);
 }

@@ -295,5 +295,20 @@ TEST(ChainWorld, BulletStopsOnlyFromTheFront) {
   EXPECT_NEAR((hit.normal - Vec2(0, 1)).norm(), 0.0, 1e-12);
 }
 
+// A chain blocks sight from either side: a line of sight through it finds its body, one above it
+// does not; a ray from above hits it, one from below passes.
+TEST(ChainWorld, BlocksSightFromEitherSide) {
+  World world({.threads = 1});
+  const BodyId floor = world.add_chain(kFloor, false, {.is_static = true});
+  EXPECT_EQ(world.overlapping(Shape(Segment::between(Vec2(1, 1), Vec2(1.5, -1)))), std::vector<BodyId>{floor});
+  EXPECT_EQ(world.overlapping(Shape(Segment::between(Vec2(-1, -1), Vec2(-1.5, 1)))), std::vector<BodyId>{floor});
+  EXPECT_TRUE(world.overlapping(Shape(Segment::between(Vec2(-1, 0.5), Vec2(1, 0.5)))).empty());
+  const auto down = world.ray_cast(Vec2(1, 1), Vec2(0, -1), 5.0);
+  ASSERT_TRUE(down);
+  EXPECT_EQ(down->body, floor);
+  EXPECT_EQ(down->distance, 1.0);
+  EXPECT_FALSE(world.ray_cast(Vec2(1, -1), Vec2(0, 1), 5.0));
+}
+
 }  // namespace
 }  // namespace collide2d
