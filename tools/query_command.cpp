@@ -106,7 +106,7 @@ Shape parse_shape(std::string_view text, const char* side) {
     return shape;
   }
   throw ParseError("unknown shape '" + std::string(words[0]) +
-                   "' (expected circle, ellipse, rect, capsule, polygon or segment)");
+                   "' (expected circle, ellipse, rect, capsule, polygon, segment or chain)");
 }
 
 struct Side {
@@ -114,6 +114,25 @@ struct Side {
   Motion motion;
   bool moving = false;
 };
+
+std::string_view first_word(std::string_view text) {
+  const std::vector<std::string_view> words = split_words(text);
+  return words.empty() ? std::string_view{} : words[0];
+}
+
+// `chain gx1 gy1 x1 y1 x2 y2 gx2 gy2`: the chain segment from (x1, y1) to (x2, y2) between its
+// ghosts, level geometry, so shape A and unmoving.
+ChainSegment parse_chain(std::string_view text) {
+  if (text.find('@') != std::string_view::npos) throw ParseError("a chain segment is level geometry: it does not move");
+  const std::vector<std::string_view> words = split_words(text);
+  std::vector<double> v;
+  for (std::size_t k = 1; k < words.size(); ++k) v.push_back(parse_number(words[k]));
+  if (v.size() != 8)
+    throw ParseError("chain takes 8 numbers (gx1 gy1 x1 y1 x2 y2 gx2 gy2), got " + std::to_string(v.size()));
+  const ChainSegment s = ChainSegment::of(Vec2(v[0], v[1]), Vec2(v[2], v[3]), Vec2(v[4], v[5]), Vec2(v[6], v[7]));
+  validate(s);
+  return s;
+}
 
 // `<shape>` or `<shape> @ vx vy w`.
 Side parse_side(std::string_view text, const char* side) {
@@ -142,7 +161,14 @@ std::optional<QueryLine> parse_query_line(std::string_view line) {
   const auto sep = body.find(';');
   if (sep == std::string_view::npos) throw ParseError("expected '<shape> ; <shape>', found no ';'");
   if (body.find(';', sep + 1) != std::string_view::npos) throw ParseError("expected one ';', found more");
-  const Side a = parse_side(body.substr(0, sep), "A"), b = parse_side(body.substr(sep + 1), "B");
+  const std::string_view a_text = body.substr(0, sep), b_text = body.substr(sep + 1);
+  if (first_word(b_text) == "chain") throw ParseError("a chain segment is shape A only: write it first");
+  if (first_word(a_text) == "chain") {
+    const ChainSegment chain = parse_chain(a_text);
+    const Side b = parse_side(b_text, "B");
+    return QueryLine{chain.segment, b.shape, {}, b.motion, b.moving, chain};
+  }
+  const Side a = parse_side(a_text, "A"), b = parse_side(b_text, "B");
   return QueryLine{a.shape, b.shape, a.motion, b.motion, a.moving || b.moving};
 }
 
@@ -170,11 +196,14 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
   int n = 0;
   if (q.moving && options.answer != Answer::toi) throw ParseError("a motion ('@ vx vy w') needs --toi");
   if (options.answer == Answer::toi) {
-    const TimeOfImpact r = time_of_impact(q.a, q.a_motion, q.b, q.b_motion);
+    // A chain segment stops only what starts in front of it.
+    const TimeOfImpact r =
+        q.chain && !in_front(*q.chain, q.b) ? TimeOfImpact{} : time_of_impact(q.a, q.a_motion, q.b, q.b_motion);
     n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", r.status == ToiStatus::miss ? 0 : 1,
                       r.t + 0.0, r.normal.x() + 0.0, r.normal.y() + 0.0, r.point.x() + 0.0, r.point.y() + 0.0);
   } else if (options.answer == Answer::contact) {
-    const Contact c = contact(q.a, q.b);
+    const Contact c = q.chain ? contact(*q.chain, q.b) : contact(q.a, q.b);
+    if (c.empty()) return "none";
     // + 0.0 prints a zero as 0, never -0 (a normal's sign of zero carries nothing).
     n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.separation + 0.0,
                       c.normal.x() + 0.0, c.normal.y() + 0.0, c.point_a.x() + 0.0, c.point_a.y() + 0.0,

@@ -2,6 +2,10 @@
 //
 // Input: one query a line, `<shapeA> ; <shapeB>`, each shape one of
 //   circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta     (theta in radians)
+//   capsule cx cy h r theta | polygon cx cy theta r x0 y0 ... | segment x1 y1 x2 y2
+// and shape A also `chain gx1 gy1 x1 y1 x2 y2 gx2 gy2`, a chain segment (chain.h): its contact
+// follows the chain's rules (`none` where they give none) and so does its time of impact (a miss
+// from behind); its overlap and distance are its segment's.
 // Blank lines and lines starting with '#' are skipped (they produce no output).
 // Output: one line per query, `overlap distance ax ay bx by` (overlap 1/0 for the solids; distance 0
 // when they overlap; a and b the closest points, a common point when overlapping), numbers in %.17g
@@ -20,6 +24,7 @@
 // error stream; processing goes on.
 #pragma once
 
+#include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
 
@@ -45,6 +50,9 @@ struct QueryLine {
   Motion a_motion;
   Motion b_motion;
   bool moving = false;  // a motion was written
+  // A is this chain segment (`chain ...`): its contact and time of impact follow the chain's rules,
+  // its overlap and distance are its segment's (`a`).
+  std::optional<ChainSegment> chain{};
 };
 
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.

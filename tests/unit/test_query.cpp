@@ -2,6 +2,7 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
+#include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include "tools/query_command.h"
 
@@ -229,6 +230,40 @@ TEST(QueryCommand, EachBadLineGetsAnErrorInPlace) {
     EXPECT_NE(r.out[k + 1].find(expected_errors[k]), std::string::npos) << r.out[k + 1];
     EXPECT_NE(r.err.find("line " + std::to_string(k + 2) + ": "), std::string::npos) << r.err;
   }
+}
+
+// A chain segment as shape A: its contact and time of impact follow the chain's rules (the library's
+// own results, to the bit), its overlap and distance are its segment's; it is refused as shape B,
+// moving, or short of numbers.
+TEST(QueryCommand, ChainSegmentLines) {
+  const ChainSegment floor = ChainSegment::of(Vec2(2, 0), Vec2(0, 0), Vec2(-2, 0), Vec2(-3, 0));
+  const std::string chain = "chain 2 0 0 0 -2 0 -3 0 ; ";
+  const CommandRun contacts = run(chain + "rect 0.4921875 0.484375 0.5 0.5 0\n" + chain + "circle -1 -0.25 0.5\n",
+                                  "minkowski", tool::Answer::contact);
+  ASSERT_EQ(contacts.status, 0) << contacts.err;
+  const Contact c = contact(floor, Rect{Vec2(0.4921875, 0.484375), Vec2(0.5, 0.5), 0.0});
+  std::ostringstream expected;
+  expected.precision(17);
+  expected << c.separation << ' ' << c.normal.x() + 0.0 << ' ' << c.normal.y() + 0.0 << ' ' << c.point_a.x() + 0.0
+           << ' ' << c.point_a.y() + 0.0 << ' ' << c.point_b.x() + 0.0 << ' ' << c.point_b.y() + 0.0;
+  EXPECT_EQ(contacts.out, (std::vector<std::string>{expected.str(), "none"}));
+  const CommandRun impacts = run(chain + "circle -1 5 0.5 @ 0 -10 0\n" + chain + "circle -1 -5 0.5 @ 0 10 0\n",
+                                 "minkowski", tool::Answer::toi);
+  ASSERT_EQ(impacts.out.size(), 2u);
+  EXPECT_EQ(impacts.out[0].rfind("1 0.44999", 0), 0u) << impacts.out[0];
+  EXPECT_EQ(impacts.out[1], "0 1 1 0 0 0") << "from below it passes";
+  const CommandRun sight = run(chain + "circle -1 -0.25 0.5\n");
+  ASSERT_EQ(sight.out.size(), 1u);
+  EXPECT_EQ(sight.out[0].rfind("1 0 ", 0), 0u) << "the segment's geometry overlaps: " << sight.out[0];
+  const CommandRun bad =
+      run("circle 0 0 1 ; chain 2 0 0 0 -2 0 -3 0\n" + chain.substr(0, 17) + " ; circle 1 1 1\n" +
+          "chain 2 0 0 0 -2 0 -3 0 @ 1 0 0 ; circle 1 1 1\n" + "chain 0 0 0 0 1 0 2 0 ; circle 1 1 1\n");
+  const std::vector<std::string> errors = {"a chain segment is shape A only", "chain takes 8 numbers",
+                                           "a chain segment is level geometry: it does not move",
+                                           "chain segment ghost1 must differ from point1"};
+  ASSERT_EQ(bad.out.size(), errors.size());
+  for (std::size_t k = 0; k < errors.size(); ++k)
+    EXPECT_NE(bad.out[k].find(errors[k]), std::string::npos) << bad.out[k];
 }
 
 TEST(QueryCommand, MethodsNameTheRectEllipseTest) {
