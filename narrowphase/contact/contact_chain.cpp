@@ -76,8 +76,10 @@ bool in_front(const Faces& f, const Vec2& r) {
          (f.convex2 && f.n2.dot(Vec2(r - f.p2)) >= 0.0);
 }
 
-// The shape's separation from the line through q of unit normal u.
+// The shape's separation from the line through q of unit normal u (a circle's without the square
+// root its support point takes).
 double separation_along(const Shape& shape, const Orientation& o, const Vec2& u, const Vec2& q) {
+  if (const auto* c = std::get_if<Circle>(&shape)) return u.dot(c->center - q) - c->radius;
   return u.dot(support(shape, o, -u) - q);
 }
 
