@@ -310,5 +310,35 @@ TEST(ChainWorld, BlocksSightFromEitherSide) {
   EXPECT_FALSE(world.ray_cast(Vec2(1, -1), Vec2(0, 1), 5.0));
 }
 
+// Records name the segment: a box across the vertex between two segments in line gets one record
+// from each, each with the floor's normal and its points over that segment; a ball on a hill's top
+// gets one, from the segment that owns the corner's half it lies in.
+TEST(ChainWorld, RecordsNameTheSegments) {
+  World world({.contacts = true, .threads = 1});
+  const BodyId floor = world.add_chain(kFloor, false, {.is_static = true});
+  const std::vector<ShapeId> segments = world.shapes(floor);
+  const BodyId crate = world.add(Rect{Vec2(0.25, 0.5 - 0x1p-6), Vec2(0.5, 0.5), 0.0});
+  world.update();
+  ASSERT_EQ(world.overlapping().size(), 2u);
+  ASSERT_EQ(world.contacts().size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    const BodyContact& c = world.contacts()[k];
+    EXPECT_EQ(c.b, crate);
+    EXPECT_EQ(c.shape_a, segments[k]);
+    EXPECT_EQ(c.contact.normal, Vec2(0, 1));
+    for (const ContactPoint& p : c.contact.points()) {
+      EXPECT_TRUE(k == 0 ? p.point_a.x() >= 0.0 : p.point_a.x() <= 0.0)
+          << "segment " << k << " point " << p.point_a.x();
+    }
+  }
+  World hill({.contacts = true, .threads = 1});
+  const BodyId top =
+      hill.add_chain(std::vector<Vec2>{{3, -1}, {1, 0}, {0, 0.25}, {-1, 0}, {-3, -1}}, false, {.is_static = true});
+  hill.add(Circle{Vec2(0.0625, 0.7), 0.5});
+  hill.update();
+  ASSERT_EQ(hill.contacts().size(), 1u);
+  EXPECT_EQ(hill.contacts()[0].shape_a, hill.shapes(top)[0]) << "right of the top: the first segment's half";
+}
+
 }  // namespace
 }  // namespace collide2d
