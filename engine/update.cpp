@@ -308,18 +308,16 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& 
     r.touching = solids_touch;
     r.contact = c;
   };
-  if (touching && (x.chain || y.chain)) {
-    // A chain's segment touches only where its rules give a contact (chain.h).
-    const Contact c = pair_contact(a, b, manifold);
-    if (!c.empty()) {
+  if (touching) {
+    // A chain's segment touches only where its rules give a contact (chain.h): its contact comes
+    // first.
+    const bool chained = x.chain || y.chain;
+    const Contact c = chained || contacts_on_ ? pair_contact(a, b, manifold) : Contact{};
+    if (!chained || !c.empty()) {
       out.overlapping.push_back(record_of<ShapePair>(a, b));
       if (contacts_on_) record(true, c);
       return;
     }
-  } else if (touching) {
-    out.overlapping.push_back(record_of<ShapePair>(a, b));
-    if (contacts_on_) record(true, pair_contact(a, b, manifold));
-    return;
   }
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);

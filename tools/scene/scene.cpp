@@ -212,6 +212,13 @@ bool flag(const json& object, const char* key, const std::string& field) {
 
 std::string body_field(std::size_t index) { return "bodies[" + std::to_string(index) + "]"; }
 
+// A chain's segments as a body's shapes, at the origin; throws InvalidShape as chain_segments().
+std::vector<Shape> chain_shapes(std::span<const Vec2> points, bool loop) {
+  std::vector<Shape> out;
+  for (const ChainSegment& s : chain_segments(points, loop)) out.emplace_back(s.segment);
+  return out;
+}
+
 // A chain's points and "loop", checked as World::add_chain checks them; its segments are the body's
 // shapes, at the origin.
 void parse_chain(const json& b, const std::string& field, SceneBody& body) {
@@ -223,7 +230,7 @@ void parse_chain(const json& b, const std::string& field, SceneBody& body) {
     body.chain.push_back(vec2(points[k], field + ".points[" + std::to_string(k) + "]"));
   body.loop = flag(b, "loop", field);
   try {
-    for (const ChainSegment& s : chain_segments(body.chain, body.loop)) body.shapes.emplace_back(s.segment);
+    body.shapes = chain_shapes(body.chain, body.loop);
   } catch (const InvalidShape& e) {
     fail(field, e.what());
   }
@@ -532,10 +539,13 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
                             .is_static = true,
                             .sensor = sensor});
   };
-  scene.bodies.push_back(
-      {.id = next_id++, .filter = both, .is_static = true, .chain = cave(scene.arena), .loop = true});
-  for (const ChainSegment& s : chain_segments(scene.bodies.back().chain, true))
-    scene.bodies.back().shapes.emplace_back(s.segment);
+  const std::vector<Vec2> walls = cave(scene.arena);
+  scene.bodies.push_back({.shapes = chain_shapes(walls, true),
+                          .id = next_id++,
+                          .filter = both,
+                          .is_static = true,
+                          .chain = walls,
+                          .loop = true});
   for (int k = 0; k < count / 200; ++k) {
     const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8),
                   uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));
