@@ -72,8 +72,8 @@ void side_by_side(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFiel
 }
 
 // The contacts of the chunk's first `count` pairs, in whole vectors. A Newton step is a chain of
-// divisions and a square root, about 55 cycles, that leaves the dividers idle most of the time:
-// kTogether vectors step side by side to fill them; a fourth adds nothing.
+// divisions and a square root whose latency leaves the dividers idle most of the time: kTogether
+// vectors step side by side to fill them; a fourth adds nothing.
 void circle_ellipse_chunk(const detail::Chunk<In::kFields>& in, detail::Chunk<Out::kFields>& out, std::size_t count) {
   constexpr std::size_t kTogether = 3;
   const std::size_t n = hn::Lanes(D());

@@ -130,13 +130,25 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
 // an arc), so that where one face's separation is positive and passes every other face's, each
 // beyond their rounding, the greatest lies between that face's neighbours: in the cones of its two
 // ends. (Faces tied to rounding, as a needle's long sides, may have a far higher peak between
-// them.)
+// them.) There, where the ellipse's support point along the face lies over the face, the face's
+// point across from it is as far from the ellipse as the face's separation, a lower bound of the
+// distance: the face is the greatest. Beyond a segment's end, that end is: as the distance from a
+// convex set is convex along a line, the segment's nearest point is the line's nearest, across from
+// the support point, clamped to the segment.
 template <CoreKind kind>
 Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
   const Core& c = p.core;
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * scale(p);
   const bool leads = faces.best.s > rounding && faces.best.s - faces.runner_up > rounding;
   Peak best = faces.best;
+  if (leads) {
+    const int f = faces.face, side = along_face(c.n[f], c.v[f], c.v[c.next(f)], faces.q(f));
+    if (side == 0) return best;
+    if constexpr (kind == CoreKind::segment) {
+      vertex_peaks(p, side < 0 ? f : c.next(f), best, roots);
+      return best;
+    }
+  }
   // A polygon's every vertex open: every cone's bound at once, at the face's separation. A bound
   // that holds there holds at every later best, which only grows; one that fails is taken again
   // only once the best has grown.
