@@ -134,6 +134,11 @@ Aabb WorldState::broad_box(const Aabb& box) const {
 
 Aabb WorldState::broad_box(const Part& p) const { return broad_box(p.continuous ? swept(p.start, p.shape) : p.box); }
 
+Aabb WorldState::broad_box(ShapeId id) const {
+  const Part& p = part(id);
+  return p.is_static ? broad_box(p) : broad_.fat_box(p.proxy);
+}
+
 // Into the broad phase of its body's kind: the static tree, or the sweep and prune and the moving tree.
 void WorldState::enter(std::uint32_t index) {
   Part& p = parts_[index];

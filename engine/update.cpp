@@ -224,6 +224,15 @@ void WorldState::narrow_phase() {
 }
 
 // The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
+std::vector<ShapePair> WorldState::candidates() const {
+  std::vector<ShapePair> out;
+  out.reserve(candidates_.size());
+  for (const auto& [a, b] : candidates_) {
+    if (parts_[a].alive && parts_[b].alive) out.push_back(record_of<ShapePair>(a, b));
+  }
+  return out;
+}
+
 void WorldState::update_body_pairs() {
   bodies_now_.clear();
   for (const ShapePair& p : overlapping_) {

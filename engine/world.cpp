@@ -78,6 +78,8 @@ const std::vector<SensorPair>& World::sensing() const { return state_->sensing_;
 const std::vector<SensorPair>& World::sensor_began() const { return state_->sensor_began_; }
 const std::vector<SensorPair>& World::sensor_ended() const { return state_->sensor_ended_; }
 const FrameStats& World::last_frame() const { return state_->stats_; }
+std::vector<ShapePair> World::candidates() const { return state_->candidates(); }
+Aabb World::broad_box(ShapeId id) const { return state_->broad_box(id); }
 
 namespace {
 

@@ -111,6 +111,11 @@ class WorldState {
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter, const CastOptions& options) const;
 
+  // update.cpp
+  std::vector<ShapePair> candidates() const;
+  // bodies.cpp
+  Aabb broad_box(ShapeId id) const;
+
   // The results of the last update.
   std::vector<ShapePair> overlapping_;
   std::vector<ShapePair> began_;

@@ -415,6 +415,14 @@ class World {
   const std::vector<SensorPair>& sensor_ended() const;
   /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
+  /// The last update's candidate pairs from the broad phase (FrameStats::candidates, those the
+  /// filters dropped among them), a's body the lower slot, in no order. Built on each call, for
+  /// debugging and replays (Recorder): read it before any shape is removed.
+  std::vector<ShapePair> candidates() const;
+  /// The box the broad phase keeps for the shape: its box grown by half the proximity or speculative
+  /// margin and, for a moving shape, by the fat margin as of the last time it left its fat box (a
+  /// continuous shape's box holds its whole step).
+  Aabb broad_box(ShapeId id) const;
 
   /// Queries on the current poses (no update needed). Each comes in two forms. The callback form
   /// calls `visit` for each shape found, with its body, in the order the trees are walked, allocates
