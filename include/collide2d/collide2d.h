@@ -12,6 +12,7 @@
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
 #include <collide2d/ray_cast.h>
+#include <collide2d/replay.h>
 #include <collide2d/shapes.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/version.h>
