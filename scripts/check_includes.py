@@ -4,8 +4,9 @@
 - A public header (include/collide2d/) includes only public headers and system headers.
 - A library module (shapes, broadphase, narrowphase, engine) reaches another module's private headers
   only through that module's declared internal interface, <module>/internal.h.
-- The command line and the scene library (tools/) and the examples use the public headers, the scene
-  library and, for the command line's --method, the baselines library's header; nothing else private.
+- The command line and its libraries (tools/: scenes, the replay page) and the examples use the public
+  headers, those libraries and, for the command line's --method, the baselines library's header;
+  nothing else private.
 """
 import pathlib
 import re

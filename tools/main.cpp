@@ -1,10 +1,12 @@
 // collide2d: the command line.
 //   collide2d query [--method NAME]... [--boundary | --contact | --toi] < queries   (query_command.h)
-//   collide2d run [scene.json] [--svg FILE] [--frames N]          (see run_command.h, scene.h)
+//   collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N]   (scene_run.h)
+//   collide2d replay FILE.c2dr --html FILE                       (replay_page.h)
 // It links the library and the JSON reader only; the speed-against-error report, which needs Box2D
 // and the 50-digit reference, is bench/collide2d_report.
 #include "tools/cli_args.h"
 #include "tools/query_command.h"
+#include "tools/replay/replay_page.h"
 #include "tools/scene/scene_run.h"
 
 #include <fstream>
@@ -37,21 +39,27 @@ constexpr const char* kQueryUsage =
     "      and t 1; the normal from A to B and the midpoint of the closest points at t\n";
 
 constexpr const char* kRunUsage =
-    "usage: collide2d run [scene.json] [--svg FILE] [--frames N]\n"
+    "usage: collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
     "  rectangles on two layers that never pair, 8 continuous bullets, a static level (a\n"
     "  chain cave with a hilly floor, slopes and rocks), and 4 static sensors) through\n"
     "  the broad phase (sweep and prune for moving bodies, a tree for static ones) and\n"
     "  the narrow phase, frame by frame, then prints what they found (bullets: their\n"
     "  impacts within each frame; the pairs the filters drop; each sensor's contents)\n"
-    "  and how long it took. --svg draws the last frame; --frames overrides the scene's\n"
-    "  frame count.\n";
+    "  and how long it took. --svg draws the last frame; --html writes a page that\n"
+    "  replays every frame in a browser; --replay writes the recording itself (a .c2dr\n"
+    "  file, as a Recorder writes one); --frames overrides the scene's frame count.\n";
+
+constexpr const char* kReplayUsage =
+    "usage: collide2d replay FILE.c2dr --html FILE\n"
+    "  Writes the page that replays a recording (collide2d run --replay, or a program's\n"
+    "  own Recorder) in a browser: one file, the recording inside it.\n";
 
 constexpr const char* kReportNote =
     "The speed-against-error report of the ellipse distance methods is a separate program\n"
     "of the build tree, bench/collide2d_report (it links Box2D; not installed).\n";
 
-const std::string kUsage = std::string(kQueryUsage) + "\n" + kRunUsage + "\n" + kReportNote;
+const std::string kUsage = std::string(kQueryUsage) + "\n" + kRunUsage + "\n" + kReplayUsage + "\n" + kReportNote;
 
 // `collide2d <command> --help` (or -h) anywhere among its arguments.
 bool wants_help(int argc, char** argv) {
@@ -92,7 +100,7 @@ int query(int argc, char** argv) {
 }
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw collide2d::tool::SceneError("cannot read '" + path + "'");
   std::ostringstream text;
   text << in.rdbuf();
@@ -104,12 +112,16 @@ int run(int argc, char** argv) {
     std::cout << kRunUsage;
     return 0;
   }
-  std::string scene_path, svg_path;
+  std::string scene_path, svg_path, html_path, replay_path;
   int frames = 0;
   for (int i = 2; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--svg") {
       svg_path = collide2d::cli::value_of(i, argc, argv);
+    } else if (arg == "--html") {
+      html_path = collide2d::cli::value_of(i, argc, argv);
+    } else if (arg == "--replay") {
+      replay_path = collide2d::cli::value_of(i, argc, argv);
     } else if (arg == "--frames") {
       frames = collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv));
     } else if (!arg.starts_with("--") && scene_path.empty()) {
@@ -124,10 +136,42 @@ int run(int argc, char** argv) {
   std::cout << "scene " << (scene_path.empty() ? "built-in" : scene_path) << ": " << scene.bodies.size() << " bodies, "
             << scene.frames << " frames\n";
   collide2d::tool::SceneRun runner(std::move(scene));
-  const collide2d::tool::RunSummary summary = runner.run(&std::cerr);
+  collide2d::Recorder recorder;
+  const bool records = !html_path.empty() || !replay_path.empty();
+  const collide2d::tool::RunSummary summary = runner.run(&std::cerr, records ? &recorder : nullptr);
   collide2d::tool::print_summary(summary, std::cout);
   collide2d::cli::write_file(svg_path, "picture of the last frame",
                              [&runner](std::ostream& out) { collide2d::tool::write_svg(runner, out); });
+  collide2d::cli::write_file(replay_path, "recording", [&recorder](std::ostream& out) { recorder.write(out); });
+  collide2d::cli::write_file(html_path, "replay page", [&recorder](std::ostream& out) {
+    std::ostringstream bytes;
+    recorder.write(bytes);
+    collide2d::tool::write_replay_page(bytes.str(), out);
+  });
+  return 0;
+}
+
+int replay(int argc, char** argv) {
+  if (wants_help(argc, argv)) {
+    std::cout << kReplayUsage;
+    return 0;
+  }
+  std::string input, html_path;
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--html") {
+      html_path = collide2d::cli::value_of(i, argc, argv);
+    } else if (!arg.starts_with("--") && input.empty()) {
+      input = arg;
+    } else {
+      throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
+    }
+  }
+  if (input.empty()) throw collide2d::cli::UsageError("replay needs a recording (a .c2dr file)");
+  if (html_path.empty()) throw collide2d::cli::UsageError("replay needs --html FILE, the page to write");
+  const std::string bytes = read_file(input);
+  collide2d::cli::write_file(html_path, "replay page",
+                             [&bytes](std::ostream& out) { collide2d::tool::write_replay_page(bytes, out); });
   return 0;
 }
 
@@ -138,6 +182,7 @@ int main(int argc, char** argv) {
     const std::string_view command = argc >= 2 ? argv[1] : "";
     if (command == "query") return query(argc, argv);
     if (command == "run") return run(argc, argv);
+    if (command == "replay") return replay(argc, argv);
     throw collide2d::cli::UsageError(command.empty() ? "no command given"
                                                      : "unknown command '" + std::string(command) + "'");
   });

@@ -73,12 +73,13 @@ void SceneRun::frame() {
   world_.update();
 }
 
-RunSummary SceneRun::run(std::ostream* progress) {
+RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
   RunSummary s = totals();
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
     this->frame();
+    if (recorder) recorder->record(world_);
     const FrameStats& f = world_.last_frame();
     broad.push_back(1e3 * f.broad_seconds);
     narrow.push_back(1e3 * f.narrow_seconds);

@@ -2,6 +2,7 @@
 // summarises what the broad and narrow phases did and how long they took, and draws the last frame.
 #pragma once
 
+#include <collide2d/replay.h>
 #include <collide2d/world.h>
 #include "tools/scene/scene.h"
 
@@ -45,8 +46,8 @@ class SceneRun {
   explicit SceneRun(Scene scene, unsigned threads = 0);
 
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
-  // when it is not null.
-  RunSummary run(std::ostream* progress);
+  // and records each frame into `recorder` when they are not null.
+  RunSummary run(std::ostream* progress, Recorder* recorder = nullptr);
   // One frame of it (bench_world times this).
   void frame();
   // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.

@@ -1,0 +1,27 @@
+// The README's picture of the replay page: node screenshot.mjs PAGE.html OUT.png
+// (scripts/screenshot.sh makes the page and calls this). Opens the page in Debian's chromium, goes
+// to a frame, zooms in on the middle of the arena and takes a picture of the view and its side panel.
+import puppeteer from 'puppeteer-core';
+
+const [page_path, out] = process.argv.slice(2);
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--allow-file-access-from-files'],
+});
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1680, height: 1150 });
+  await page.goto(new URL(page_path, `file://${process.cwd()}/`).href);
+  await page.waitForFunction('window.replayReady === true', { timeout: 180000 });
+  const error = await page.evaluate('window.replayError');
+  if (error) throw new Error(error);
+  await page.evaluate(() => {
+    replayApi.setFrame(Math.min(180, replayApi.frames() - 1));
+    replayPage.view.scale *= 2.5;
+    replayApi.draw();
+  });
+  await page.screenshot({ path: out, clip: { x: 0, y: 0, width: 1680, height: 1150 } });
+} finally {
+  await browser.close();
+}
