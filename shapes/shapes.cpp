@@ -3,8 +3,9 @@
 #include "shapes/internal.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -47,9 +48,15 @@ void detail::reject(const char* what, const char* field, double value, const cha
   throw InvalidShape(std::string(what) + ' ' + field + ' ' + rule + " (got " + shortest(value) + ')');
 }
 
+// The fewest significant digits that read back to the value, as %g writes them: std::to_chars for
+// doubles is missing from some standard libraries (Emscripten's libc++, which builds the testbed).
 std::string detail::shortest(double value) {
   char digits[32];
-  return {digits, std::to_chars(digits, digits + sizeof digits, value).ptr};
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(digits, sizeof digits, "%.*g", precision, value);
+    if (std::strtod(digits, nullptr) == value) break;
+  }
+  return digits;
 }
 
 Orientation Orientation::of(double angle) {

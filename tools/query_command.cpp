@@ -1,8 +1,10 @@
 #include "tools/query_command.h"
 
 #include <array>
-#include <charconv>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <istream>
 #include <ostream>
 #include <utility>
@@ -24,19 +26,26 @@ std::vector<std::string_view> split_words(std::string_view text) {
   return words;
 }
 
-// from_chars over the whole word (a leading '+' allowed, which from_chars rejects alone).
-std::from_chars_result read_number(std::string_view word, double& value) {
-  const char* begin = word.data();
-  const char* end = begin + word.size();
-  if (!word.empty() && *begin == '+') ++begin;
-  std::from_chars_result r = std::from_chars(begin, end, value);
-  if (r.ec == std::errc() && r.ptr != end) r.ec = std::errc::invalid_argument;
-  return r;
+// The whole word as a number in std::from_chars' grammar (decimal or scientific, inf, nan), a leading
+// '+' allowed; out of range where it overflows or underflows to zero (a subnormal is in range). Read
+// with strtod, as some standard libraries lack from_chars for doubles (Emscripten's, which builds
+// the testbed); strtod's hexadecimal numbers are not in the grammar.
+std::errc read_number(std::string_view word, double& value) {
+  if (word.starts_with('+')) word.remove_prefix(1);
+  const std::string text(word);
+  if (text.empty() || text.find_first_of("xX") != std::string::npos) return std::errc::invalid_argument;
+  errno = 0;
+  char* end = nullptr;
+  const double read = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return std::errc::invalid_argument;
+  if (errno == ERANGE && (std::isinf(read) || read == 0.0)) return std::errc::result_out_of_range;
+  value = read;
+  return {};
 }
 
 double parse_number(std::string_view word) {
   double value = 0.0;
-  const std::errc ec = read_number(word, value).ec;
+  const std::errc ec = read_number(word, value);
   if (ec == std::errc::result_out_of_range) throw ParseError("'" + std::string(word) + "' is out of range");
   if (ec != std::errc()) throw ParseError("'" + std::string(word) + "' is not a number");
   return value;
@@ -44,7 +53,7 @@ double parse_number(std::string_view word) {
 
 bool is_number(std::string_view word) {
   double value = 0.0;
-  return read_number(word, value).ec != std::errc::invalid_argument;
+  return read_number(word, value) != std::errc::invalid_argument;
 }
 
 struct ShapeGrammar {
