@@ -13,7 +13,13 @@
 #include <cstdio>
 #include <ostream>
 #include <random>
+#include <sstream>
 #include <string>
+#include <string_view>
+
+namespace collide2d::tool {
+extern const char kReportPage[];  // bench/report.html
+}  // namespace collide2d::tool
 
 namespace collide2d::report {
 namespace {
@@ -228,6 +234,15 @@ void write_report_json(const std::vector<MethodResult>& distance, const std::vec
   out << ",\n";
   list("contact", contact);
   out << "\n}\n";
+}
+
+void write_report_html(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
+                       const ReportOptions& options, std::ostream& out) {
+  std::ostringstream json;
+  write_report_json(distance, contact, options, json);
+  const std::string_view page = tool::kReportPage, placeholder = "%%REPORT%%";
+  const std::size_t at = page.find(placeholder);
+  out << page.substr(0, at) << json.str() << page.substr(at + placeholder.size());
 }
 
 }  // namespace collide2d::report

@@ -52,4 +52,9 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out);
 
+// The same as one HTML page (bench/report.html, with that JSON inside): the speed-against-error plot,
+// each method a point to hover for its figures, the pair kinds to show or hide, beside the tables.
+void write_report_html(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
+                       const ReportOptions& options, std::ostream& out);
+
 }  // namespace collide2d::report

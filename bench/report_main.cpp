@@ -2,7 +2,7 @@
 // depth (bench/report.h).
 // Not installed: it links Box2D and the 50-digit reference, which the library and the collide2d
 // command do not.
-//   collide2d_report [--json FILE] [--pairs N]
+//   collide2d_report [--json FILE] [--html FILE] [--pairs N]
 #include "bench/report.h"
 #include "tools/cli_args.h"
 
@@ -14,22 +14,25 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: collide2d_report [--json FILE] [--pairs N]\n"
+    "usage: collide2d_report [--json FILE] [--html FILE] [--pairs N]\n"
     "  Times every ellipse-ellipse distance method (robust, gradient, polynomial, Box2D on\n"
     "  inscribed and circumscribed 8- to 256-gons) on N separated pairs (default 200) and\n"
     "  measures its error against 50-digit arithmetic; prints a table. Then the contact\n"
     "  depth of N overlapping pairs of each curved kind (rect-ellipse, circle-ellipse,\n"
     "  ellipse-ellipse): collide2d's contact, one pair at a time and batched, against Box2D's\n"
     "  manifold on inscribed and circumscribed 5- to 8- and 16-gons (a table each). --json\n"
-    "  writes all as JSON.\n";
+    "  writes all as JSON; --html as a page, the plot of speed against error interactive\n"
+    "  beside the tables.\n";
 
 int report(int argc, char** argv) {
   collide2d::report::ReportOptions options;
-  std::string json_path;
+  std::string json_path, html_path;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--json") {
       json_path = collide2d::cli::value_of(i, argc, argv);
+    } else if (arg == "--html") {
+      html_path = collide2d::cli::value_of(i, argc, argv);
     } else if (arg == "--pairs") {
       options.pairs = collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv));
     } else {
@@ -53,6 +56,9 @@ int report(int argc, char** argv) {
   }
   collide2d::cli::write_file(json_path, "measurements", [&](std::ostream& out) {
     collide2d::report::write_report_json(distance, contact, options, out);
+  });
+  collide2d::cli::write_file(html_path, "report page", [&](std::ostream& out) {
+    collide2d::report::write_report_html(distance, contact, options, out);
   });
   return 0;
 }

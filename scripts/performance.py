@@ -417,7 +417,9 @@ as `b2ContactManager` applies them).
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
 centre distance), median and largest over the pairs. The reference methods `gradient` and
-`polynomial` are in [two ellipses](algorithms/ellipse-ellipse.md).
+`polynomial` are in [two ellipses](algorithms/ellipse-ellipse.md). `collide2d_report --html FILE`
+writes the same measurements as a page: the plot with each method's figures on hover, and the pair
+kinds to show or hide, beside the tables.
 
 ![distance: time against error](performance/distance_error.svg)
 

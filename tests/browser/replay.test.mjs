@@ -7,31 +7,13 @@
 // its size, and prints the median time to draw a frame at 1280 x 800. Exits 77 (ctest: skipped),
 // saying why, where no browser or no puppeteer-core is installed (scripts/deps.sh installs both).
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, statSync, writeFileSync } from 'node:fs';
+import { mkdirSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
+import { check, finish, launch } from './harness.mjs';
+
 const [collide2d, work] = process.argv.slice(2);
-const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
-
-function skip(why) {
-  console.log(`SKIPPED: ${why} (bash scripts/deps.sh installs it)`);
-  process.exit(77);
-}
-
-let puppeteer;
-try {
-  puppeteer = (await import('puppeteer-core')).default;
-} catch {
-  skip('puppeteer-core is not installed in tests/browser/node_modules');
-}
-if (!existsSync(chromium)) skip(`no browser at ${chromium}`);
-
-let failures = 0;
-function check(ok, what) {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) ++failures;
-}
 
 // The scene: 20 x 10, 30 frames at 60 Hz. The bullet (radius 0.1) moves 5 a frame from x = 2 and
 // meets the wall's face x = 9.5 in the step of update 1 (0-based) from x = 7, at t = (9.4 - 7) / 5,
@@ -42,6 +24,7 @@ const scene = {
   dt: 1 / 60,
   fat_margin: 0.1,
   proximity_margin: 0.5,
+  contacts: true,
   bodies: [
     { shape: 'circle', center: [2, 5], radius: 0.1, velocity: [300, 0], continuous: true, id: 7 },
     { shape: 'rect', center: [10, 5], half_extents: [0.5, 4], static: true, id: 9 },
@@ -60,11 +43,7 @@ const quiet = { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] };  // no 
 const summary = execFileSync(collide2d, ['run', scenePath, '--html', pagePath], quiet);
 const figure = (label) => Number(new RegExp(`^${label}\\s+([0-9.e+-]+)`, 'm').exec(summary)[1]);
 
-const browser = await puppeteer.launch({
-  executablePath: chromium,
-  headless: true,
-  args: ['--no-sandbox', '--allow-file-access-from-files'],
-});
+const browser = await launch();
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1700, height: 1300 });
@@ -86,7 +65,8 @@ try {
   check(near(mean('overlapping'), figure('overlapping pairs per frame')),
         `overlapping pairs per frame: the page's ${mean('overlapping')}, the run's ${figure('overlapping pairs per frame')}`);
   check(counts.every((c, f) => c.candidates === stats[f].candidates && c.overlapping === stats[f].overlapping &&
-                               c.proximity === stats[f].proximity && c.sensing === stats[f].sensing),
+                               c.proximity === stats[f].proximity && c.sensing === stats[f].sensing &&
+                               c.contacts === stats[f].contacts && c.contacts === c.overlapping),
         'every frame: the pair lists the page rebuilt from changes have the lengths the World counted');
   check(mean('overlapping') > 0 && counts.some((c) => c.sensing > 0), 'the circles meet and the box enters the sensor');
 
@@ -140,7 +120,4 @@ try {
 } finally {
   await browser.close();
 }
-if (failures > 0) {
-  console.log(`${failures} check(s) failed`);
-  process.exit(1);
-}
+finish();

@@ -1,14 +1,10 @@
 // The README's picture of the replay page: node screenshot.mjs PAGE.html OUT.png
 // (scripts/screenshot.sh makes the page and calls this). Opens the page in Debian's chromium, goes
 // to a frame, zooms in on the middle of the arena and takes a picture of the view and its side panel.
-import puppeteer from 'puppeteer-core';
+import { launch } from './harness.mjs';
 
 const [page_path, out] = process.argv.slice(2);
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--allow-file-access-from-files'],
-});
+const browser = await launch();
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1680, height: 1150 });
