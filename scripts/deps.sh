@@ -10,6 +10,8 @@ done
 # The browser tests (tests/browser): Debian's chromium, and Node.js for puppeteer-core.
 command -v chromium > /dev/null || missing+=(chromium)
 command -v node > /dev/null || missing+=(nodejs)
+# The testbed page (tools/testbed): Emscripten.
+command -v emcc > /dev/null || missing+=(emscripten)
 if ((${#missing[@]})); then
   echo "installing: ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
