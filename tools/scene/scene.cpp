@@ -390,7 +390,8 @@ bool SceneBody::operator==(const SceneBody& o) const {
 
 bool Scene::operator==(const Scene& o) const {
   return arena.min == o.arena.min && arena.max == o.arena.max && frames == o.frames && dt == o.dt &&
-         fat_margin == o.fat_margin && proximity_margin == o.proximity_margin && bodies == o.bodies;
+         fat_margin == o.fat_margin && proximity_margin == o.proximity_margin && contacts == o.contacts &&
+         bodies == o.bodies;
 }
 
 Scene parse_scene(std::string_view text) {
@@ -401,7 +402,7 @@ Scene parse_scene(std::string_view text) {
     throw SceneError(std::string("scene is not valid JSON: ") + e.what());
   }
   if (!root.is_object()) fail("scene", "expected a JSON object");
-  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "bodies"}, "scene");
+  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "contacts", "bodies"}, "scene");
   Scene scene;
   const json& arena = member(root, "arena", "");
   if (!arena.is_object()) fail("arena", "expected an object with min and max");
@@ -423,6 +424,7 @@ Scene parse_scene(std::string_view text) {
   scene.proximity_margin = optional_number(root, "proximity_margin", "", scene.proximity_margin);
   if (scene.fat_margin < 0) fail("fat_margin", "must not be negative");
   if (scene.proximity_margin < 0) fail("proximity_margin", "must not be negative");
+  scene.contacts = flag(root, "contacts", "");
   const json& bodies = member(root, "bodies", "");
   if (!bodies.is_array()) fail("bodies", "expected an array");
   std::map<std::uint64_t, std::size_t> owners;
@@ -500,6 +502,7 @@ std::string write_scene(const Scene& scene) {
       {"dt", scene.dt},
       {"fat_margin", scene.fat_margin},
       {"proximity_margin", scene.proximity_margin},
+      {"contacts", scene.contacts},
       {"bodies", bodies}};
   return root.dump(1);
 }

@@ -1,8 +1,8 @@
 // Scenes for `collide2d run`: an arena, bodies with simple kinematics, and how long to run.
 //
 // The file is JSON; docs/command-line.md lists its fields, and examples/scene.json is a whole scene
-// (tested). "arena" (min and max corners) and "frames" are required; "dt", "fat_margin" and
-// "proximity_margin" are optional, and so is every body field but the shape's own ("shape",
+// (tested). "arena" (min and max corners) and "frames" are required; "dt", "fat_margin",
+// "proximity_margin" and "contacts" are optional, and so is every body field but the shape's own ("shape",
 // "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents"). A body
 // of several shapes gives its pose ("center", "angle") and "shapes", each placed in its frame.
 // Moving bodies move in straight lines and bounce off the arena walls (the velocity component
@@ -52,6 +52,7 @@ struct Scene {
   double dt = 1.0 / 60.0;
   double fat_margin = 0.1;
   double proximity_margin = 0.0;
+  bool contacts = false;  // a contact for every overlapping pair (WorldOptions::contacts)
   std::vector<SceneBody> bodies;
   bool operator==(const Scene&) const;
 };

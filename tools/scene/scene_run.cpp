@@ -34,7 +34,10 @@ void draw_progress(std::ostream& out, int done, int total) {
 
 SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
-      world_({.fat_margin = scene_.fat_margin, .proximity_margin = scene_.proximity_margin, .threads = threads}) {
+      world_({.fat_margin = scene_.fat_margin,
+              .proximity_margin = scene_.proximity_margin,
+              .contacts = scene_.contacts,
+              .threads = threads}) {
   check_motion(scene_);
   std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
