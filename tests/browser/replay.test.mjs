@@ -99,6 +99,12 @@ try {
   check(/user id 9\b/.test(details) && /rect hx 0\.5 hy 4/.test(details) && /static/.test(details),
         `clicking the wall shows its details: ${JSON.stringify(details.split('\n').slice(0, 4))}`);
 
+  // With the rectangles' layer off, the wall is neither drawn nor found.
+  await page.click('#layer-kind2');
+  await page.mouse.click(box.x + wx, box.y + wy);
+  const hidden = await page.$eval('#details', (d) => d.textContent);
+  check(hidden === 'No body there.', `with rects hidden, a click on the wall finds nothing: ${JSON.stringify(hidden)}`);
+
   // The built-in scene's page: its size, and the time to draw a frame.
   const builtin = path.join(work, 'builtin.html');
   execFileSync(collide2d, ['run', '--html', builtin], quiet);
