@@ -86,6 +86,8 @@ def run_page(page, args, failures):
     env = dict(os.environ)
     env['PATH'] = os.pathsep.join(args.bin + [env.get('PATH', '')])
     env['COLLIDE2D_SOURCE'] = args.source
+    if args.pythonpath:
+        env['PYTHONPATH'] = args.pythonpath
     found = blocks(page)
     for index, (marker, language, lines, number) in enumerate(found):
         where = f'{page}:{number}'
@@ -137,6 +139,7 @@ def main():
     parser.add_argument('--prefix', required=True)
     parser.add_argument('--source', required=True)
     parser.add_argument('--cxx', default='c++')
+    parser.add_argument('--pythonpath', help='where the Python module is, for the pages that import it')
     parser.add_argument('pages', nargs='+')
     args = parser.parse_args()
     args.bin = [str(pathlib.Path(b).resolve()) for b in args.bin]

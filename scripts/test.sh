@@ -7,6 +7,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 build=${BUILD_DIR:-$root/build}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON \
+  -DCOLLIDE2D_BUILD_PYTHON=ON \
   -DCOLLIDE2D_BOX2D_SOURCE="$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"

@@ -1,0 +1,203 @@
+// The Python module `collide2d` (docs/python.md): the shapes as immutable value classes, checked as
+// the C++ shapes are (a bad one raises ValueError naming the field), and the pair queries on them,
+// each one call into the library, so that the results are the C++ results bit for bit. Points and
+// vectors go in as any pair of numbers and come out as tuples.
+#include <collide2d/collide2d.h>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace collide2d {
+namespace {
+
+using Pair = std::array<double, 2>;
+
+Vec2 vec(const Pair& p) { return {p[0], p[1]}; }
+py::tuple tuple(const Vec2& v) { return py::make_tuple(v.x(), v.y()); }
+
+template <class S>
+S checked(S shape) {
+  validate(shape);
+  return shape;
+}
+
+std::string number(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
+std::string point(const Vec2& v) { return "(" + number(v.x()) + ", " + number(v.y()) + ")"; }
+
+void add_shapes(py::module_& m) {
+  py::class_<Circle>(m, "Circle", "A circle: its centre and radius (> 0).")
+      .def(py::init([](const Pair& center, double radius) { return checked(Circle{vec(center), radius}); }),
+           py::arg("center"), py::arg("radius"))
+      .def_property_readonly("center", [](const Circle& c) { return tuple(c.center); })
+      .def_readonly("radius", &Circle::radius)
+      .def("__repr__", [](const Circle& c) { return "Circle(" + point(c.center) + ", " + number(c.radius) + ")"; });
+  py::class_<Ellipse>(m, "Ellipse", "An ellipse: its centre, semi-axes a (along angle) and b, and angle (radians).")
+      .def(py::init([](const Pair& center, double a, double b, double angle) {
+             return checked(Ellipse{vec(center), a, b, angle});
+           }),
+           py::arg("center"), py::arg("a"), py::arg("b"), py::arg("angle") = 0.0)
+      .def_property_readonly("center", [](const Ellipse& e) { return tuple(e.center); })
+      .def_readonly("a", &Ellipse::a)
+      .def_readonly("b", &Ellipse::b)
+      .def_readonly("angle", &Ellipse::angle)
+      .def("__repr__", [](const Ellipse& e) {
+        return "Ellipse(" + point(e.center) + ", " + number(e.a) + ", " + number(e.b) + ", " + number(e.angle) + ")";
+      });
+  py::class_<Rect>(m, "Rect", "A rectangle: its centre, half extents (along angle, and across) and angle.")
+      .def(py::init([](const Pair& center, const Pair& half_extents, double angle) {
+             return checked(Rect{vec(center), vec(half_extents), angle});
+           }),
+           py::arg("center"), py::arg("half_extents"), py::arg("angle") = 0.0)
+      .def_property_readonly("center", [](const Rect& r) { return tuple(r.center); })
+      .def_property_readonly("half_extents", [](const Rect& r) { return tuple(r.half_extents); })
+      .def_readonly("angle", &Rect::angle)
+      .def("__repr__", [](const Rect& r) {
+        return "Rect(" + point(r.center) + ", " + point(r.half_extents) + ", " + number(r.angle) + ")";
+      });
+  py::class_<Capsule>(m, "Capsule", "A capsule: a segment of half_length along angle about its centre, grown by radius.")
+      .def(py::init([](const Pair& center, double half_length, double radius, double angle) {
+             return checked(Capsule{vec(center), half_length, radius, angle});
+           }),
+           py::arg("center"), py::arg("half_length"), py::arg("radius"), py::arg("angle") = 0.0)
+      .def_property_readonly("center", [](const Capsule& c) { return tuple(c.center); })
+      .def_readonly("half_length", &Capsule::half_length)
+      .def_readonly("radius", &Capsule::radius)
+      .def_readonly("angle", &Capsule::angle)
+      .def("__repr__", [](const Capsule& c) {
+        return "Capsule(" + point(c.center) + ", " + number(c.half_length) + ", " + number(c.radius) + ", " +
+               number(c.angle) + ")";
+      });
+  py::class_<Segment>(m, "Segment", "A segment between two points (level geometry; no thickness).")
+      .def(py::init([](const Pair& point1, const Pair& point2) {
+             return checked(Segment::between(vec(point1), vec(point2)));
+           }),
+           py::arg("point1"), py::arg("point2"))
+      .def_property_readonly("point1", [](const Segment& s) { return tuple(s.point1()); })
+      .def_property_readonly("point2", [](const Segment& s) { return tuple(s.point2()); })
+      .def("__repr__", [](const Segment& s) { return "Segment(" + point(s.point1()) + ", " + point(s.point2()) + ")"; });
+  py::class_<ConvexPolygon>(m, "ConvexPolygon",
+                            "A convex polygon: 3 to 8 vertices counter-clockwise about its centre, in its own\n"
+                            "frame, rounded by radius, posed at center and angle.")
+      .def(py::init([](const std::vector<Pair>& vertices, double radius, const Pair& center, double angle) {
+             std::vector<Vec2> v;
+             for (const Pair& p : vertices) v.push_back(vec(p));
+             return checked(ConvexPolygon::of(v, radius).at(vec(center), angle));
+           }),
+           py::arg("vertices"), py::arg("radius") = 0.0, py::arg("center") = Pair{0.0, 0.0}, py::arg("angle") = 0.0)
+      .def_property_readonly("center", [](const ConvexPolygon& p) { return tuple(p.center); })
+      .def_readonly("angle", &ConvexPolygon::angle)
+      .def_property_readonly("radius", &ConvexPolygon::radius)
+      .def_property_readonly("vertices",
+                             [](const ConvexPolygon& p) {
+                               py::list out;
+                               for (const Vec2& v : p.vertices()) out.append(tuple(v));
+                               return out;
+                             })
+      .def("__repr__", [](const ConvexPolygon& p) {
+        return "ConvexPolygon(" + std::to_string(p.count()) + " vertices, radius " + number(p.radius()) + ", at " +
+               point(p.center) + ", " + number(p.angle) + ")";
+      });
+}
+
+void add_results(py::module_& m) {
+  py::class_<DistanceResult>(m, "DistanceResult",
+                             "overlapping, distance (0 when they overlap), and the closest points (a common\n"
+                             "point when they overlap).")
+      .def_readonly("overlapping", &DistanceResult::overlapping)
+      .def_readonly("distance", &DistanceResult::distance)
+      .def_property_readonly("point_a", [](const DistanceResult& d) { return tuple(d.point_a); })
+      .def_property_readonly("point_b", [](const DistanceResult& d) { return tuple(d.point_b); });
+  py::class_<ContactPoint>(m, "ContactPoint", "A manifold point: on A, on B, its separation and feature id.")
+      .def_property_readonly("point_a", [](const ContactPoint& c) { return tuple(c.point_a); })
+      .def_property_readonly("point_b", [](const ContactPoint& c) { return tuple(c.point_b); })
+      .def_readonly("separation", &ContactPoint::separation)
+      .def_readonly("id", &ContactPoint::id);
+  py::class_<Contact>(m, "Contact",
+                      "separation (> 0 apart, < 0 minus the depth), the unit normal from A to B, the deepest\n"
+                      "(or closest) points, and the manifold; empty beyond max_separation.")
+      .def_readonly("separation", &Contact::separation)
+      .def_property_readonly("normal", [](const Contact& c) { return tuple(c.normal); })
+      .def_property_readonly("point_a", [](const Contact& c) { return tuple(c.point_a); })
+      .def_property_readonly("point_b", [](const Contact& c) { return tuple(c.point_b); })
+      .def_property_readonly("manifold",
+                             [](const Contact& c) {
+                               const auto points = c.points();
+                               return std::vector<ContactPoint>(points.begin(), points.end());
+                             })
+      .def_property_readonly("empty", &Contact::empty);
+  py::class_<TimeOfImpact>(m, "TimeOfImpact",
+                           "status ('hit', 'miss', 'overlapping' or 'stalled'), the time t in [0, 1], the\n"
+                           "normal from A to B and the contact point there.")
+      .def_property_readonly("status",
+                             [](const TimeOfImpact& r) {
+                               constexpr const char* kNames[] = {"hit", "miss", "overlapping", "stalled"};
+                               return std::string(kNames[static_cast<int>(r.status)]);
+                             })
+      .def_readonly("t", &TimeOfImpact::t)
+      .def_property_readonly("normal", [](const TimeOfImpact& r) { return tuple(r.normal); })
+      .def_property_readonly("point", [](const TimeOfImpact& r) { return tuple(r.point); })
+      .def_readonly("iterations", &TimeOfImpact::iterations);
+  py::class_<RayShapeHit>(m, "RayHit",
+                          "distance along the ray, the point, and the outward normal there ((0, 0) when the\n"
+                          "ray starts inside).")
+      .def_readonly("distance", &RayShapeHit::distance)
+      .def_property_readonly("point", [](const RayShapeHit& h) { return tuple(h.point); })
+      .def_property_readonly("normal", [](const RayShapeHit& h) { return tuple(h.normal); });
+}
+
+void add_queries(py::module_& m) {
+  m.def("overlaps", py::overload_cast<const Shape&, const Shape&>(&overlaps), py::arg("a"), py::arg("b"),
+        "Whether the solids overlap (touching counts).");
+  m.def("distance", py::overload_cast<const Shape&, const Shape&>(&distance), py::arg("a"), py::arg("b"),
+        "The distance between the solids and their closest points.");
+  m.def("boundary_distance", &boundary_distance, py::arg("a"), py::arg("b"),
+        "The distance between the boundary curves of two circles or ellipses (nested ones give their gap).");
+  m.def(
+      "contact",
+      [](const Shape& a, const Shape& b, double max_separation, double margin) {
+        return contact(a, b, ContactOptions{.margin = margin, .max_separation = max_separation});
+      },
+      py::arg("a"), py::arg("b"), py::arg("max_separation") = std::numeric_limits<double>::infinity(),
+      py::arg("margin") = 0.0, "The signed distance, normal from A to B, deepest points and manifold.");
+  m.def(
+      "time_of_impact",
+      [](const Shape& a, const Shape& b, const Pair& a_velocity, double a_turn, const Pair& b_velocity, double b_turn) {
+        return time_of_impact(a, Motion{vec(a_velocity), a_turn}, b, Motion{vec(b_velocity), b_turn});
+      },
+      py::arg("a"), py::arg("b"), py::arg("a_velocity") = Pair{0.0, 0.0}, py::arg("a_turn") = 0.0,
+      py::arg("b_velocity") = Pair{0.0, 0.0}, py::arg("b_turn") = 0.0,
+      "The first time in [0, 1] at which the shapes, moving by their velocities and turns over the\n"
+      "step (per step, about their centres), touch.");
+  m.def(
+      "ray_cast",
+      [](const Shape& shape, const Pair& origin, const Pair& direction, double max_distance) {
+        return ray_cast(shape, vec(origin), vec(direction), max_distance);
+      },
+      py::arg("shape"), py::arg("origin"), py::arg("direction"),
+      py::arg("max_distance") = std::numeric_limits<double>::infinity(),
+      "The first point of the shape on origin + t direction, 0 <= t <= max_distance, or None.");
+}
+
+}  // namespace
+}  // namespace collide2d
+
+PYBIND11_MODULE(collide2d, m) {
+  m.doc() = "collide2d: exact 2D collision detection between circles, ellipses, rectangles, capsules,\n"
+            "convex polygons and segments (docs/python.md).";
+  // InvalidShape is a std::invalid_argument, which pybind11 raises as ValueError; so is a pair a query
+  // does not take.
+  py::register_exception<collide2d::UnsupportedPair>(m, "UnsupportedPair", PyExc_ValueError);
+  collide2d::add_shapes(m);
+  collide2d::add_results(m);
+  collide2d::add_queries(m);
+  m.attr("__version__") = COLLIDE2D_VERSION_STRING;
+}
