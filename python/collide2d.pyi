@@ -1,6 +1,9 @@
 """Type stubs of the `collide2d` module (python/collide2d_module.cpp; docs/python.md)."""
 from typing import Optional, Sequence, Tuple
 
+import numpy as np
+import numpy.typing as npt
+
 Point = Tuple[float, float]
 PointLike = Sequence[float]
 
@@ -106,3 +109,9 @@ def contact(a: Shape, b: Shape, max_separation: float = ..., margin: float = 0.0
 def time_of_impact(a: Shape, b: Shape, a_velocity: PointLike = (0.0, 0.0), a_turn: float = 0.0,
                    b_velocity: PointLike = (0.0, 0.0), b_turn: float = 0.0) -> TimeOfImpact: ...
 def ray_cast(shape: Shape, origin: PointLike, direction: PointLike, max_distance: float = ...) -> Optional[RayHit]: ...
+
+# Shapes of one kind a row, (n, k) float64: circle (cx cy r), ellipse (cx cy a b theta), rect (cx cy
+# hx hy theta), capsule (cx cy half_length radius theta); row i of a with row i of b.
+def overlaps_arrays(a_kind: str, a: npt.ArrayLike, b_kind: str, b: npt.ArrayLike) -> npt.NDArray[np.bool_]: ...
+def distance_arrays(a_kind: str, a: npt.ArrayLike, b_kind: str, b: npt.ArrayLike) -> dict[str, np.ndarray]: ...
+def contact_arrays(a_kind: str, a: npt.ArrayLike, b_kind: str, b: npt.ArrayLike) -> dict[str, np.ndarray]: ...

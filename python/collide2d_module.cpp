@@ -4,13 +4,18 @@
 // vectors go in as any pair of numbers and come out as tuples.
 #include <collide2d/collide2d.h>
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <variant>
 #include <string>
 #include <vector>
 
@@ -187,6 +192,207 @@ void add_queries(py::module_& m) {
       "The first point of the shape on origin + t direction, 0 <= t <= max_distance, or None.");
 }
 
+// ---- the array forms ----
+
+using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The kinds an array holds, one shape a row, and their columns.
+enum class Kind { circle, ellipse, rect, capsule };
+struct KindInfo {
+  const char* name;
+  py::ssize_t columns;
+  const char* order;
+};
+constexpr KindInfo kKinds[] = {{"circle", 3, "cx cy r"},
+                               {"ellipse", 5, "cx cy a b theta"},
+                               {"rect", 5, "cx cy hx hy theta"},
+                               {"capsule", 5, "cx cy half_length radius theta"}};
+
+Kind kind_of(const std::string& name) {
+  for (int k = 0; k < 4; ++k) {
+    if (name == kKinds[k].name) return static_cast<Kind>(k);
+  }
+  throw py::value_error("unknown shape kind '" + name + "' (circle, ellipse, rect or capsule)");
+}
+
+Shape row_shape(Kind kind, const double* r) {
+  switch (kind) {
+    case Kind::circle:
+      return Circle{{r[0], r[1]}, r[2]};
+    case Kind::ellipse:
+      return Ellipse{{r[0], r[1]}, r[2], r[3], r[4]};
+    case Kind::rect:
+      return Rect{{r[0], r[1]}, {r[2], r[3]}, r[4]};
+    default:
+      return Capsule{{r[0], r[1]}, r[2], r[3], r[4]};
+  }
+}
+
+// The rows of an (n, k) array as shapes of one kind, each checked; the error names the array and
+// the row.
+std::vector<Shape> shapes_of(const char* which, const std::string& kind_name, const Rows& rows) {
+  const Kind kind = kind_of(kind_name);
+  const KindInfo& info = kKinds[static_cast<int>(kind)];
+  if (rows.ndim() != 2 || rows.shape(1) != info.columns) {
+    throw py::value_error(std::string(which) + ": " + info.name + " rows need an (n, " +
+                          std::to_string(info.columns) + ") array (" + info.order + ")");
+  }
+  std::vector<Shape> out;
+  out.reserve(static_cast<std::size_t>(rows.shape(0)));
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    out.push_back(row_shape(kind, rows.data(i, 0)));
+    try {
+      std::visit([](const auto& s) { validate(s); }, out.back());
+    } catch (const InvalidShape& e) {
+      throw py::value_error(std::string(which) + "[" + std::to_string(i) + "]: " + e.what());
+    }
+  }
+  return out;
+}
+
+struct PairLists {
+  std::vector<Shape> a, b;
+};
+
+PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  PairLists p{shapes_of("a", a_kind, a), shapes_of("b", b_kind, b)};
+  if (p.a.size() != p.b.size()) {
+    throw py::value_error("a has " + std::to_string(p.a.size()) + " rows and b " + std::to_string(p.b.size()) +
+                          ": pairs need as many of each");
+  }
+  return p;
+}
+
+py::array_t<double> points(std::size_t n) { return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{2}}); }
+
+// One query over every pair, the GIL released: out(i, result) for each.
+template <class Query, class Out>
+void each_pair(const PairLists& p, Query query, Out out) {
+  py::gil_scoped_release released;
+  for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
+}
+
+// The pair kinds the batched kernels take (batch.h), A before B in kernel order.
+template <class A, class B>
+constexpr bool kBatched =
+    (std::is_same_v<A, Rect> && !std::is_same_v<B, Capsule>) ||
+    (std::is_same_v<A, Circle> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>)) ||
+    (std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>) ||
+    (std::is_same_v<A, Capsule> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>));
+
+template <class S>
+struct Typed {
+  std::vector<S> shapes;
+  std::vector<Orientation> orientations;
+  explicit Typed(const std::vector<Shape>& list) {
+    for (const Shape& s : list) {
+      shapes.push_back(std::get<S>(s));
+      orientations.push_back(Orientation::of(angle_of(s)));
+    }
+  }
+};
+
+// overlaps() of every pair into `out`: through the batched kernels where the kinds have one (in
+// either order: overlap is symmetric), else one pair at a time.
+template <class A, class B>
+void overlaps_into(const std::vector<Shape>& a, const std::vector<Shape>& b, std::vector<std::uint8_t>& out) {
+  if constexpr (kBatched<A, B>) {
+    const Typed<A> x(a);
+    const Typed<B> y(b);
+    overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
+  } else if constexpr (kBatched<B, A>) {
+    overlaps_into<B, A>(b, a, out);
+  } else {
+    for (std::size_t i = 0; i < a.size(); ++i) out[i] = overlaps(a[i], b[i]) ? 1 : 0;
+  }
+}
+
+template <class S>
+struct KindTag {
+  using type = S;
+};
+using AnyKind = std::variant<KindTag<Circle>, KindTag<Ellipse>, KindTag<Rect>, KindTag<Capsule>>;
+AnyKind tag_of(Kind k) {
+  switch (k) {
+    case Kind::circle:
+      return KindTag<Circle>{};
+    case Kind::ellipse:
+      return KindTag<Ellipse>{};
+    case Kind::rect:
+      return KindTag<Rect>{};
+    default:
+      return KindTag<Capsule>{};
+  }
+}
+
+py::array_t<bool> overlaps_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const PairLists p = pair_lists(a_kind, a, b_kind, b);
+  std::vector<std::uint8_t> verdicts(p.a.size());
+  {
+    py::gil_scoped_release released;
+    std::visit(
+        [&](auto x, auto y) { overlaps_into<typename decltype(x)::type, typename decltype(y)::type>(p.a, p.b, verdicts); },
+        tag_of(kind_of(a_kind)), tag_of(kind_of(b_kind)));
+  }
+  py::array_t<bool> out(static_cast<py::ssize_t>(verdicts.size()));
+  std::copy(verdicts.begin(), verdicts.end(), out.mutable_data());
+  return out;
+}
+
+py::dict distance_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const PairLists p = pair_lists(a_kind, a, b_kind, b);
+  const auto n = static_cast<py::ssize_t>(p.a.size());
+  py::array_t<bool> overlapping(n);
+  py::array_t<double> distances(n);
+  py::array_t<double> pa = points(p.a.size()), pb = points(p.a.size());
+  auto o = overlapping.mutable_unchecked<1>();
+  auto d = distances.mutable_unchecked<1>();
+  auto ua = pa.mutable_unchecked<2>(), ub = pb.mutable_unchecked<2>();
+  each_pair(p, [](const Shape& x, const Shape& y) { return distance(x, y); },
+            [&](std::size_t k, const DistanceResult& r) {
+              const auto i = static_cast<py::ssize_t>(k);
+              o(i) = r.overlapping, d(i) = r.distance;
+              ua(i, 0) = r.point_a.x(), ua(i, 1) = r.point_a.y(), ub(i, 0) = r.point_b.x(), ub(i, 1) = r.point_b.y();
+            });
+  return py::dict(py::arg("overlapping") = overlapping, py::arg("distance") = distances, py::arg("point_a") = pa,
+                  py::arg("point_b") = pb);
+}
+
+py::dict contact_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const PairLists p = pair_lists(a_kind, a, b_kind, b);
+  const auto n = static_cast<py::ssize_t>(p.a.size());
+  py::array_t<double> separations(n);
+  py::array_t<double> normals = points(p.a.size()), pa = points(p.a.size()), pb = points(p.a.size());
+  auto s = separations.mutable_unchecked<1>();
+  auto un = normals.mutable_unchecked<2>(), ua = pa.mutable_unchecked<2>(), ub = pb.mutable_unchecked<2>();
+  each_pair(p, [](const Shape& x, const Shape& y) { return contact(x, y); },
+            [&](std::size_t k, const Contact& c) {
+              const auto i = static_cast<py::ssize_t>(k);
+              s(i) = c.separation;
+              un(i, 0) = c.normal.x(), un(i, 1) = c.normal.y();
+              ua(i, 0) = c.point_a.x(), ua(i, 1) = c.point_a.y(), ub(i, 0) = c.point_b.x(), ub(i, 1) = c.point_b.y();
+            });
+  return py::dict(py::arg("separation") = separations, py::arg("normal") = normals, py::arg("point_a") = pa,
+                  py::arg("point_b") = pb);
+}
+
+void add_arrays(py::module_& m) {
+  const char* kinds = "\n\nShapes of one kind a row: circle (cx cy r), ellipse (cx cy a b theta), rect (cx cy hx hy\n"
+                      "theta), capsule (cx cy half_length radius theta); row i of a with row i of b.";
+  m.def("overlaps_arrays", &overlaps_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        (std::string("overlaps() of every pair: a bool array.") + kinds).c_str());
+  m.def("distance_arrays", &distance_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        (std::string("distance() of every pair: a dict of arrays overlapping (n,), distance (n,), point_a\n"
+                     "and point_b (n, 2).") +
+         kinds)
+            .c_str());
+  m.def("contact_arrays", &contact_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        (std::string("contact() of every pair: a dict of arrays separation (n,), normal, point_a and\n"
+                     "point_b (n, 2).") +
+         kinds)
+            .c_str());
+}
+
 }  // namespace
 }  // namespace collide2d
 
@@ -199,5 +405,6 @@ PYBIND11_MODULE(collide2d, m) {
   collide2d::add_shapes(m);
   collide2d::add_results(m);
   collide2d::add_queries(m);
+  collide2d::add_arrays(m);
   m.attr("__version__") = COLLIDE2D_VERSION_STRING;
 }
