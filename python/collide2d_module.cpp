@@ -13,6 +13,7 @@
 #include <functional>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -393,6 +394,198 @@ void add_arrays(py::module_& m) {
             .c_str());
 }
 
+// ---- the World ----
+
+// A body's id in Python: generation << 32 | index, one uint64.
+std::uint64_t id_of(BodyId b) { return static_cast<std::uint64_t>(b.generation) << 32 | b.index; }
+BodyId body_of(std::uint64_t id) { return {static_cast<std::uint32_t>(id), static_cast<std::uint32_t>(id >> 32)}; }
+
+template <class Records, class A, class B>
+py::array_t<std::uint64_t> id_pairs(const Records& records, A a, B b) {
+  py::array_t<std::uint64_t> out({static_cast<py::ssize_t>(records.size()), py::ssize_t{2}});
+  auto o = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const auto i = static_cast<py::ssize_t>(k);
+    o(i, 0) = id_of(a(records[k])), o(i, 1) = id_of(b(records[k]));
+  }
+  return out;
+}
+
+template <class Records>
+py::array_t<std::uint64_t> body_pairs(const Records& records) {
+  return id_pairs(records, [](const auto& r) { return r.a; }, [](const auto& r) { return r.b; });
+}
+
+// Columns of doubles from the records: each `get` fills one row of `width`.
+template <class Records, class Get>
+py::array_t<double> column(const Records& records, py::ssize_t width, Get get) {
+  py::array_t<double> out({static_cast<py::ssize_t>(records.size()), width});
+  double* data = out.mutable_data();
+  for (std::size_t k = 0; k < records.size(); ++k) get(records[k], data + static_cast<py::ssize_t>(k) * width);
+  return out;
+}
+void put(double* row, const Vec2& v) { row[0] = v.x(), row[1] = v.y(); }
+
+// The World and, beside it, what a Python pair predicate raised in a worker thread, raised again by
+// update() once the update is over.
+class PyWorld {
+ public:
+  explicit PyWorld(const WorldOptions& options) : world_(options) {}
+
+  std::uint64_t add(const Shape& shape, std::uint64_t user_id, const Filter& filter, bool is_static, bool sensor,
+                    bool continuous) {
+    const BodyId id =
+        world_.add(shape, {.user_id = user_id, .filter = filter, .is_static = is_static, .sensor = sensor});
+    if (continuous) world_.set_continuous(id);
+    return id_of(id);
+  }
+  void set_poses(const py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>& ids, const Rows& centres,
+                 const Rows& angles) {
+    const py::ssize_t n = ids.size();
+    if (ids.ndim() != 1 || centres.ndim() != 2 || centres.shape(0) != n || centres.shape(1) != 2 ||
+        angles.ndim() != 1 || angles.shape(0) != n) {
+      throw py::value_error("set_poses needs ids (n,), centres (n, 2) and angles (n,); got " + std::to_string(n) +
+                            " ids");
+    }
+    for (py::ssize_t i = 0; i < n; ++i) {
+      try {
+        world_.move_to(body_of(ids.at(i)), {centres.at(i, 0), centres.at(i, 1)}, angles.at(i));
+      } catch (const std::exception& e) {
+        throw py::value_error("row " + std::to_string(i) + ": " + e.what());
+      }
+    }
+  }
+  void set_pair_predicate(py::object predicate) {
+    if (predicate.is_none()) return world_.set_pair_predicate({});
+    world_.set_pair_predicate([this, predicate](BodyId a, BodyId b) {
+      py::gil_scoped_acquire held;
+      if (raised_) return false;
+      try {
+        return predicate(id_of(a), id_of(b)).cast<bool>();
+      } catch (py::error_already_set& e) {
+        raised_ = std::make_unique<py::error_already_set>(std::move(e));
+        return false;
+      }
+    });
+  }
+  void update() {
+    {
+      py::gil_scoped_release released;
+      world_.update();
+    }
+    if (raised_) {
+      const std::unique_ptr<py::error_already_set> error = std::move(raised_);
+      throw *error;
+    }
+  }
+  World& world() { return world_; }
+
+ private:
+  World world_;
+  std::unique_ptr<py::error_already_set> raised_;
+};
+
+void add_world(py::module_& m) {
+  py::class_<PyWorld>(m, "World",
+                      "Bodies of one shape each that move every frame, and their pairs frame by frame (the C++\n"
+                      "World, docs/world.md). Body ids are uint64: generation << 32 | index.")
+      .def(py::init([](double fat_margin, double proximity_margin, bool contacts, double speculative_margin,
+                       unsigned threads) {
+             return std::make_unique<PyWorld>(WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin,
+                                                           threads});
+           }),
+           py::arg("fat_margin") = 0.0, py::arg("proximity_margin") = 0.0, py::arg("contacts") = false,
+           py::arg("speculative_margin") = 0.0, py::arg("threads") = 0u)
+      .def(
+          "add",
+          [](PyWorld& w, const Shape& shape, std::uint64_t user_id, std::uint64_t category, std::uint64_t mask,
+             std::int32_t group, bool is_static, bool sensor, bool continuous) {
+            return w.add(shape, user_id, Filter{category, mask, group}, is_static, sensor, continuous);
+          },
+          py::arg("shape"), py::arg("user_id") = 0, py::arg("category") = 1, py::arg("mask") = ~std::uint64_t{0},
+          py::arg("group") = 0, py::arg("static") = false, py::arg("sensor") = false, py::arg("continuous") = false,
+          "Adds a body of one shape, its origin at the shape's centre and angle; returns its id.")
+      .def(
+          "move_to",
+          [](PyWorld& w, std::uint64_t id, const Pair& center, double angle) {
+            w.world().move_to(body_of(id), vec(center), angle);
+          },
+          py::arg("id"), py::arg("center"), py::arg("angle") = 0.0, "Moves a body (a continuous one sweeps there).")
+      .def("set_poses", &PyWorld::set_poses, py::arg("ids"), py::arg("centres"), py::arg("angles"),
+           "move_to() for every row: ids (n,), centres (n, 2), angles (n,), in one call.")
+      .def(
+          "remove", [](PyWorld& w, std::uint64_t id) { w.world().remove(body_of(id)); }, py::arg("id"))
+      .def("update", &PyWorld::update,
+           "Runs the broad and narrow phases (the GIL released; a Python pair predicate takes it).")
+      .def("set_pair_predicate", &PyWorld::set_pair_predicate, py::arg("predicate"),
+           "predicate(a, b) -> bool for the candidate pairs that pass the filters, None for none; what it\n"
+           "raises comes out of update().")
+      .def("__len__", [](PyWorld& w) { return w.world().size(); })
+      .def(
+          "pose",
+          [](PyWorld& w, std::uint64_t id) {
+            const Pose p = w.world().pose(body_of(id));
+            return py::make_tuple(tuple(p.position), p.angle);
+          },
+          py::arg("id"))
+      .def(
+          "overlapping", [](PyWorld& w) { return body_pairs(w.world().body_overlapping()); },
+          "The overlapping pairs of bodies, sorted: a (m, 2) uint64 array.")
+      .def(
+          "began", [](PyWorld& w) { return body_pairs(w.world().body_began()); }, "Pairs that began at the update.")
+      .def(
+          "ended", [](PyWorld& w) { return body_pairs(w.world().body_ended()); }, "Pairs that ended at the update.")
+      .def(
+          "sensing",
+          [](PyWorld& w) {
+            return id_pairs(
+                w.world().sensing(), [](const SensorPair& p) { return p.sensor; },
+                [](const SensorPair& p) { return p.visitor; });
+          },
+          "(sensor, visitor) pairs of bodies.")
+      .def(
+          "proximity",
+          [](PyWorld& w) {
+            const auto& r = w.world().proximity();
+            return py::dict(py::arg("pairs") = body_pairs(r),
+                            py::arg("distance") = column(r, 1, [](const Proximity& p, double* o) { o[0] = p.result.distance; }),
+                            py::arg("point_a") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_a); }),
+                            py::arg("point_b") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_b); }));
+          },
+          "Pairs apart by less than the proximity margin: pairs (m, 2), distance (m, 1), point_a, point_b.")
+      .def(
+          "contacts",
+          [](PyWorld& w) {
+            const auto& r = w.world().contacts();
+            return py::dict(
+                py::arg("pairs") = body_pairs(r),
+                py::arg("separation") = column(r, 1, [](const BodyContact& c, double* o) { o[0] = c.contact.separation; }),
+                py::arg("normal") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.normal); }),
+                py::arg("point_a") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_a); }),
+                py::arg("point_b") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_b); }));
+          },
+          "With contacts on: pairs (m, 2), separation (m, 1), normal, point_a, point_b (m, 2).")
+      .def(
+          "impacts",
+          [](PyWorld& w) {
+            const auto& r = w.world().impacts();
+            return py::dict(py::arg("pairs") = body_pairs(r),
+                            py::arg("t") = column(r, 1, [](const Impact& i, double* o) { o[0] = i.t; }),
+                            py::arg("point") = column(r, 2, [](const Impact& i, double* o) { put(o, i.point); }),
+                            py::arg("normal") = column(r, 2, [](const Impact& i, double* o) { put(o, i.normal); }));
+          },
+          "Continuous bodies' first contacts in the step: pairs (m, 2), t (m, 1), point, normal (m, 2).")
+      .def(
+          "query",
+          [](PyWorld& w, const Shape& shape) {
+            const std::vector<BodyId> found = w.world().overlapping(shape);
+            py::array_t<std::uint64_t> out(static_cast<py::ssize_t>(found.size()));
+            for (std::size_t k = 0; k < found.size(); ++k) out.mutable_at(static_cast<py::ssize_t>(k)) = id_of(found[k]);
+            return out;
+          },
+          py::arg("shape"), "The bodies whose shapes overlap the shape, as uint64 ids.");
+}
+
 }  // namespace
 }  // namespace collide2d
 
@@ -406,5 +599,6 @@ PYBIND11_MODULE(collide2d, m) {
   collide2d::add_results(m);
   collide2d::add_queries(m);
   collide2d::add_arrays(m);
+  collide2d::add_world(m);
   m.attr("__version__") = COLLIDE2D_VERSION_STRING;
 }

@@ -1,0 +1,119 @@
+"""The World from Python: bodies driven from arrays over frames against an all-pairs check made of the
+array forms, began and ended against the sets' differences, a Python pair predicate on several
+threads, what it raises coming out of update(), and the checks of set_poses."""
+import numpy as np
+import pytest
+
+import collide2d
+
+
+def scene(rng, n):
+    rows = np.hstack([rng.uniform(-10, 10, (n, 2)), rng.uniform(0.2, 1.0, (n, 2)), rng.uniform(-3, 3, (n, 1))])
+    return rows
+
+
+def all_pairs(ids, rows, accept=lambda a, b: True):
+    """Every overlapping pair of ellipses by the array form, as sorted (a, b) id pairs."""
+    i, j = np.triu_indices(len(rows), 1)
+    hits = collide2d.overlaps_arrays('ellipse', rows[i], 'ellipse', rows[j])
+    pairs = {tuple(sorted((int(ids[a]), int(ids[b])), key=lambda x: x & 0xffffffff)) for a, b in zip(i[hits], j[hits])}
+    return {p for p in pairs if accept(*p)}
+
+
+def as_set(array):
+    return {(int(a), int(b)) for a, b in array}
+
+
+@pytest.mark.parametrize('threads', [1, 2])
+def test_a_world_driven_from_arrays_matches_all_pairs(threads):
+    rng = np.random.default_rng(threads)
+    rows = scene(rng, 300)
+    world = collide2d.World(fat_margin=0.1, threads=threads)
+    ids = np.array([world.add(collide2d.Ellipse(r[:2], r[2], r[3], r[4])) for r in rows], dtype=np.uint64)
+    velocity = rng.uniform(-0.3, 0.3, (len(rows), 2))
+    before = set()
+    for frame in range(20):
+        rows[:, :2] += velocity
+        rows[:, 4] += 0.05
+        world.set_poses(ids, rows[:, :2], rows[:, 4])
+        world.update()
+        now = as_set(world.overlapping())
+        assert now == all_pairs(ids, rows), f'frame {frame}'
+        assert as_set(world.began()) == now - before and as_set(world.ended()) == before - now
+        before = now
+    assert len(before) > 10
+
+
+def test_a_python_pair_predicate_filters_on_several_threads():
+    rng = np.random.default_rng(5)
+    rows = scene(rng, 300)
+    world = collide2d.World(threads=2)
+    ids = [world.add(collide2d.Ellipse(r[:2], r[2], r[3], r[4]), user_id=k) for k, r in enumerate(rows)]
+    even = lambda a, b: (a & 0xffffffff) % 2 == 0 and (b & 0xffffffff) % 2 == 0
+    world.set_pair_predicate(even)
+    world.update()
+    expected = all_pairs(np.array(ids, dtype=np.uint64), rows, even)
+    assert as_set(world.overlapping()) == expected and len(expected) > 0
+    world.set_pair_predicate(None)
+    world.update()
+    assert as_set(world.overlapping()) == all_pairs(np.array(ids, dtype=np.uint64), rows)
+
+
+def test_what_the_predicate_raises_comes_out_of_update():
+    world = collide2d.World(threads=2)
+    a = world.add(collide2d.Circle((0, 0), 1))
+    world.add(collide2d.Circle((1, 0), 1))
+    world.set_pair_predicate(lambda x, y: 1 / 0)
+    with pytest.raises(ZeroDivisionError):
+        world.update()
+    world.set_pair_predicate(lambda x, y: True)
+    world.update()
+    assert world.overlapping().shape == (1, 2) and int(world.overlapping()[0, 0]) == a
+
+
+def test_contacts_proximity_and_sensors_come_as_arrays():
+    world = collide2d.World(proximity_margin=1.0, contacts=True)
+    a = world.add(collide2d.Rect((0, 0), (1, 1)))
+    b = world.add(collide2d.Ellipse((0, 1.75), 2, 1))
+    c = world.add(collide2d.Circle((2.5, 0), 1))
+    s = world.add(collide2d.Circle((0, 0), 0.5), static=True, sensor=True)
+    world.update()
+    contacts = world.contacts()
+    assert as_set(contacts['pairs']) == {(a, b)}
+    assert contacts['separation'].tolist() == [[-0.25]] and contacts['normal'][0].tolist() == [0.0, 1.0]
+    near = world.proximity()
+    shapes = {a: collide2d.Rect((0, 0), (1, 1)), b: collide2d.Ellipse((0, 1.75), 2, 1), c: collide2d.Circle((2.5, 0), 1)}
+    apart = {(x, y): collide2d.distance(shapes[x], shapes[y]).distance for x, y in [(a, b), (a, c), (b, c)]}
+    assert as_set(near['pairs']) == {p for p, d in apart.items() if 0 < d < 1.0}
+    assert near['distance'][:, 0].tolist() == [apart[p] for p in map(tuple, near['pairs'].tolist())]
+    assert apart[(a, c)] == 0.5
+    assert as_set(world.sensing()) == {(s, a)}
+    assert set(world.query(collide2d.Circle((3.2, 0), 0.1)).tolist()) == {c}
+    assert world.pose(b) == ((0.0, 1.75), 0.0) and len(world) == 4
+
+
+def test_set_poses_checks_its_arrays():
+    world = collide2d.World()
+    ids = np.array([world.add(collide2d.Circle((k, 0), 0.4)) for k in range(3)], dtype=np.uint64)
+    with pytest.raises(ValueError, match=r'^set_poses needs ids \(n,\), centres \(n, 2\) and angles \(n,\); got 3 ids$'):
+        world.set_poses(ids, np.zeros((2, 2)), np.zeros(3))
+    world.remove(int(ids[1]))
+    with pytest.raises(ValueError, match=r'^row 1: stale body 1'):
+        world.set_poses(ids, np.zeros((3, 2)), np.zeros(3))
+    with pytest.raises(ValueError, match=r'^row 0: .*must be finite'):
+        world.set_poses(ids[:1], np.array([[np.nan, 0.0]]), np.zeros(1))
+
+
+def test_a_bullet_stops_at_its_first_contact_in_the_step():
+    """A circle of radius 0.1 moving 10 along x from (-5, 5) meets the wall's face x = -0.5 at
+    t = (-0.6 - -5) / 10, at (-0.5, 5)."""
+    world = collide2d.World()
+    bullet = world.add(collide2d.Circle((-5, 5), 0.1), continuous=True)
+    wall = world.add(collide2d.Rect((0, 5), (0.5, 2)), static=True)
+    world.update()
+    world.move_to(bullet, (5, 5))
+    world.update()
+    hits = world.impacts()
+    assert as_set(hits['pairs']) == {(bullet, wall)}
+    assert abs(hits['t'][0, 0] - 0.44) < 1e-9
+    assert np.abs(hits['point'][0] - [-0.5, 5]).max() < 1e-9 and np.abs(hits['normal'][0] - [1, 0]).max() < 1e-9
