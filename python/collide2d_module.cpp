@@ -216,96 +216,12 @@ Kind kind_of(const std::string& name) {
   throw py::value_error("unknown shape kind '" + name + "' (circle, ellipse, rect or capsule)");
 }
 
-Shape row_shape(Kind kind, const double* r) {
-  switch (kind) {
-    case Kind::circle:
-      return Circle{{r[0], r[1]}, r[2]};
-    case Kind::ellipse:
-      return Ellipse{{r[0], r[1]}, r[2], r[3], r[4]};
-    case Kind::rect:
-      return Rect{{r[0], r[1]}, {r[2], r[3]}, r[4]};
-    default:
-      return Capsule{{r[0], r[1]}, r[2], r[3], r[4]};
-  }
-}
-
-// The rows of an (n, k) array as shapes of one kind, each checked; the error names the array and
-// the row.
-std::vector<Shape> shapes_of(const char* which, const std::string& kind_name, const Rows& rows) {
-  const Kind kind = kind_of(kind_name);
-  const KindInfo& info = kKinds[static_cast<int>(kind)];
-  if (rows.ndim() != 2 || rows.shape(1) != info.columns) {
-    throw py::value_error(std::string(which) + ": " + info.name + " rows need an (n, " +
-                          std::to_string(info.columns) + ") array (" + info.order + ")");
-  }
-  std::vector<Shape> out;
-  out.reserve(static_cast<std::size_t>(rows.shape(0)));
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    out.push_back(row_shape(kind, rows.data(i, 0)));
-    try {
-      std::visit([](const auto& s) { validate(s); }, out.back());
-    } catch (const InvalidShape& e) {
-      throw py::value_error(std::string(which) + "[" + std::to_string(i) + "]: " + e.what());
-    }
-  }
-  return out;
-}
-
-struct PairLists {
-  std::vector<Shape> a, b;
-};
-
-PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
-  PairLists p{shapes_of("a", a_kind, a), shapes_of("b", b_kind, b)};
-  if (p.a.size() != p.b.size()) {
-    throw py::value_error("a has " + std::to_string(p.a.size()) + " rows and b " + std::to_string(p.b.size()) +
-                          ": pairs need as many of each");
-  }
-  return p;
-}
-
-py::array_t<double> points(std::size_t n) { return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{2}}); }
-
-// One query over every pair, the GIL released: out(i, result) for each.
-template <class Query, class Out>
-void each_pair(const PairLists& p, Query query, Out out) {
-  py::gil_scoped_release released;
-  for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
-}
-
-// The pair kinds the batched kernels take (batch.h), A before B in kernel order.
-template <class A, class B>
-constexpr bool kBatched =
-    (std::is_same_v<A, Rect> && !std::is_same_v<B, Capsule>) ||
-    (std::is_same_v<A, Circle> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>)) ||
-    (std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>) ||
-    (std::is_same_v<A, Capsule> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>));
-
 template <class S>
-struct Typed {
-  std::vector<S> shapes;
-  std::vector<Orientation> orientations;
-  explicit Typed(const std::vector<Shape>& list) {
-    for (const Shape& s : list) {
-      shapes.push_back(std::get<S>(s));
-      orientations.push_back(Orientation::of(angle_of(s)));
-    }
-  }
-};
-
-// overlaps() of every pair into `out`: through the batched kernels where the kinds have one (in
-// either order: overlap is symmetric), else one pair at a time.
-template <class A, class B>
-void overlaps_into(const std::vector<Shape>& a, const std::vector<Shape>& b, std::vector<std::uint8_t>& out) {
-  if constexpr (kBatched<A, B>) {
-    const Typed<A> x(a);
-    const Typed<B> y(b);
-    overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
-  } else if constexpr (kBatched<B, A>) {
-    overlaps_into<B, A>(b, a, out);
-  } else {
-    for (std::size_t i = 0; i < a.size(); ++i) out[i] = overlaps(a[i], b[i]) ? 1 : 0;
-  }
+S from_row(const double* r) {
+  if constexpr (std::is_same_v<S, Circle>) return Circle{{r[0], r[1]}, r[2]};
+  if constexpr (std::is_same_v<S, Ellipse>) return Ellipse{{r[0], r[1]}, r[2], r[3], r[4]};
+  if constexpr (std::is_same_v<S, Rect>) return Rect{{r[0], r[1]}, {r[2], r[3]}, r[4]};
+  if constexpr (std::is_same_v<S, Capsule>) return Capsule{{r[0], r[1]}, r[2], r[3], r[4]};
 }
 
 template <class S>
@@ -326,15 +242,122 @@ AnyKind tag_of(Kind k) {
   }
 }
 
-py::array_t<bool> overlaps_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
-  const PairLists p = pair_lists(a_kind, a, b_kind, b);
-  std::vector<std::uint8_t> verdicts(p.a.size());
-  {
-    py::gil_scoped_release released;
-    std::visit(
-        [&](auto x, auto y) { overlaps_into<typename decltype(x)::type, typename decltype(y)::type>(p.a, p.b, verdicts); },
-        tag_of(kind_of(a_kind)), tag_of(kind_of(b_kind)));
+// Throws where the array is not (n, k) for the kind's k columns.
+void check_columns(const char* which, Kind kind, const Rows& rows) {
+  const KindInfo& info = kKinds[static_cast<int>(kind)];
+  if (rows.ndim() != 2 || rows.shape(1) != info.columns) {
+    throw py::value_error(std::string(which) + ": " + info.name + " rows need an (n, " +
+                          std::to_string(info.columns) + ") array (" + info.order + ")");
   }
+}
+
+// Row i of an array as a checked shape; the error names the array and the row.
+template <class S>
+S checked_row(const char* which, const Rows& rows, py::ssize_t i) {
+  S shape = from_row<S>(rows.data(i, 0));
+  try {
+    validate(shape);
+  } catch (const InvalidShape& e) {
+    throw py::value_error(std::string(which) + "[" + std::to_string(i) + "]: " + e.what());
+  }
+  return shape;
+}
+
+// The rows of an (n, k) array as shapes of one kind, each checked.
+std::vector<Shape> shapes_of(const char* which, const std::string& kind_name, const Rows& rows) {
+  const Kind kind = kind_of(kind_name);
+  check_columns(which, kind, rows);
+  std::vector<Shape> out;
+  out.reserve(static_cast<std::size_t>(rows.shape(0)));
+  std::visit(
+      [&](auto tag) {
+        for (py::ssize_t i = 0; i < rows.shape(0); ++i) out.push_back(checked_row<typename decltype(tag)::type>(which, rows, i));
+      },
+      tag_of(kind));
+  return out;
+}
+
+void check_lengths(std::size_t a, std::size_t b) {
+  if (a != b) {
+    throw py::value_error("a has " + std::to_string(a) + " rows and b " + std::to_string(b) +
+                          ": pairs need as many of each");
+  }
+}
+
+struct PairLists {
+  std::vector<Shape> a, b;
+};
+
+PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  PairLists p{shapes_of("a", a_kind, a), shapes_of("b", b_kind, b)};
+  check_lengths(p.a.size(), p.b.size());
+  return p;
+}
+
+py::array_t<double> points(std::size_t n) { return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{2}}); }
+
+// One query over every pair, the GIL released: out(i, result) for each.
+template <class Query, class Out>
+void each_pair(const PairLists& p, Query query, Out out) {
+  py::gil_scoped_release released;
+  for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
+}
+
+// The pair kinds the batched kernels take (batch.h), A before B in kernel order.
+template <class A, class B>
+constexpr bool kBatched =
+    (std::is_same_v<A, Rect> && !std::is_same_v<B, Capsule>) ||
+    (std::is_same_v<A, Circle> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>)) ||
+    (std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>) ||
+    (std::is_same_v<A, Capsule> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>));
+
+// An array's rows as checked shapes of one kind and their orientations, as the batches take them.
+template <class S>
+struct Typed {
+  std::vector<S> shapes;
+  std::vector<Orientation> orientations;
+  Typed(const char* which, const Rows& rows) {
+    shapes.reserve(static_cast<std::size_t>(rows.shape(0)));
+    orientations.reserve(shapes.capacity());
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+      shapes.push_back(checked_row<S>(which, rows, i));
+      if constexpr (std::is_same_v<S, Circle>) {
+        orientations.push_back(Orientation{});  // a circle's is not read
+      } else {
+        orientations.push_back(Orientation::of(shapes.back().angle));
+      }
+    }
+  }
+};
+
+// overlaps() of every pair into `out`, the GIL released: through the batched kernels where the
+// kinds have one (in either order: overlap is symmetric), else one pair at a time.
+template <class A, class B>
+void overlaps_into(const Typed<A>& x, const Typed<B>& y, std::vector<std::uint8_t>& out) {
+  py::gil_scoped_release released;
+  if constexpr (kBatched<A, B>) {
+    overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
+  } else if constexpr (kBatched<B, A>) {
+    overlap_batch<B, A>(y.shapes, y.orientations, x.shapes, x.orientations, out);
+  } else {
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = overlaps(Shape(x.shapes[i]), Shape(y.shapes[i])) ? 1 : 0;
+  }
+}
+
+py::array_t<bool> overlaps_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const Kind ka = kind_of(a_kind), kb = kind_of(b_kind);
+  check_columns("a", ka, a);
+  check_columns("b", kb, b);
+  std::vector<std::uint8_t> verdicts;
+  std::visit(
+      [&](auto tag_a, auto tag_b) {
+        const Typed<typename decltype(tag_a)::type> x("a", a);
+        const Typed<typename decltype(tag_b)::type> y("b", b);
+        check_lengths(x.shapes.size(), y.shapes.size());
+        verdicts.resize(x.shapes.size());
+        overlaps_into(x, y, verdicts);
+      },
+      tag_of(ka), tag_of(kb));
   py::array_t<bool> out(static_cast<py::ssize_t>(verdicts.size()));
   std::copy(verdicts.begin(), verdicts.end(), out.mutable_data());
   return out;
@@ -447,9 +470,12 @@ class PyWorld {
       throw py::value_error("set_poses needs ids (n,), centres (n, 2) and angles (n,); got " + std::to_string(n) +
                             " ids");
     }
+    const auto id = ids.unchecked<1>();
+    const auto centre = centres.unchecked<2>();
+    const auto angle = angles.unchecked<1>();
     for (py::ssize_t i = 0; i < n; ++i) {
       try {
-        world_.move_to(body_of(ids.at(i)), {centres.at(i, 0), centres.at(i, 1)}, angles.at(i));
+        world_.move_to(body_of(id(i)), {centre(i, 0), centre(i, 1)}, angle(i));
       } catch (const std::exception& e) {
         throw py::value_error("row " + std::to_string(i) + ": " + e.what());
       }
