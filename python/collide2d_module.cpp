@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <type_traits>
 #include <variant>
 #include <string>
@@ -311,14 +312,23 @@ constexpr bool kBatched =
     (std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>) ||
     (std::is_same_v<A, Capsule> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>));
 
-// An array's rows as checked shapes of one kind and their orientations, as the batches take them.
+template <class T>
+T& kept(int slot) {
+  thread_local std::array<T, 2> storage;
+  return storage[static_cast<std::size_t>(slot)];
+}
+
+// An array's rows as checked shapes of one kind and their orientations, as the batches take them,
+// in storage kept by the thread from call to call (`slot` 0 for a, 1 for b), so that a large array
+// does not take fresh pages from the system on every call.
 template <class S>
 struct Typed {
-  std::vector<S> shapes;
-  std::vector<Orientation> orientations;
-  Typed(const char* which, const Rows& rows) {
-    shapes.reserve(static_cast<std::size_t>(rows.shape(0)));
-    orientations.reserve(shapes.capacity());
+  std::vector<S>& shapes;
+  std::vector<Orientation>& orientations;
+  Typed(const char* which, const Rows& rows, int slot)
+      : shapes(kept<std::vector<S>>(slot)), orientations(kept<std::vector<Orientation>>(slot)) {
+    shapes.clear();
+    orientations.clear();
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
       shapes.push_back(checked_row<S>(which, rows, i));
       if constexpr (std::is_same_v<S, Circle>) {
@@ -333,7 +343,7 @@ struct Typed {
 // overlaps() of every pair into `out`, the GIL released: through the batched kernels where the
 // kinds have one (in either order: overlap is symmetric), else one pair at a time.
 template <class A, class B>
-void overlaps_into(const Typed<A>& x, const Typed<B>& y, std::vector<std::uint8_t>& out) {
+void overlaps_into(const Typed<A>& x, const Typed<B>& y, std::span<std::uint8_t> out) {
   py::gil_scoped_release released;
   if constexpr (kBatched<A, B>) {
     overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
@@ -348,18 +358,18 @@ py::array_t<bool> overlaps_arrays(const std::string& a_kind, const Rows& a, cons
   const Kind ka = kind_of(a_kind), kb = kind_of(b_kind);
   check_columns("a", ka, a);
   check_columns("b", kb, b);
-  std::vector<std::uint8_t> verdicts;
+  check_lengths(static_cast<std::size_t>(a.shape(0)), static_cast<std::size_t>(b.shape(0)));
+  py::array_t<bool> out(a.shape(0));
+  // A bool array's bytes, 0 or 1, are the batches' verdicts.
+  const std::span<std::uint8_t> verdicts(reinterpret_cast<std::uint8_t*>(out.mutable_data()),
+                                         static_cast<std::size_t>(a.shape(0)));
   std::visit(
       [&](auto tag_a, auto tag_b) {
-        const Typed<typename decltype(tag_a)::type> x("a", a);
-        const Typed<typename decltype(tag_b)::type> y("b", b);
-        check_lengths(x.shapes.size(), y.shapes.size());
-        verdicts.resize(x.shapes.size());
+        const Typed<typename decltype(tag_a)::type> x("a", a, 0);
+        const Typed<typename decltype(tag_b)::type> y("b", b, 1);
         overlaps_into(x, y, verdicts);
       },
       tag_of(ka), tag_of(kb));
-  py::array_t<bool> out(static_cast<py::ssize_t>(verdicts.size()));
-  std::copy(verdicts.begin(), verdicts.end(), out.mutable_data());
   return out;
 }
 
