@@ -11,7 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstring>
+#include <optional>
+#include <ostream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -59,20 +60,13 @@ void put(Bytes& out, const Pair& p) {
   put(out, p.second);
 }
 
-// The shape kinds' numbers in the format.
-std::uint32_t kind_of(const Shape& s) {
-  return std::visit(
-      [](const auto& x) -> std::uint32_t {
-        using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, Circle>) return 0;
-        if constexpr (std::is_same_v<T, Ellipse>) return 1;
-        if constexpr (std::is_same_v<T, Rect>) return 2;
-        if constexpr (std::is_same_v<T, Capsule>) return 3;
-        if constexpr (std::is_same_v<T, ConvexPolygon>) return 4;
-        return 5;
-      },
-      s);
-}
+// The format numbers the shape kinds as Shape's alternatives (Shape::index()).
+static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, Circle> &&
+              std::is_same_v<std::variant_alternative_t<1, Shape>, Ellipse> &&
+              std::is_same_v<std::variant_alternative_t<2, Shape>, Rect> &&
+              std::is_same_v<std::variant_alternative_t<3, Shape>, Capsule> &&
+              std::is_same_v<std::variant_alternative_t<4, Shape>, ConvexPolygon> &&
+              std::is_same_v<std::variant_alternative_t<5, Shape>, Segment>);
 
 // A shape's sizes, its pose left out: two numbers, then a polygon's vertices in its own frame.
 void put_sizes(Bytes& out, const Shape& s) {
@@ -106,7 +100,7 @@ Bytes form_of(const World& world, BodyId body, ShapeId id) {
   const std::optional<ChainSegment> chain = world.chain_segment(id);
   const std::uint32_t flags = (world.is_static(body) ? 1u : 0u) | (world.is_sensor(id) ? 2u : 0u) |
                               (world.is_continuous(body) ? 4u : 0u) | (chain ? 8u : 0u);
-  put(out, kind_of(shape));
+  put(out, static_cast<std::uint32_t>(shape.index()));
   put(out, flags);
   const Filter& filter = world.filter(id);
   put(out, filter.category);

@@ -223,7 +223,6 @@ void WorldState::narrow_phase() {
   mark_removed();
 }
 
-// The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
 std::vector<ShapePair> WorldState::candidates() const {
   std::vector<ShapePair> out;
   out.reserve(candidates_.size());
@@ -233,6 +232,7 @@ std::vector<ShapePair> WorldState::candidates() const {
   return out;
 }
 
+// The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
 void WorldState::update_body_pairs() {
   bodies_now_.clear();
   for (const ShapePair& p : overlapping_) {

@@ -10,15 +10,12 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
-#include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <variant>
-#include <string>
 #include <vector>
 
 namespace py = pybind11;
