@@ -249,7 +249,7 @@ std::optional<Probe> widest_gap(const Shape& a, const Orientation& oa, const Sha
   Probe best{0.0, Vec2::UnitX()};
   const auto try_axis = [&](const Vec2& axis) {
     const Vec2 n = delta.dot(axis) >= 0 ? axis : Vec2(-axis);
-    const double gap = n.dot(delta) - support_in_axes(a, in_axes(oa, n)) - support_in_axes(b, in_axes(ob, n));
+    const double gap = n.dot(delta) - support_in_axes(a, in_axes(oa, n)) - support_in_axes(b, in_axes(ob, Vec2(-n)));
     if (gap > best.separation) best = {gap, n};
   };
   if (guess != Vec2::Zero()) try_axis(guess);

@@ -515,6 +515,21 @@ TEST(PolygonCapsuleQueries, TimeOfImpact) {
   }
 }
 
+// A polygon whose outline reaches farther towards the moving shape than away from it, as B: a spike
+// at x = 7 in front of a flat back at x = 11. Every shape A reaches x = 1 and moves 20 along x, so
+// that it first touches the spike at t = 6 / 20; the far side's support would put it at 8 / 20.
+TEST(PolygonCapsuleQueries, TimeOfImpactAgainstTheSideFacingTheMover) {
+  const Shape spike = ConvexPolygon::of(std::vector<Vec2>{{-3, 0}, {1, -1}, {1, 1}}).at(Vec2(10, 0));
+  for (const Shape& a : {Shape(Capsule{Vec2(0, 0), 0.5, 0.5, 0.0}), Shape(Ellipse{Vec2(0, 0), 1.0, 0.5, 0.0}),
+                         Shape(Rect{Vec2(0, 0), Vec2(1, 0.5), 0.0}), Shape(ConvexPolygon::box(1, 0.5))}) {
+    const TimeOfImpact r = time_of_impact(a, {Vec2(20, 0), 0.0}, spike, {});
+    ASSERT_EQ(r.status, ToiStatus::hit) << a.index();
+    EXPECT_NEAR(r.t, 0.3, 1e-9) << a.index();
+    const TimeOfImpact back = time_of_impact(spike, {}, a, {Vec2(20, 0), 0.0});
+    EXPECT_NEAR(back.t, 0.3, 1e-9) << a.index();
+  }
+}
+
 // Polygons and capsules in a World: their pairs found, their contacts made, their rays and shape
 // queries answered.
 TEST(PolygonCapsuleQueries, InAWorld) {
