@@ -254,7 +254,7 @@ void check_columns(const char* which, Kind kind, const Rows& rows) {
 // Row i of an array as a checked shape; the error names the array and the row.
 template <class S>
 S checked_row(const char* which, const Rows& rows, py::ssize_t i) {
-  S shape = from_row<S>(rows.data(i, 0));
+  S shape = from_row<S>(rows.data() + i * rows.shape(1));  // c_style rows
   try {
     validate(shape);
   } catch (const InvalidShape& e) {

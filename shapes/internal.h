@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <string>
 
 namespace collide2d::detail {
@@ -35,10 +36,21 @@ Vec2 support_turned(const ConvexPolygon& p, const Rotation<double>& rot, const V
 // ("ellipse a must be positive (got -1)"), for the checks of other modules to share.
 [[noreturn]] void reject(const char* what, const char* field, double value, const char* rule);
 
-// The checks every shape's validation makes of one field, with that message.
-void require_finite(const char* shape, const char* field, double value);
-void require_coordinate(const char* shape, const char* field, double value);
-void require_size(const char* shape, const char* field, double value);
+// The checks every shape's validation makes of one field, with that message; inline, as array forms
+// check every row, and only a refusal leaves the line.
+inline void require_finite(const char* shape, const char* field, double value) {
+  if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
+}
+inline void require_coordinate(const char* shape, const char* field, double value) {
+  require_finite(shape, field, value);
+  if (std::abs(value) > kMaxMagnitude) reject(shape, field, value, "is beyond the supported range of +-1e50");
+}
+inline void require_size(const char* shape, const char* field, double value) {
+  require_finite(shape, field, value);
+  if (!(value > 0.0)) reject(shape, field, value, "must be positive");
+  if (value < kMinSize || value > kMaxMagnitude)
+    reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
+}
 
 // The box from center - below to center + above, grown by a few ulps of its coordinates (the
 // centre's and `reach`, the shape's extent from it): the kernels' rounding must not put a point of

@@ -23,22 +23,6 @@ Aabb around(const Vec2& center, const Vec2& half) { return detail::around(center
 
 }  // namespace
 
-void detail::require_finite(const char* shape, const char* field, double value) {
-  if (!std::isfinite(value)) reject(shape, field, value, "must be finite");
-}
-
-void detail::require_coordinate(const char* shape, const char* field, double value) {
-  require_finite(shape, field, value);
-  if (std::abs(value) > kMaxMagnitude) reject(shape, field, value, "is beyond the supported range of +-1e50");
-}
-
-void detail::require_size(const char* shape, const char* field, double value) {
-  require_finite(shape, field, value);
-  if (!(value > 0.0)) reject(shape, field, value, "must be positive");
-  if (value < kMinSize || value > kMaxMagnitude)
-    reject(shape, field, value, "is outside the supported range 1e-50 to 1e50");
-}
-
 Aabb detail::around(const Vec2& center, const Vec2& below, const Vec2& above, const Vec2& reach) {
   const Vec2 slack = 8 * std::numeric_limits<double>::epsilon() * (center.cwiseAbs() + reach);
   return {center - below - slack, center + above + slack};
