@@ -4,8 +4,9 @@
 # repetitions interleaved at random (Google Benchmark's --benchmark_enable_random_interleaving) and
 # the medians kept, runs the speed-against-error report, and writes
 # bench/results/<date>-<cpu>.json: every program's Google Benchmark JSON, the report's, and the
-# machine (CPU model, cores, compiler, flags). Then regenerates docs/performance.md and its plots from
-# bench/results/*.json alone (scripts/performance.py).
+# machine (CPU model, cores, compiler, flags); then the Python module against the same work in C++
+# (bench/python/bench_python.py) into bench/results/python/<date>-<cpu>.json. Then regenerates
+# docs/performance.md and its plots from bench/results alone (scripts/performance.py).
 #
 #   bash scripts/bench.sh                          # about 25 minutes on 2 cores
 #   BENCH_REPETITIONS=3 BENCH_MIN_TIME=0.05 bash scripts/bench.sh   # quicker, noisier
@@ -17,9 +18,9 @@ repetitions=${BENCH_REPETITIONS:-5}
 min_time=${BENCH_MIN_TIME:-0.1}
 source_dir=$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_TESTS=OFF \
-  -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" > /dev/null
+  -DCOLLIDE2D_BUILD_PYTHON=ON -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" > /dev/null
 programs=(bench_narrowphase bench_contact bench_toi bench_broadphase bench_world bench_queries)
-cmake --build "$build" -j "$(nproc)" --target "${programs[@]}" collide2d_report
+cmake --build "$build" -j "$(nproc)" --target "${programs[@]}" collide2d_report collide2d_python python_rival
 
 runs=$(mktemp -d)
 trap 'rm -rf "$runs"' EXIT
@@ -39,4 +40,8 @@ python3 "$root/scripts/performance.py" collect --runs "$runs" --results "$root/b
   --cpu "$cpu" --cores "$(nproc)" --compiler "$("$compiler" --version | head -n 1)" \
   --flags "$flags -ffp-contract=off (collide2d and Box2D); collide2d with EIGEN_DONT_VECTORIZE" \
   --repetitions "$repetitions" --min-time "$min_time"
+slug=$(tr 'A-Z' 'a-z' <<< "$cpu" | sed -E 's/[^a-z0-9]+/-/g; s/^-//; s/-$//')
+echo "bench_python.py" >&2
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/bench/python/bench_python.py" --rival "$build/bench/python_rival" \
+  --json "$root/bench/results/python/$(date +%F)-$slug.json"
 python3 "$root/scripts/performance.py" page --results "$root/bench/results" --out "$root/docs"

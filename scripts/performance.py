@@ -291,10 +291,44 @@ def contact_pairs(results):
     return list(pairs.items())
 
 
+PYTHON_ROWS = [('one `overlaps()` call against one C++ call', 'overlaps_one_call'),
+               ('`overlaps_arrays` against the C++ batch', 'overlaps_batch'),
+               ('a World step from arrays (`set_poses`, `update`)', 'world_step')]
+
+
+def python_section(folder):
+    """The Python module against the same work in C++, from the newest bench/results/python file."""
+    files = sorted(folder.glob('*.json'))
+    if not files:
+        return ''
+    data = json.loads(files[-1].read_text())
+    method, machine, results = data['method'], data['machine'], data['results']
+    rows = ['| work | Python | C++ | ratio |', '| --- | --- | --- | --- |']
+    for label, key in PYTHON_ROWS:
+        r = results[key]
+        rows.append(f"| {label} | {r['python']:.4g} {r['unit']} | {r['c++']:.4g} {r['unit']} | "
+                    f"{r['python'] / r['c++']:.2f} |")
+    table_text = '\n'.join(rows)
+    return f'''## Python
+
+`bench/python/bench_python.py` (run by `bash scripts/bench.sh`) times the Python module against
+`bench/python/python_rival.cpp`, the same work in C++ on the same rows read from the same files:
+{method['pairs']:,} ellipse pairs and a World of {method['bodies']:,} ellipses, {method['threads']} thread,
+{method['rounds']} rounds alternating the two sides, each the median of {method['repeats']} repeats, and
+the median of the rounds kept. The ratio is Python's time over C++'s. From
+`bench/results/python/{files[-1].name}` (Python {machine['python']}, NumPy {machine['numpy']},
+{data['date']}).
+
+{table_text}
+
+'''
+
+
 def page(args):
     files = sorted(pathlib.Path(args.results).glob('*.json'))
     if not files:
         sys.exit('no results in ' + args.results)
+    python_files = sorted((pathlib.Path(args.results) / 'python').glob('*.json'))
     newest = json.loads(files[-1].read_text())
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
@@ -412,7 +446,7 @@ as `b2ContactManager` applies them).
 
 {table(WORLD, med, False)}
 
-## Speed against error
+{python_section(pathlib.Path(args.results) / 'python')}## Speed against error
 
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
@@ -435,7 +469,7 @@ separation 0.
 
 ## Results on file
 
-{chr(10).join(f"- `bench/results/{f.name}`" for f in files)}
+{chr(10).join(f"- `{f.relative_to(pathlib.Path(args.results).parent)}`" for f in files + python_files)}
 '''
     out = pathlib.Path(args.out)
     wanted = {out / 'performance.md': text}

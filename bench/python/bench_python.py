@@ -5,8 +5,15 @@ C++ batch at 100,000 pairs, and a World step driven from arrays against the same
 median of its rounds, each round the median of its repeats.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python/bench_python.py --rival build/bench/python_rival
+
+With --json FILE it also writes the figures and the machine as data (scripts/bench.sh keeps them in
+bench/results/python/, and scripts/performance.py puts them on docs/performance.md).
 """
 import argparse
+import datetime
+import json
+import os
+import platform
 import subprocess
 import tempfile
 import time
@@ -64,6 +71,7 @@ def main():
     parser.add_argument('--bodies', type=int, default=100000)
     parser.add_argument('--rounds', type=int, default=5)
     parser.add_argument('--repeats', type=int, default=5)
+    parser.add_argument('--json', help='also write the figures as data to this file')
     args = parser.parse_args()
     rng = np.random.default_rng(2024)
     a, b = ellipse_rows(rng, args.pairs, 2.0), ellipse_rows(rng, args.pairs, 2.0)
@@ -87,7 +95,22 @@ def main():
     for key, (unit, scale) in units.items():
         p, c = median['python'][key] * scale, median['c++'][key] * scale
         print(f'{key:20} {p:12.4g} {c:12.4g} {p / c:7.2f}   {unit}')
+    if args.json:
+        write_json(args, {key: {'python': median['python'][key] * scale, 'c++': median['c++'][key] * scale,
+                                'unit': unit} for key, (unit, scale) in units.items()})
 
+
+def write_json(args, results):
+    cpu = next((line.split(':', 1)[1].strip() for line in open('/proc/cpuinfo') if line.startswith('model name')),
+               platform.processor())
+    data = {'date': datetime.date.today().isoformat(),
+            'machine': {'cpu': cpu, 'cores': os.cpu_count(), 'python': platform.python_version(),
+                        'numpy': np.__version__},
+            'method': {'pairs': args.pairs, 'bodies': args.bodies, 'rounds': args.rounds, 'repeats': args.repeats,
+                       'threads': 1, 'statistic': 'median over interleaved rounds of the median of each round'},
+            'results': results}
+    with open(args.json, 'w') as out:
+        out.write(json.dumps(data, indent=1) + '\n')
 
 if __name__ == '__main__':
     main()
