@@ -598,7 +598,8 @@ void add_world_bodies(Bodies& c) {
   c.def("set_poses", &PyWorld::set_poses, py::arg("ids"), py::arg("centres"), py::arg("angles"),
         "move_to() for every row: ids (n,), centres (n, 2), angles (n,), in one call.");
   c.def(
-      "remove", [](PyWorld& w, std::uint64_t id) { w.world().remove(body_of(id)); }, py::arg("id"));
+      "remove", [](PyWorld& w, std::uint64_t id) { w.world().remove(body_of(id)); }, py::arg("id"),
+      "Removes a body; its id goes stale (a later body may reuse the index, with a new generation).");
   c.def(
       "set_filter",
       [](PyWorld& w, std::uint64_t id, std::uint64_t category, std::uint64_t mask, std::int32_t group) {
@@ -608,10 +609,12 @@ void add_world_bodies(Bodies& c) {
       "The filter of every shape of the body, from the next update.");
   c.def(
       "set_static", [](PyWorld& w, std::uint64_t id, bool on) { w.world().set_static(body_of(id), on); },
-      py::arg("id"), py::arg("static") = true);
+      py::arg("id"), py::arg("static") = true,
+      "Makes a body level geometry (never pairs with a static body) or moving again.");
   c.def(
       "set_continuous", [](PyWorld& w, std::uint64_t id, bool on) { w.world().set_continuous(body_of(id), on); },
-      py::arg("id"), py::arg("continuous") = true);
+      py::arg("id"), py::arg("continuous") = true,
+      "A continuous body sweeps from pose to pose and reports its first contact in the step in impacts().");
   c.def("update", &PyWorld::update,
         "Runs the broad and narrow phases (the GIL released; a Python pair predicate takes it).");
   c.def("set_pair_predicate", &PyWorld::set_pair_predicate, py::arg("predicate"),
@@ -631,7 +634,8 @@ void add_world_reads(Bodies& c) {
       },
       py::arg("id"), "The body's origin and angle: ((x, y), angle).");
   c.def(
-      "user_id", [](PyWorld& w, std::uint64_t id) { return w.world().user_id(body_of(id)); }, py::arg("id"));
+      "user_id", [](PyWorld& w, std::uint64_t id) { return w.world().user_id(body_of(id)); }, py::arg("id"),
+      "The user id the body was added with.");
   c.def(
       "last_frame",
       [](PyWorld& w) {
