@@ -43,6 +43,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <tuple>
 #include <type_traits>
 
 namespace collide2d {
@@ -387,6 +388,22 @@ TimeOfImpact relative_time_of_impact(const Shape& a, const Motion& a_motion, con
 
 }  // namespace
 
+namespace {
+
+// Whether the pair goes in the other order: by kind, then centre, angle and motion. The steps round
+// in the first shape's frame, so that one order for both ways of giving the pair makes
+// time_of_impact(b, a) time_of_impact(a, b) turned round to the bit, as Worlds that number the same
+// bodies differently need (partition.h).
+bool turned_round(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion) {
+  const auto key = [](const Shape& s, const Motion& m) {
+    return std::tuple(s.index(), center_of(s).x(), center_of(s).y(), angle_of(s), m.velocity.x(), m.velocity.y(),
+                      m.angular_velocity);
+  };
+  return key(b, b_motion) < key(a, a_motion);
+}
+
+}  // namespace
+
 // Solved relative to A: the poses along the step then round to the pair's own coordinates, not to
 // its offset from the origin, which at 1e6 would cost more than the default tolerance.
 TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion,
@@ -395,6 +412,11 @@ TimeOfImpact time_of_impact(const Shape& a, const Motion& a_motion, const Shape&
   validate(b, b_motion, "B");
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance)) {
     detail::reject("time of impact", "tolerance", options.tolerance, "must be finite and not negative");
+  }
+  if (turned_round(a, a_motion, b, b_motion)) {
+    TimeOfImpact r = time_of_impact(b, b_motion, a, a_motion, options);
+    r.normal = -r.normal;
+    return r;
   }
   const Vec2 origin = center_of(a);
   const auto relative = [&origin](const Shape& s) { return at_time(s, {Vec2(-origin), 0.0}, 1.0); };
