@@ -228,6 +228,7 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   p.sensor = def.sensor.value_or(b.sensor);
   p.is_static = b.is_static;
   p.continuous = b.continuous;
+  p.ghost = b.ghost;
   p.chain = false;
   p.alive = true;
   set_local(index, def.shape);
@@ -282,6 +283,7 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
   b.is_static = def.is_static;
   b.sensor = def.sensor;
   b.continuous = false;
+  b.ghost = def.ghost;
   b.alive = true;
   b.first = kNone;
   b.last = kNone;
@@ -403,6 +405,13 @@ void WorldState::set_static(BodyId id, bool is_static) {
     enter(k);
   });
   b.is_static = is_static;
+}
+
+void WorldState::set_ghost(BodyId id, bool ghost) {
+  require_not_querying("set_ghost");
+  Body& b = body(id);
+  b.ghost = ghost;
+  each_part(b, [&](std::uint32_t k) { parts_[k].ghost = ghost; });
 }
 
 void WorldState::remove(BodyId id) {

@@ -264,15 +264,16 @@ void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) co
   }
 }
 
-// A pair dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
+// A pair of two ghosts, dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
 // batch of its kind, in kernel order.
 WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
+  const Part& x = parts_[a];
+  const Part& y = parts_[b];
+  if (x.ghost && y.ghost) return Verdict::skipped;  // another World's pair, not filtered here
   if (!passes(a, b)) {
     ++out.filtered;
     return Verdict::skipped;
   }
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
   if (x.sensor && y.sensor) return Verdict::skipped;
   if (!intersects(x.box, y.box)) return Verdict::apart;
   const auto place = static_cast<std::uint32_t>(out.verdicts.size());

@@ -43,6 +43,7 @@ void World::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) {
 void World::remove(BodyId id) { state_->remove(id); }
 void World::set_proximity_margin(double margin) { state_->set_proximity_margin(margin); }
 void World::set_continuous(BodyId id, bool continuous) { state_->set_continuous(id, continuous); }
+void World::set_ghost(BodyId id, bool ghost) { state_->set_ghost(id, ghost); }
 void World::update() { state_->update(); }
 
 bool World::contains(BodyId id) const { return state_->contains(id); }
@@ -55,6 +56,7 @@ const Filter& World::filter(BodyId id) const { return state_->filter(id); }
 bool World::is_static(BodyId id) const { return state_->is_static(id); }
 bool World::is_sensor(BodyId id) const { return state_->is_sensor(id); }
 bool World::is_continuous(BodyId id) const { return state_->is_continuous(id); }
+bool World::is_ghost(BodyId id) const { return state_->is_ghost(id); }
 std::vector<ShapeId> World::shapes(BodyId id) const { return state_->shapes(id); }
 const Shape& World::shape(ShapeId id) const { return state_->shape(id); }
 const Shape& World::local_shape(ShapeId id) const { return state_->local_shape(id); }
@@ -80,6 +82,9 @@ const std::vector<SensorPair>& World::sensor_ended() const { return state_->sens
 const FrameStats& World::last_frame() const { return state_->stats_; }
 std::vector<ShapePair> World::candidates() const { return state_->candidates(); }
 Aabb World::broad_box(ShapeId id) const { return state_->broad_box(id); }
+Aabb World::reach_box(ShapeId id) const { return state_->reach_box(id); }
+
+Vec2 owner_point(const Aabb& a, const Aabb& b) { return a.min.cwiseMax(b.min); }
 
 namespace {
 

@@ -80,6 +80,7 @@ class WorldState {
   bool is_static(BodyId id) const { return body(id).is_static; }
   bool is_sensor(BodyId id) const { return body(id).sensor; }
   bool is_continuous(BodyId id) const { return body(id).continuous; }
+  bool is_ghost(BodyId id) const { return body(id).ghost; }
   std::vector<ShapeId> shapes(BodyId id) const;
   const Shape& shape(ShapeId id) const { return part(id).shape; }
   const Shape& local_shape(ShapeId id) const {
@@ -95,6 +96,7 @@ class WorldState {
 
   // continuous.cpp
   void set_continuous(BodyId id, bool continuous);
+  void set_ghost(BodyId id, bool ghost);
 
   // update.cpp
   void update();
@@ -115,6 +117,7 @@ class WorldState {
   std::vector<ShapePair> candidates() const;
   // bodies.cpp
   Aabb broad_box(ShapeId id) const;
+  Aabb reach_box(ShapeId id) const { return broad_box(part(id)); }
 
   // The results of the last update.
   std::vector<ShapePair> overlapping_;
@@ -143,6 +146,7 @@ class WorldState {
     bool is_static = false;
     bool sensor = false;  // its shapes' default
     bool continuous = false;
+    bool ghost = false;
     std::uint32_t first = kNone;  // its first shape
     std::uint32_t last = kNone;   // its last shape, where the next one joins
     std::uint32_t count = 0;      // its shapes
@@ -157,6 +161,7 @@ class WorldState {
     bool sensor = false;
     bool is_static = false;   // its body's kind, kept here for the pair loops
     bool continuous = false;  // its body's
+    bool ghost = false;       // its body's
     bool chain = false;       // a chain's segment, its ghosts in ghosts_
     bool alive = false;
     std::uint32_t generation = 1;

@@ -10,6 +10,7 @@
 #include <collide2d/chain.h>
 #include <collide2d/function_ref.h>
 #include <collide2d/kernels.h>
+#include <collide2d/partition.h>
 #include <collide2d/query.h>
 #include <collide2d/ray_cast.h>
 #include <collide2d/replay.h>

@@ -133,6 +133,9 @@ struct BodyDef {
   /// must be static: add(), add_shape(), set_local_shape() and set_static() refuse otherwise.
   bool is_static = false;
   bool sensor = false;  ///< its shapes report the solid shapes that overlap them, and are not solid
+  /// A copy of a body that another World owns, for a domain decomposition (docs/distributed.md):
+  /// it pairs with the other bodies as they are, never with another ghost.
+  bool ghost = false;
 };
 
 /// One shape of a body: `shape` is placed in the body's frame (its centre and angle are its offset
@@ -296,6 +299,11 @@ Shape placed(const Shape& local, const Pose& pose, const Orientation& turn);
 /// The pose of a shape's own centre and angle: the origin of the body add(shape) makes of it.
 Pose pose_of(const Shape& shape);
 
+/// The lower-left corner of the intersection of two boxes that meet (for two reach boxes,
+/// World::reach_box(), a point of both): the point that decides which region of a domain
+/// decomposition reports their pair, so that each pair is reported by exactly one region.
+Vec2 owner_point(const Aabb& a, const Aabb& b);
+
 /// Bodies, their pairs frame by frame, and queries on them.
 class World {
  public:
@@ -358,6 +366,8 @@ class World {
   /// straight line, turning at a steady rate about its own centre. Throws std::invalid_argument for
   /// a static body.
   void set_continuous(BodyId id, bool continuous = true);
+  /// Makes a body a ghost (BodyDef::ghost) or not, from the next update.
+  void set_ghost(BodyId id, bool ghost = true);
   /// Finds the pairs of this frame: once per frame, after the poses are set.
   void update();
 
@@ -376,6 +386,7 @@ class World {
   bool is_static(BodyId id) const;
   bool is_sensor(BodyId id) const;  ///< the body's default for its shapes
   bool is_continuous(BodyId id) const;
+  bool is_ghost(BodyId id) const;
   std::vector<ShapeId> shapes(BodyId id) const;
   /// A shape where it is in the world, as placed in its body's frame, its body, user id, filter and
   /// kind. Each throws std::out_of_range for an unknown or stale handle.
@@ -423,6 +434,12 @@ class World {
   /// margin and, for a moving shape, by the fat margin as of the last time it left its fat box (a
   /// continuous shape's box holds its whole step).
   Aabb broad_box(ShapeId id) const;
+  /// The shape's box for the step the next update() takes (a continuous shape's holds the whole
+  /// step), grown by half the proximity or speculative margin: the boxes of any two shapes that the
+  /// update reports together meet. A function of the shape where it is, a continuous shape's pose at
+  /// the last update, and the margins (no fat margin), so that Worlds that hold the same body agree
+  /// on it to the bit: a domain decomposition places bodies and pairs by it (owner_point()).
+  Aabb reach_box(ShapeId id) const;
 
   /// Queries on the current poses (no update needed). Each comes in two forms. The callback form
   /// calls `visit` for each shape found, with its body, in the order the trees are walked, allocates

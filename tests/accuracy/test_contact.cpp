@@ -2,6 +2,7 @@
 // signed distance, an independent scan of the dual function, on the hard-case families of every
 // pair and on deep overlaps; against known answers where the construction gives one; and the
 // properties a solver relies on.
+#include "contact_testing.h"
 #include "hard_cases.h"
 #include "mp_reference.h"
 
@@ -23,6 +24,8 @@
 
 namespace collide2d::testing {
 namespace {
+
+using testing::expect_same_contact;
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
@@ -215,14 +218,6 @@ TEST(ContactProperties, HoldOnEveryFamily) {
   std::printf(
       "[contact] properties: %d pairs apart; %d pushed out, worst %.2f of the bound; rigid motion worst %.2f of it\n",
       apart, pushed, worst_push, worst_motion);
-}
-
-void expect_same_contact(const Contact& plain, const Contact& kept, const std::string& what) {
-  EXPECT_EQ(plain.separation, kept.separation) << what;
-  EXPECT_EQ(plain.normal, kept.normal) << what;
-  EXPECT_EQ(plain.point_a, kept.point_a) << what;
-  EXPECT_EQ(plain.point_b, kept.point_b) << what;
-  EXPECT_EQ(plain.manifold_size, kept.manifold_size) << what;
 }
 
 // The kernels with orientations kept against the same kernels computing them, on every family:

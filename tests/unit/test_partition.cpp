@@ -1,0 +1,266 @@
+// A World split into slabs along x, one RegionWorld each, against the whole World over frames with
+// churn: bodies added and removed, crossing boundaries back and forth, a body wider than a region,
+// bodies on a boundary, filters, sensors, statics, and continuous bullets that cross several regions
+// within one step. The regions' reports together must be the whole World's, record for record and
+// value for value, with every slab count tried, one of the slabs empty; and ghosts never pair.
+#include <collide2d/partition.h>
+#include "contact_testing.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using Rng = std::mt19937_64;
+
+double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+int pick(Rng& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
+
+const WorldOptions kOptions{.fat_margin = 0.2, .proximity_margin = 0.3, .contacts = true, .speculative_margin = 0.1};
+
+Shape random_shape(Rng& rng, const Vec2& c) {
+  const double size = uniform(rng, 0.2, 1.2), angle = uniform(rng, -3, 3);
+  switch (pick(rng, 5)) {
+    case 0:
+      return Circle{c, size};
+    case 1:
+      return Ellipse{c, size, size * uniform(rng, 0.15, 1.0), angle};
+    case 2:
+      return Rect{c, Vec2(size, size * uniform(rng, 0.2, 1.0)), angle};
+    case 3:
+      return Capsule{c, size, size * uniform(rng, 0.2, 0.6), angle};
+    default:
+      return ConvexPolygon::of(std::vector<Vec2>{{-size, -0.5 * size}, {size, -0.2 * size}, {0.3 * size, size}})
+          .at(c, angle);
+  }
+}
+
+// The whole World and what each body does from frame to frame.
+struct Scene {
+  World world{kOptions};
+  Rng rng{7};
+  std::map<std::uint64_t, BodyId> bodies;
+  std::map<std::uint64_t, Vec2> velocity;
+  std::map<std::uint64_t, Pose> start;  // continuous bodies: the pose at the last update
+  std::uint64_t next_id = 1;
+
+  std::uint64_t add(const Shape& shape, const BodyDef& def, const Vec2& v, bool continuous = false) {
+    const std::uint64_t id = next_id++;
+    BodyDef d = def;
+    d.user_id = id;
+    const BodyId body = world.add(shape, d);
+    if (continuous) {
+      world.set_continuous(body);
+      start[id] = pose_of(shape);
+    }
+    bodies[id] = body;
+    velocity[id] = v;
+    return id;
+  }
+  void add_random() {
+    const Vec2 c(uniform(rng, -22, 22), uniform(rng, -12, 12));
+    const BodyDef def{.filter = {.category = std::uint64_t{1} << pick(rng, 3),
+                                 .mask = 3 + 4 * std::uint64_t(pick(rng, 2)),
+                                 .group = pick(rng, 9) == 0 ? -1 : 0},
+                      .sensor = pick(rng, 25) == 0};
+    add(random_shape(rng, c), def, Vec2(uniform(rng, -0.8, 0.8), uniform(rng, -0.4, 0.4)));
+  }
+
+  Scene() {
+    for (int k = 0; k < 260; ++k) add_random();
+    // Level geometry: a floor longer than any region, blocks, a segment across a boundary.
+    add(Rect{Vec2(0, -13), Vec2(40, 0.5), 0.0}, {.is_static = true}, Vec2::Zero());
+    for (int k = 0; k < 8; ++k) add(random_shape(rng, Vec2(-20 + 5.5 * k, 6)), {.is_static = true}, Vec2::Zero());
+    add(Segment::between(Vec2(-3, -5), Vec2(4, -4)), {.is_static = true}, Vec2::Zero());
+    // An ellipse wider than a region, drifting across the boundaries.
+    add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
+    // Bodies on the boundaries used below, their centres or left ends there.
+    for (const double x : {-10.0, 0.0, 10.0, -7.0, 7.0}) {
+      add(Circle{Vec2(x, -8), 0.5}, {}, Vec2::Zero());
+      add(Circle{Vec2(x + 0.5, -9.25), 0.5}, {}, Vec2::Zero());
+    }
+    // Bullets that cross several regions in one step.
+    for (int k = 0; k < 6; ++k) {
+      add(Circle{Vec2(-24, -10 + 4 * k), 0.15}, {}, Vec2(k % 2 == 0 ? 16.0 : 27.0, 0.0), true);
+    }
+  }
+
+  // Every moving body moves on (turning back at the scene's edges), a few are removed and as many
+  // added, each continuous one's step starting where the last update left it.
+  void step() {
+    for (auto& [id, body] : bodies) {
+      if (world.is_static(body)) continue;
+      if (world.is_continuous(body)) start[id] = world.pose(body);
+      Vec2& v = velocity[id];
+      const Pose p = world.pose(body);
+      if (std::abs(p.position.x() + v.x()) > 25) v.x() = -v.x();
+      if (std::abs(p.position.y() + v.y()) > 13) v.y() = -v.y();
+      world.move_to(body, p.position + v, p.angle + 0.05);
+    }
+    for (int k = 0; k < 4; ++k) {
+      auto it = std::next(bodies.begin(), pick(rng, static_cast<int>(bodies.size())));
+      if (world.is_static(it->second) || world.is_continuous(it->second)) continue;
+      world.remove(it->second);
+      velocity.erase(it->first);
+      bodies.erase(it);
+      add_random();
+    }
+  }
+
+  BodyRecord record(std::uint64_t id) const {
+    const BodyId b = bodies.at(id);
+    const auto s = start.find(id);
+    return {.id = id,
+            .shape = world.shape(b),
+            .start = s == start.end() ? Pose{} : s->second,
+            .filter = world.filter(b),
+            .is_static = world.is_static(b),
+            .sensor = world.is_sensor(b),
+            .continuous = world.is_continuous(b)};
+  }
+};
+
+// Each body to the regions that hold it: its own (the slab of its reach box's lower-left corner)
+// and, as a ghost, every other its reach box meets; a static body to every region, as its own.
+void deal(const Scene& scene, const Slabs& slabs, std::vector<RegionWorld>& regions) {
+  std::vector<std::vector<BodyRecord>> owned(regions.size()), ghosts(regions.size());
+  for (const auto& [id, body] : scene.bodies) {
+    const BodyRecord r = scene.record(id);
+    if (r.is_static) {
+      for (auto& list : owned) list.push_back(r);
+      continue;
+    }
+    const Aabb reach = scene.world.reach_box(scene.world.shapes(body).front());
+    const auto [first, last] = slabs.regions_of(reach);
+    for (int k = first; k <= last; ++k) (k == first ? owned : ghosts)[static_cast<std::size_t>(k)].push_back(r);
+  }
+  for (std::size_t k = 0; k < regions.size(); ++k) regions[k].sync(owned[k], ghosts[k]);
+}
+
+template <class Record>
+std::vector<std::pair<std::uint64_t, std::uint64_t>> ids(const std::vector<Record>& list) {
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> out;
+  for (const Record& r : list) out.emplace_back(r.user_a, r.user_b);
+  return out;
+}
+
+// The regions' reports joined, each list sorted by ids, against the whole World's.
+void expect_union(const std::vector<RegionWorld>& regions, const RegionReport& whole, const std::string& what) {
+  RegionReport all;
+  for (const RegionWorld& r : regions) {
+    const RegionReport& m = r.report();
+    all.overlapping.insert(all.overlapping.end(), m.overlapping.begin(), m.overlapping.end());
+    all.proximity.insert(all.proximity.end(), m.proximity.begin(), m.proximity.end());
+    all.contacts.insert(all.contacts.end(), m.contacts.begin(), m.contacts.end());
+    all.impacts.insert(all.impacts.end(), m.impacts.begin(), m.impacts.end());
+    all.sensing.insert(all.sensing.end(), m.sensing.begin(), m.sensing.end());
+  }
+  const auto by_ids = [](const auto& p, const auto& q) {
+    return std::pair(p.user_a, p.user_b) < std::pair(q.user_a, q.user_b);
+  };
+  std::sort(all.overlapping.begin(), all.overlapping.end(), by_ids);
+  std::sort(all.proximity.begin(), all.proximity.end(), by_ids);
+  std::sort(all.contacts.begin(), all.contacts.end(), by_ids);
+  std::sort(all.impacts.begin(), all.impacts.end(), by_ids);
+  std::sort(all.sensing.begin(), all.sensing.end(), [](const SensorPair& p, const SensorPair& q) {
+    return std::pair(p.user_sensor, p.user_visitor) < std::pair(q.user_sensor, q.user_visitor);
+  });
+  ASSERT_EQ(ids(all.overlapping), ids(whole.overlapping)) << what;
+  ASSERT_EQ(ids(all.proximity), ids(whole.proximity)) << what;
+  for (std::size_t k = 0; k < all.proximity.size(); ++k) {
+    const DistanceResult &x = all.proximity[k].result, &y = whole.proximity[k].result;
+    EXPECT_EQ(x.distance, y.distance) << what;
+    EXPECT_EQ(x.point_a, y.point_a) << what;
+    EXPECT_EQ(x.point_b, y.point_b) << what;
+  }
+  ASSERT_EQ(ids(all.contacts), ids(whole.contacts)) << what;
+  for (std::size_t k = 0; k < all.contacts.size(); ++k) {
+    EXPECT_EQ(all.contacts[k].touching, whole.contacts[k].touching) << what;
+    testing::expect_same_contact(all.contacts[k].contact, whole.contacts[k].contact, what);
+  }
+  ASSERT_EQ(ids(all.impacts), ids(whole.impacts)) << what;
+  for (std::size_t k = 0; k < all.impacts.size(); ++k) {
+    EXPECT_EQ(all.impacts[k].t, whole.impacts[k].t) << what;
+    EXPECT_EQ(all.impacts[k].normal, whole.impacts[k].normal) << what;
+    EXPECT_EQ(all.impacts[k].point, whole.impacts[k].point) << what;
+  }
+  ASSERT_EQ(all.sensing.size(), whole.sensing.size()) << what;
+  for (std::size_t k = 0; k < all.sensing.size(); ++k) {
+    EXPECT_EQ(all.sensing[k].user_sensor, whole.sensing[k].user_sensor) << what;
+    EXPECT_EQ(all.sensing[k].user_visitor, whole.sensing[k].user_visitor) << what;
+  }
+}
+
+TEST(Partition, RegionsTogetherReportTheWholeWorld) {
+  const std::vector<std::vector<double>> layouts = {
+      {}, {0.0}, {-7.0, 7.0}, {-10.0, 0.0, 10.0}, {-10.0, 0.0, 10.0, 60.0}};
+  for (const std::vector<double>& bounds : layouts) {
+    Scene scene;
+    const Slabs slabs(bounds);
+    std::vector<RegionWorld> regions;
+    for (int k = 0; k < slabs.count(); ++k) regions.emplace_back(kOptions, slabs, k);
+    std::size_t pairs = 0, impacts = 0, sensing = 0, ghosts = 0;
+    for (int frame = 0; frame < 16; ++frame) {
+      if (frame > 0) scene.step();
+      deal(scene, slabs, regions);
+      scene.world.update();
+      for (RegionWorld& r : regions) r.update();
+      const RegionReport whole = whole_report(scene.world);
+      expect_union(regions, whole, std::to_string(slabs.count()) + " slabs, frame " + std::to_string(frame));
+      if (::testing::Test::HasFatalFailure()) return;
+      pairs += whole.overlapping.size() + whole.proximity.size();
+      impacts += whole.impacts.size();
+      sensing += whole.sensing.size();
+      for (const RegionWorld& r : regions) {
+        for (const BodyId b : r.world().bodies()) ghosts += r.world().is_ghost(b) ? 1 : 0;
+      }
+    }
+    // The scene exercises what it claims: pairs, bullets' impacts, sensors and, split, ghosts.
+    EXPECT_GT(pairs, 500u);
+    EXPECT_GT(impacts, 10u);
+    EXPECT_GT(sensing, 5u);
+    if (slabs.count() > 1) EXPECT_GT(ghosts, 100u);
+    EXPECT_TRUE(regions.size() < 5 || regions[4].world().size() == scene.world.size() - [&] {
+      std::size_t moving = 0;
+      for (const auto& [id, b] : scene.bodies) moving += scene.world.is_static(b) ? 0 : 1;
+      return moving;
+    }()) << "the last slab holds the statics alone";
+  }
+}
+
+TEST(Partition, GhostsNeverPairWithGhosts) {
+  World world;
+  const BodyId a = world.add(Circle{Vec2(0, 0), 1}, {.ghost = true});
+  const BodyId b = world.add(Circle{Vec2(1, 0), 1}, {.ghost = true});
+  const BodyId c = world.add(Circle{Vec2(-1, 0), 1});
+  world.update();
+  ASSERT_EQ(world.overlapping().size(), 2u);
+  EXPECT_EQ(world.overlapping()[0].b, c);
+  EXPECT_EQ(world.overlapping()[1].b, c);
+  world.set_ghost(b, false);
+  world.update();
+  EXPECT_EQ(world.overlapping().size(), 3u);
+  EXPECT_TRUE(world.is_ghost(a));
+  EXPECT_FALSE(world.is_ghost(b));
+}
+
+TEST(Partition, SlabsRefuseBoundsOutOfOrder) {
+  EXPECT_THROW(Slabs({1.0, 1.0}), std::invalid_argument);
+  EXPECT_THROW(Slabs({0.0, NAN}), std::invalid_argument);
+  EXPECT_THROW(RegionWorld(WorldOptions{}, Slabs({0.0}), 2), std::invalid_argument);
+  const Slabs slabs({-1.0, 1.0});
+  EXPECT_EQ(slabs.region_of(-1.0), 1);  // a bound belongs to the slab above it
+  EXPECT_EQ(slabs.region_of(std::nextafter(-1.0, -2.0)), 0);
+  EXPECT_EQ(slabs.region_of(1e300), 2);
+  EXPECT_EQ(slabs.regions_of(Aabb{Vec2(-5, 0), Vec2(5, 1)}), std::pair(0, 2));
+}
+
+}  // namespace
+}  // namespace collide2d
