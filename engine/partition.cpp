@@ -127,6 +127,14 @@ void RegionWorld::sync(std::span<const BodyRecord> owned, std::span<const BodyRe
   });
 }
 
+void RegionWorld::set_pair_predicate(std::function<bool(std::uint64_t, std::uint64_t)> predicate) {
+  if (!predicate) return world_.set_pair_predicate({});
+  world_.set_pair_predicate([this, predicate = std::move(predicate)](BodyId a, BodyId b) {
+    const std::uint64_t x = world_.user_id(a), y = world_.user_id(b);
+    return predicate(std::min(x, y), std::max(x, y));
+  });
+}
+
 void RegionWorld::update() {
   reach_.clear();
   for (const auto& [id, held] : bodies_) reach_[id] = world_.reach_box(held.shape);

@@ -17,6 +17,7 @@
 #include <collide2d/world.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <unordered_map>
@@ -77,6 +78,9 @@ class RegionWorld {
   /// so that a continuous one sweeps its whole step; one missing is removed. The same body in the
   /// same place in two regions' Worlds is the same to the bit.
   void sync(std::span<const BodyRecord> owned, std::span<const BodyRecord> ghosts);
+  /// Filters candidate pairs by the bodies' ids, the lower first (World::set_pair_predicate()), so
+  /// that every region asks it the same question of a pair; an empty function for none.
+  void set_pair_predicate(std::function<bool(std::uint64_t, std::uint64_t)> predicate);
   /// The World's update, then its report.
   void update();
   const RegionReport& report() const { return report_; }

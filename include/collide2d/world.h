@@ -299,6 +299,10 @@ Shape placed(const Shape& local, const Pose& pose, const Orientation& turn);
 /// The pose of a shape's own centre and angle: the origin of the body add(shape) makes of it.
 Pose pose_of(const Shape& shape);
 
+/// World::reach_box() of a shape where it is in a World with these options, computed without one:
+/// `start` is a continuous shape's pose at the last update, nullopt for another.
+Aabb reach_box(const Shape& shape, const std::optional<Pose>& start, const WorldOptions& options);
+
 /// The lower-left corner of the intersection of two boxes that meet (for two reach boxes,
 /// World::reach_box(), a point of both): the point that decides which region of a domain
 /// decomposition reports their pair, so that each pair is reported by exactly one region.

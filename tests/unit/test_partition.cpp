@@ -5,6 +5,7 @@
 // value for value, with every slab count tried, one of the slabs empty; and ghosts never pair.
 #include <collide2d/partition.h>
 #include "contact_testing.h"
+#include "split_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -18,118 +19,12 @@
 namespace collide2d {
 namespace {
 
-using Rng = std::mt19937_64;
-
-double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-int pick(Rng& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
-
-const WorldOptions kOptions{.fat_margin = 0.2, .proximity_margin = 0.3, .contacts = true, .speculative_margin = 0.1};
-
-Shape random_shape(Rng& rng, const Vec2& c) {
-  const double size = uniform(rng, 0.2, 1.2), angle = uniform(rng, -3, 3);
-  switch (pick(rng, 5)) {
-    case 0:
-      return Circle{c, size};
-    case 1:
-      return Ellipse{c, size, size * uniform(rng, 0.15, 1.0), angle};
-    case 2:
-      return Rect{c, Vec2(size, size * uniform(rng, 0.2, 1.0)), angle};
-    case 3:
-      return Capsule{c, size, size * uniform(rng, 0.2, 0.6), angle};
-    default:
-      return ConvexPolygon::of(std::vector<Vec2>{{-size, -0.5 * size}, {size, -0.2 * size}, {0.3 * size, size}})
-          .at(c, angle);
-  }
-}
-
-// The whole World and what each body does from frame to frame.
-struct Scene {
-  World world{kOptions};
-  Rng rng{7};
-  std::map<std::uint64_t, BodyId> bodies;
-  std::map<std::uint64_t, Vec2> velocity;
-  std::map<std::uint64_t, Pose> start;  // continuous bodies: the pose at the last update
-  std::uint64_t next_id = 1;
-
-  std::uint64_t add(const Shape& shape, const BodyDef& def, const Vec2& v, bool continuous = false) {
-    const std::uint64_t id = next_id++;
-    BodyDef d = def;
-    d.user_id = id;
-    const BodyId body = world.add(shape, d);
-    if (continuous) {
-      world.set_continuous(body);
-      start[id] = pose_of(shape);
-    }
-    bodies[id] = body;
-    velocity[id] = v;
-    return id;
-  }
-  void add_random() {
-    const Vec2 c(uniform(rng, -22, 22), uniform(rng, -12, 12));
-    const BodyDef def{.filter = {.category = std::uint64_t{1} << pick(rng, 3),
-                                 .mask = 3 + 4 * std::uint64_t(pick(rng, 2)),
-                                 .group = pick(rng, 9) == 0 ? -1 : 0},
-                      .sensor = pick(rng, 25) == 0};
-    add(random_shape(rng, c), def, Vec2(uniform(rng, -0.8, 0.8), uniform(rng, -0.4, 0.4)));
-  }
-
-  Scene() {
-    for (int k = 0; k < 260; ++k) add_random();
-    // Level geometry: a floor longer than any region, blocks, a segment across a boundary.
-    add(Rect{Vec2(0, -13), Vec2(40, 0.5), 0.0}, {.is_static = true}, Vec2::Zero());
-    for (int k = 0; k < 8; ++k) add(random_shape(rng, Vec2(-20 + 5.5 * k, 6)), {.is_static = true}, Vec2::Zero());
-    add(Segment::between(Vec2(-3, -5), Vec2(4, -4)), {.is_static = true}, Vec2::Zero());
-    // An ellipse wider than a region, drifting across the boundaries.
-    add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
-    // Bodies on the boundaries used below, their centres or left ends there.
-    for (const double x : {-10.0, 0.0, 10.0, -7.0, 7.0}) {
-      add(Circle{Vec2(x, -8), 0.5}, {}, Vec2::Zero());
-      add(Circle{Vec2(x + 0.5, -9.25), 0.5}, {}, Vec2::Zero());
-    }
-    // Bullets that cross several regions in one step.
-    for (int k = 0; k < 6; ++k) {
-      add(Circle{Vec2(-24, -10 + 4 * k), 0.15}, {}, Vec2(k % 2 == 0 ? 16.0 : 27.0, 0.0), true);
-    }
-  }
-
-  // Every moving body moves on (turning back at the scene's edges), a few are removed and as many
-  // added, each continuous one's step starting where the last update left it.
-  void step() {
-    for (auto& [id, body] : bodies) {
-      if (world.is_static(body)) continue;
-      if (world.is_continuous(body)) start[id] = world.pose(body);
-      Vec2& v = velocity[id];
-      const Pose p = world.pose(body);
-      if (std::abs(p.position.x() + v.x()) > 25) v.x() = -v.x();
-      if (std::abs(p.position.y() + v.y()) > 13) v.y() = -v.y();
-      world.move_to(body, p.position + v, p.angle + 0.05);
-    }
-    for (int k = 0; k < 4; ++k) {
-      auto it = std::next(bodies.begin(), pick(rng, static_cast<int>(bodies.size())));
-      if (world.is_static(it->second) || world.is_continuous(it->second)) continue;
-      world.remove(it->second);
-      velocity.erase(it->first);
-      bodies.erase(it);
-      add_random();
-    }
-  }
-
-  BodyRecord record(std::uint64_t id) const {
-    const BodyId b = bodies.at(id);
-    const auto s = start.find(id);
-    return {.id = id,
-            .shape = world.shape(b),
-            .start = s == start.end() ? Pose{} : s->second,
-            .filter = world.filter(b),
-            .is_static = world.is_static(b),
-            .sensor = world.is_sensor(b),
-            .continuous = world.is_continuous(b)};
-  }
-};
+using testing::kSplitOptions;
+using testing::SplitScene;
 
 // Each body to the regions that hold it: its own (the slab of its reach box's lower-left corner)
 // and, as a ghost, every other its reach box meets; a static body to every region, as its own.
-void deal(const Scene& scene, const Slabs& slabs, std::vector<RegionWorld>& regions) {
+void deal(const SplitScene& scene, const Slabs& slabs, std::vector<RegionWorld>& regions) {
   std::vector<std::vector<BodyRecord>> owned(regions.size()), ghosts(regions.size());
   for (const auto& [id, body] : scene.bodies) {
     const BodyRecord r = scene.record(id);
@@ -138,6 +33,9 @@ void deal(const Scene& scene, const Slabs& slabs, std::vector<RegionWorld>& regi
       continue;
     }
     const Aabb reach = scene.world.reach_box(scene.world.shapes(body).front());
+    const Aabb alone = reach_box(r.shape, r.continuous ? std::optional(r.start) : std::nullopt, kSplitOptions);
+    EXPECT_EQ(alone.min, reach.min);  // the same box computed without the World
+    EXPECT_EQ(alone.max, reach.max);
     const auto [first, last] = slabs.regions_of(reach);
     for (int k = first; k <= last; ++k) (k == first ? owned : ghosts)[static_cast<std::size_t>(k)].push_back(r);
   }
@@ -202,10 +100,10 @@ TEST(Partition, RegionsTogetherReportTheWholeWorld) {
   const std::vector<std::vector<double>> layouts = {
       {}, {0.0}, {-7.0, 7.0}, {-10.0, 0.0, 10.0}, {-10.0, 0.0, 10.0, 60.0}};
   for (const std::vector<double>& bounds : layouts) {
-    Scene scene;
+    SplitScene scene;
     const Slabs slabs(bounds);
     std::vector<RegionWorld> regions;
-    for (int k = 0; k < slabs.count(); ++k) regions.emplace_back(kOptions, slabs, k);
+    for (int k = 0; k < slabs.count(); ++k) regions.emplace_back(kSplitOptions, slabs, k);
     std::size_t pairs = 0, impacts = 0, sensing = 0, ghosts = 0;
     for (int frame = 0; frame < 16; ++frame) {
       if (frame > 0) scene.step();
