@@ -188,10 +188,13 @@ std::vector<T> gathered(MPI_Comm comm, const std::vector<T>& mine) {
   return out;
 }
 
-// A pair in the events' exchange: an overlapping pair (sensor 0) or a sensor pair (sensor 1).
+// A pair in the events' exchange: an overlapping pair (sensor 0) or a sensor pair (sensor 1), its
+// bodies by ids and, where one is a chain, the segments by their places in it.
 struct Claim {
   std::uint64_t a = 0;
   std::uint64_t b = 0;
+  std::uint32_t part_a = 0;
+  std::uint32_t part_b = 0;
   std::uint64_t sensor = 0;
   friend auto operator<=>(const Claim&, const Claim&) = default;
 };
@@ -213,6 +216,7 @@ struct DistributedWorld::State {
   Slabs previous_slabs;
   std::map<std::uint64_t, Own> owned;
   std::map<std::uint64_t, Own> statics;  // every rank's, replicated
+  std::set<std::uint64_t> level;         // chains, added alike on every rank
   std::vector<Wire> new_statics;         // added here since the last update
   std::vector<std::uint64_t> removed_statics;
   std::map<std::uint64_t, std::optional<Aabb>> previous_reach;  // every body held at the last update
@@ -232,9 +236,14 @@ struct DistributedWorld::State {
         previous_slabs(region.slabs()) {}
 
   void share_statics();
+  // Whether this rank answers queries for the body: one it owns, or on rank 0 the level.
+  bool answers_for(std::uint64_t id) const {
+    return owned.count(id) != 0 || (rank == 0 && (statics.count(id) != 0 || level.count(id) != 0));
+  }
   std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> deal();
-  std::vector<Claim> current() const;
-  void settle_events(const std::vector<Claim>& now);
+  std::optional<Aabb> reach_before(std::uint64_t id, ShapeId shape) const;
+  std::vector<std::pair<Claim, int>> current() const;
+  void settle_events(const std::vector<std::pair<Claim, int>>& now);
   void rebalance();
 };
 
@@ -263,7 +272,7 @@ DistributedWorld::~DistributedWorld() {
 
 void DistributedWorld::add(std::uint64_t id, const Shape& shape, const BodyDef& def, bool continuous) {
   State& s = *state_;
-  if (s.owned.count(id) != 0 || s.statics.count(id) != 0) {
+  if (s.owned.count(id) != 0 || s.statics.count(id) != 0 || s.level.count(id) != 0) {
     throw std::invalid_argument("body id " + std::to_string(id) + " is in use on this rank");
   }
   validate(shape);
@@ -280,6 +289,17 @@ void DistributedWorld::add(std::uint64_t id, const Shape& shape, const BodyDef& 
   } else {
     s.owned.emplace(id, State::Own{r, std::nullopt});
   }
+}
+
+void DistributedWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def) {
+  State& s = *state_;
+  if (s.owned.count(id) != 0 || s.statics.count(id) != 0 || s.level.count(id) != 0) {
+    throw std::invalid_argument("body id " + std::to_string(id) + " is in use on this rank");
+  }
+  BodyDef level = def;
+  level.is_static = true;
+  s.region.add_chain(id, points, loop, level);
+  s.level.insert(id);
 }
 
 void DistributedWorld::move_to(std::uint64_t id, const Vec2& position, double angle) {
@@ -375,11 +395,25 @@ std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> DistributedWorld::St
   return {mine, ghosts};
 }
 
-// This update's reported pairs as claims, sorted.
-std::vector<Claim> DistributedWorld::State::current() const {
-  std::vector<Claim> now;
-  for (const ShapePair& p : region.report().overlapping) now.push_back({p.user_a, p.user_b, 0});
-  for (const SensorPair& p : region.report().sensing) now.push_back({p.user_sensor, p.user_visitor, 1});
+// A shape's reach box at the last update: a chain's segment's never changes.
+std::optional<Aabb> DistributedWorld::State::reach_before(std::uint64_t id, ShapeId shape) const {
+  if (const std::optional<Aabb> level = region.level_reach(shape)) return level;
+  const auto it = previous_reach.find(id);
+  return it == previous_reach.end() ? std::nullopt : it->second;
+}
+
+// This update's reported pairs as claims, sorted, each with the rank whose slab held its owner
+// point at the last update (this rank where a body had no reach box then).
+std::vector<std::pair<Claim, int>> DistributedWorld::State::current() const {
+  std::vector<std::pair<Claim, int>> now;
+  const auto add = [&](std::uint64_t a, ShapeId sa, std::uint64_t b, ShapeId sb, std::uint64_t sensor) {
+    const std::optional<Aabb> ra = reach_before(a, sa), rb = reach_before(b, sb);
+    const int before = ra && rb ? previous_slabs.region_of(owner_point(*ra, *rb).x()) : rank;
+    now.emplace_back(Claim{a, b, region.part_of(sa), region.part_of(sb), sensor}, before);
+  };
+  for (const ShapePair& p : region.report().overlapping) add(p.user_a, p.shape_a, p.user_b, p.shape_b, 0);
+  for (const SensorPair& p : region.report().sensing)
+    add(p.user_sensor, p.sensor_shape, p.user_visitor, p.visitor_shape, 1);
   std::sort(now.begin(), now.end());
   return now;
 }
@@ -388,14 +422,12 @@ std::vector<Claim> DistributedWorld::State::current() const {
 // update and by no rank now. A pair new here whose bodies both had reach boxes then asks the rank
 // whose slab held its owner point then; that rank answers whether it reported it, and keeps it from
 // ending.
-void DistributedWorld::State::settle_events(const std::vector<Claim>& now) {
+void DistributedWorld::State::settle_events(const std::vector<std::pair<Claim, int>>& pairs) {
   std::vector<std::vector<Claim>> asks(static_cast<std::size_t>(ranks));
-  std::vector<Claim> fresh;
-  for (const Claim& c : now) {
+  std::vector<Claim> fresh, now;
+  for (const auto& [c, before] : pairs) {
+    now.push_back(c);
     if (reported.count(c) != 0) continue;
-    const auto pa = previous_reach.find(c.a), pb = previous_reach.find(c.b);
-    const bool both = pa != previous_reach.end() && pb != previous_reach.end() && pa->second && pb->second;
-    const int before = both ? previous_slabs.region_of(owner_point(*pa->second, *pb->second).x()) : rank;
     if (before == rank) {
       fresh.push_back(c);
     } else {
@@ -506,7 +538,7 @@ std::vector<std::uint64_t> DistributedWorld::overlapping(const Shape& shape) {
   const World& world = s.region.world();
   for (const BodyId b : world.overlapping(shape)) {
     const std::uint64_t id = world.user_id(b);
-    if (s.owned.count(id) != 0 || (s.rank == 0 && s.statics.count(id) != 0)) mine.push_back(id);
+    if (s.answers_for(id)) mine.push_back(id);
   }
   std::vector<std::uint64_t> all = gathered(s.comm, mine);
   std::sort(all.begin(), all.end());
@@ -524,7 +556,7 @@ std::optional<std::pair<std::uint64_t, double>> DistributedWorld::ray_cast(const
   std::vector<Hit> mine;
   for (const RayHit& h : world.ray_cast_all(origin, direction, max_distance)) {
     const std::uint64_t id = world.user_id(h.body);
-    if (s.owned.count(id) != 0 || (s.rank == 0 && s.statics.count(id) != 0)) {
+    if (s.answers_for(id)) {
       mine.push_back({h.distance, id});
       break;  // nearest first
     }

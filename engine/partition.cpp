@@ -54,7 +54,7 @@ template <class Record, class Keep>
 void ordered(const std::vector<Record>& from, Keep keep, std::vector<Record>& out) {
   out.clear();
   for (Record r : from) {
-    if (!keep(r.user_a, r.user_b)) continue;
+    if (!keep(r.shape_a, r.shape_b)) continue;
     if (r.user_b < r.user_a) turn(r);
     out.push_back(r);
   }
@@ -71,7 +71,7 @@ void report_of(const World& world, Keep keep, RegionReport& out) {
   ordered(world.impacts(), keep, out.impacts);
   out.sensing.clear();
   for (const SensorPair& s : world.sensing()) {
-    if (keep(s.user_sensor, s.user_visitor)) out.sensing.push_back(s);
+    if (keep(s.sensor_shape, s.visitor_shape)) out.sensing.push_back(s);
   }
   std::sort(out.sensing.begin(), out.sensing.end(), [](const SensorPair& p, const SensorPair& q) {
     return std::pair(p.user_sensor, p.user_visitor) < std::pair(q.user_sensor, q.user_visitor);
@@ -127,6 +127,26 @@ void RegionWorld::sync(std::span<const BodyRecord> owned, std::span<const BodyRe
   });
 }
 
+BodyId RegionWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def) {
+  BodyDef d = def;
+  d.user_id = id;
+  const BodyId body = world_.add_chain(points, loop, d);
+  level_.push_back(body);
+  std::uint32_t place = 0;
+  for (const ShapeId s : world_.shapes(body)) part_[s.index] = place++;
+  return body;
+}
+
+std::uint32_t RegionWorld::part_of(ShapeId shape) const {
+  const auto it = part_.find(shape.index);
+  return it == part_.end() ? 0 : it->second;
+}
+
+std::optional<Aabb> RegionWorld::level_reach(ShapeId shape) const {
+  if (part_.count(shape.index) == 0) return std::nullopt;
+  return world_.reach_box(shape);
+}
+
 void RegionWorld::set_pair_predicate(std::function<bool(std::uint64_t, std::uint64_t)> predicate) {
   if (!predicate) return world_.set_pair_predicate({});
   world_.set_pair_predicate([this, predicate = std::move(predicate)](BodyId a, BodyId b) {
@@ -136,13 +156,17 @@ void RegionWorld::set_pair_predicate(std::function<bool(std::uint64_t, std::uint
 }
 
 void RegionWorld::update() {
+  // Each shape's reach box for this update (a continuous one's changes with it).
   reach_.clear();
-  for (const auto& [id, held] : bodies_) reach_[id] = world_.reach_box(held.shape);
+  for (const auto& [id, held] : bodies_) reach_[held.shape.index] = world_.reach_box(held.shape);
+  for (const BodyId level : level_) {
+    for (const ShapeId s : world_.shapes(level)) reach_[s.index] = world_.reach_box(s);
+  }
   world_.update();
   report_of(
       world_,
-      [this](std::uint64_t a, std::uint64_t b) {
-        return slabs_.region_of(owner_point(reach_.at(a), reach_.at(b)).x()) == region_;
+      [this](ShapeId a, ShapeId b) {
+        return slabs_.region_of(owner_point(reach_.at(a.index), reach_.at(b.index)).x()) == region_;
       },
       report_);
 }
@@ -150,7 +174,7 @@ void RegionWorld::update() {
 RegionReport whole_report(const World& world) {
   RegionReport out;
   report_of(
-      world, [](std::uint64_t, std::uint64_t) { return true; }, out);
+      world, [](ShapeId, ShapeId) { return true; }, out);
   return out;
 }
 

@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace collide2d {
@@ -70,6 +71,9 @@ class DistributedWorld {
   /// body is copied to every rank at the next update. Throws std::invalid_argument for an id in use
   /// on this rank, and as World::add().
   void add(std::uint64_t id, const Shape& shape, const BodyDef& def = {}, bool continuous = false);
+  /// Adds a chain of level geometry (World::add_chain()). Chains are replicated, not exchanged:
+  /// every rank adds the same chains, under the same ids, in the same order.
+  void add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def = {});
   /// Moves a body this rank owns (a continuous one sweeps there). Throws std::out_of_range for a
   /// body it does not own.
   void move_to(std::uint64_t id, const Vec2& position, double angle);

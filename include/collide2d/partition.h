@@ -57,8 +57,9 @@ struct BodyRecord {
 
 /// The pairs a region reports of one update: those whose owner point it holds. Each record names
 /// its bodies by their ids (user_a < user_b; a record found the other way round is turned: its
-/// points swapped, its normal negated) and is sorted by them; a sensor pair keeps its roles. The
-/// handles are the region World's own.
+/// points swapped, its normal negated) and is sorted by them (the segments of one chain that meet
+/// the same body in the World's order); a sensor pair keeps its roles. The handles are the region
+/// World's own.
 struct RegionReport {
   std::vector<ShapePair> overlapping;
   std::vector<Proximity> proximity;
@@ -78,6 +79,13 @@ class RegionWorld {
   /// so that a continuous one sweeps its whole step; one missing is removed. The same body in the
   /// same place in two regions' Worlds is the same to the bit.
   void sync(std::span<const BodyRecord> owned, std::span<const BodyRecord> ghosts);
+  /// Adds a chain of level geometry (World::add_chain()) under the caller's id, outside sync():
+  /// every region adds the same chains, replicated as static bodies are.
+  BodyId add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def);
+  /// A shape's place in its chain (0 for a shape of another body), which every region numbers alike.
+  std::uint32_t part_of(ShapeId shape) const;
+  /// A chain segment's reach box (it never changes), nullopt for a shape of another body.
+  std::optional<Aabb> level_reach(ShapeId shape) const;
   /// Filters candidate pairs by the bodies' ids, the lower first (World::set_pair_predicate()), so
   /// that every region asks it the same question of a pair; an empty function for none.
   void set_pair_predicate(std::function<bool(std::uint64_t, std::uint64_t)> predicate);
@@ -104,7 +112,9 @@ class RegionWorld {
   int region_;
   std::uint64_t frame_ = 0;
   std::unordered_map<std::uint64_t, Held> bodies_;
-  std::unordered_map<std::uint64_t, Aabb> reach_;  // each body's reach box for the update
+  std::vector<BodyId> level_;                              // its chains
+  std::unordered_map<std::uint32_t, std::uint32_t> part_;  // each chain segment's place, by slot
+  std::unordered_map<std::uint32_t, Aabb> reach_;          // each shape's reach box for the update, by slot
   RegionReport report_;
 };
 

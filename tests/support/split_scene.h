@@ -49,6 +49,9 @@ struct SplitScene {
   std::map<std::uint64_t, Pose> start;  // continuous bodies: the pose at the last update
   std::uint64_t next_id = 1;
   std::vector<std::uint64_t> added, removed;  // by the last step (added: by the constructor too)
+  // A chain of level geometry zigzagging across every boundary, held apart from `bodies`.
+  std::vector<Vec2> chain;
+  std::uint64_t chain_id = 0;
 
   std::uint64_t add(const Shape& shape, const BodyDef& def, const Vec2& v, bool continuous = false) {
     const std::uint64_t id = next_id++;
@@ -79,6 +82,9 @@ struct SplitScene {
     add(Rect{Vec2(0, -13), Vec2(40, 0.5), 0.0}, {.is_static = true}, Vec2::Zero());
     for (int k = 0; k < 8; ++k) add(random_shape(rng, Vec2(-20 + 5.5 * k, 6)), {.is_static = true}, Vec2::Zero());
     add(Segment::between(Vec2(-3, -5), Vec2(4, -4)), {.is_static = true}, Vec2::Zero());
+    for (int k = 0; k <= 12; ++k) chain.emplace_back(24.0 - 4.0 * k, k % 2 == 0 ? -10.5 : -11.5);
+    chain_id = next_id++;
+    world.add_chain(chain, false, {.user_id = chain_id, .is_static = true});
     // An ellipse wider than a region, drifting across the boundaries.
     add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
     // Bodies on the boundaries used below, their centres or left ends there.
