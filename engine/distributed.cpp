@@ -526,6 +526,7 @@ const std::vector<IdPair>& DistributedWorld::began() const { return state_->bega
 const std::vector<IdPair>& DistributedWorld::ended() const { return state_->ended; }
 const std::vector<IdSensorPair>& DistributedWorld::sensor_began() const { return state_->sensor_began; }
 const std::vector<IdSensorPair>& DistributedWorld::sensor_ended() const { return state_->sensor_ended; }
+const World& DistributedWorld::world() const { return state_->region.world(); }
 int DistributedWorld::rank() const { return state_->rank; }
 int DistributedWorld::ranks() const { return state_->ranks; }
 const Slabs& DistributedWorld::slabs() const { return state_->region.slabs(); }

@@ -88,6 +88,8 @@ def run_page(page, args, failures):
     env['COLLIDE2D_SOURCE'] = args.source
     if args.pythonpath:
         env['PYTHONPATH'] = args.pythonpath
+    # The pages show mpirun as a user runs it; the tests run as root, which Open MPI refuses unless told.
+    env['OMPI_ALLOW_RUN_AS_ROOT'] = env['OMPI_ALLOW_RUN_AS_ROOT_CONFIRM'] = '1'
     found = blocks(page)
     for index, (marker, language, lines, number) in enumerate(found):
         where = f'{page}:{number}'

@@ -8,7 +8,11 @@
 #include "tools/query_command.h"
 #include "tools/replay/replay_page.h"
 #include "tools/scene/scene_run.h"
+#ifdef COLLIDE2D_WITH_MPI
+#include "tools/scene/distributed_run.h"
+#endif
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -107,6 +111,24 @@ std::string read_file(const std::string& path) {
   return text.str();
 }
 
+#ifdef COLLIDE2D_WITH_MPI
+// Under mpirun (Open MPI names the rank count in the environment): every rank runs the scene, rank
+// 0 prints.
+int run_on_ranks(collide2d::tool::Scene scene, const std::string& title) {
+  MPI_Init(nullptr, nullptr);
+  struct Finalize {
+    ~Finalize() { MPI_Finalize(); }
+  } finalize;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::cout << title << std::flush;
+  const collide2d::tool::RunSummary summary =
+      collide2d::tool::run_distributed(std::move(scene), MPI_COMM_WORLD, rank == 0 ? &std::cerr : nullptr);
+  if (rank == 0) collide2d::tool::print_summary(summary, std::cout);
+  return 0;
+}
+#endif
+
 int run(int argc, char** argv) {
   if (wants_help(argc, argv)) {
     std::cout << kRunUsage;
@@ -133,8 +155,18 @@ int run(int argc, char** argv) {
   collide2d::tool::Scene scene =
       scene_path.empty() ? collide2d::tool::default_scene() : collide2d::tool::parse_scene(read_file(scene_path));
   if (frames > 0) scene.frames = frames;
-  std::cout << "scene " << (scene_path.empty() ? "built-in" : scene_path) << ": " << scene.bodies.size() << " bodies, "
-            << scene.frames << " frames\n";
+  std::ostringstream title;
+  title << "scene " << (scene_path.empty() ? "built-in" : scene_path) << ": " << scene.bodies.size() << " bodies, "
+        << scene.frames << " frames\n";
+#ifdef COLLIDE2D_WITH_MPI
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) {
+    if (!svg_path.empty() || !html_path.empty() || !replay_path.empty()) {
+      throw collide2d::cli::UsageError("--svg, --html and --replay draw one process's World: run without mpirun");
+    }
+    return run_on_ranks(std::move(scene), title.str());
+  }
+#endif
+  std::cout << title.str();
   collide2d::tool::SceneRun runner(std::move(scene));
   collide2d::Recorder recorder;
   const bool records = !html_path.empty() || !replay_path.empty();

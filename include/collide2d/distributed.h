@@ -108,6 +108,8 @@ class DistributedWorld {
   std::optional<std::pair<std::uint64_t, double>> ray_cast(const Vec2& origin, const Vec2& direction,
                                                            double max_distance);
 
+  /// This rank's World: the bodies it owns, its ghosts, the statics and the chains.
+  const World& world() const;
   int rank() const;
   int ranks() const;
   const Slabs& slabs() const;

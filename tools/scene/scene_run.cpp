@@ -22,6 +22,8 @@ double percentile(std::vector<double> v, double q) {
   return v[k];
 }
 
+}  // namespace
+
 void draw_progress(std::ostream& out, int done, int total) {
   constexpr int kWidth = 40;
   const int filled = total > 0 ? done * kWidth / total : kWidth;
@@ -29,8 +31,6 @@ void draw_progress(std::ostream& out, int done, int total) {
       << std::string(static_cast<std::size_t>(kWidth - filled), '.') << "] " << (total > 0 ? 100 * done / total : 100)
       << "% (" << done << '/' << total << " frames)" << std::flush;
 }
-
-}  // namespace
 
 SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
@@ -53,18 +53,31 @@ SceneRun::SceneRun(Scene scene, unsigned threads)
   }
 }
 
-RunSummary SceneRun::totals() const {
-  const auto count = [this](bool SceneBody::*flag) {
+RunSummary scene_totals(const Scene& scene) {
+  const auto count = [&scene](bool SceneBody::*flag) {
     return static_cast<std::size_t>(
-        std::count_if(scene_.bodies.begin(), scene_.bodies.end(), [flag](const SceneBody& b) { return b.*flag; }));
+        std::count_if(scene.bodies.begin(), scene.bodies.end(), [flag](const SceneBody& b) { return b.*flag; }));
   };
   RunSummary s;
-  s.frames = scene_.frames;
-  s.bodies = scene_.bodies.size();
+  s.frames = scene.frames;
+  s.bodies = scene.bodies.size();
   s.continuous = count(&SceneBody::continuous);
   s.statics = count(&SceneBody::is_static);
   s.sensors = count(&SceneBody::sensor);
   return s;
+}
+
+void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> narrow_ms) {
+  const double n = std::max(1, s.frames);
+  s.candidates_per_frame /= n;
+  s.filtered_per_frame /= n;
+  s.overlapping_per_frame /= n;
+  s.proximity_per_frame /= n;
+  s.sensing_per_frame /= n;
+  s.broad_median_ms = percentile(broad_ms, 0.5);
+  s.broad_p95_ms = percentile(broad_ms, 0.95);
+  s.narrow_median_ms = percentile(narrow_ms, 0.5);
+  s.narrow_p95_ms = percentile(narrow_ms, 0.95);
 }
 
 void SceneRun::frame() {
@@ -77,7 +90,7 @@ void SceneRun::frame() {
 }
 
 RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
-  RunSummary s = totals();
+  RunSummary s = scene_totals(scene_);
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
@@ -100,31 +113,33 @@ RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
       draw_progress(*progress, frame + 1, scene_.frames);
   }
   if (progress) *progress << '\n';
-  const double n = std::max(1, scene_.frames);
-  s.candidates_per_frame /= n;
-  s.filtered_per_frame /= n;
-  s.overlapping_per_frame /= n;
-  s.proximity_per_frame /= n;
-  s.sensing_per_frame /= n;
-  for (std::size_t k = 0; k < ids_.size(); ++k) {
-    if (scene_.bodies[k].sensor) s.sensor_contents.push_back({scene_.bodies[k].id, {}});
-  }
-  for (const SensorPair& p : world_.sensing()) {
-    const auto sensor = std::find_if(s.sensor_contents.begin(), s.sensor_contents.end(),
-                                     [&](const RunSummary::Sensor& x) { return x.id == world_.user_id(p.sensor); });
-    sensor->visitors.push_back(world_.user_id(p.visitor));
-  }
-  s.broad_median_ms = percentile(broad, 0.5);
-  s.broad_p95_ms = percentile(broad, 0.95);
-  s.narrow_median_ms = percentile(narrow, 0.5);
-  s.narrow_p95_ms = percentile(narrow, 0.95);
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> sensing;
+  for (const SensorPair& p : world_.sensing()) sensing.emplace_back(p.user_sensor, p.user_visitor);
+  s.sensor_contents = sensor_contents(scene_, sensing);
+  finish(s, std::move(broad), std::move(narrow));
   return s;
 }
 
+std::vector<RunSummary::Sensor> sensor_contents(const Scene& scene,
+                                                const std::vector<std::pair<std::uint64_t, std::uint64_t>>& sensing) {
+  std::vector<RunSummary::Sensor> out;
+  for (const SceneBody& b : scene.bodies) {
+    if (b.sensor) out.push_back({b.id, {}});
+  }
+  for (const auto& [sensor, visitor] : sensing) {
+    const auto it = std::find_if(out.begin(), out.end(), [&](const RunSummary::Sensor& x) { return x.id == sensor; });
+    it->visitors.push_back(visitor);
+  }
+  return out;
+}
+
 void print_summary(const RunSummary& s, std::ostream& out) {
+  // Under mpirun each rank's broad phase also pairs its ghosts, and each frame waits for the slowest rank.
+  if (s.ranks > 1) out << "ranks                       " << s.ranks << " (MPI; times: the slowest rank's)\n";
   out << "frames                      " << s.frames << '\n'
       << "bodies                      " << s.bodies << '\n'
-      << "candidate pairs per frame   " << s.candidates_per_frame << " (broad phase), " << s.filtered_per_frame
+      << "candidate pairs per frame   " << s.candidates_per_frame
+      << (s.ranks > 1 ? " (broad phases, summed over the ranks), " : " (broad phase), ") << s.filtered_per_frame
       << " of them dropped by filters\n"
       << "overlapping pairs per frame " << s.overlapping_per_frame << " (narrow phase), " << s.began << " began, "
       << s.ended << " ended over the run\n"
@@ -188,7 +203,7 @@ void write_svg(const SceneRun& run, std::ostream& out) {
     const auto rank = static_cast<std::size_t>(std::distance(categories.begin(), categories.find(category)));
     return rank % std::size(kLayerColours);
   };
-  const RunSummary totals = run.totals();
+  const RunSummary totals = scene_totals(run.scene());
   std::ostringstream line1, line2;
   line1 << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors
         << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "

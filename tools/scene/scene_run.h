@@ -8,11 +8,13 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <utility>
 #include <vector>
 
 namespace collide2d::tool {
 
 struct RunSummary {
+  int ranks = 1;  // MPI ranks (collide2d run under mpirun)
   int frames = 0;
   std::size_t bodies = 0;
   double candidates_per_frame = 0.0;   // broad-phase pairs, mean over frames
@@ -50,8 +52,6 @@ class SceneRun {
   RunSummary run(std::ostream* progress, Recorder* recorder = nullptr);
   // One frame of it (bench_world times this).
   void frame();
-  // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
-  RunSummary totals() const;
 
   const World& world() const { return world_; }
   const Scene& scene() const { return scene_; }
@@ -61,6 +61,18 @@ class SceneRun {
   World world_;
   std::vector<BodyId> ids_;  // World id of each scene body
 };
+
+// The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
+RunSummary scene_totals(const Scene& scene);
+// The mean per frame of each per-frame count and the percentiles of the phases' times, from sums
+// over `frames` frames and each frame's times.
+void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> narrow_ms);
+
+// Each sensor of the scene and its visitors, from (sensor, visitor) pairs of scene ids.
+std::vector<RunSummary::Sensor> sensor_contents(const Scene& scene,
+                                                const std::vector<std::pair<std::uint64_t, std::uint64_t>>& sensing);
+// A progress bar: `done` of `total` frames.
+void draw_progress(std::ostream& out, int done, int total);
 
 void print_summary(const RunSummary& s, std::ostream& out);
 
