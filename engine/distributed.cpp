@@ -16,6 +16,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace collide2d {
 namespace {
@@ -202,10 +203,11 @@ struct Claim {
 }  // namespace
 
 struct DistributedWorld::State {
-  // A body this rank owns: its record, and its reach box at the last update.
+  // A body this rank owns: its record, and its reach boxes at the last update and at this one.
   struct Own {
     BodyRecord record;
     std::optional<Aabb> previous;
+    Aabb reach{};
   };
 
   MPI_Comm comm = MPI_COMM_NULL;
@@ -214,14 +216,14 @@ struct DistributedWorld::State {
   DistributedOptions options;
   RegionWorld region;
   Slabs previous_slabs;
-  std::map<std::uint64_t, Own> owned;
+  std::unordered_map<std::uint64_t, Own> owned;
   std::map<std::uint64_t, Own> statics;  // every rank's, replicated
   std::set<std::uint64_t> level;         // chains, added alike on every rank
   std::vector<Wire> new_statics;         // added here since the last update
   std::vector<std::uint64_t> removed_statics;
-  std::map<std::uint64_t, std::optional<Aabb>> previous_reach;  // every body held at the last update
+  std::unordered_map<std::uint64_t, std::optional<Aabb>> ghost_reach;  // each ghost's at the last update
   bool has_predicate = false;
-  std::set<Claim> reported;  // the pairs this rank reported at the last update
+  std::vector<Claim> reported;  // the pairs this rank reported at the last update, sorted
   std::vector<IdPair> began, ended;
   std::vector<IdSensorPair> sensor_began, sensor_ended;
   DistributedStats stats;
@@ -242,6 +244,9 @@ struct DistributedWorld::State {
   }
   std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> deal();
   std::optional<Aabb> reach_before(std::uint64_t id, ShapeId shape) const;
+  Aabb reach_of(const BodyRecord& r) const {
+    return reach_box(r.shape, r.continuous ? std::optional(r.start) : std::nullopt, options.world);
+  }
   std::vector<std::pair<Claim, int>> current() const;
   void settle_events(const std::vector<std::pair<Claim, int>>& now);
   void rebalance();
@@ -325,6 +330,7 @@ bool DistributedWorld::owns(std::uint64_t id) const { return state_->owned.count
 std::vector<std::uint64_t> DistributedWorld::owned() const {
   std::vector<std::uint64_t> out;
   for (const auto& [id, own] : state_->owned) out.push_back(id);
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -355,9 +361,10 @@ std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> DistributedWorld::St
   const Slabs& slabs = region.slabs();
   stats.migrated = 0;
   std::vector<BodyRecord> mine, ghosts;
+  std::uint64_t twice = ~std::uint64_t{0};  // the least id that came to this rank twice
   for (auto it = owned.begin(); it != owned.end();) {
     const BodyRecord& r = it->second.record;
-    const Aabb reach = reach_box(r.shape, r.continuous ? std::optional(r.start) : std::nullopt, options.world);
+    const Aabb& reach = it->second.reach = reach_of(r);
     const auto [first, last] = slabs.regions_of(reach);
     for (int k = first; k <= last; ++k) {
       if (k != rank) out[static_cast<std::size_t>(k)].push_back(wire_of(r, it->second.previous, k == first));
@@ -369,7 +376,7 @@ std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> DistributedWorld::St
     // Handed on; still a ghost here where its reach box meets this slab.
     if (first < rank && rank <= last) {
       ghosts.push_back(r);
-      previous_reach[r.id] = it->second.previous;
+      ghost_reach[r.id] = it->second.previous;
     }
     ++stats.migrated;
     it = owned.erase(it);
@@ -377,29 +384,31 @@ std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> DistributedWorld::St
   for (const auto& from : exchange(comm, out, stats.bytes_sent)) {
     for (const Wire& w : from) {
       if ((w.flags & kOwned) != 0) {
-        owned.emplace(w.id, Own{record_of(w), previous_of(w)});
+        const BodyRecord r = record_of(w);
+        if (!owned.emplace(w.id, Own{r, previous_of(w), reach_of(r)}).second) twice = std::min(twice, w.id);
       } else {
         ghosts.push_back(record_of(w));
-        previous_reach[w.id] = previous_of(w);
+        ghost_reach[w.id] = previous_of(w);
       }
     }
   }
-  for (const auto& [id, own] : owned) {
-    mine.push_back(own.record);
-    previous_reach[id] = own.previous;
+  // Every rank throws alike, so that none is left waiting in the next exchange.
+  MPI_Allreduce(MPI_IN_PLACE, &twice, 1, MPI_UINT64_T, MPI_MIN, comm);
+  if (twice != ~std::uint64_t{0}) {
+    throw std::logic_error("body id " + std::to_string(twice) + " was added on two ranks: ids must be unique");
   }
-  for (const auto& [id, own] : statics) {
-    mine.push_back(own.record);
-    previous_reach[id] = own.previous;
-  }
+  for (const auto& [id, own] : owned) mine.push_back(own.record);
+  for (const auto& [id, own] : statics) mine.push_back(own.record);
   return {mine, ghosts};
 }
 
 // A shape's reach box at the last update: a chain's segment's never changes.
 std::optional<Aabb> DistributedWorld::State::reach_before(std::uint64_t id, ShapeId shape) const {
   if (const std::optional<Aabb> level = region.level_reach(shape)) return level;
-  const auto it = previous_reach.find(id);
-  return it == previous_reach.end() ? std::nullopt : it->second;
+  if (const auto it = owned.find(id); it != owned.end()) return it->second.previous;
+  if (const auto it = statics.find(id); it != statics.end()) return it->second.previous;
+  const auto it = ghost_reach.find(id);
+  return it == ghost_reach.end() ? std::nullopt : it->second;
 }
 
 // This update's reported pairs as claims, sorted, each with the rank whose slab held its owner
@@ -427,7 +436,7 @@ void DistributedWorld::State::settle_events(const std::vector<std::pair<Claim, i
   std::vector<Claim> fresh, now;
   for (const auto& [c, before] : pairs) {
     now.push_back(c);
-    if (reported.count(c) != 0) continue;
+    if (std::binary_search(reported.begin(), reported.end(), c)) continue;
     if (before == rank) {
       fresh.push_back(c);
     } else {
@@ -439,7 +448,7 @@ void DistributedWorld::State::settle_events(const std::vector<std::pair<Claim, i
   std::vector<std::vector<std::uint8_t>> answers(static_cast<std::size_t>(ranks));
   for (std::size_t r = 0; r < asked.size(); ++r) {
     for (const Claim& c : asked[r]) {
-      const bool was = reported.count(c) != 0;
+      const bool was = std::binary_search(reported.begin(), reported.end(), c);
       answers[r].push_back(was ? 1 : 0);
       if (was) going_on.insert(c);
     }
@@ -470,17 +479,14 @@ void DistributedWorld::State::settle_events(const std::vector<std::pair<Claim, i
       ended.push_back({c.a, c.b});
     }
   }
-  reported = std::set<Claim>(now.begin(), now.end());
+  reported = std::move(now);
 }
 
 // Bounds at the quantiles of the owned bodies' reach boxes' left ends, so that each slab owns about
 // as many; bounds that would coincide are spread by an ulp.
 void DistributedWorld::State::rebalance() {
   std::vector<double> lefts;
-  for (const auto& [id, own] : owned) {
-    const BodyRecord& r = own.record;
-    lefts.push_back(reach_box(r.shape, r.continuous ? std::optional(r.start) : std::nullopt, options.world).min.x());
-  }
+  for (const auto& [id, own] : owned) lefts.push_back(own.reach.min.x());
   std::vector<double> all = gathered(comm, lefts);
   if (all.size() < static_cast<std::size_t>(ranks)) return;
   std::sort(all.begin(), all.end());
@@ -501,18 +507,20 @@ void DistributedWorld::update() {
   }
   s.stats.bytes_sent = 0;
   s.share_statics();
-  s.previous_reach.clear();
+  s.ghost_reach.clear();
   const auto [mine, ghosts] = s.deal();
   s.region.sync(mine, ghosts);
   s.region.update();
   s.settle_events(s.current());
-  // Each owned body's reach box of this update, for the next one's events.
+  // Each body's reach box of this update, for the next one's events; a continuous body's next step
+  // starts where it is.
   for (auto& [id, own] : s.owned) {
-    const BodyRecord& r = own.record;
-    own.previous = reach_box(r.shape, r.continuous ? std::optional(r.start) : std::nullopt, s.options.world);
-    if (r.continuous) own.record.start = pose_of(r.shape);
+    own.previous = own.reach;
+    if (own.record.continuous) own.record.start = pose_of(own.record.shape);
   }
-  for (auto& [id, own] : s.statics) own.previous = reach_box(own.record.shape, std::nullopt, s.options.world);
+  for (auto& [id, own] : s.statics) {
+    if (!own.previous) own.previous = s.reach_of(own.record);
+  }
   s.previous_slabs = s.region.slabs();
   ++s.frame;
   if (s.options.rebalance_every > 0 && s.frame % s.options.rebalance_every == 0) s.rebalance();
@@ -533,41 +541,69 @@ const Slabs& DistributedWorld::slabs() const { return state_->region.slabs(); }
 const DistributedStats& DistributedWorld::stats() const { return state_->stats; }
 
 // The bodies a rank answers for: those it owns, and on rank 0 the statics.
-std::vector<std::uint64_t> DistributedWorld::overlapping(const Shape& shape) {
-  State& s = *state_;
-  std::vector<std::uint64_t> mine;
+namespace {
+
+// A query's bodies from every rank, each answered by one (State::answers_for), sorted.
+template <class State>
+std::vector<std::uint64_t> everyone_found(const State& s, const std::vector<BodyId>& found) {
   const World& world = s.region.world();
-  for (const BodyId b : world.overlapping(shape)) {
-    const std::uint64_t id = world.user_id(b);
-    if (s.answers_for(id)) mine.push_back(id);
+  std::vector<std::uint64_t> mine;
+  for (const BodyId b : found) {
+    if (s.answers_for(world.user_id(b))) mine.push_back(world.user_id(b));
   }
   std::vector<std::uint64_t> all = gathered(s.comm, mine);
   std::sort(all.begin(), all.end());
   return all;
 }
 
+// A hit: how far along (a distance or a fraction) and the body.
+struct Hit {
+  double at = 0.0;
+  std::uint64_t id = 0;
+  bool operator<(const Hit& o) const { return std::pair(at, id) < std::pair(o.at, o.id); }
+};
+
+// The first of every rank's first hits (the lowest id on a tie).
+std::optional<std::pair<std::uint64_t, double>> first_of_all(MPI_Comm comm, const std::optional<Hit>& mine) {
+  std::vector<Hit> one;
+  if (mine) one.push_back(*mine);
+  const std::vector<Hit> all = gathered(comm, one);
+  if (all.empty()) return std::nullopt;
+  const Hit best = *std::min_element(all.begin(), all.end());
+  return std::pair(best.id, best.at);
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> DistributedWorld::overlapping(const Shape& shape) {
+  return everyone_found(*state_, state_->region.world().overlapping(shape));
+}
+
+std::vector<std::uint64_t> DistributedWorld::overlapping(const Aabb& box) {
+  return everyone_found(*state_, state_->region.world().overlapping(box));
+}
+
 std::optional<std::pair<std::uint64_t, double>> DistributedWorld::ray_cast(const Vec2& origin, const Vec2& direction,
                                                                            double max_distance) {
-  State& s = *state_;
-  const World& world = s.region.world();
-  struct Hit {
-    double distance;
-    std::uint64_t id;
-  };
-  std::vector<Hit> mine;
-  for (const RayHit& h : world.ray_cast_all(origin, direction, max_distance)) {
-    const std::uint64_t id = world.user_id(h.body);
-    if (s.answers_for(id)) {
-      mine.push_back({h.distance, id});
-      break;  // nearest first
-    }
-  }
-  const std::vector<Hit> all = gathered(s.comm, mine);
-  if (all.empty()) return std::nullopt;
-  const Hit best = *std::min_element(all.begin(), all.end(), [](const Hit& p, const Hit& q) {
-    return std::pair(p.distance, p.id) < std::pair(q.distance, q.id);
+  const State& s = *state_;
+  std::optional<Hit> mine;
+  s.region.world().ray_cast(origin, direction, max_distance, [&](const RayHit& h) {
+    const Hit hit{h.distance, s.region.world().user_id(h.body)};
+    if (s.answers_for(hit.id) && (!mine || hit < *mine)) mine = hit;
+    return -1.0;  // every hit: a nearer one may be a ghost's
   });
-  return std::pair(best.id, best.distance);
+  return first_of_all(s.comm, mine);
+}
+
+std::optional<std::pair<std::uint64_t, double>> DistributedWorld::cast(const Shape& shape, const Vec2& translation) {
+  const State& s = *state_;
+  std::optional<Hit> mine;
+  s.region.world().cast(shape, translation, [&](const BodyCastHit& h) {
+    const Hit hit{h.fraction, s.region.world().user_id(h.body)};
+    if (s.answers_for(hit.id) && (!mine || hit < *mine)) mine = hit;
+    return -1.0;
+  });
+  return first_of_all(s.comm, mine);
 }
 
 FrameStats DistributedWorld::totals() {

@@ -157,16 +157,19 @@ void RegionWorld::set_pair_predicate(std::function<bool(std::uint64_t, std::uint
 
 void RegionWorld::update() {
   // Each shape's reach box for this update (a continuous one's changes with it).
-  reach_.clear();
-  for (const auto& [id, held] : bodies_) reach_[held.shape.index] = world_.reach_box(held.shape);
+  const auto keep = [this](ShapeId s) {
+    if (reach_.size() <= s.index) reach_.resize(s.index + 1);
+    reach_[s.index] = world_.reach_box(s);
+  };
+  for (const auto& [id, held] : bodies_) keep(held.shape);
   for (const BodyId level : level_) {
-    for (const ShapeId s : world_.shapes(level)) reach_[s.index] = world_.reach_box(s);
+    for (const ShapeId s : world_.shapes(level)) keep(s);
   }
   world_.update();
   report_of(
       world_,
       [this](ShapeId a, ShapeId b) {
-        return slabs_.region_of(owner_point(reach_.at(a.index), reach_.at(b.index)).x()) == region_;
+        return slabs_.region_of(owner_point(reach_[a.index], reach_[b.index]).x()) == region_;
       },
       report_);
 }

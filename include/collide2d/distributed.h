@@ -67,9 +67,10 @@ class DistributedWorld {
   DistributedWorld& operator=(const DistributedWorld&) = delete;
 
   /// Adds a body of one shape that this rank owns until its reach box's lower-left corner lies in
-  /// another rank's slab (it migrates there at an update). `id` is unique over all ranks. A static
-  /// body is copied to every rank at the next update. Throws std::invalid_argument for an id in use
-  /// on this rank, and as World::add().
+  /// another rank's slab (it migrates there at an update). `id` is unique over all ranks: an update
+  /// that finds one id handed to a rank twice throws std::logic_error on every rank (the bodies are
+  /// then half exchanged: make a new DistributedWorld). A static body is copied to every rank at the
+  /// next update. Throws std::invalid_argument for an id in use on this rank, and as World::add().
   void add(std::uint64_t id, const Shape& shape, const BodyDef& def = {}, bool continuous = false);
   /// Adds a chain of level geometry (World::add_chain()). Chains are replicated, not exchanged:
   /// every rank adds the same chains, under the same ids, in the same order.
@@ -79,7 +80,7 @@ class DistributedWorld {
   void move_to(std::uint64_t id, const Vec2& position, double angle);
   /// Removes a body this rank owns.
   void remove(std::uint64_t id);
-  /// Whether this rank owns the body, and the ids of those it owns (statics included), sorted.
+  /// Whether this rank owns the moving body, and the ids of the moving bodies it owns, sorted.
   bool owns(std::uint64_t id) const;
   std::vector<std::uint64_t> owned() const;
   /// A body this rank owns: its shape where it is.
@@ -101,12 +102,15 @@ class DistributedWorld {
   const std::vector<IdSensorPair>& sensor_began() const;
   const std::vector<IdSensorPair>& sensor_ended() const;
 
-  /// Collective queries on the bodies as of the last update, every rank given the whole answer: the
-  /// ids of the bodies whose solid shapes overlap the shape, sorted; the first body a ray meets (the
-  /// lowest id on a tie).
+  /// Collective queries on the bodies where the last update left them, every rank given the whole
+  /// answer: the ids of the bodies whose solid shapes overlap the shape or meet the box, sorted; the
+  /// first body a ray meets and its distance, or that a shape moved by `translation` meets and the
+  /// fraction (the lowest id on a tie).
   std::vector<std::uint64_t> overlapping(const Shape& shape);
+  std::vector<std::uint64_t> overlapping(const Aabb& box);
   std::optional<std::pair<std::uint64_t, double>> ray_cast(const Vec2& origin, const Vec2& direction,
                                                            double max_distance);
+  std::optional<std::pair<std::uint64_t, double>> cast(const Shape& shape, const Vec2& translation);
 
   /// This rank's World: the bodies it owns, its ghosts, the statics and the chains.
   const World& world() const;

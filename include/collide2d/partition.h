@@ -114,7 +114,7 @@ class RegionWorld {
   std::unordered_map<std::uint64_t, Held> bodies_;
   std::vector<BodyId> level_;                              // its chains
   std::unordered_map<std::uint32_t, std::uint32_t> part_;  // each chain segment's place, by slot
-  std::unordered_map<std::uint32_t, Aabb> reach_;          // each shape's reach box for the update, by slot
+  std::vector<Aabb> reach_;                                // each shape's reach box for the update, by slot
   RegionReport report_;
 };
 

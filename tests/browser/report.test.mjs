@@ -32,6 +32,8 @@ try {
   // Hover the robust distance method's point.
   const robust = report.distance.find((r) => r.method === 'robust');
   const dot = await page.$('circle.point[data-kind="ellipse-ellipse distance"][data-method="robust"]');
+  // Drawn last, so that no other method's point measured at about the same time and error covers it.
+  await dot.evaluate((el) => el.parentNode.appendChild(el));
   await dot.hover();
   const tip = await page.$eval('#tip', (t) => (t.hidden ? '' : t.textContent));
   const expected = [`robust`, `${Number(robust.nanoseconds).toPrecision(3)} ns`,

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -173,7 +174,7 @@ bool run(int rebalance_every) {
       MPI_COMM_WORLD,
       {.world = testing::kSplitOptions, .bounds = bounds_for(ranks), .rebalance_every = rebalance_every});
   d.add_chain(scene.chain_id, scene.chain, false, {.is_static = true});
-  std::size_t compared = 0;
+  std::size_t compared = 0, found = 0, casts = 0, rays = 0;
   for (int frame = 0; frame < 16; ++frame) {
     if (frame > 0) scene.step();
     drive(scene, d, scene.added, scene.removed);
@@ -208,9 +209,28 @@ bool run(int rebalance_every) {
       std::printf("rank %d frame %d: the shape query differs\n", rank, frame);
       bad = 1;
     }
+    std::vector<std::uint64_t> in_box;
+    const Aabb box{Vec2(-12.0 + frame, -4.0), Vec2(3.0 + frame, 2.0)};
+    for (const BodyId b : scene.world.overlapping(box)) in_box.push_back(scene.world.user_id(b));
+    std::sort(in_box.begin(), in_box.end());
+    found += in_box.size();
+    if (d.overlapping(box) != in_box) {
+      std::printf("rank %d frame %d: the box query differs\n", rank, frame);
+      bad = 1;
+    }
+    const Shape mover = Capsule{Vec2(-26.0, 9.0 - frame), 0.8, 0.3, 0.2};
+    const auto met = d.cast(mover, Vec2(52.0, -1.0));
+    const auto want_met = scene.world.cast(mover, Vec2(52.0, -1.0));
+    casts += want_met ? 1 : 0;
+    if (met.has_value() != want_met.has_value() ||
+        (met && (met->first != scene.world.user_id(want_met->body) || met->second != want_met->fraction))) {
+      std::printf("rank %d frame %d: the shape cast differs\n", rank, frame);
+      bad = 1;
+    }
     const Vec2 origin(-30, -11.5 + 1.5 * frame), direction(1, 0.05);
     const auto hit = d.ray_cast(origin, direction, 80);
     const auto want_hit = scene.world.ray_cast(origin, direction, 80);
+    rays += want_hit ? 1 : 0;
     if (hit.has_value() != want_hit.has_value() ||
         (hit && (hit->first != scene.world.user_id(want_hit->body) || hit->second != want_hit->distance))) {
       std::printf("rank %d frame %d: the ray cast differs\n", rank, frame);
@@ -221,10 +241,31 @@ bool run(int rebalance_every) {
     if (any != 0) return false;
   }
   if (rank == 0) {
-    std::printf("%d ranks, rebalance every %d: 16 frames, %zu records and events the same as one World's\n", d.ranks(),
-                rebalance_every, compared);
+    std::printf(
+        "%d ranks, rebalance every %d: 16 frames, %zu records and events the same as one World's; queries the "
+        "same: %zu bodies in boxes, %zu casts and %zu rays that hit\n",
+        d.ranks(), rebalance_every, compared, found, casts, rays);
   }
   return true;
+}
+
+// Every rank adds a body under one id: with more than one rank, the update that hands them to one
+// rank refuses on every rank, naming the id.
+bool one_id_on_two_ranks_is_refused() {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  DistributedWorld d(MPI_COMM_WORLD, {.bounds = bounds_for(ranks)});
+  d.add(999, Circle{Vec2(0.5, 0.5), 0.25});
+  try {
+    d.update();
+  } catch (const std::logic_error& e) {
+    const bool named = std::string(e.what()) == "body id 999 was added on two ranks: ids must be unique";
+    if (!named || ranks == 1) std::printf("rank %d: %s\n", rank, e.what());
+    return named && ranks > 1;
+  }
+  if (ranks > 1) std::printf("rank %d: one id on %d ranks was not refused\n", rank, ranks);
+  return ranks == 1;
 }
 
 }  // namespace
@@ -232,7 +273,7 @@ bool run(int rebalance_every) {
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
-  const bool ok = collide2d::run(0) && collide2d::run(3);
+  const bool ok = collide2d::run(0) && collide2d::run(3) && collide2d::one_id_on_two_ranks_is_refused();
   MPI_Finalize();
   return ok ? 0 : 1;
 }

@@ -52,6 +52,8 @@ struct SplitScene {
   // A chain of level geometry zigzagging across every boundary, held apart from `bodies`.
   std::vector<Vec2> chain;
   std::uint64_t chain_id = 0;
+  std::uint64_t wide = 0;  // the ellipse wider than a region, removed at the tenth step while ghosted
+  int steps = 0;
 
   std::uint64_t add(const Shape& shape, const BodyDef& def, const Vec2& v, bool continuous = false) {
     const std::uint64_t id = next_id++;
@@ -86,7 +88,7 @@ struct SplitScene {
     chain_id = next_id++;
     world.add_chain(chain, false, {.user_id = chain_id, .is_static = true});
     // An ellipse wider than a region, drifting across the boundaries.
-    add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
+    wide = add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
     // Bodies on the boundaries used below, their centres or left ends there.
     for (const double x : {-10.0, 0.0, 10.0, -7.0, 7.0}) {
       add(Circle{Vec2(x, -8), 0.5}, {}, Vec2::Zero());
@@ -103,6 +105,12 @@ struct SplitScene {
   void step() {
     added.clear();
     removed.clear();
+    if (++steps == 10) {
+      world.remove(bodies.at(wide));
+      removed.push_back(wide);
+      velocity.erase(wide);
+      bodies.erase(wide);
+    }
     for (auto& [id, body] : bodies) {
       if (world.is_static(body)) continue;
       if (world.is_continuous(body)) start[id] = world.pose(body);
