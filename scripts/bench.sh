@@ -44,4 +44,18 @@ slug=$(tr 'A-Z' 'a-z' <<< "$cpu" | sed -E 's/[^a-z0-9]+/-/g; s/^-//; s/-$//')
 echo "bench_python.py" >&2
 PYTHONPATH="$build/python" /usr/bin/python3 "$root/bench/python/bench_python.py" --rival "$build/bench/python_rival" \
   --json "$root/bench/results/python/$(date +%F)-$slug.json"
+# DistributedWorld under mpirun with 1 and 2 ranks (Open MPI refuses root unless told).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cmake --build "$build" -j "$(nproc)" --target bench_distributed
+echo "bench_distributed" >&2
+for ranks in 1 2; do mpirun --oversubscribe -np "$ranks" "$build/bench/bench_distributed"; done > "$runs/mpi.jsonl"
+mkdir -p "$root/bench/results/mpi"
+python3 - "$runs/mpi.jsonl" "$root/bench/results/mpi/$(date +%F)-$slug.json" "$cpu" "$(nproc)" <<'PY'
+import datetime, json, sys
+lines, out, cpu, cores = sys.argv[1:]
+runs = [json.loads(line) for line in open(lines) if line.strip()]
+data = {'date': datetime.date.today().isoformat(), 'machine': {'cpu': cpu, 'cores': int(cores)},
+        'command': 'mpirun -np N build-bench/bench/bench_distributed (N = 1, 2)', 'runs': runs}
+open(out, 'w').write(json.dumps(data, indent=1) + '\n')
+PY
 python3 "$root/scripts/performance.py" page --results "$root/bench/results" --out "$root/docs"

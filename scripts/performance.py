@@ -324,11 +324,91 @@ the median of the rounds kept. The ratio is Python's time over C++'s. From
 '''
 
 
+# The network a model of many ranks assumes: one message's latency and a link's bandwidth, those of
+# a common InfiniBand cluster, not measured here.
+LATENCY_S = 2e-6
+BANDWIDTH_BYTES_S = 10e9
+
+
+def mpi_model(runs):
+    """Weak scaling of DistributedWorld to many ranks from the measured per-body costs: 10^6 bodies
+    per rank, the field square (so that slabs thin as ranks grow) or a corridor (slabs of a fixed
+    height), three all-to-all exchanges a frame."""
+    one = next(r for r in runs if r['ranks'] == 1 and r['height'] == min(x['height'] for x in runs if x['ranks'] == 1))
+    two = [r for r in runs if r['ranks'] == 2]
+    per_body = one['world_alone_ms'] * 1e-3 / one['bodies_per_rank']
+    layer = max(0.0, one['frame_ms'] * 1e-3 / one['bodies_per_rank'] - per_body)
+    ghosts_per_length = sum(r['ghosts_per_rank'] / r['height'] for r in two) / len(two)
+    bytes_per_ghost = sum(r['bytes_per_rank'] / max(r['ghosts_per_rank'], 1) for r in two) / len(two)
+    area = one['width'] * one['height'] / one['bodies_per_rank']  # per body
+    n = 1e6
+    rows = []
+    for p in (1, 64, 1024):
+        for shape in ('square field', 'corridor'):
+            height = math.sqrt(p * n * area) if shape == 'square field' else math.sqrt(n * area)
+            sides = 0 if p == 1 else 2
+            ghosts = sides * height * ghosts_per_length
+            sent = ghosts * bytes_per_ghost
+            compute = (n + ghosts) * (per_body + layer)
+            network = (0 if p == 1 else 3 * LATENCY_S * (p - 1)) + sent / BANDWIDTH_BYTES_S
+            rows.append((p, shape, ghosts, sent, compute, network))
+    base = rows[0][4] + rows[0][5]
+    lines = ['| ranks | field | ghosts per rank | bytes sent per rank | compute | network | frame | weak-scaling efficiency |',
+             '| --- | --- | --- | --- | --- | --- | --- | --- |']
+    for p, shape, ghosts, sent, compute, network in rows:
+        if p == 1 and shape == 'corridor':
+            continue
+        frame = compute + network
+        lines.append(f'| {p:,} | {shape} | {ghosts:,.0f} | {sent / 1e6:.2f} MB | {compute * 1e3:.0f} ms | '
+                     f'{network * 1e3:.2f} ms | {frame * 1e3:.0f} ms | {base / frame:.3f} |')
+    return '\n'.join(lines), per_body, layer, ghosts_per_length, bytes_per_ghost
+
+
+def mpi_section(folder):
+    """DistributedWorld measured with 1 and 2 ranks, from the newest bench/results/mpi file, and the model."""
+    files = sorted(folder.glob('*.json'))
+    if not files:
+        return ''
+    data = json.loads(files[-1].read_text())
+    runs = data['runs']
+    rows = ['| ranks | field height (boundary length) | frame | one World alone | ghosts per rank | bytes sent per rank | bodies handed on per rank |',
+            '| --- | --- | --- | --- | --- | --- | --- |']
+    for r in runs:
+        rows.append(f"| {r['ranks']} | {r['height']:.0f} | {r['frame_ms']:.2f} ms | {r['world_alone_ms']:.2f} ms | "
+                    f"{r['ghosts_per_rank']:,.0f} | {r['bytes_per_rank'] / 1e3:,.1f} kB | {r['migrated_per_rank']:.1f} |")
+    model, per_body, layer, ghosts_per_length, bytes_per_ghost = mpi_model(runs)
+    measured = '\n'.join(rows)
+    return f'''## Over MPI ranks
+
+`bench/mpi/bench_distributed.cpp` under `mpirun -np 1` and `-np 2` (run by `bash scripts/bench.sh`):
+{runs[0]['bodies_per_rank']:,} moving ellipses and circles per rank at 8% coverage, each rank's slab
+of the same area, the field's height (the length of the boundary between slabs) doubled twice at a
+fixed area; each figure the median over the frames, per rank (the ranks' mean), a frame's time the
+slowest rank's; beside it one plain World of the same bodies on one rank. Both ranks share this
+machine's {data['machine']['cores']} cores. From `bench/results/mpi/{files[-1].name}`.
+
+{measured}
+
+**A model, not a measurement**: weak scaling to 64 and 1,024 ranks with 10^6 bodies per rank, from
+the figures above: {per_body * 1e9:.0f} ns per body for the World, {layer * 1e9:.0f} ns per body for
+the exchange layer around it, {ghosts_per_length:.2f} ghosts per unit of boundary, {bytes_per_ghost:.0f}
+bytes per ghost sent; and an assumed network of {LATENCY_S * 1e6:.0f} µs per message and
+{BANDWIDTH_BYTES_S / 1e9:.0f} GB/s per link. A rank inside the field has two boundaries; a frame
+makes three all-to-all exchanges, each costing a latency per rank. In a square field the slabs
+thin as the ranks grow (height √p times one rank's), so ghosts grow as √p; in a corridor they stay
+as they are ([distributed.md](distributed.md#scale)).
+
+{model}
+
+'''
+
+
 def page(args):
     files = sorted(pathlib.Path(args.results).glob('*.json'))
     if not files:
         sys.exit('no results in ' + args.results)
-    python_files = sorted((pathlib.Path(args.results) / 'python').glob('*.json'))
+    python_files = sorted((pathlib.Path(args.results) / 'python').glob('*.json')) + \
+        sorted((pathlib.Path(args.results) / 'mpi').glob('*.json'))
     newest = json.loads(files[-1].read_text())
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
@@ -446,7 +526,7 @@ as `b2ContactManager` applies them).
 
 {table(WORLD, med, False)}
 
-{python_section(pathlib.Path(args.results) / 'python')}## Speed against error
+{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
 
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
