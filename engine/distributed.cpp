@@ -11,7 +11,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -238,6 +237,11 @@ struct DistributedWorld::State {
         previous_slabs(region.slabs()) {}
 
   void share_statics();
+  void require_unused(std::uint64_t id) const {
+    if (owned.count(id) != 0 || statics.count(id) != 0 || level.count(id) != 0) {
+      throw std::invalid_argument("body id " + std::to_string(id) + " is in use on this rank");
+    }
+  }
   // Whether this rank answers queries for the body: one it owns, or on rank 0 the level.
   bool answers_for(std::uint64_t id) const {
     return owned.count(id) != 0 || (rank == 0 && (statics.count(id) != 0 || level.count(id) != 0));
@@ -277,9 +281,7 @@ DistributedWorld::~DistributedWorld() {
 
 void DistributedWorld::add(std::uint64_t id, const Shape& shape, const BodyDef& def, bool continuous) {
   State& s = *state_;
-  if (s.owned.count(id) != 0 || s.statics.count(id) != 0 || s.level.count(id) != 0) {
-    throw std::invalid_argument("body id " + std::to_string(id) + " is in use on this rank");
-  }
+  s.require_unused(id);
   validate(shape);
   if (continuous && def.is_static) throw std::invalid_argument("a static body cannot be continuous");
   const BodyRecord r{.id = id,
@@ -298,9 +300,7 @@ void DistributedWorld::add(std::uint64_t id, const Shape& shape, const BodyDef& 
 
 void DistributedWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def) {
   State& s = *state_;
-  if (s.owned.count(id) != 0 || s.statics.count(id) != 0 || s.level.count(id) != 0) {
-    throw std::invalid_argument("body id " + std::to_string(id) + " is in use on this rank");
-  }
+  s.require_unused(id);
   BodyDef level = def;
   level.is_static = true;
   s.region.add_chain(id, points, loop, level);
@@ -360,6 +360,7 @@ std::pair<std::vector<BodyRecord>, std::vector<BodyRecord>> DistributedWorld::St
   std::vector<std::vector<Wire>> out(static_cast<std::size_t>(ranks));
   const Slabs& slabs = region.slabs();
   stats.migrated = 0;
+  ghost_reach.clear();
   std::vector<BodyRecord> mine, ghosts;
   std::uint64_t twice = ~std::uint64_t{0};  // the least id that came to this rank twice
   for (auto it = owned.begin(); it != owned.end();) {
@@ -427,6 +428,23 @@ std::vector<std::pair<Claim, int>> DistributedWorld::State::current() const {
   return now;
 }
 
+namespace {
+
+// Claims into overlapping pairs and sensor pairs, in their order.
+void split(const std::vector<Claim>& claims, std::vector<IdPair>& pairs, std::vector<IdSensorPair>& sensors) {
+  pairs.clear();
+  sensors.clear();
+  for (const Claim& c : claims) {
+    if (c.sensor != 0) {
+      sensors.push_back({c.a, c.b});
+    } else {
+      pairs.push_back({c.a, c.b});
+    }
+  }
+}
+
+}  // namespace
+
 // began: reported now and not at the last update by any rank; ended: reported here at the last
 // update and by no rank now. A pair new here whose bodies both had reach boxes then asks the rank
 // whose slab held its owner point then; that rank answers whether it reported it, and keeps it from
@@ -460,43 +478,22 @@ void DistributedWorld::State::settle_events(const std::vector<std::pair<Claim, i
     }
   }
   std::sort(fresh.begin(), fresh.end());
-  began.clear();
-  sensor_began.clear();
-  for (const Claim& c : fresh) {
-    if (c.sensor != 0) {
-      sensor_began.push_back({c.a, c.b});
-    } else {
-      began.push_back({c.a, c.b});
-    }
-  }
-  ended.clear();
-  sensor_ended.clear();
+  std::vector<Claim> gone;
   for (const Claim& c : reported) {
-    if (std::binary_search(now.begin(), now.end(), c) || going_on.count(c) != 0) continue;
-    if (c.sensor != 0) {
-      sensor_ended.push_back({c.a, c.b});
-    } else {
-      ended.push_back({c.a, c.b});
-    }
+    if (!std::binary_search(now.begin(), now.end(), c) && going_on.count(c) == 0) gone.push_back(c);
   }
+  split(fresh, began, sensor_began);
+  split(gone, ended, sensor_ended);
   reported = std::move(now);
 }
 
 // Bounds at the quantiles of the owned bodies' reach boxes' left ends, so that each slab owns about
-// as many; bounds that would coincide are spread by an ulp.
+// as many.
 void DistributedWorld::State::rebalance() {
   std::vector<double> lefts;
   for (const auto& [id, own] : owned) lefts.push_back(own.reach.min.x());
   std::vector<double> all = gathered(comm, lefts);
-  if (all.size() < static_cast<std::size_t>(ranks)) return;
-  std::sort(all.begin(), all.end());
-  std::vector<double> bounds;
-  for (int k = 1; k < ranks; ++k) {
-    double b = all[all.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(ranks)];
-    if (!bounds.empty() && !(bounds.back() < b)) b = std::nextafter(bounds.back(), INFINITY);
-    bounds.push_back(b);
-  }
-  region.set_slabs(Slabs(bounds));
+  if (all.size() >= static_cast<std::size_t>(ranks)) region.set_slabs(Slabs::balanced(std::move(all), ranks));
 }
 
 void DistributedWorld::update() {
@@ -507,7 +504,6 @@ void DistributedWorld::update() {
   }
   s.stats.bytes_sent = 0;
   s.share_statics();
-  s.ghost_reach.clear();
   const auto [mine, ghosts] = s.deal();
   s.region.sync(mine, ghosts);
   s.region.update();
@@ -540,7 +536,6 @@ int DistributedWorld::ranks() const { return state_->ranks; }
 const Slabs& DistributedWorld::slabs() const { return state_->region.slabs(); }
 const DistributedStats& DistributedWorld::stats() const { return state_->stats; }
 
-// The bodies a rank answers for: those it owns, and on rank 0 the statics.
 namespace {
 
 // A query's bodies from every rank, each answered by one (State::answers_for), sorted.
@@ -604,6 +599,14 @@ std::optional<std::pair<std::uint64_t, double>> DistributedWorld::cast(const Sha
     return -1.0;
   });
   return first_of_all(s.comm, mine);
+}
+
+std::vector<IdSensorPair> DistributedWorld::sensing_everywhere() {
+  std::vector<IdSensorPair> mine;
+  for (const SensorPair& p : report().sensing) mine.push_back({p.user_sensor, p.user_visitor});
+  std::vector<IdSensorPair> all = gathered(state_->comm, mine);
+  std::sort(all.begin(), all.end());
+  return all;
 }
 
 FrameStats DistributedWorld::totals() {

@@ -17,6 +17,17 @@ Slabs::Slabs(std::vector<double> bounds) : bounds_(std::move(bounds)) {
   }
 }
 
+Slabs Slabs::balanced(std::vector<double> xs, int count) {
+  if (xs.empty()) throw std::invalid_argument("balanced slabs need at least one x");
+  std::sort(xs.begin(), xs.end());
+  std::vector<double> bounds;
+  for (int k = 1; k < count; ++k) {
+    const double x = xs[xs.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(count)];
+    bounds.push_back(bounds.empty() || bounds.back() < x ? x : std::nextafter(bounds.back(), INFINITY));
+  }
+  return Slabs(std::move(bounds));
+}
+
 int Slabs::region_of(double x) const {
   return static_cast<int>(std::upper_bound(bounds_.begin(), bounds_.end(), x) - bounds_.begin());
 }

@@ -296,12 +296,17 @@ PYTHON_ROWS = [('one `overlaps()` call against one C++ call', 'overlaps_one_call
                ('a World step from arrays (`set_poses`, `update`)', 'world_step')]
 
 
+def newest(folder):
+    """The newest results file of a folder and its data, or (None, None)."""
+    files = sorted(folder.glob('*.json'))
+    return (files[-1], json.loads(files[-1].read_text())) if files else (None, None)
+
+
 def python_section(folder):
     """The Python module against the same work in C++, from the newest bench/results/python file."""
-    files = sorted(folder.glob('*.json'))
-    if not files:
+    path, data = newest(folder)
+    if not path:
         return ''
-    data = json.loads(files[-1].read_text())
     method, machine, results = data['method'], data['machine'], data['results']
     rows = ['| work | Python | C++ | ratio |', '| --- | --- | --- | --- |']
     for label, key in PYTHON_ROWS:
@@ -316,7 +321,7 @@ def python_section(folder):
 {method['pairs']:,} ellipse pairs and a World of {method['bodies']:,} ellipses, {method['threads']} thread,
 {method['rounds']} rounds alternating the two sides, each the median of {method['repeats']} repeats, and
 the median of the rounds kept. The ratio is Python's time over C++'s. From
-`bench/results/python/{files[-1].name}` (Python {machine['python']}, NumPy {machine['numpy']},
+`bench/results/python/{path.name}` (Python {machine['python']}, NumPy {machine['numpy']},
 {data['date']}).
 
 {table_text}
@@ -366,10 +371,9 @@ def mpi_model(runs):
 
 def mpi_section(folder):
     """DistributedWorld measured with 1 and 2 ranks, from the newest bench/results/mpi file, and the model."""
-    files = sorted(folder.glob('*.json'))
-    if not files:
+    path, data = newest(folder)
+    if not path:
         return ''
-    data = json.loads(files[-1].read_text())
     runs = data['runs']
     rows = ['| ranks | field height (boundary length) | frame | one World alone | ghosts per rank | bytes sent per rank | bodies handed on per rank |',
             '| --- | --- | --- | --- | --- | --- | --- |']
@@ -385,7 +389,7 @@ def mpi_section(folder):
 of the same area, the field's height (the length of the boundary between slabs) doubled twice at a
 fixed area; each figure the median over the frames, per rank (the ranks' mean), a frame's time the
 slowest rank's; beside it one plain World of the same bodies on one rank. Both ranks share this
-machine's {data['machine']['cores']} cores. From `bench/results/mpi/{files[-1].name}`.
+machine's {data['machine']['cores']} cores. From `bench/results/mpi/{path.name}`.
 
 {measured}
 
@@ -407,8 +411,7 @@ def page(args):
     files = sorted(pathlib.Path(args.results).glob('*.json'))
     if not files:
         sys.exit('no results in ' + args.results)
-    python_files = sorted((pathlib.Path(args.results) / 'python').glob('*.json')) + \
-        sorted((pathlib.Path(args.results) / 'mpi').glob('*.json'))
+    side_files = [f for folder in ('python', 'mpi') for f in sorted((pathlib.Path(args.results) / folder).glob('*.json'))]
     newest = json.loads(files[-1].read_text())
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
@@ -549,7 +552,7 @@ separation 0.
 
 ## Results on file
 
-{chr(10).join(f"- `{f.relative_to(pathlib.Path(args.results).parent)}`" for f in files + python_files)}
+{chr(10).join(f"- `{f.relative_to(pathlib.Path(args.results).parent)}`" for f in files + side_files)}
 '''
     out = pathlib.Path(args.out)
     wanted = {out / 'performance.md': text}

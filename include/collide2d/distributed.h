@@ -120,6 +120,8 @@ class DistributedWorld {
   const DistributedStats& stats() const;
   /// Collective: the totals over the ranks of this update's report, as one World would count them.
   FrameStats totals();
+  /// Collective: every rank's sensor pairs of the last update, sorted by ids.
+  std::vector<IdSensorPair> sensing_everywhere();
 
  private:
   struct State;

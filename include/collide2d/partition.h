@@ -32,6 +32,9 @@ class Slabs {
  public:
   /// `bounds` finite and increasing: bounds.size() + 1 regions. Throws std::invalid_argument.
   explicit Slabs(std::vector<double> bounds = {});
+  /// `count` slabs that each hold about as many of the xs (not empty): bounds at their quantiles,
+  /// a bound that would not rise above the one before it moved up by an ulp.
+  static Slabs balanced(std::vector<double> xs, int count);
   int count() const { return static_cast<int>(bounds_.size()) + 1; }
   /// The region that holds x.
   int region_of(double x) const;

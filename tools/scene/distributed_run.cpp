@@ -32,39 +32,14 @@ std::vector<double> starting_bounds(const Scene& scene, int ranks) {
   for (const SceneBody& b : scene.bodies) {
     if (!b.is_static) xs.push_back(b.pose.position.x());
   }
-  std::sort(xs.begin(), xs.end());
-  std::vector<double> bounds;
-  for (int k = 1; k < ranks && !xs.empty(); ++k) {
-    const double x = xs[xs.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(ranks)];
-    bounds.push_back(bounds.empty() || bounds.back() < x ? x : std::nextafter(bounds.back(), 1e300));
-  }
-  if (bounds.size() + 1 != static_cast<std::size_t>(ranks)) bounds.clear();
-  return bounds;
+  return xs.empty() ? std::vector<double>{} : Slabs::balanced(std::move(xs), ranks).bounds();
 }
 
 // The sensors' contents over every rank, sorted as one World sorts them (by index), as scene ids.
-std::vector<RunSummary::Sensor> gathered_sensors(const Scene& scene, const DistributedWorld& world, MPI_Comm comm) {
-  std::vector<std::uint64_t> mine;
-  for (const SensorPair& p : world.report().sensing) {
-    mine.push_back(p.user_sensor);
-    mine.push_back(p.user_visitor);
-  }
-  int ranks = 1;
-  MPI_Comm_size(comm, &ranks);
-  const int count = static_cast<int>(mine.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), at(static_cast<std::size_t>(ranks));
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int r = 0; r < ranks; ++r)
-    at[static_cast<std::size_t>(r)] = std::exchange(total, total + counts[static_cast<std::size_t>(r)]);
-  std::vector<std::uint64_t> all(static_cast<std::size_t>(total));
-  MPI_Allgatherv(mine.data(), count, MPI_UINT64_T, all.data(), counts.data(), at.data(), MPI_UINT64_T, comm);
+std::vector<RunSummary::Sensor> gathered_sensors(const Scene& scene, DistributedWorld& world) {
   std::vector<std::pair<std::uint64_t, std::uint64_t>> pairs;
-  for (std::size_t k = 0; k + 1 < all.size(); k += 2) pairs.emplace_back(all[k], all[k + 1]);
-  std::sort(pairs.begin(), pairs.end());
-  for (auto& [sensor, visitor] : pairs) {
-    sensor = scene.bodies[sensor].id;
-    visitor = scene.bodies[visitor].id;
+  for (const IdSensorPair& p : world.sensing_everywhere()) {
+    pairs.emplace_back(scene.bodies[p.sensor].id, scene.bodies[p.visitor].id);
   }
   return sensor_contents(scene, pairs);
 }
@@ -129,7 +104,7 @@ RunSummary run_distributed(Scene scene, MPI_Comm comm, std::ostream* progress) {
       draw_progress(*progress, frame + 1, scene.frames);
   }
   if (progress) *progress << '\n';
-  s.sensor_contents = gathered_sensors(scene, world, comm);
+  s.sensor_contents = gathered_sensors(scene, world);
   finish(s, std::move(broad), std::move(narrow));
   return s;
 }
