@@ -25,7 +25,7 @@ constexpr int rank() {
 
 template <class T>
 constexpr bool one_of_first_kinds = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
-// The kinds the kernels settle on convex cores (narrowphase/polygon/convex_core.h).
+// The kinds the kernels settle on convex cores (narrowphase/shared/cores/convex_core.h).
 template <class T>
 constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule> || std::is_same_v<T, Segment>;
 

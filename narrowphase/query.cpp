@@ -5,7 +5,7 @@
 #include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 
 #include <algorithm>
 #include <array>
@@ -71,7 +71,7 @@ Contact contact_kernel(const Ellipse& a, const O& oa, const Ellipse& b, const O&
 
 // The pairs with a polygon, a capsule or a segment (on_cores, kernel_order.h), in kernel order: a
 // flat shape (rectangle, polygon, capsule, segment) first, settled on convex cores
-// (narrowphase/polygon/convex_core.h).
+// (narrowphase/shared/cores/convex_core.h).
 template <class T>
 Orientation orientation_of(const T& x) {
   if constexpr (std::is_same_v<T, Circle>) {

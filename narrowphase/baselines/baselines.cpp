@@ -1,9 +1,9 @@
 #include "narrowphase/baselines/baselines.h"
 
 #include "narrowphase/baselines/ellipse_seed_solvers.h"
-#include "narrowphase/ellipse/ellipse_contact.h"
-#include "narrowphase/frames/rect_ellipse_frame.h"
 #include "narrowphase/kernel_order.h"
+#include "narrowphase/shared/ellipse/ellipse_contact.h"
+#include "narrowphase/shared/frames/rect_ellipse_frame.h"
 
 #include <cmath>
 #include <optional>

@@ -5,7 +5,7 @@
 // (corner, face, inside) branch one pair at a time, every case computed and selected per lane.
 #include <collide2d/kernels.h>
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/batch/lanes.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -20,8 +20,8 @@ HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
 #include "narrowphase/batch/batch_load-inl.h"
-#include "narrowphase/contact/rect_circle_contact-inl.h"
-#include "narrowphase/ellipse/point_ellipse-inl.h"
+#include "narrowphase/contact/contact_rect_circle-inl.h"
+#include "narrowphase/shared/ellipse/point_ellipse-inl.h"
 
 using In = detail::CirclePosedEllipseLanes<V>;
 using Out = detail::ContactLanes<V>;

@@ -11,10 +11,10 @@
 #include "narrowphase/batch/overlap_pairs.h"
 
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/frames/rect_ellipse_frame.h"
-#include "narrowphase/frames/rect_pair_frame.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/shared/frames/rect_ellipse_frame.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
 
 #include <algorithm>
 #include <array>
@@ -35,13 +35,13 @@
 HWY_BEFORE_NAMESPACE();
 namespace collide2d::HWY_NAMESPACE {
 
-#include "narrowphase/overlap/circle_overlap-inl.h"
-#include "narrowphase/overlap/ellipse_cubic-inl.h"
-#include "narrowphase/overlap/rect_ellipse_filter-inl.h"
-#include "narrowphase/overlap/rect_rect_overlap-inl.h"
+#include "narrowphase/overlap/overlap_circle-inl.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse-inl.h"
+#include "narrowphase/overlap/overlap_rect_ellipse-inl.h"
+#include "narrowphase/overlap/overlap_rect_rect-inl.h"
 
-#include "narrowphase/polygon/disc_filter-inl.h"
-#include "narrowphase/polygon/least_quadratic-inl.h"
+#include "narrowphase/overlap/disc_filter-inl.h"
+#include "narrowphase/shared/cores/least_quadratic-inl.h"
 
 #include "narrowphase/batch/batch_load-inl.h"
 

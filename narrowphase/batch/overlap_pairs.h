@@ -7,13 +7,13 @@
 
 #include <collide2d/shapes.h>
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/frames/rect_ellipse_frame.h"
-#include "narrowphase/frames/rect_pair_frame.h"
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/frames/rect_ellipse_frame.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <array>

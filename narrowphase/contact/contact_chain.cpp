@@ -7,7 +7,7 @@
 
 #include <collide2d/kernels.h>
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
 
 #include <cmath>

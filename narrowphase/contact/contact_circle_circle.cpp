@@ -1,6 +1,6 @@
 #include <collide2d/kernels.h>
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/frames/unit_vector.h"
+#include "narrowphase/shared/frames/unit_vector.h"
 
 namespace collide2d {
 

@@ -1,12 +1,12 @@
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/lanes.h"
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/ellipse/point_ellipse-inl.h"
+#include "narrowphase/shared/ellipse/point_ellipse-inl.h"
 }  // namespace detail
 
 // The signed distance of the circle's centre to the ellipse (Eberly's secular equation, inside and

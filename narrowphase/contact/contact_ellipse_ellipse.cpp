@@ -5,7 +5,7 @@
 #include <collide2d/kernels.h>
 
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/contact/curved_contact.h"
+#include "narrowphase/shared/curved/curved_contact.h"
 
 namespace collide2d {
 

@@ -3,8 +3,8 @@
 #include <collide2d/kernels.h>
 
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/frames/unit_vector.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/frames/unit_vector.h"
 
 #include <algorithm>
 #include <array>
@@ -54,7 +54,7 @@ template <class A>
 // else the face's end beyond which c lies (the core's separation from a point falls away on either
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
 // leaves that end not the core's farthest point towards c, the convex cores' contact decides
-// (narrowphase/polygon/convex_core.h), as it does for every other flat pair.
+// (narrowphase/shared/cores/convex_core.h), as it does for every other flat pair.
 template <class A, int Slots>
 Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
                     const ContactOptions& options) {

@@ -1,11 +1,11 @@
 #include <collide2d/kernels.h>
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/frames/unit_vector.h"
+#include "narrowphase/shared/frames/unit_vector.h"
+#include "narrowphase/shared/lanes.h"
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/contact/rect_circle_contact-inl.h"
+#include "narrowphase/contact/contact_rect_circle-inl.h"
 }  // namespace detail
 
 // In the rectangle's frame, with p the circle's centre: outside the box, the signed distance is
@@ -13,7 +13,7 @@ namespace detail {
 // is clamped (exact, not rounded through p - q) and from the corner otherwise; inside (or on the
 // boundary), p leaves through the nearer face, at depth (half extent - |p|) plus the radius. Where
 // two faces are equally near, either is a maximiser; the x face is reported. Written over lanes
-// (rect_circle_contact-inl.h) for the batch.
+// (contact_rect_circle-inl.h) for the batch.
 Contact contact_rect_circle(const Rect& a, const Circle& b, const ContactOptions& options) {
   return contact_rect_circle(a, Orientation::of(a.angle), b, options);
 }

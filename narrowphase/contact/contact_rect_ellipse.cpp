@@ -24,9 +24,9 @@
 // (and their discs of curvature) allow a larger s; the open ones are settled in the order of their
 // bounds, and a maximum found in one may certify itself (disc_bound).
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/contact/curved_contact.h"
+#include "narrowphase/shared/curved/curved_contact.h"
 
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 
 namespace collide2d {
 namespace detail {

@@ -1,7 +1,7 @@
 #include "narrowphase/contact/contact_rect_rect.h"
 #include <collide2d/kernels.h>
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/frames/rect_pair_frame.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
 
 #include <algorithm>
 #include <cmath>

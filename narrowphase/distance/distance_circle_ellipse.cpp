@@ -3,8 +3,8 @@
 // the ellipse, else the nearest ellipse point. Accuracy: that of distance_point_ellipse.
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 namespace collide2d {

@@ -2,8 +2,8 @@
 
 #include "narrowphase/distance/distance_ellipse_ellipse.h"
 
-#include "narrowphase/ellipse/ellipse_contact.h"
-#include "narrowphase/ellipse/ellipse_pair.h"
+#include "narrowphase/shared/ellipse/ellipse_contact.h"
+#include "narrowphase/shared/ellipse/ellipse_pair.h"
 
 #include <algorithm>
 #include <array>

@@ -4,8 +4,8 @@
 // rectangle point.
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/frames/box_local.h"
+#include "narrowphase/shared/frames/box_local.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 namespace collide2d {

@@ -17,8 +17,8 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "narrowphase/frames/rect_ellipse_frame.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/frames/rect_ellipse_frame.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/frames/box_local.h"
-#include "narrowphase/frames/rect_pair_frame.h"
+#include "narrowphase/shared/frames/box_local.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
 
 #include <array>
 #include <limits>

@@ -8,20 +8,20 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 #include <limits>
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/circle_overlap-inl.h"
+#include "narrowphase/overlap/overlap_circle-inl.h"
 }  // namespace detail
 
 // The centre inside the ellipse, or the point–ellipse distance within r: the same decision as
 // distance_circle_ellipse, so the two always agree. Certain cases come first
-// (circle_overlap-inl.h), the root only for the pairs they leave.
+// (overlap_circle-inl.h), the root only for the pairs they leave.
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e) {
   return overlap_circle_ellipse(c, e, Orientation::of(e.angle));
 }

@@ -2,8 +2,8 @@
 
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/ellipse/ellipse_contact.h"
+#include "narrowphase/shared/ellipse/ellipse_contact.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/ellipse_cubic-inl.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse-inl.h"
 
 namespace {
 
@@ -145,7 +145,7 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
 
 namespace {
 
-// A pair not far apart: the algebraic test (ellipse_cubic-inl.h, which the batch runs on vectors),
+// A pair not far apart: the algebraic test (overlap_ellipse_ellipse-inl.h, which the batch runs on vectors),
 // else the certain cases and GJK of ellipse_contact.
 bool near_overlap(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                   const Orientation& b_orientation) {

@@ -8,7 +8,7 @@
 // holds the origin deeper than that bound (the origin is then a convex combination of points of
 // B - A, and the same weights give a point common to both shapes). Cheap certain cases come first:
 // centres farther apart than the sum of the largest semi-axes; then the characteristic cubic
-// det(lambda A - B) of the two conics (Wang, Wang and Kim 2001; ellipse_cubic-inl.h), whose
+// det(lambda A - B) of the two conics (Wang, Wang and Kim 2001; overlap_ellipse_ellipse-inl.h), whose
 // discriminant and coefficients decide the pair without iterating where their signs clear their
 // error bounds; then either centre inside the other ellipse.
 //

@@ -1,18 +1,18 @@
 // Rectangle–circle overlap: the closed form of distance_rect_circle, the circle centre in the
-// rectangle's frame clamped to the box, written over lanes (circle_overlap-inl.h) for the batch.
+// rectangle's frame clamped to the box, written over lanes (overlap_circle-inl.h) for the batch.
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <limits>
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/circle_overlap-inl.h"
+#include "narrowphase/overlap/overlap_circle-inl.h"
 }  // namespace detail
 
-// Near contact the verdict is distance_rect_circle's (circle_overlap-inl.h).
+// Near contact the verdict is distance_rect_circle's (overlap_circle-inl.h).
 bool overlap_rect_circle(const Rect& r, const Circle& c) { return overlap_rect_circle(r, Orientation::of(r.angle), c); }
 
 bool overlap_rect_circle(const Rect& r, const Orientation& ro, const Circle& c) {

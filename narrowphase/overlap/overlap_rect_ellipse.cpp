@@ -2,8 +2,8 @@
 
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/frames/rect_ellipse_frame.h"
+#include "narrowphase/shared/frames/rect_ellipse_frame.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,14 +11,14 @@
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/rect_ellipse_filter-inl.h"
+#include "narrowphase/overlap/overlap_rect_ellipse-inl.h"
 }  // namespace detail
 namespace {
 
 using detail::FilterVerdict;
 using detail::RectEllipseFrame;
 
-// The filter on a single pair (rect_ellipse_filter-inl.h, shared with the batch).
+// The filter on a single pair (overlap_rect_ellipse-inl.h, shared with the batch).
 FilterVerdict minkowski_filter(const RectEllipseFrame<double>& f) {
   using detail::Scalar;
   const detail::LaneVerdicts<bool> v = detail::RectEllipseFilter<Scalar>(Scalar{}, detail::rect_ellipse_lanes(f)).run();

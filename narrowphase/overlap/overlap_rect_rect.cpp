@@ -5,12 +5,12 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/frames/rect_pair_frame.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
+#include "narrowphase/shared/lanes.h"
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/rect_rect_overlap-inl.h"
+#include "narrowphase/overlap/overlap_rect_rect-inl.h"
 }  // namespace detail
 
 bool overlap_rect_rect(const Rect& a, const Rect& b) {

@@ -33,7 +33,7 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/contact/deepest_direction.h"
+#include "narrowphase/shared/curved/deepest_direction.h"
 #include "narrowphase/toi/quick_orientation.h"
 #include "shapes/internal.h"
 

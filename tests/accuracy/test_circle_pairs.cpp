@@ -4,7 +4,7 @@
 #include "mp_reference.h"
 
 #include <collide2d/kernels.h>
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Pairs of flat shapes (rectangles, convex polygons sharp and rounded, capsules, circles) settled on
-// their convex cores (narrowphase/polygon/convex_core.h): overlap, distance and contact against
+// their convex cores (narrowphase/shared/cores/convex_core.h): overlap, distance and contact against
 // the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
 // against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
 // and on the degenerate configurations of segments and faces.
@@ -8,7 +8,7 @@
 
 #include <collide2d/kernels.h>
 
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 
 #include <gtest/gtest.h>
 

@@ -11,9 +11,9 @@
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/batch/overlap_pairs.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <gtest/gtest.h>
 
@@ -30,9 +30,9 @@
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/overlap/ellipse_cubic-inl.h"
-#include "narrowphase/polygon/disc_filter-inl.h"
-#include "narrowphase/polygon/least_quadratic-inl.h"
+#include "narrowphase/overlap/disc_filter-inl.h"
+#include "narrowphase/overlap/overlap_ellipse_ellipse-inl.h"
+#include "narrowphase/shared/cores/least_quadratic-inl.h"
 }  // namespace detail
 
 namespace testing {

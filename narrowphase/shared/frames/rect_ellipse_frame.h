@@ -9,7 +9,7 @@
 #pragma once
 
 #include <collide2d/shapes.h>
-#include "narrowphase/batch/lanes.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 #include <Eigen/Core>
@@ -125,7 +125,7 @@ bool closest_features_overlap(const RectEllipseFrame<Real>& f) {
   return closest_in_ellipse_metric(f).q <= Real(1);
 }
 
-// The Minkowski filter's inputs (rect_ellipse_filter-inl.h).
+// The Minkowski filter's inputs (overlap_rect_ellipse-inl.h).
 inline RectEllipseLanes<double> rect_ellipse_lanes(const RectEllipseFrame<double>& f) {
   return {f.x[0], f.x[1], f.e[0], f.e[1], f.c, f.s, f.a, f.b};
 }

@@ -1,7 +1,7 @@
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +10,8 @@
 #include <optional>
 
 namespace collide2d::detail {
-#include "narrowphase/polygon/arc_bound-inl.h"
-#include "narrowphase/polygon/least_quadratic-inl.h"
+#include "narrowphase/shared/cores/arc_bound-inl.h"
+#include "narrowphase/shared/cores/least_quadratic-inl.h"
 
 namespace {
 

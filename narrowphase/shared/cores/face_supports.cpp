@@ -2,8 +2,8 @@
 // normals and first vertices across the lanes of a vector, a square root and a division a lane; and
 // the bound of every vertex cone of a polygon at once (arc_bound-inl.h). Google Highway picks the
 // widest vectors the CPU has at the first call.
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "narrowphase/polygon/face_supports.cpp"
+#define HWY_TARGET_INCLUDE "narrowphase/shared/cores/face_supports.cpp"
 #include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
 #include "hwy/highway.h"
 
@@ -20,7 +20,7 @@ namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-#include "narrowphase/polygon/arc_bound-inl.h"
+#include "narrowphase/shared/cores/arc_bound-inl.h"
 
 // The first N slots; the rest, slots of no face, zero.
 template <std::size_t N>

@@ -36,8 +36,8 @@
 // climb also serves pairs with a rectangle, for the time of impact's steps.
 #pragma once
 
-#include "narrowphase/ellipse/distance_point_ellipse.h"
-#include "narrowphase/ellipse/ellipse_pair.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/ellipse_pair.h"
 
 #include <algorithm>
 #include <limits>

@@ -14,8 +14,8 @@
 // overlap when no n gives s > 0.
 #pragma once
 
-#include "narrowphase/ellipse/support_pair.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"  // FilterVerdict
+#include "narrowphase/shared/curved/support_pair.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Private: the rectangle–rectangle separating-axis test (overlap_rect_rect.h), written once over
-// lanes like rect_ellipse_filter-inl.h (see there, and lanes.h): the one-off kernel runs it on
+// lanes like overlap_rect_ellipse-inl.h (see there, and lanes.h): the one-off kernel runs it on
 // a double, the batch on vectors. It is exact as computed, so no lane is ever uncertain.
 //
 // Included inside a namespace, once per Highway target (no #pragma once, no includes).

@@ -1,8 +1,8 @@
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/frames/unit_vector.h"
+#include "narrowphase/shared/frames/unit_vector.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -26,8 +26,8 @@
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
-#include "narrowphase/batch/lanes.h"
 #include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 #include <algorithm>

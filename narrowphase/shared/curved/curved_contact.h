@@ -2,7 +2,7 @@
 #pragma once
 
 #include <collide2d/kernels.h>
-#include "narrowphase/contact/deepest_direction.h"
+#include "narrowphase/shared/curved/deepest_direction.h"
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
 // Private: the overlap tests of a circle with a circle, a rectangle or an ellipse, written once over
-// lanes like rect_ellipse_filter-inl.h (see there, and lanes.h): the one-off kernels run them on a
+// lanes like overlap_rect_ellipse-inl.h (see there, and lanes.h): the one-off kernels run them on a
 // double, the batch on vectors. The circle and rectangle tests decide every lane; the ellipse test
 // leaves the lanes near contact to the point–ellipse root (the caller's exact fallback).
 //

@@ -1,13 +1,13 @@
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 
-#include "narrowphase/batch/lanes.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace collide2d {
 namespace detail {
-#include "narrowphase/ellipse/point_ellipse-inl.h"
+#include "narrowphase/shared/ellipse/point_ellipse-inl.h"
 }  // namespace detail
 
 namespace {

@@ -1,13 +1,13 @@
 // The disc test (disc_filter-inl.h) on one pair, for the one-off overlap tests (query.cpp), with the
 // batch's IEEE operations on a double.
-#include "narrowphase/batch/lanes.h"
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/lanes.h"
 
 #include <limits>
 #include <optional>
 
 namespace collide2d::detail {
-#include "narrowphase/polygon/disc_filter-inl.h"
+#include "narrowphase/overlap/disc_filter-inl.h"
 
 namespace {
 

@@ -4,12 +4,12 @@
 // the first of the greatest. The same products, sums and minima as one axis at a time, so the
 // result is the same to the bit; Google Highway picks the widest vectors the CPU has at the first
 // call.
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 
 #include <cstddef>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "narrowphase/polygon/best_axis.cpp"
+#define HWY_TARGET_INCLUDE "narrowphase/shared/cores/best_axis.cpp"
 #include "hwy/foreach_target.h"  // re-includes this file once per SIMD target
 #include "hwy/highway.h"
 

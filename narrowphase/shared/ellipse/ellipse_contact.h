@@ -2,7 +2,7 @@
 // overlap test and the distance queries.
 #pragma once
 
-#include "narrowphase/ellipse/ellipse_pair.h"
+#include "narrowphase/shared/ellipse/ellipse_pair.h"
 
 #include <collide2d/shapes.h>
 #include <optional>

@@ -8,7 +8,7 @@
 
 #include <collide2d/kernels.h>
 #include <collide2d/shapes.h>
-#include "narrowphase/ellipse/distance_point_ellipse.h"
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 #include "shapes/internal.h"
 
 #include <algorithm>
@@ -220,7 +220,7 @@ using PolygonEllipseLanes = CoreEllipseLanes<V, kMaxPolygonVertices>;
 template <class V>
 using SegmentEllipseLanes = CoreEllipseLanes<V, 2>;
 
-// Two ellipses as the algebraic test takes them (ellipse_cubic-inl.h): B's centre less A's in world
+// Two ellipses as the algebraic test takes them (overlap_ellipse_ellipse-inl.h): B's centre less A's in world
 // axes, each orientation, each pair of semi-axes.
 template <class V>
 struct EllipseEllipseLanes {

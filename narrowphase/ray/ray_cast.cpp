@@ -1,6 +1,6 @@
 #include <collide2d/ray_cast.h>
 
-#include "narrowphase/polygon/convex_core.h"
+#include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <collide2d/shapes.h>
-#include "narrowphase/batch/lanes.h"
+#include "narrowphase/shared/lanes.h"
 #include "shapes/internal.h"
 
 namespace collide2d::detail {
@@ -19,7 +19,7 @@ struct RectPairFrame {
       : a_rot(ra), b_rel(rb.relative_to(ra)), b_center(ra.apply_inverse(Vec2(b.center - a.center))) {}
 };
 
-// The overlap test's inputs (rect_rect_overlap-inl.h) for one pair.
+// The overlap test's inputs (overlap_rect_rect-inl.h) for one pair.
 inline RectRectLanes<double> rect_rect_lanes(const Rect& a, const Orientation& ao, const Rect& b,
                                              const Orientation& bo) {
   const RectPairFrame f(a, {ao.c, ao.s}, b, {bo.c, bo.s});
