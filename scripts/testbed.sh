@@ -20,7 +20,9 @@ flags=(-std=c++20 -O2 -fexceptions -ffp-contract=off -DHWY_COMPILE_ONLY_STATIC=1
 sources=("$@" tools/query_command.cpp tools/testbed/testbed.cpp)
 printf '%s\n' "${sources[@]}" | xargs -P "$(nproc)" -I{} sh -c \
   'emcc "$@" -c "'"$root"'/{}" -o "'"$work"'/obj/$(echo {} | tr / _).o"' sh "${flags[@]}"
-emcc -O1 -fexceptions "$work"/obj/*.o -o "$work/testbed.js" -sSINGLE_FILE=1 -sMODULARIZE=1 \
+objects=()
+for s in "${sources[@]}"; do objects+=("$work/obj/$(echo "$s" | tr / _).o"); done  # not a stale one of a source gone
+emcc -O1 -fexceptions "${objects[@]}" -o "$work/testbed.js" -sSINGLE_FILE=1 -sMODULARIZE=1 \
   -sEXPORT_NAME=Collide2dModule -sEXPORTED_FUNCTIONS=_testbed_answer -sEXPORTED_RUNTIME_METHODS=cwrap \
   -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web
 python3 - "$root/tools/testbed/testbed.html" "$work/testbed.js" "$out" <<'PY'

@@ -1,4 +1,5 @@
-// Private: the flat shapes as rounded convex cores, and their pairs' overlap, distance and contact.
+// Private: the flat shapes as rounded convex cores, the method that settles the pairs of them that
+// have no kernel of their own, and the one that settles such a shape against an ellipse.
 //
 // A rectangle, a convex polygon, a capsule and a circle are each a convex core (a polygon of 3 to 8
 // vertices, a segment of 2, or a point) grown by a radius (0 for the sharp polygons). Every pair
@@ -208,6 +209,8 @@ DiscEllipseLanes<double> disc_lanes(const A& a, const Orientation& ao, const Ell
 std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs);
 std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs);
 
+// The methods on a pair of cores (core_pair.h holds what they share): overlap/overlap_cores.cpp,
+// distance/distance_cores.cpp, contact/contact_cores.cpp.
 bool core_overlap(const CorePair& p);
 DistanceResult core_distance(const CorePair& p);
 Contact core_contact(const CorePair& p, const ContactOptions& options);
@@ -245,6 +248,8 @@ void face_supports(const Core& c, double a, double b, FaceSupports& out);
 // in SIMD lanes; least_rho the ellipse's least radius of curvature.
 std::uint32_t cones_within(const Core& c, const FaceSupports& along, double least_rho, double a, double b, double s);
 
+// The methods on a core and an ellipse (core_ellipse.h holds what they share):
+// overlap/overlap_core_ellipse.cpp, distance/distance_core_ellipse.cpp, contact/contact_core_ellipse.cpp.
 bool core_ellipse_overlap(const CoreEllipse& p);
 DistanceResult core_ellipse_distance(const CoreEllipse& p);
 Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options);

@@ -1,5 +1,5 @@
-#include "narrowphase/contact/contact_limit.h"
-#include "narrowphase/shared/cores/convex_core.h"
+#include "narrowphase/shared/cores/core_ellipse.h"
+
 #include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 #include "narrowphase/shared/lanes.h"
 
@@ -16,14 +16,6 @@ namespace collide2d::detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// A local maximum of the separation of the two cores (A's radius left out), in the ellipse's frame:
-// its value s, its direction u (from A to the ellipse), A's point there and the ellipse's.
-struct Peak {
-  double s = -kInf;
-  Vec2 u = Vec2::UnitX();
-  Vec2 on_a = Vec2::Zero(), on_e = Vec2::Zero();
-};
 
 // Whether u lies in the arc of directions from `from` counter-clockwise to `to` (a half turn at
 // most).
@@ -52,45 +44,6 @@ void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
   if (const std::optional<CurveFoot> other = other_local_nearest(p.a, p.b, v)) {
     consider(other->signed_distance, other->normal, other->point);
   }
-}
-
-// The largest face normal's separation, a lower bound of the signed distance; the ellipse's support
-// along each face normal (FaceSupports) and its least radius of curvature, min(a, b)^2 / max(a, b).
-struct Faces {
-  Peak best;
-  int face = -1;             // best's
-  double runner_up = -kInf;  // the largest separation of the other faces
-  FaceSupports along;
-  double least_rho = 0.0;
-
-  Vec2 q(int i) const { return {along.qx[i], along.qy[i]}; }
-};
-
-Faces best_face(const CoreEllipse& p) {
-  const Core& c = p.core;
-  Faces out;
-  face_supports(c, p.a, p.b, out.along);
-  double best = -kInf, runner_up = -kInf;
-  int face = -1;
-  for (int i = 0; i < c.faces(); ++i) {
-    const double s = out.along.s[i];
-    runner_up = std::max(runner_up, std::min(best, s));
-    face = s > best ? i : face;
-    best = std::max(best, s);
-  }
-  out.face = face, out.runner_up = runner_up;
-  if (face >= 0) {
-    const Vec2 &n = c.n[face], q = out.q(face);
-    out.best = {best, n, Vec2(q - best * n), q};
-  }
-  const double minor = std::min(p.a, p.b);
-  out.least_rho = minor * minor / std::max(p.a, p.b);
-  return out;
-}
-
-// The pair's scale: what the rounding of its separations is a few u of.
-double scale(const CoreEllipse& p) {
-  return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
 // Whether the separation of the point v and the ellipse stays at most s over the arc from the
@@ -166,17 +119,6 @@ Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
   return best;
 }
 
-Peak deepest(const CoreEllipse& p, const Faces& faces, int& roots) {
-  switch (p.core.count) {
-    case 1:
-      return deepest_of<CoreKind::point>(p, faces, roots);
-    case 2:
-      return deepest_of<CoreKind::segment>(p, faces, roots);
-    default:
-      return deepest_of<CoreKind::polygon>(p, faces, roots);
-  }
-}
-
 // The point of A's core least in the ellipse's quadratic (least_quadratic-inl.h), in the scaled
 // frame, and that value (0 where the core holds the centre strictly inside; on an edge, that edge's
 // nearest point says so; and a core that rounding has collapsed, far from the ellipse, holds
@@ -189,29 +131,46 @@ LeastQuadratic<double> least_quadratic(const CoreEllipse& p) {
 
 }  // namespace
 
-Contact core_ellipse_contact(const CoreEllipse& p, const ContactOptions& options) {
-  const Vec2& o = p.core.center;
-  const Vec2 box(std::clamp(o.x(), -p.a, p.a), std::clamp(o.y(), -p.b, p.b));
-  if (has_limit(options) && may_pass_limit(o - box, p.core.discs.reach, options)) {
-    // The disc of A's reach apart from the ellipse's bounding box: that gap is at most the solids'
-    // distance.
-    const double gap = (o - box).norm() - p.core.discs.reach;
-    if (beyond_limit(gap, o.norm() + p.core.discs.reach + p.a + p.b, options)) return Contact::beyond(gap);
+Faces best_face(const CoreEllipse& p) {
+  const Core& c = p.core;
+  Faces out;
+  face_supports(c, p.a, p.b, out.along);
+  double best = -kInf, runner_up = -kInf;
+  int face = -1;
+  for (int i = 0; i < c.faces(); ++i) {
+    const double s = out.along.s[i];
+    runner_up = std::max(runner_up, std::min(best, s));
+    face = s > best ? i : face;
+    best = std::max(best, s);
   }
-  const double r = p.core.radius;
-  const Faces faces = best_face(p);
-  if (beyond_limit(faces.best.s - r, scale(p), options)) return Contact::beyond(faces.best.s - r);
-  return limited(options, [&] {
-    int roots = 0;
-    const Peak d = deepest(p, faces, roots);
-    const Vec2 u = p.world_direction(d.u);
-    Contact c = Contact::of(d.s - r, u, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));
-    c.evaluations = roots;
-    return c;
-  });
+  out.face = face, out.runner_up = runner_up;
+  if (face >= 0) {
+    const Vec2 &n = c.n[face], q = out.q(face);
+    out.best = {best, n, Vec2(q - best * n), q};
+  }
+  const double minor = std::min(p.a, p.b);
+  out.least_rho = minor * minor / std::max(p.a, p.b);
+  return out;
 }
 
-namespace {
+double scale(const CoreEllipse& p) {
+  return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
+}
+
+Deepest deepest(const CoreEllipse& p, const Faces& faces) {
+  Deepest out;
+  switch (p.core.count) {
+    case 1:
+      out.peak = deepest_of<CoreKind::point>(p, faces, out.roots);
+      break;
+    case 2:
+      out.peak = deepest_of<CoreKind::segment>(p, faces, out.roots);
+      break;
+    default:
+      out.peak = deepest_of<CoreKind::polygon>(p, faces, out.roots);
+  }
+  return out;
+}
 
 // Overlapping where the core's least ellipse quadratic is below 1 by more than its rounding (that
 // point is a witness: the scaled frame stretches a needle's short axis, and with it the rounding of
@@ -221,45 +180,27 @@ namespace {
 // witness, or the ellipse's nearest point within the radius of a rounded core), unless a face
 // normal's separation (a lower bound of the signed distance) shows them apart. The one verdict of
 // the overlap test and the distance, so that they agree to the bit; the faces' separations into
-// `faces` and the deepest peak into `d` where they were needed.
-bool overlapping(const CoreEllipse& p, const LeastQuadratic<double>& least, std::optional<Faces>& faces, Peak& d) {
-  const LaneVerdicts<bool> certain = quadratic_verdicts(Scalar{}, least, p.core.x, p.core.y, p.core.radius, p.a, p.b);
-  if (certain.overlap || certain.separated) return certain.overlap;
-  faces = best_face(p);
-  if (faces->best.s > p.core.radius) return false;
-  int roots = 0;
-  d = deepest(p, *faces, roots);
-  return d.s <= p.core.radius;
-}
-
-// The deepest peak, unless `overlapping` found it, from the faces it found or else from new ones.
-Peak deepest_after(const CoreEllipse& p, const std::optional<Faces>& faces, const Peak& d) {
-  if (d.s != -kInf) return d;
-  int roots = 0;
-  return deepest(p, faces ? *faces : best_face(p), roots);
-}
-
-}  // namespace
-
-bool core_ellipse_overlap(const CoreEllipse& p) {
-  std::optional<Faces> faces;
-  Peak d;
-  return overlapping(p, least_quadratic(p), faces, d);
-}
-
-DistanceResult core_ellipse_distance(const CoreEllipse& p) {
+// the verdict where they were needed.
+CoreEllipseVerdict verdict(const CoreEllipse& p) {
   const LeastQuadratic<double> least = least_quadratic(p);
-  std::optional<Faces> faces;
-  Peak d;
-  if (overlapping(p, least, faces, d)) {
-    // The least point is in the ellipse, unless a rounded core's reach decided.
-    if (least.q > 1.0 - least.bound) d = deepest_after(p, faces, d);
-    const Vec2 witness = d.s == -kInf ? Vec2(least.wx * p.a, least.wy * p.b) : d.s <= 0.0 ? d.on_a : d.on_e;
-    return DistanceResult::touching(p.world_point(witness));
+  CoreEllipseVerdict v;
+  v.least_point = Vec2(least.wx * p.a, least.wy * p.b);
+  v.least_inside = !(least.q > 1.0 - least.bound);
+  const LaneVerdicts<bool> certain = quadratic_verdicts(Scalar{}, least, p.core.x, p.core.y, p.core.radius, p.a, p.b);
+  if (certain.overlap || certain.separated) {
+    v.overlapping = certain.overlap;
+    return v;
   }
-  d = deepest_after(p, faces, d);
-  const double r = p.core.radius;
-  return DistanceResult::apart(d.s - r, p.world_point(Vec2(d.on_a + r * d.u)), p.world_point(d.on_e));
+  v.faces = best_face(p);
+  if (v.faces->best.s > p.core.radius) return v;
+  v.deepest = deepest(p, *v.faces).peak;
+  v.overlapping = v.deepest.s <= p.core.radius;
+  return v;
+}
+
+Peak deepest_after(const CoreEllipse& p, const CoreEllipseVerdict& v) {
+  if (v.deepest.s != -kInf) return v.deepest;
+  return deepest(p, v.faces ? *v.faces : best_face(p)).peak;
 }
 
 }  // namespace collide2d::detail
