@@ -169,11 +169,4 @@ Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& opt
   return contact(a, Orientation::of(a.segment.angle), b, Orientation::of(angle_of(b)), options);
 }
 
-std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
-                                    double max_distance) {
-  const Faces f = sides_of(s, Orientation::of(s.segment.angle));
-  if (f.n.dot(Vec2(origin - f.p1)) < 0.0) return std::nullopt;
-  return ray_cast(Shape(s.segment), origin, direction, max_distance);
-}
-
 }  // namespace collide2d

@@ -1,5 +1,7 @@
 #include <collide2d/ray_cast.h>
 
+#include <collide2d/chain.h>
+
 #include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
 
@@ -159,6 +161,16 @@ std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, cons
   // a zero normal agree to the last bit.
   if (contains(shape, origin)) return hit_at(0.0, origin, direction, Vec2::Zero(), max_distance);
   return std::visit([&](const auto& s) { return cast(s, origin, direction, max_distance); }, shape);
+}
+
+// A ray from behind the chain segment's line (the side away from its front, its direction turned
+// clockwise: chain.h) passes through it.
+std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
+                                    double max_distance) {
+  const Vec2 d = Rot::of(s.segment.angle).apply(s.segment.end);
+  const Vec2 front(d.y(), -d.x());
+  if (front.dot(Vec2(origin - s.segment.center)) < 0.0) return std::nullopt;
+  return ray_cast(Shape(s.segment), origin, direction, max_distance);
 }
 
 }  // namespace collide2d
