@@ -8,6 +8,7 @@
 #include <collide2d/query.h>
 
 #include "narrowphase/baselines/baselines.h"
+#include "narrowphase/internal.h"
 
 #include "bench/box2d_baseline.h"
 #include "bench/scene_workload.h"
@@ -159,7 +160,7 @@ void batch_overlap(benchmark::State& state) {
   const Workload<A, B>& w = bench::pairs<A, B>(state);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   std::vector<std::uint8_t> out(kPairs);
-  bench::time_batches(state, [&] { overlap_batch<A, B>(w.a, oa, w.b, ob, out); });
+  bench::time_batches(state, [&] { detail::overlap_batch<A, B>(w.a, oa, w.b, ob, out); });
 }
 
 BENCHMARK(posed_overlap<Rect, Ellipse>)->Name("posed_overlap/rect_ellipse")->Apply(bench::workloads);

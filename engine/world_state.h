@@ -34,6 +34,7 @@
 #include <collide2d/world.h>
 
 #include "engine/thread_pool.h"
+#include "narrowphase/internal.h"
 
 #include <array>
 #include <atomic>
@@ -197,6 +198,14 @@ class WorldState {
     void run(const std::vector<Part>& parts, std::vector<Verdict>& chunk_verdicts);
     void clear();
   };
+  template <class Pairs>
+  struct BatchTuple;
+  template <class... P>
+  struct BatchTuple<std::tuple<P...>> {
+    using type = std::tuple<Batch<typename P::First, typename P::Second>...>;
+  };
+  template <class Pairs>
+  using BatchesOf = typename BatchTuple<Pairs>::type;
   // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
   // verdict, and the batches.
   struct Found {
@@ -207,11 +216,7 @@ class WorldState {
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
     std::vector<Verdict> verdicts;
-    std::tuple<Batch<Rect, Rect>, Batch<Rect, Circle>, Batch<Rect, Ellipse>, Batch<Circle, Circle>,
-               Batch<Circle, Ellipse>, Batch<Ellipse, Ellipse>, Batch<ConvexPolygon, ConvexPolygon>,
-               Batch<ConvexPolygon, Circle>, Batch<ConvexPolygon, Ellipse>, Batch<Capsule, Circle>,
-               Batch<Capsule, Ellipse>>
-        batches;  // every pair kind, in kernel order
+    BatchesOf<BatchedPairs<Kinds>> batches;  // one for each pair of kinds with a batch, in rank order
     void clear();
   };
 

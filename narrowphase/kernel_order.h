@@ -1,9 +1,8 @@
-// Private: the order in which kernels take their shapes: by rank across kinds (a rectangle, a
-// polygon, a capsule, a segment, a circle, an ellipse), and by key within one.
-//
-// The key is a total order on shapes of one kind (precedes()). Same-kind pairs are put in this order
-// before the kernel runs (query.cpp, and the batch in overlap_batch.cpp), so that swapping A and B
-// swaps the result exactly, bit for bit, whatever frame the kernel uses.
+// Private: the order in which kernels take two shapes of one kind (across kinds, their rank in
+// shapes/kinds.h decides): by key, a total order on the shapes of a kind (precedes()). Same-kind
+// pairs are put in this order before the kernel runs (dispatch.h, and the batch in
+// overlap_pairs.h), so that swapping A and B swaps the result exactly, bit for bit, whatever frame
+// the kernel uses.
 #pragma once
 
 #include <collide2d/shapes.h>
@@ -12,36 +11,6 @@
 #include <type_traits>
 
 namespace collide2d::detail {
-
-template <class T>
-constexpr int rank() {
-  if constexpr (std::is_same_v<T, Rect>) return 0;
-  if constexpr (std::is_same_v<T, ConvexPolygon>) return 1;
-  if constexpr (std::is_same_v<T, Capsule>) return 2;
-  if constexpr (std::is_same_v<T, Segment>) return 3;
-  if constexpr (std::is_same_v<T, Circle>) return 4;
-  return 5;
-}
-
-template <class T>
-constexpr bool one_of_first_kinds = std::is_same_v<T, Rect> || std::is_same_v<T, Circle> || std::is_same_v<T, Ellipse>;
-// The kinds the kernels settle on convex cores (narrowphase/shared/cores/convex_core.h).
-template <class T>
-constexpr bool on_cores = std::is_same_v<T, ConvexPolygon> || std::is_same_v<T, Capsule> || std::is_same_v<T, Segment>;
-
-// A polygon or a capsule (not a segment: level geometry, tested one pair at a time) with a circle or
-// an ellipse.
-template <class X, class Y>
-constexpr bool core_with_round =
-    on_cores<X> && !std::is_same_v<X, Segment> && (std::is_same_v<Y, Circle> || std::is_same_v<Y, Ellipse>);
-
-// Whether the batched overlap tests (batch.h) take the pair of kinds, either way round: any two of
-// rectangles, circles and ellipses, a polygon or a capsule with a circle or an ellipse, and two
-// polygons. Other pairs are tested one at a time.
-template <class X, class Y>
-constexpr bool batched =
-    (one_of_first_kinds<X> && one_of_first_kinds<Y>) || core_with_round<X, Y> || core_with_round<Y, X> ||
-    (std::is_same_v<X, ConvexPolygon> && std::is_same_v<Y, ConvexPolygon>);
 
 inline std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
 inline std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }

@@ -4,6 +4,8 @@
 // vectors go in as any pair of numbers and come out as tuples.
 #include <collide2d/collide2d.h>
 
+#include "narrowphase/internal.h"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -303,14 +305,6 @@ void each_pair(const PairLists& p, Query query, Out out) {
   for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
 }
 
-// The pair kinds the batched kernels take (batch.h), A before B in kernel order.
-template <class A, class B>
-constexpr bool kBatched =
-    (std::is_same_v<A, Rect> && !std::is_same_v<B, Capsule>) ||
-    (std::is_same_v<A, Circle> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>)) ||
-    (std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>) ||
-    (std::is_same_v<A, Capsule> && (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>));
-
 template <class T>
 T& kept(int slot) {
   thread_local std::array<T, 2> storage;
@@ -344,12 +338,12 @@ struct Typed {
 template <class A, class B>
 void overlaps_into(const Typed<A>& x, const Typed<B>& y, std::span<std::uint8_t> out) {
   py::gil_scoped_release released;
-  if constexpr (kBatched<A, B>) {
-    overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
-  } else if constexpr (kBatched<B, A>) {
-    overlap_batch<B, A>(y.shapes, y.orientations, x.shapes, x.orientations, out);
-  } else {
+  if constexpr (!detail::batched<A, B>) {
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = overlaps(Shape(x.shapes[i]), Shape(y.shapes[i])) ? 1 : 0;
+  } else if constexpr (detail::rank<A>() <= detail::rank<B>()) {
+    detail::overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
+  } else {
+    detail::overlap_batch<B, A>(y.shapes, y.orientations, x.shapes, x.orientations, out);
   }
 }
 

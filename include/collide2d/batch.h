@@ -17,7 +17,6 @@
 
 #include <cstdint>
 #include <span>
-#include <type_traits>
 
 namespace collide2d {
 
@@ -49,37 +48,6 @@ void overlap_capsule_circle(std::span<const Capsule> capsules, std::span<const O
 void overlap_polygon_polygon(std::span<const ConvexPolygon> a, std::span<const Orientation> a_orientations,
                              std::span<const ConvexPolygon> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping);
-
-/// Any of the above by the kinds of the lists, A before B in kernel order (rectangle, polygon,
-/// capsule, circle, ellipse), for generic code; a circle's orientations are not read.
-template <class A, class B>
-void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
-                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  if constexpr (std::is_same_v<A, Rect> && std::is_same_v<B, Rect>) {
-    overlap_rect_rect(a, a_orientations, b, b_orientations, overlapping);
-  } else if constexpr (std::is_same_v<A, Rect> && std::is_same_v<B, Circle>) {
-    overlap_rect_circle(a, a_orientations, b, overlapping);
-  } else if constexpr (std::is_same_v<A, Rect> && std::is_same_v<B, Ellipse>) {
-    overlap_rect_ellipse(a, a_orientations, b, b_orientations, overlapping);
-  } else if constexpr (std::is_same_v<A, Circle> && std::is_same_v<B, Circle>) {
-    overlap_circle_circle(a, b, overlapping);
-  } else if constexpr (std::is_same_v<A, Circle> && std::is_same_v<B, Ellipse>) {
-    overlap_circle_ellipse(a, b, b_orientations, overlapping);
-  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, Ellipse>) {
-    overlap_polygon_ellipse(a, a_orientations, b, b_orientations, overlapping);
-  } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Ellipse>) {
-    overlap_capsule_ellipse(a, a_orientations, b, b_orientations, overlapping);
-  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, Circle>) {
-    overlap_polygon_circle(a, a_orientations, b, overlapping);
-  } else if constexpr (std::is_same_v<A, Capsule> && std::is_same_v<B, Circle>) {
-    overlap_capsule_circle(a, a_orientations, b, overlapping);
-  } else if constexpr (std::is_same_v<A, ConvexPolygon> && std::is_same_v<B, ConvexPolygon>) {
-    overlap_polygon_polygon(a, a_orientations, b, b_orientations, overlapping);
-  } else {
-    static_assert(std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>, "no batch for this pair kind or order");
-    overlap_ellipse_ellipse(a, a_orientations, b, b_orientations, overlapping);
-  }
-}
 
 /// contacts[i] = contact_circle_ellipse(circles[i], ellipses[i], ellipse_orientations[i]), bit for
 /// bit: the point-ellipse roots of several vectors of pairs step side by side, each lane stopping

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <initializer_list>
+#include <span>
 
 namespace collide2d::detail {
 
@@ -52,7 +52,7 @@ void fill_chunk(Chunk<kFields>& chunk, std::size_t start, std::size_t count, Lan
 
 // Throws std::invalid_argument naming `what` and the lengths unless every input list has `out`
 // entries, the length of the output list of `results`.
-void check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out,
+void check_lengths(const char* what, std::span<const std::size_t> in, std::size_t out,
                    const char* results = "verdicts");
 
 }  // namespace collide2d::detail

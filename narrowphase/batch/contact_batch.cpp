@@ -144,8 +144,9 @@ void contact_batch(std::span<Contact> contacts, LanesOf lanes_of, RunChunk chunk
 
 void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<Contact> contacts) {
-  detail::check_lengths("contact_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
-                        contacts.size(), "contacts");
+  detail::check_lengths("contact_circle_ellipse",
+                        std::array{circles.size(), ellipses.size(), ellipse_orientations.size()}, contacts.size(),
+                        "contacts");
   contact_batch<detail::CirclePosedEllipseLanes<double>>(
       contacts,
       [&](std::size_t k) {
@@ -157,7 +158,7 @@ void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ell
 
 void contact_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<Contact> contacts) {
-  detail::check_lengths("contact_rect_circle", {rects.size(), rect_orientations.size(), circles.size()},
+  detail::check_lengths("contact_rect_circle", std::array{rects.size(), rect_orientations.size(), circles.size()},
                         contacts.size(), "contacts");
   contact_batch<detail::RectCirclePosedLanes<double>>(
       contacts,

@@ -119,8 +119,7 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace collide2d {
 
-void detail::check_lengths(const char* what, std::initializer_list<std::size_t> in, std::size_t out,
-                           const char* results) {
+void detail::check_lengths(const char* what, std::span<const std::size_t> in, std::size_t out, const char* results) {
   if (std::all_of(in.begin(), in.end(), [out](std::size_t n) { return n == out; })) return;
   std::string lengths;
   for (const std::size_t n : in) lengths += std::to_string(n) + ", ";
@@ -178,113 +177,65 @@ void detail::decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t co
   HWY_DYNAMIC_DISPATCH(disc_pair_chunk)(chunk, count);
 }
 
-namespace {
-
-// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
-template <class S>
-const Orientation& orientation(std::span<const Orientation> list, std::size_t k) {
-  static const Orientation unturned;
-  if constexpr (std::is_same_v<S, Circle>) {
-    return unturned;
-  } else {
-    return list[k];
-  }
-}
-
-// The public functions' lists as pairs.
-template <class A, class B>
-void overlap_lists(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
-                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  detail::overlap_pairs<A, B>(
-      [&](std::size_t k) {
-        return detail::PairRef<A, B>{a[k], orientation<A>(a_orientations, k), b[k], orientation<B>(b_orientations, k)};
-      },
-      overlapping);
-}
-
-}  // namespace
-
+// The public functions: each the generic form (overlap_pairs.h) of its pair.
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                           std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                           std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_ellipse",
-                        {rects.size(), rect_orientations.size(), ellipses.size(), ellipse_orientations.size()},
-                        overlapping.size());
-  overlap_lists<Rect, Ellipse>(rects, rect_orientations, ellipses, ellipse_orientations, overlapping);
+  detail::overlap_batch<Rect, Ellipse>(rects, rect_orientations, ellipses, ellipse_orientations, overlapping);
 }
 
 void overlap_rect_rect(std::span<const Rect> a, std::span<const Orientation> a_orientations, std::span<const Rect> b,
                        std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_rect", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
-                        overlapping.size());
-  overlap_lists<Rect, Rect>(a, a_orientations, b, b_orientations, overlapping);
+  detail::overlap_batch<Rect, Rect>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 void overlap_circle_circle(std::span<const Circle> a, std::span<const Circle> b, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_circle_circle", {a.size(), b.size()}, overlapping.size());
-  overlap_lists<Circle, Circle>(a, {}, b, {}, overlapping);
+  detail::overlap_batch<Circle, Circle>(a, {}, b, {}, overlapping);
 }
 
 void overlap_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_rect_circle", {rects.size(), rect_orientations.size(), circles.size()},
-                        overlapping.size());
-  overlap_lists<Rect, Circle>(rects, rect_orientations, circles, {}, overlapping);
+  detail::overlap_batch<Rect, Circle>(rects, rect_orientations, circles, {}, overlapping);
 }
 
 void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_circle_ellipse", {circles.size(), ellipses.size(), ellipse_orientations.size()},
-                        overlapping.size());
-  overlap_lists<Circle, Ellipse>(circles, {}, ellipses, ellipse_orientations, overlapping);
+  detail::overlap_batch<Circle, Ellipse>(circles, {}, ellipses, ellipse_orientations, overlapping);
 }
 
 void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
                              std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_ellipse_ellipse", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
-                        overlapping.size());
-  overlap_lists<Ellipse, Ellipse>(a, a_orientations, b, b_orientations, overlapping);
+  detail::overlap_batch<Ellipse, Ellipse>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 void overlap_polygon_ellipse(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
                              std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                              std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_polygon_ellipse",
-                        {polygons.size(), polygon_orientations.size(), ellipses.size(), ellipse_orientations.size()},
-                        overlapping.size());
-  overlap_lists<ConvexPolygon, Ellipse>(polygons, polygon_orientations, ellipses, ellipse_orientations, overlapping);
+  detail::overlap_batch<ConvexPolygon, Ellipse>(polygons, polygon_orientations, ellipses, ellipse_orientations,
+                                                overlapping);
 }
 
 void overlap_capsule_ellipse(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
                              std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                              std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_capsule_ellipse",
-                        {capsules.size(), capsule_orientations.size(), ellipses.size(), ellipse_orientations.size()},
-                        overlapping.size());
-  overlap_lists<Capsule, Ellipse>(capsules, capsule_orientations, ellipses, ellipse_orientations, overlapping);
+  detail::overlap_batch<Capsule, Ellipse>(capsules, capsule_orientations, ellipses, ellipse_orientations, overlapping);
 }
 
 void overlap_polygon_circle(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
                             std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_polygon_circle", {polygons.size(), polygon_orientations.size(), circles.size()},
-                        overlapping.size());
-  overlap_lists<ConvexPolygon, Circle>(polygons, polygon_orientations, circles, {}, overlapping);
+  detail::overlap_batch<ConvexPolygon, Circle>(polygons, polygon_orientations, circles, {}, overlapping);
 }
 
 void overlap_capsule_circle(std::span<const Capsule> capsules, std::span<const Orientation> capsule_orientations,
                             std::span<const Circle> circles, std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_capsule_circle", {capsules.size(), capsule_orientations.size(), circles.size()},
-                        overlapping.size());
-  overlap_lists<Capsule, Circle>(capsules, capsule_orientations, circles, {}, overlapping);
+  detail::overlap_batch<Capsule, Circle>(capsules, capsule_orientations, circles, {}, overlapping);
 }
 
 void overlap_polygon_polygon(std::span<const ConvexPolygon> a, std::span<const Orientation> a_orientations,
                              std::span<const ConvexPolygon> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping) {
-  detail::check_lengths("overlap_polygon_polygon", {a.size(), a_orientations.size(), b.size(), b_orientations.size()},
-                        overlapping.size());
-  overlap_lists<ConvexPolygon, ConvexPolygon>(a, a_orientations, b, b_orientations, overlapping);
+  detail::overlap_batch<ConvexPolygon, ConvexPolygon>(a, a_orientations, b, b_orientations, overlapping);
 }
 
 }  // namespace collide2d

@@ -10,6 +10,7 @@
 #include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "narrowphase/pairs.h"
 #include "narrowphase/shared/cores/convex_core.h"
 #include "narrowphase/shared/frames/rect_ellipse_frame.h"
 #include "narrowphase/shared/frames/rect_pair_frame.h"
@@ -88,7 +89,7 @@ auto lanes_of(const PairRef<A, Ellipse>& p) {
 // A circle is the ellipse of two equal semi-axes: its quadratic is the squared distance over r^2,
 // and its bounds on a rounded core's reach (quadratic_verdicts) meet.
 template <class A>
-requires on_cores<A>
+requires on_cores<A, Circle>
 auto lanes_of(const PairRef<A, Circle>& p) {
   return core_ellipse_lanes(p.a, p.a_orientation, p.b.center, Orientation{}, p.b.radius, p.b.radius);
 }
@@ -118,7 +119,7 @@ bool exact(const PairRef<A, Ellipse>& p) {
 }
 // Two flat shapes, or a flat shape and a circle: the one-off test whole, in the dispatcher's order.
 template <class A, class B>
-requires(on_cores<A> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
+requires(on_cores<A, B> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {
     if (precedes(p.b, p.a)) return core_overlap(CorePair::of(p.b, p.b_orientation, p.a, p.a_orientation));
   }
@@ -180,7 +181,7 @@ void settle(Pair pair, std::size_t n, At at, std::span<std::uint8_t> overlapping
 // fields a pair, no vertex read), and only the pairs it leaves go on.
 template <class A, class B, class Pair>
 void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
-  if constexpr (on_cores<A>) {
+  if constexpr (on_cores<A, B>) {
     using Lanes = decltype(disc_lanes_of(std::declval<PairRef<A, B>>()));
     Chunk<Lanes::kFields> discs;
     std::array<std::size_t, discs.kPairs> open;
@@ -201,6 +202,51 @@ void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
     settle<A, B>(
         pair, overlapping.size(), [](std::size_t k) { return k; }, overlapping);
   }
+}
+
+// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
+template <class S>
+const Orientation& orientation_at(std::span<const Orientation> list, std::size_t k) {
+  static const Orientation unturned;
+  if constexpr (std::is_same_v<S, Circle>) {
+    return unturned;
+  } else {
+    return list[k];
+  }
+}
+
+// The name of the pair's batch in messages: "overlap_rect_ellipse".
+template <class A, class B>
+inline constexpr auto kBatchName = [] {
+  std::array<char, 48> out{};
+  std::size_t n = 0;
+  for (const std::string_view part :
+       {std::string_view("overlap_"), Kind<A>::word, std::string_view("_"), Kind<B>::word}) {
+    for (const char c : part) out[n++] = c;
+  }
+  return out;
+}();
+
+// The batched overlap tests of a pair of kinds with a batch (pairs.h), A before B in rank order, on
+// lists: each list as long as the results (a circle's orientations aside), then overlap_pairs.
+// Throws std::invalid_argument, naming the lengths, before anything is written.
+template <class A, class B>
+void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
+                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  static_assert(Pair<A, B>::batched, "the pair table gives this pair of kinds no batch");
+  constexpr bool a_turns = !std::is_same_v<A, Circle>, b_turns = !std::is_same_v<B, Circle>;
+  std::array<std::size_t, 4> lengths{};
+  std::size_t n = 0;
+  lengths[n++] = a.size();
+  if (a_turns) lengths[n++] = a_orientations.size();
+  lengths[n++] = b.size();
+  if (b_turns) lengths[n++] = b_orientations.size();
+  check_lengths(kBatchName<A, B>.data(), std::span(lengths.data(), n), overlapping.size());
+  overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        return PairRef<A, B>{a[k], orientation_at<A>(a_orientations, k), b[k], orientation_at<B>(b_orientations, k)};
+      },
+      overlapping);
 }
 
 }  // namespace collide2d::detail

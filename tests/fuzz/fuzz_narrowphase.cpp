@@ -11,7 +11,7 @@
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
 #include "fuzz_input.h"
-#include "narrowphase/kernel_order.h"
+#include "narrowphase/internal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,8 +50,8 @@ bool batched(const Shape& a, const Shape& b) {
         } else {
           const Orientation ox = Orientation::of(angle_of(x)), oy = Orientation::of(angle_of(y));
           std::uint8_t verdict = 2;
-          overlap_batch<X, Y>(std::span(&x, 1), std::span(&ox, 1), std::span(&y, 1), std::span(&oy, 1),
-                              std::span(&verdict, 1));
+          detail::overlap_batch<X, Y>(std::span(&x, 1), std::span(&ox, 1), std::span(&y, 1), std::span(&oy, 1),
+                                      std::span(&verdict, 1));
           return verdict == 1;
         }
       },

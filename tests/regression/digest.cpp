@@ -10,6 +10,7 @@
 #include "fuzz/fuzz_input.h"
 #include "hard_cases.h"
 #include "narrowphase/baselines/baselines.h"
+#include "narrowphase/internal.h"
 #include "tools/query_command.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_run.h"
@@ -200,7 +201,7 @@ void batches(const std::string& w, const std::vector<A>& a, const std::vector<B>
   for (const A& x : a) oa.push_back(Orientation::of(angle_of(x)));
   for (const B& y : b) ob.push_back(Orientation::of(angle_of(y)));
   std::vector<std::uint8_t> verdicts(a.size());
-  overlap_batch<A, B>(a, oa, b, ob, verdicts);
+  detail::overlap_batch<A, B>(a, oa, b, ob, verdicts);
   Hash& h = at(w, "batch_overlap");
   for (const std::uint8_t v : verdicts) {
     h.add(int(v));

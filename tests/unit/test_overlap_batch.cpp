@@ -41,8 +41,9 @@ namespace {
 // The batched test, and the one-off test with orientations kept (query.h), for each pair kind.
 template <class A, class B>
 void batch(const Pairs<A, B>& p, std::size_t start, std::size_t count, std::span<std::uint8_t> out) {
-  overlap_batch<A, B>(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
-                      std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count), out);
+  detail::overlap_batch<A, B>(std::span(p.a).subspan(start, count), std::span(p.a_orientations).subspan(start, count),
+                              std::span(p.b).subspan(start, count), std::span(p.b_orientations).subspan(start, count),
+                              out);
 }
 template <class A, class B>
 bool one_off(const Pairs<A, B>& p, std::size_t k) {

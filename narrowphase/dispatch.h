@@ -1,0 +1,100 @@
+// Private: dispatch over pairs of kinds, derived from a list of kinds (shapes/kinds.h) and the pair
+// table (pairs.h), whose row Pair<A, B> holds the kernels of the pair A, B in rank order. Generic over
+// the list, so that a list with a kind of its own (a test's) dispatches alike.
+#pragma once
+
+#include "narrowphase/kernel_order.h"
+#include "shapes/kinds.h"
+
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace collide2d::detail {
+
+// The kernels of two kinds, A before B in rank order (pairs.h): a pair with no row has no
+// definition, and the check below names it.
+template <class A, class B>
+struct Pair;
+
+template <class A, class B>
+struct KindPair {
+  using First = A;
+  using Second = B;
+};
+
+// Every pair of the kinds, A's rank at most B's, as a tuple of KindPair, in rank order.
+template <class... Ts>
+struct PairsOf {
+  using type = std::tuple<>;
+};
+template <class T, class... Ts>
+struct PairsOf<T, Ts...> {
+  using type = decltype(std::tuple_cat(std::declval<std::tuple<KindPair<T, T>, KindPair<T, Ts>...>>(),
+                                       std::declval<typename PairsOf<Ts...>::type>()));
+};
+template <class List>
+struct AllPairs;
+template <class... Ts>
+struct AllPairs<KindList<Ts...>> {
+  using type = typename PairsOf<Ts...>::type;
+};
+
+// Fails for a pair with no row in the table; the compiler's message names the pair
+// ("required from RowCheck<Rect, HalfPlane>").
+template <class A, class B>
+struct RowCheck {
+  static_assert(
+      requires { sizeof(Pair<A, B>); },
+      "the pair table has no row for this pair of kinds: give it its kernels, or Unsupported "
+      "(narrowphase/pairs.h)");
+  static constexpr bool ok = true;
+};
+template <class List>
+constexpr bool every_pair_has_a_row() {
+  return []<class... P>(std::tuple<P...>*) {
+    return (RowCheck<typename P::First, typename P::Second>::ok && ...);
+  }(static_cast<typename AllPairs<List>::type*>(nullptr));
+}
+
+// The pairs of the list whose row has a batch (batch.h), as a tuple of KindPair.
+template <class Tuple>
+struct BatchedOf;
+template <class... P>
+struct BatchedOf<std::tuple<P...>> {
+  using type = decltype(std::tuple_cat(
+      std::declval<
+          std::conditional_t<Pair<typename P::First, typename P::Second>::batched, std::tuple<P>, std::tuple<>>>()...));
+};
+template <class List>
+using BatchedPairs = typename BatchedOf<typename AllPairs<List>::type>::type;
+
+// The row of two kinds in either order.
+template <class List, class X, class Y>
+using RowOf = std::conditional_t<(List::template rank<X>() <= List::template rank<Y>()), Pair<X, Y>, Pair<Y, X>>;
+
+// Whether the pair of kinds, either way round, has a batch.
+template <class X, class Y>
+constexpr bool batched = RowOf<Kinds, X, Y>::batched;
+
+// kernel(x, y, swapped) with the pair in the list's rank order, two shapes of one kind by key
+// (kernel_order.h), so that swapping A and B swaps the result bit for bit.
+template <class List, class Variant, class Kernel>
+auto in_rank_order(const Variant& a, const Variant& b, Kernel kernel) {
+  return std::visit(
+      [&kernel](const auto& x, const auto& y) {
+        using X = std::decay_t<decltype(x)>;
+        using Y = std::decay_t<decltype(y)>;
+        if constexpr (List::template rank<X>() < List::template rank<Y>()) {
+          return kernel(x, y, false);
+        } else if constexpr (List::template rank<X>() > List::template rank<Y>()) {
+          return kernel(y, x, true);
+        } else {
+          return precedes(y, x) ? kernel(y, x, true) : kernel(x, y, false);
+        }
+      },
+      a, b);
+}
+
+}  // namespace collide2d::detail

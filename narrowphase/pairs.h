@@ -1,0 +1,258 @@
+// Private: the table of pairs. One row per pair of kinds, A before B in rank order (shapes/kinds.h),
+// holding the pair's kernel for each query:
+//   overlap(a, b), posed_overlap(a, oa, b, ob)   overlap/overlap_<a>_<b>.cpp
+//   distance(a, b)                               distance/distance_<a>_<b>.cpp
+//   contact(a, oa, b, ob, options, prefer_b)     contact/contact_<a>_<b>.cpp
+//   boundary(a, b)                               the gap between boundary curves, where it applies
+//   batched                                      whether batch.h tests the pair in SIMD lanes
+// A row that takes the convex cores' methods (OnCores: overlap/overlap_cores.cpp and
+// overlap_core_ellipse.cpp, and their distance and contact twins) names the kernels it has of its
+// own. The queries (query.cpp), the World's batches and the batched kernels are derived from the
+// table; every pair of kinds must have a row (the check at the end names a pair without one).
+// docs/algorithms/README.md gives the same table with each method's page; a test holds it to this.
+#pragma once
+
+#include <collide2d/kernels.h>
+#include <collide2d/query.h>
+
+#include "narrowphase/contact/contact_rect_rect.h"
+#include "narrowphase/dispatch.h"
+#include "narrowphase/shared/cores/convex_core.h"
+
+#include <optional>
+#include <type_traits>
+
+namespace collide2d::detail {
+
+// The orientation a kernel takes for a shape: a circle has none.
+template <class T>
+Orientation orientation_of(const T& x) {
+  if constexpr (std::is_same_v<T, Circle>) {
+    return {};
+  } else {
+    return Orientation::of(x.angle);
+  }
+}
+
+// The queries a row does not support: the boundary distance of every pair with a flat shape.
+struct NoBoundary {
+  template <class X, class Y>
+  [[noreturn]] static DistanceResult boundary(const X&, const Y&) {
+    throw UnsupportedPair(
+        "the boundary distance covers circles and ellipses, not rectangles, polygons, capsules or segments");
+  }
+};
+
+// The methods on convex cores (narrowphase/shared/cores/convex_core.h): two cores, or a core and an
+// ellipse, the pair's cores placed in A's frame (in the ellipse's, against one).
+struct OnCores : NoBoundary {
+  static constexpr bool batched = false;
+
+  template <class X, class Y, class Run>
+  static auto on_core_pair(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, Run run) {
+    if constexpr (std::is_same_v<Y, Ellipse>) {
+      return run(CoreEllipse::of(a, oa, b, ob));
+    } else {
+      return run(CorePair::of(a, oa, b, ob));
+    }
+  }
+  // The discs about the two centres first: they settle most pairs before any core is built.
+  template <class X, class Y>
+  static bool posed_overlap(const X& a, const Orientation& oa, const Y& b, const Orientation& ob) {
+    if (const std::optional<bool> discs = disc_verdict(disc_lanes(a, oa, b, ob))) return *discs;
+    return on_core_pair(a, oa, b, ob, [](const auto& p) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(p)>, CoreEllipse>) {
+        return core_ellipse_overlap(p);
+      } else {
+        return core_overlap(p);
+      }
+    });
+  }
+  template <class X, class Y>
+  static bool overlap(const X& a, const Y& b) {
+    return posed_overlap(a, orientation_of(a), b, orientation_of(b));
+  }
+  template <class X, class Y>
+  static DistanceResult distance(const X& a, const Y& b) {
+    return on_core_pair(a, orientation_of(a), b, orientation_of(b), [](const auto& p) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(p)>, CoreEllipse>) {
+        return core_ellipse_distance(p);
+      } else {
+        return core_distance(p);
+      }
+    });
+  }
+  // A tie of two polygons' faces keeps the kernel's A's (the pair in rank order), whichever the
+  // caller gave first.
+  template <class X, class Y>
+  static Contact contact(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const ContactOptions& o,
+                         bool) {
+    return on_core_pair(a, oa, b, ob, [&o](const auto& p) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(p)>, CoreEllipse>) {
+        return core_ellipse_contact(p, o);
+      } else {
+        return core_contact(p, o);
+      }
+    });
+  }
+};
+
+// Whether the row of A and B (in rank order) takes the convex cores' methods.
+template <class A, class B>
+constexpr bool on_cores = std::is_base_of_v<OnCores, Pair<A, B>>;
+
+// ---- a rectangle first ----
+
+template <>
+struct Pair<Rect, Rect> : NoBoundary {
+  static constexpr bool batched = true;
+  static bool overlap(const Rect& a, const Rect& b) { return overlap_rect_rect(a, b); }
+  static bool posed_overlap(const Rect& a, const Orientation& oa, const Rect& b, const Orientation& ob) {
+    return overlap_rect_rect(a, oa, b, ob);
+  }
+  static DistanceResult distance(const Rect& a, const Rect& b) { return distance_rect_rect(a, b); }
+  // `prefer_b`: the kernel's B is the caller's A, whose face the manifold prefers.
+  static Contact contact(const Rect& a, const Orientation& oa, const Rect& b, const Orientation& ob,
+                         const ContactOptions& o, bool prefer_b) {
+    return contact_rect_rect(a, oa, b, ob, o, prefer_b ? PreferredFace::of_b : PreferredFace::of_a);
+  }
+};
+template <>
+struct Pair<Rect, ConvexPolygon> : OnCores {};
+template <>
+struct Pair<Rect, Capsule> : OnCores {};
+template <>
+struct Pair<Rect, Segment> : OnCores {};
+template <>
+struct Pair<Rect, Circle> : NoBoundary {
+  static constexpr bool batched = true;
+  static bool overlap(const Rect& a, const Circle& b) { return overlap_rect_circle(a, b); }
+  static bool posed_overlap(const Rect& a, const Orientation& oa, const Circle& b, const Orientation&) {
+    return overlap_rect_circle(a, oa, b);
+  }
+  static DistanceResult distance(const Rect& a, const Circle& b) { return distance_rect_circle(a, b); }
+  static Contact contact(const Rect& a, const Orientation& oa, const Circle& b, const Orientation&,
+                         const ContactOptions& o, bool) {
+    return contact_rect_circle(a, oa, b, o);
+  }
+};
+template <>
+struct Pair<Rect, Ellipse> : NoBoundary {
+  static constexpr bool batched = true;
+  static bool overlap(const Rect& a, const Ellipse& b) { return overlap_rect_ellipse(a, b); }
+  static bool posed_overlap(const Rect& a, const Orientation& oa, const Ellipse& b, const Orientation& ob) {
+    return overlap_rect_ellipse(a, oa, b, ob);
+  }
+  static DistanceResult distance(const Rect& a, const Ellipse& b) { return distance_rect_ellipse(a, b); }
+  static Contact contact(const Rect& a, const Orientation& oa, const Ellipse& b, const Orientation& ob,
+                         const ContactOptions& o, bool) {
+    return contact_rect_ellipse(a, oa, b, ob, o);
+  }
+};
+
+// ---- a polygon first ----
+
+template <>
+struct Pair<ConvexPolygon, ConvexPolygon> : OnCores {
+  static constexpr bool batched = true;
+};
+template <>
+struct Pair<ConvexPolygon, Capsule> : OnCores {};
+template <>
+struct Pair<ConvexPolygon, Segment> : OnCores {};
+template <>
+struct Pair<ConvexPolygon, Circle> : OnCores {
+  static constexpr bool batched = true;
+  static Contact contact(const ConvexPolygon& a, const Orientation& oa, const Circle& b, const Orientation&,
+                         const ContactOptions& o, bool) {
+    return contact_polygon_circle(a, oa, b, o);
+  }
+};
+template <>
+struct Pair<ConvexPolygon, Ellipse> : OnCores {
+  static constexpr bool batched = true;
+};
+
+// ---- a capsule first ----
+
+template <>
+struct Pair<Capsule, Capsule> : OnCores {};
+template <>
+struct Pair<Capsule, Segment> : OnCores {};
+template <>
+struct Pair<Capsule, Circle> : OnCores {
+  static constexpr bool batched = true;
+  static Contact contact(const Capsule& a, const Orientation& oa, const Circle& b, const Orientation&,
+                         const ContactOptions& o, bool) {
+    return contact_capsule_circle(a, oa, b, o);
+  }
+};
+template <>
+struct Pair<Capsule, Ellipse> : OnCores {
+  static constexpr bool batched = true;
+};
+
+// ---- a segment first (level geometry: tested one pair at a time) ----
+
+template <>
+struct Pair<Segment, Segment> : OnCores {};
+template <>
+struct Pair<Segment, Circle> : OnCores {
+  static Contact contact(const Segment& a, const Orientation& oa, const Circle& b, const Orientation&,
+                         const ContactOptions& o, bool) {
+    return contact_segment_circle(a, oa, b, o);
+  }
+};
+template <>
+struct Pair<Segment, Ellipse> : OnCores {};
+
+// ---- curved pairs ----
+
+template <>
+struct Pair<Circle, Circle> {
+  static constexpr bool batched = true;
+  static bool overlap(const Circle& a, const Circle& b) { return overlap_circle_circle(a, b); }
+  static bool posed_overlap(const Circle& a, const Orientation&, const Circle& b, const Orientation&) {
+    return overlap_circle_circle(a, b);
+  }
+  static DistanceResult distance(const Circle& a, const Circle& b) { return distance_circle_circle(a, b); }
+  static Contact contact(const Circle& a, const Orientation&, const Circle& b, const Orientation&,
+                         const ContactOptions& o, bool) {
+    return contact_circle_circle(a, b, o);
+  }
+  static DistanceResult boundary(const Circle& a, const Circle& b);  // query.cpp
+};
+template <>
+struct Pair<Circle, Ellipse> {
+  static constexpr bool batched = true;
+  static bool overlap(const Circle& a, const Ellipse& b) { return overlap_circle_ellipse(a, b); }
+  static bool posed_overlap(const Circle& a, const Orientation&, const Ellipse& b, const Orientation& ob) {
+    return overlap_circle_ellipse(a, b, ob);
+  }
+  static DistanceResult distance(const Circle& a, const Ellipse& b) { return distance_circle_ellipse(a, b); }
+  static Contact contact(const Circle& a, const Orientation&, const Ellipse& b, const Orientation& ob,
+                         const ContactOptions& o, bool) {
+    return contact_circle_ellipse(a, b, ob, o);
+  }
+  static DistanceResult boundary(const Circle& a, const Ellipse& b) {
+    return boundary_distance_ellipse_ellipse({a.center, a.radius, a.radius, 0.0}, b);
+  }
+};
+template <>
+struct Pair<Ellipse, Ellipse> {
+  static constexpr bool batched = true;
+  static bool overlap(const Ellipse& a, const Ellipse& b) { return overlap_ellipse_ellipse(a, b); }
+  static bool posed_overlap(const Ellipse& a, const Orientation& oa, const Ellipse& b, const Orientation& ob) {
+    return overlap_ellipse_ellipse(a, oa, b, ob);
+  }
+  static DistanceResult distance(const Ellipse& a, const Ellipse& b) { return distance_ellipse_ellipse(a, b); }
+  static Contact contact(const Ellipse& a, const Orientation& oa, const Ellipse& b, const Orientation& ob,
+                         const ContactOptions& o, bool) {
+    return contact_ellipse_ellipse(a, oa, b, ob, o);
+  }
+  static DistanceResult boundary(const Ellipse& a, const Ellipse& b) { return boundary_distance_ellipse_ellipse(a, b); }
+};
+
+static_assert(every_pair_has_a_row<Kinds>());
+
+}  // namespace collide2d::detail

@@ -1,0 +1,179 @@
+// Private: the registry of shape kinds. Each kind has one entry, Kind<T>, and the list Kinds holds
+// them in rank order; what the library and its tools know of a kind beyond its geometry is there:
+// - its word in the query grammar, the scene format, the Python arrays and messages;
+// - its number in the replay and wire formats, fixed for ever and never reused;
+// - its row: the numbers the query grammar and the Python arrays write it with, and the shape
+//   made from them (a polygon, whose vertices vary in number, has its own grammar instead);
+// - its fields in the scene format, besides its centre.
+// Its geometry (validate, aabb, support, contains, reach_of) is declared in shapes.h and defined in
+// its own file, shapes/<word>.cpp; a kind must have each (ShapeKind, below). What follows from the
+// entries is derived from them at compile time: the rank, the grammar's text, and with the pair table
+// (narrowphase/pairs.h) every dispatch over pairs.
+#pragma once
+
+#include <collide2d/shapes.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace collide2d::detail {
+
+// A kind's entry (below); a type with none is no kind.
+template <class T>
+struct Kind;
+
+// What a shape must have to be a kind: its entry, and its geometry for the generic code.
+template <class T>
+concept ShapeKind = requires(const T& s, const Vec2& d) {
+  Kind<T>::word;
+  Kind<T>::number;
+  validate(s);
+  aabb(s);
+  support(s, d);
+  contains(s, d);
+};
+
+// The numbers a kind of fixed row is written with: their names, and the shape made from them.
+template <std::size_t N>
+using RowNames = std::array<std::string_view, N>;
+
+template <>
+struct Kind<Circle> {
+  static constexpr std::string_view word = "circle";
+  static constexpr std::uint32_t number = 0;
+  static constexpr RowNames<3> row{"cx", "cy", "r"};
+  static Circle from_row(const double* v) { return {Vec2(v[0], v[1]), v[2]}; }
+  static constexpr std::array<std::string_view, 1> fields{"radius"};
+};
+
+template <>
+struct Kind<Ellipse> {
+  static constexpr std::string_view word = "ellipse";
+  static constexpr std::uint32_t number = 1;
+  static constexpr RowNames<5> row{"cx", "cy", "a", "b", "theta"};
+  static Ellipse from_row(const double* v) { return {Vec2(v[0], v[1]), v[2], v[3], v[4]}; }
+  static constexpr std::array<std::string_view, 3> fields{"a", "b", "angle"};
+};
+
+template <>
+struct Kind<Rect> {
+  static constexpr std::string_view word = "rect";
+  static constexpr std::uint32_t number = 2;
+  static constexpr RowNames<5> row{"cx", "cy", "hx", "hy", "theta"};
+  static Rect from_row(const double* v) { return {Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]}; }
+  static constexpr std::array<std::string_view, 2> fields{"half_extents", "angle"};
+};
+
+template <>
+struct Kind<Capsule> {
+  static constexpr std::string_view word = "capsule";
+  static constexpr std::uint32_t number = 3;
+  static constexpr RowNames<5> row{"cx", "cy", "h", "r", "theta"};
+  static Capsule from_row(const double* v) { return {Vec2(v[0], v[1]), v[2], v[3], v[4]}; }
+  static constexpr std::array<std::string_view, 3> fields{"half_length", "radius", "angle"};
+};
+
+template <>
+struct Kind<ConvexPolygon> {
+  static constexpr std::string_view word = "polygon";
+  static constexpr std::uint32_t number = 4;
+  // 3 to 8 vertices counter-clockwise in its own frame, after its pose and radius.
+  static constexpr std::string_view grammar = "cx cy theta r x0 y0 x1 y1 x2 y2 ...";
+  static constexpr std::array<std::string_view, 3> fields{"vertices", "radius", "angle"};
+};
+
+// Level geometry: no centre of its own in the formats users write, its two points place it.
+template <>
+struct Kind<Segment> {
+  static constexpr std::string_view word = "segment";
+  static constexpr std::uint32_t number = 5;
+  static constexpr RowNames<4> row{"x1", "y1", "x2", "y2"};
+  static Segment from_row(const double* v) { return Segment::between(Vec2(v[0], v[1]), Vec2(v[2], v[3])); }
+  static constexpr std::array<std::string_view, 1> fields{"points"};
+};
+
+// Kinds in rank order: a pair of two kinds goes to its kernel in this order (the lower rank as A).
+template <ShapeKind... Ts>
+struct KindList {
+  static constexpr std::size_t size = sizeof...(Ts);
+  template <class T>
+  static constexpr int rank() {
+    int at = 0, found = -1;
+    ((std::is_same_v<T, Ts> ? found = at : 0, ++at), ...);
+    return found;
+  }
+  // f.template operator()<T>() for each kind, in rank order.
+  template <class F>
+  static constexpr void each(F&& f) {
+    (f.template operator()<Ts>(), ...);
+  }
+  // The kinds' words by number, joined by ", " and, before `last` (or else the last kind's), "or":
+  // "circle, ellipse, rect, capsule, polygon, segment or chain".
+  static std::string words(std::string_view last = {}) {
+    std::array<std::string_view, size> by_number{};
+    ((by_number[Kind<Ts>::number] = Kind<Ts>::word), ...);
+    std::string out;
+    for (std::size_t k = 0; k < size; ++k) {
+      const bool final = last.empty() && k + 1 == size;
+      out += k == 0 ? "" : final ? " or " : ", ";
+      out += by_number[k];
+    }
+    if (!last.empty()) out += std::string(" or ") + std::string(last);
+    return out;
+  }
+};
+
+// The library's kinds: flat shapes first, as they take the curved ones in their frames.
+using Kinds = KindList<Rect, ConvexPolygon, Capsule, Segment, Circle, Ellipse>;
+
+template <class T>
+constexpr int rank() {
+  return Kinds::rank<T>();
+}
+
+// Whether the kind is written as a row of fixed length.
+template <class T>
+concept HasRow = requires {
+  Kind<T>::row;
+};
+
+// A row's names, spaced, as characters and their count.
+template <class T>
+inline constexpr auto kRowText = [] {
+  std::array<char, 64> out{};
+  std::size_t n = 0;
+  for (const std::string_view name : Kind<T>::row) {
+    if (n > 0) out[n++] = ' ';
+    for (const char c : name) out[n++] = c;
+  }
+  return std::pair(out, n);
+}();
+
+// The kind's numbers in the query grammar, spaced: "cx cy a b theta".
+template <class T>
+constexpr std::string_view grammar_of() {
+  if constexpr (HasRow<T>) {
+    return {kRowText<T>.first.data(), kRowText<T>.second};
+  } else {
+    return Kind<T>::grammar;
+  }
+}
+
+// The entry of the kind a shape holds.
+template <class F>
+decltype(auto) with_kind(const Shape& s, F&& f) {
+  return std::visit([&f](const auto& x) -> decltype(auto) { return f(x, Kind<std::decay_t<decltype(x)>>{}); }, s);
+}
+
+// The number and word of the kind a shape holds.
+inline std::uint32_t kind_number(const Shape& s) {
+  return with_kind(s, [](const auto&, auto kind) { return decltype(kind)::number; });
+}
+
+}  // namespace collide2d::detail
