@@ -6,6 +6,7 @@
 #include <collide2d/distributed.h>
 
 #include "engine/world_state.h"
+#include "shapes/kinds.h"
 
 #include <algorithm>
 #include <array>
@@ -43,7 +44,7 @@ Wire wire_of(const BodyRecord& r, const std::optional<Aabb>& previous, bool owne
   w.category = r.filter.category;
   w.mask = r.filter.mask;
   w.group = r.filter.group;
-  w.kind = static_cast<std::uint8_t>(r.shape.index());
+  w.kind = static_cast<std::uint8_t>(detail::kind_number(r.shape));
   w.flags =
       static_cast<std::uint8_t>((r.is_static ? kStatic : 0) | (r.sensor ? kSensor : 0) |
                                 (r.continuous ? kContinuous : 0) | (previous ? kHadReach : 0) | (owned ? kOwned : 0));
@@ -75,16 +76,16 @@ Wire wire_of(const BodyRecord& r, const std::optional<Aabb>& previous, bool owne
 Shape shape_of(const Wire& w) {
   const auto& f = w.fields;
   const Vec2 c(f[0], f[1]);
-  switch (w.kind) {
-    case 0:
+  switch (std::uint32_t{w.kind}) {
+    case detail::Kind<Circle>::number:
       return Circle{c, f[2]};
-    case 1:
+    case detail::Kind<Ellipse>::number:
       return Ellipse{c, f[2], f[3], f[4]};
-    case 2:
+    case detail::Kind<Rect>::number:
       return Rect{c, Vec2(f[2], f[3]), f[4]};
-    case 3:
+    case detail::Kind<Capsule>::number:
       return Capsule{c, f[2], f[3], f[4]};
-    case 5:
+    case detail::Kind<Segment>::number:
       return Segment{c, Vec2(f[2], f[3]), f[4]};
     default: {
       std::vector<Vec2> vertices;

@@ -8,6 +8,8 @@
 // its high bytes zero.
 #include <collide2d/replay.h>
 
+#include "shapes/kinds.h"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -60,14 +62,6 @@ void put(Bytes& out, const Pair& p) {
   put(out, p.second);
 }
 
-// The format numbers the shape kinds as Shape's alternatives (Shape::index()).
-static_assert(std::is_same_v<std::variant_alternative_t<0, Shape>, Circle> &&
-              std::is_same_v<std::variant_alternative_t<1, Shape>, Ellipse> &&
-              std::is_same_v<std::variant_alternative_t<2, Shape>, Rect> &&
-              std::is_same_v<std::variant_alternative_t<3, Shape>, Capsule> &&
-              std::is_same_v<std::variant_alternative_t<4, Shape>, ConvexPolygon> &&
-              std::is_same_v<std::variant_alternative_t<5, Shape>, Segment>);
-
 // A shape's sizes, its pose left out: two numbers, then a polygon's vertices in its own frame.
 void put_sizes(Bytes& out, const Shape& s) {
   std::visit(
@@ -100,7 +94,7 @@ Bytes form_of(const World& world, BodyId body, ShapeId id) {
   const std::optional<ChainSegment> chain = world.chain_segment(id);
   const std::uint32_t flags = (world.is_static(body) ? 1u : 0u) | (world.is_sensor(id) ? 2u : 0u) |
                               (world.is_continuous(body) ? 4u : 0u) | (chain ? 8u : 0u);
-  put(out, static_cast<std::uint32_t>(shape.index()));
+  put(out, detail::kind_number(shape));  // the registry's number (shapes/kinds.h)
   put(out, flags);
   const Filter& filter = world.filter(id);
   put(out, filter.category);

@@ -6,6 +6,8 @@
 #include "narrowphase/kernel_order.h"
 #include "shapes/kinds.h"
 
+#include <collide2d/query.h>
+
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -95,6 +97,48 @@ auto in_rank_order(const Variant& a, const Variant& b, Kernel kernel) {
         }
       },
       a, b);
+}
+
+// The queries on two shapes of a list's kinds, from their row: in rank order, the result turned
+// back to the caller's order. The callers validate the shapes.
+template <class List, class Variant>
+bool overlap_of(const Variant& a, const Variant& b) {
+  return in_rank_order<List>(a, b, [](const auto& x, const auto& y, bool) {
+    return Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>::overlap(x, y);
+  });
+}
+template <class List, class Variant>
+bool posed_overlap_of(const Variant& a, const Orientation& oa, const Variant& b, const Orientation& ob) {
+  return in_rank_order<List>(a, b, [&](const auto& x, const auto& y, bool swapped) {
+    using Row = Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>;
+    return swapped ? Row::posed_overlap(x, ob, y, oa) : Row::posed_overlap(x, oa, y, ob);
+  });
+}
+template <class List, class Variant>
+DistanceResult distance_of(const Variant& a, const Variant& b) {
+  return in_rank_order<List>(a, b, [](const auto& x, const auto& y, bool swapped) {
+    const DistanceResult r = Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>::distance(x, y);
+    return swapped ? r.swapped() : r;
+  });
+}
+template <class List, class Variant>
+DistanceResult boundary_of(const Variant& a, const Variant& b) {
+  return in_rank_order<List>(a, b, [](const auto& x, const auto& y, bool swapped) {
+    const DistanceResult r = Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>::boundary(x, y);
+    return swapped ? r.swapped() : r;
+  });
+}
+// A pair given the other way round has its guess turned round, and its result swapped back.
+template <class List, class Variant>
+Contact contact_of(const Variant& a, const Orientation& oa, const Variant& b, const Orientation& ob,
+                   const ContactOptions& options) {
+  return in_rank_order<List>(a, b, [&](const auto& x, const auto& y, bool swapped) {
+    using Row = Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>;
+    if (!swapped) return Row::contact(x, oa, y, ob, options, false);
+    ContactOptions reversed = options;
+    reversed.guess = -options.guess;
+    return Row::contact(x, ob, y, oa, reversed, true).swapped();
+  });
 }
 
 }  // namespace collide2d::detail

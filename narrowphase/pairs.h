@@ -43,6 +43,32 @@ struct NoBoundary {
   }
 };
 
+// A row for a pair of kinds the queries do not take: each throws UnsupportedPair.
+struct Unsupported {
+  static constexpr bool batched = false;
+  [[noreturn]] static void refuse() { throw UnsupportedPair("the queries do not take this pair of kinds"); }
+  template <class X, class Y>
+  static bool overlap(const X&, const Y&) {
+    refuse();
+  }
+  template <class X, class Y>
+  static bool posed_overlap(const X&, const Orientation&, const Y&, const Orientation&) {
+    refuse();
+  }
+  template <class X, class Y>
+  static DistanceResult distance(const X&, const Y&) {
+    refuse();
+  }
+  template <class X, class Y>
+  static Contact contact(const X&, const Orientation&, const Y&, const Orientation&, const ContactOptions&, bool) {
+    refuse();
+  }
+  template <class X, class Y>
+  static DistanceResult boundary(const X&, const Y&) {
+    refuse();
+  }
+};
+
 // The methods on convex cores (narrowphase/shared/cores/convex_core.h): two cores, or a core and an
 // ellipse, the pair's cores placed in A's frame (in the ellipse's, against one).
 struct OnCores : NoBoundary {

@@ -4,37 +4,13 @@
 #include "narrowphase/pairs.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <optional>
+#include <stdexcept>
 #include <type_traits>
 
 namespace collide2d {
-namespace {
 
-using detail::Pair;
-
-// Calls kernel(x, y, swapped) with the pair in rank order (dispatch.h).
-template <class Kernel>
-auto in_kernel_order(const Shape& a, const Shape& b, Kernel kernel) {
-  return detail::in_rank_order<detail::Kinds>(a, b, kernel);
-}
-
-// Validates, runs kernel(x, y) in rank order and swaps the result back.
-template <class Kernel>
-auto ordered_result(const Shape& a, const Shape& b, Kernel kernel) {
-  validate(a);
-  validate(b);
-  return in_kernel_order(a, b, [&kernel](const auto& x, const auto& y, bool swapped) {
-    const auto r = kernel(x, y);
-    return swapped ? r.swapped() : r;
-  });
-}
-
-template <class X, class Y>
-using Row = Pair<std::decay_t<X>, std::decay_t<Y>>;
-
-}  // namespace
+using detail::Kinds;
 
 // Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
 // centre (any side when the centres coincide).
@@ -54,6 +30,7 @@ DistanceResult detail::Pair<Circle, Circle>::boundary(const Circle& a, const Cir
   const double across = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
   return DistanceResult::touching(a.center + along * u + across * Vec2(-u.y(), u.x()));
 }
+
 void detail::validate(const ContactOptions& options) {
   if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
   if (std::isnan(options.max_separation)) throw std::invalid_argument("contact max_separation must not be NaN");
@@ -62,16 +39,11 @@ void detail::validate(const ContactOptions& options) {
 bool overlaps(const Shape& a, const Shape& b) {
   validate(a);
   validate(b);
-  return in_kernel_order(
-      a, b, [](const auto& x, const auto& y, bool) { return Row<decltype(x), decltype(y)>::overlap(x, y); });
+  return detail::overlap_of<Kinds>(a, b);
 }
 
 bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation) {
-  return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
-    using R = Row<decltype(x), decltype(y)>;
-    return swapped ? R::posed_overlap(x, b_orientation, y, a_orientation)
-                   : R::posed_overlap(x, a_orientation, y, b_orientation);
-  });
+  return detail::posed_overlap_of<Kinds>(a, a_orientation, b, b_orientation);
 }
 
 bool overlaps(const Shape& shape, const Aabb& box) {
@@ -85,17 +57,19 @@ bool overlaps(const Shape& shape, const Aabb& box) {
   if ((part.min.array() > part.max.array()).any()) return false;
   // A part with no width is still a rectangle for the kernels, which skip validation.
   const Rect r{0.5 * (part.min + part.max), 0.5 * (part.max - part.min), 0.0};
-  return std::visit([&](const auto& x) { return Row<Rect, decltype(x)>::overlap(r, x); }, shape);
+  return std::visit([&](const auto& x) { return detail::Pair<Rect, std::decay_t<decltype(x)>>::overlap(r, x); }, shape);
 }
 
 DistanceResult distance(const Shape& a, const Shape& b) {
-  return ordered_result(a, b,
-                        [](const auto& x, const auto& y) { return Row<decltype(x), decltype(y)>::distance(x, y); });
+  validate(a);
+  validate(b);
+  return detail::distance_of<Kinds>(a, b);
 }
 
 DistanceResult boundary_distance(const Shape& a, const Shape& b) {
-  return ordered_result(a, b,
-                        [](const auto& x, const auto& y) { return Row<decltype(x), decltype(y)>::boundary(x, y); });
+  validate(a);
+  validate(b);
+  return detail::boundary_of<Kinds>(a, b);
 }
 
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
@@ -107,13 +81,7 @@ Contact contact(const Shape& a, const Shape& b, const ContactOptions& options) {
 
 Contact contact(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation,
                 const ContactOptions& options) {
-  return in_kernel_order(a, b, [&](const auto& x, const auto& y, bool swapped) {
-    using R = Row<decltype(x), decltype(y)>;
-    if (!swapped) return R::contact(x, a_orientation, y, b_orientation, options, false);
-    ContactOptions reversed = options;
-    reversed.guess = -options.guess;
-    return R::contact(x, b_orientation, y, a_orientation, reversed, true).swapped();
-  });
+  return detail::contact_of<Kinds>(a, a_orientation, b, b_orientation, options);
 }
 
 }  // namespace collide2d

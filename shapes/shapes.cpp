@@ -1,6 +1,7 @@
 #include <collide2d/shapes.h>
 
 #include "shapes/internal.h"
+#include "shapes/kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,8 +146,7 @@ bool encloses(const Aabb& outer, const Aabb& inner) {
 }
 
 const char* shape_name(const Shape& s) {
-  constexpr const char* names[] = {"circle", "ellipse", "rect", "capsule", "polygon", "segment"};
-  return names[s.index()];
+  return detail::with_kind(s, [](const auto&, auto kind) { return decltype(kind)::word.data(); });
 }
 
 Aabb aabb(const Circle& c) { return around(c.center, Vec2::Constant(c.radius)); }

@@ -21,11 +21,13 @@
 
 namespace {
 
-constexpr const char* kQueryUsage =
+const std::string kQueryUsage =
     "usage: collide2d query [--method NAME]... [--boundary | --contact | --toi]\n"
-    "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being\n"
-    "    circle cx cy r | ellipse cx cy a b theta | rect cx cy hx hy theta   (radians)\n"
-    "  and writes 'overlap distance ax ay bx by' per line (errors as 'error: <reason>').\n"
+    "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being one of\n" +
+    collide2d::tool::shape_grammar("    ") +
+    "  (angles in radians), and shape A also chain gx1 gy1 x1 y1 x2 y2 gx2 gy2, a chain\n"
+    "  segment between its neighbours' far points; it writes 'overlap distance ax ay bx by'\n"
+    "  per line (errors as 'error: <reason>').\n"
     "  --method minkowski|closest-features|all-features\n"
     "      the rectangle-ellipse overlap test (default minkowski, the kernel; the others are\n"
     "      reference methods in plain double)\n"
@@ -63,7 +65,7 @@ constexpr const char* kReportNote =
     "The speed-against-error report of the ellipse distance methods is a separate program\n"
     "of the build tree, bench/collide2d_report (it links Box2D; not installed).\n";
 
-const std::string kUsage = std::string(kQueryUsage) + "\n" + kRunUsage + "\n" + kReplayUsage + "\n" + kReportNote;
+const std::string kUsage = kQueryUsage + "\n" + kRunUsage + "\n" + kReplayUsage + "\n" + kReportNote;
 
 // `collide2d <command> --help` (or -h) anywhere among its arguments.
 bool wants_help(int argc, char** argv) {

@@ -1,5 +1,7 @@
 #include "tools/query_command.h"
 
+#include "shapes/kinds.h"
+
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -56,25 +58,28 @@ bool is_number(std::string_view word) {
   return read_number(word, value) != std::errc::invalid_argument;
 }
 
-struct ShapeGrammar {
-  std::string_view word;
-  std::size_t count;
-  std::string_view fields;
-};
-constexpr std::array<ShapeGrammar, 5> kGrammar{{
-    {"circle", 3, "cx cy r"},
-    {"ellipse", 5, "cx cy a b theta"},
-    {"rect", 5, "cx cy hx hy theta"},
-    {"capsule", 5, "cx cy h r theta"},
-    {"segment", 4, "x1 y1 x2 y2"},
-}};
+using detail::Kind;
+using detail::Kinds;
 
-Shape make_shape(std::string_view word, const std::vector<double>& v) {
-  if (word == "circle") return Circle{Vec2(v[0], v[1]), v[2]};
-  if (word == "ellipse") return Ellipse{Vec2(v[0], v[1]), v[2], v[3], v[4]};
-  if (word == "capsule") return Capsule{Vec2(v[0], v[1]), v[2], v[3], v[4]};
-  if (word == "segment") return Segment::between(Vec2(v[0], v[1]), Vec2(v[2], v[3]));
-  return Rect{Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]};
+// `<word> <numbers>` for a kind written as a row (shapes/kinds.h): exactly its row's numbers, the
+// shape made from them and checked.
+template <class T>
+Shape parse_row(const std::vector<std::string_view>& words) {
+  constexpr std::size_t count = Kind<T>::row.size();
+  const std::string word(Kind<T>::word), fields(detail::grammar_of<T>());
+  const std::string takes = word + " takes " + std::to_string(count) + " numbers (" + fields + ")";
+  std::vector<double> values;
+  for (std::size_t k = 1; k < words.size() && k <= count; ++k) values.push_back(parse_number(words[k]));
+  if (words.size() - 1 > count) {
+    const std::string_view extra = words[count + 1];
+    throw ParseError(is_number(extra) ? takes + ", got " + std::to_string(words.size() - 1)
+                                      : "unexpected '" + std::string(extra) + "' after " + word + "'s " +
+                                            std::to_string(count) + " numbers (" + fields + ")");
+  }
+  if (values.size() != count) throw ParseError(takes + ", got " + std::to_string(values.size()));
+  Shape shape = Kind<T>::from_row(values.data());
+  validate(shape);
+  return shape;
 }
 
 // `polygon cx cy theta r x0 y0 x1 y1 ...`: 3 to 8 vertices, counter-clockwise about the centre.
@@ -95,27 +100,15 @@ Shape parse_polygon(const std::vector<std::string_view>& words) {
 Shape parse_shape(std::string_view text, const char* side) {
   const std::vector<std::string_view> words = split_words(text);
   if (words.empty()) throw ParseError(std::string("shape ") + side + " is missing");
-  if (words[0] == "polygon") return parse_polygon(words);
-  for (const ShapeGrammar& g : kGrammar) {
-    if (words[0] != g.word) continue;
-    const std::string takes =
-        std::string(g.word) + " takes " + std::to_string(g.count) + " numbers (" + std::string(g.fields) + ")";
-    std::vector<double> values;
-    for (std::size_t k = 1; k < words.size() && k <= g.count; ++k) values.push_back(parse_number(words[k]));
-    if (words.size() - 1 > g.count) {
-      const std::string_view extra = words[g.count + 1];
-      throw ParseError(is_number(extra)
-                           ? takes + ", got " + std::to_string(words.size() - 1)
-                           : "unexpected '" + std::string(extra) + "' after " + std::string(g.word) + "'s " +
-                                 std::to_string(g.count) + " numbers (" + std::string(g.fields) + ")");
+  if (words[0] == Kind<ConvexPolygon>::word) return parse_polygon(words);
+  std::optional<Shape> shape;
+  Kinds::each([&]<class T>() {
+    if constexpr (detail::HasRow<T>) {
+      if (words[0] == Kind<T>::word) shape = parse_row<T>(words);
     }
-    if (values.size() != g.count) throw ParseError(takes + ", got " + std::to_string(values.size()));
-    Shape shape = make_shape(g.word, values);
-    validate(shape);
-    return shape;
-  }
-  throw ParseError("unknown shape '" + std::string(words[0]) +
-                   "' (expected circle, ellipse, rect, capsule, polygon, segment or chain)");
+  });
+  if (shape) return *shape;
+  throw ParseError("unknown shape '" + std::string(words[0]) + "' (expected " + Kinds::words("chain") + ")");
 }
 
 struct Side {
@@ -163,6 +156,24 @@ std::string_view trimmed(std::string_view s) {
 }
 
 }  // namespace
+
+std::string shape_grammar(std::string_view indent) {
+  std::array<std::string, Kinds::size> by_number;
+  Kinds::each([&]<class T>() {
+    by_number[Kind<T>::number] = std::string(Kind<T>::word) + ' ' + std::string(detail::grammar_of<T>());
+  });
+  std::string out;
+  for (std::size_t k = 0; k < by_number.size(); ++k) {
+    if (k % 3 != 0) {
+      out += " | ";
+    } else {
+      if (k > 0) out += '\n';
+      out += indent;
+    }
+    out += by_number[k];
+  }
+  return out + "\n";
+}
 
 std::optional<QueryLine> parse_query_line(std::string_view line) {
   const std::string_view body = trimmed(line);

@@ -55,6 +55,9 @@ struct QueryLine {
   std::optional<ChainSegment> chain{};
 };
 
+// The shapes of the grammar, three to a line, each line after `indent`: "circle cx cy r | ...".
+std::string shape_grammar(std::string_view indent);
+
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.
 std::optional<QueryLine> parse_query_line(std::string_view line);
 

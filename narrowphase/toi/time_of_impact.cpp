@@ -36,6 +36,7 @@
 #include "narrowphase/shared/curved/deepest_direction.h"
 #include "narrowphase/toi/quick_orientation.h"
 #include "shapes/internal.h"
+#include "shapes/kinds.h"
 
 #include <algorithm>
 #include <array>
@@ -396,8 +397,8 @@ namespace {
 // bodies differently need (partition.h).
 bool turned_round(const Shape& a, const Motion& a_motion, const Shape& b, const Motion& b_motion) {
   const auto key = [](const Shape& s, const Motion& m) {
-    return std::tuple(s.index(), center_of(s).x(), center_of(s).y(), angle_of(s), m.velocity.x(), m.velocity.y(),
-                      m.angular_velocity);
+    return std::tuple(detail::kind_number(s), center_of(s).x(), center_of(s).y(), angle_of(s), m.velocity.x(),
+                      m.velocity.y(), m.angular_velocity);
   };
   return key(b, b_motion) < key(a, a_motion);
 }

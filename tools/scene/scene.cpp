@@ -1,5 +1,7 @@
 #include "tools/scene/scene.h"
 
+#include "shapes/kinds.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -69,22 +71,39 @@ constexpr std::initializer_list<const char*> kCompoundFields = {
     "continuous", "category", "mask",  "group",    "static",           "sensor"};
 constexpr std::initializer_list<const char*> kPartFields = {"shape", "center"};
 
+// Each kind's own fields (its entry in shapes/kinds.h), and a chain body's.
 struct ShapeFields {
-  const char* kind;
-  std::initializer_list<const char*> fields;
-  const char* listed;  // for the message
+  std::string_view kind;
+  std::vector<std::string_view> fields;
 };
-constexpr ShapeFields kShapeFields[] = {
-    {"circle", {"radius"}, "radius"},
-    {"ellipse", {"a", "b", "angle"}, "a, b and angle"},
-    {"rect", {"half_extents", "angle"}, "half_extents and angle"},
-    {"capsule", {"half_length", "radius", "angle"}, "half_length, radius and angle"},
-    {"polygon", {"vertices", "radius", "angle"}, "vertices, radius and angle"},
-    {"segment", {"points"}, "points"},
-    {"chain", {"points", "loop"}, "points and loop"}};
+const std::vector<ShapeFields>& shape_fields() {
+  static const std::vector<ShapeFields> all = [] {
+    std::vector<ShapeFields> out;
+    detail::Kinds::each([&]<class T>() {
+      const auto& own = detail::Kind<T>::fields;
+      out.push_back({detail::Kind<T>::word, {own.begin(), own.end()}});
+    });
+    out.push_back({"chain", {"points", "loop"}});
+    return out;
+  }();
+  return all;
+}
 
+bool listed(const std::vector<std::string_view>& names, const std::string& key) {
+  return std::any_of(names.begin(), names.end(), [&key](std::string_view name) { return key == name; });
+}
 bool listed(std::initializer_list<const char*> names, const std::string& key) {
   return std::any_of(names.begin(), names.end(), [&key](const char* name) { return key == name; });
+}
+
+// "a, b and angle".
+std::string spelled(const std::vector<std::string_view>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    out += k == 0 ? "" : k + 1 == names.size() ? " and " : ", ";
+    out += names[k];
+  }
+  return out;
 }
 
 // Each field is one of its shape's or one of `others` (a body's, or a placed shape's): a circle's
@@ -92,15 +111,15 @@ bool listed(std::initializer_list<const char*> names, const std::string& key) {
 void reject_unknown_fields(const json& b, const std::string& kind, const std::string& field,
                            std::initializer_list<const char*> others) {
   const ShapeFields* own = nullptr;
-  for (const ShapeFields& s : kShapeFields) own = kind == s.kind ? &s : own;
+  for (const ShapeFields& s : shape_fields()) own = kind == s.kind ? &s : own;
   for (const auto& item : b.items()) {
     const std::string& key = item.key();
     if (listed(others, key) || (own != nullptr && listed(own->fields, key))) continue;
-    const bool elsewhere = std::any_of(std::begin(kShapeFields), std::end(kShapeFields),
+    const bool elsewhere = std::any_of(shape_fields().begin(), shape_fields().end(),
                                        [&key](const ShapeFields& s) { return listed(s.fields, key); });
     if (own != nullptr && elsewhere) {
       const char* article = std::string_view("aeiou").find(kind[0]) == std::string_view::npos ? "a " : "an ";
-      fail(field, article + kind + " has no field '" + key + "' (its own are " + own->listed + ")");
+      fail(field, article + kind + " has no field '" + key + "' (its own are " + spelled(own->fields) + ")");
     }
     fail(field, "unknown field '" + key + "'");
   }
@@ -166,8 +185,7 @@ Shape parse_shape(const json& b, const std::string& field, std::initializer_list
     return Capsule{center, h, r, angle};
   }
   if (kind == "polygon") return parse_polygon(b, field, center, angle);
-  fail(field + ".shape",
-       "unknown shape '" + kind + "' (expected circle, ellipse, rect, capsule, polygon, segment or chain)");
+  fail(field + ".shape", "unknown shape '" + kind + "' (expected " + detail::Kinds::words("chain") + ")");
 }
 
 // A shape the library takes: the ranges it supports.
