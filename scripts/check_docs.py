@@ -9,6 +9,7 @@ the line above it, and the test fails on a block without one:
   <!-- test: file NAME -->  the block is written to NAME, for the commands that follow to read;
   <!-- test: compile -->    a C++ program, compiled against the installed package with -Wall -Wextra
                             -Werror and run; an `output` block right after it holds what it prints;
+  <!-- test: compile collide2d-replay --> the same, linked with a module's pkg-config package too;
   <!-- test: output -->     the output of the program above;
   <!-- test: not run (WHY) --> set-up and benchmark commands, which take minutes or install
                             packages; WHY says which.
@@ -27,7 +28,7 @@ import sys
 import tempfile
 
 FENCE = re.compile(r'^```([\w+-]*)\s*$')
-MARKER = re.compile(r'^<!-- test: (run|form|file \S+|compile|output|not run \(.+\)) -->\s*$')
+MARKER = re.compile(r'^<!-- test: (run|form|file \S+|compile(?: \S+)*|output|not run \(.+\)) -->\s*$')
 PLACEHOLDERS = {'<number>': r'-?[0-9][0-9.,e+-]*', '<ms>': r'[0-9.]+', '<text>': r'.*'}
 
 
@@ -107,11 +108,12 @@ def run_page(page, args, failures):
                                     '\n'.join(shown) + (f'\n(stderr: {result.stderr.strip()})' if result.stderr else ''))
         elif marker.startswith('file '):
             (work / marker[5:]).write_text('\n'.join(lines) + '\n')
-        elif marker == 'compile':
+        elif marker.split()[0] == 'compile':
             source = work / f'snippet_{number}.cpp'
             source.write_text('\n'.join(lines) + '\n')
             binary = work / f'snippet_{number}'
-            flags = subprocess.run(['pkg-config', '--cflags', '--libs', '--static', 'collide2d'], capture_output=True,
+            flags = subprocess.run(['pkg-config', '--cflags', '--libs', '--static'] + marker.split()[1:] + ['collide2d'],
+                                   capture_output=True,
                                    text=True, env=dict(env, PKG_CONFIG_PATH=str(pathlib.Path(args.prefix) / 'lib' / 'pkgconfig')),
                                    check=True).stdout.split()
             build = subprocess.run([args.cxx, '-std=c++20', '-O1', '-Wall', '-Wextra', '-Wpedantic', '-Werror', str(source), '-o',
@@ -130,7 +132,7 @@ def run_page(page, args, failures):
                                     '\n'.join(following[2]))
         elif marker == 'output':
             previous = found[index - 1][0] if index > 0 else None
-            if previous != 'compile':
+            if not previous or previous.split()[0] != 'compile':
                 failures.append(f'{where}: an output block must follow a compiled snippet')
     return len(found)
 

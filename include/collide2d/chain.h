@@ -8,8 +8,8 @@
 /// loop clockwise the inside of a cave, and a floor runs from right to left. A vertex is convex where
 /// the chain turns left (towards its solid side) and concave where it turns right or runs straight on.
 ///
-/// Its contact with a shape (the chain segment A, the shape B) is the segment's (query.h) under
-/// three rules:
+/// Its contact with a shape (the chain segment A, the shape B; contact() in query.h) is the segment's
+/// under three rules:
 /// - one-sided: none where the shape's centre (a polygon's centroid) lies behind the segment's line
 ///   and behind the line of each convex neighbour;
 /// - shared vertices: at a convex vertex the segment and its neighbour split the plane between them
@@ -23,11 +23,8 @@
 /// Overlap, distance, proximity and queries see the segment's geometry, from either side.
 #pragma once
 
-#include <collide2d/query.h>
-#include <collide2d/ray_cast.h>
 #include <collide2d/shapes.h>
 
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -62,18 +59,5 @@ std::vector<ChainSegment> chain_segments(std::span<const Vec2> points, bool loop
 /// Whether the one-sided rule lets the shape collide with the chain segment: its centre (a polygon's
 /// centroid) lies on the line or in front of it or of a convex neighbour's.
 bool in_front(const ChainSegment& s, const Shape& shape);
-
-/// The contact of the chain segment A with the shape B, under the rules of the file comment; an
-/// empty contact (Contact::empty(), its separation infinite) where the rules give none. Validates
-/// as contact() does; throws UnsupportedPair for a segment B (level geometry never pairs).
-Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& options = {});
-/// The same, given each shape's Orientation::of(angle); nothing is validated.
-Contact contact(const ChainSegment& a, const Orientation& a_orientation, const Shape& b,
-                const Orientation& b_orientation, const ContactOptions& options = {});
-
-/// The ray's hit on the chain segment's front (ray_cast() of the segment), or nullopt for a ray
-/// from behind its line, which passes through. The contract of ray_cast().
-std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
-                                    double max_distance);
 
 }  // namespace collide2d

@@ -9,6 +9,7 @@
 /// docs/accuracy.md the bounds the tests assert.
 #pragma once
 
+#include <collide2d/chain.h>
 #include <collide2d/shapes.h>
 
 #include <algorithm>
@@ -177,5 +178,13 @@ DistanceResult boundary_distance(const Shape& a, const Shape& b);
 /// The signed distance, normal and points (see Contact). Throws std::invalid_argument for a guess
 /// that is not finite.
 Contact contact(const Shape& a, const Shape& b, const ContactOptions& options = {});
+
+/// The contact of the chain segment A with the shape B, under the rules of chain.h; an
+/// empty contact (Contact::empty(), its separation infinite) where the rules give none. Validates
+/// as contact() does; throws UnsupportedPair for a segment B (level geometry never pairs).
+Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& options = {});
+/// The same, given each shape's Orientation::of(angle); nothing is validated.
+Contact contact(const ChainSegment& a, const Orientation& a_orientation, const Shape& b,
+                const Orientation& b_orientation, const ContactOptions& options = {});
 
 }  // namespace collide2d

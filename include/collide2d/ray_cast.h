@@ -4,6 +4,7 @@
 /// the offset faces and the vertices' circles for rounded polygons and capsules.
 #pragma once
 
+#include <collide2d/chain.h>
 #include <collide2d/shapes.h>
 
 #include <optional>
@@ -21,5 +22,10 @@ struct RayShapeHit {
 /// A ray that starts in the shape (contains(shape, origin)) hits it at t = 0. Contract: a valid shape, a finite origin,
 /// a unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
 std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction, double max_distance);
+
+/// The ray's hit on the chain segment's front (ray_cast() of the segment), or nullopt for a ray
+/// from behind its line, which passes through. The contract of ray_cast().
+std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
+                                    double max_distance);
 
 }  // namespace collide2d

@@ -81,10 +81,10 @@ struct BodyPair {
   }
 };
 
-/// Two solid shapes that overlap, as of an update: a shape of body a and one of body b, a the body
-/// of the lower slot as in BodyPair, with the bodies' user ids and the shapes'. Whole on its own as
-/// BodyPair is; ordered by bodies, then shapes; compared by its handles alone.
-struct ShapePair {
+/// The ids a record of two shapes carries, as of an update: a shape of body a and one of body b, a
+/// the body of the lower slot as in BodyPair, with the bodies' user ids and the shapes'. Whole on its
+/// own as BodyPair is; records compare and order by their handles alone, bodies then shapes.
+struct PairIds {
   BodyId a;
   BodyId b;
   ShapeId shape_a;                 ///< a's shape
@@ -93,17 +93,21 @@ struct ShapePair {
   std::uint64_t user_b = 0;        ///< body b's user id
   std::uint64_t shape_user_a = 0;  ///< shape_a's user id
   std::uint64_t shape_user_b = 0;  ///< shape_b's user id
-  /// In ended() only: the pair ended because one of its shapes or bodies was removed since the
-  /// previous update.
-  bool removed = false;
-  friend bool operator==(const ShapePair& p, const ShapePair& q) {
+  friend bool operator==(const PairIds& p, const PairIds& q) {
     return p.a == q.a && p.b == q.b && p.shape_a == q.shape_a && p.shape_b == q.shape_b;
   }
-  friend std::strong_ordering operator<=>(const ShapePair& p, const ShapePair& q) {
+  friend std::strong_ordering operator<=>(const PairIds& p, const PairIds& q) {
     if (p.a != q.a) return p.a <=> q.a;
     if (p.b != q.b) return p.b <=> q.b;
     return p.shape_a != q.shape_a ? p.shape_a <=> q.shape_a : p.shape_b <=> q.shape_b;
   }
+};
+
+/// Two solid shapes that overlap, as of an update.
+struct ShapePair : PairIds {
+  /// In ended() only: the pair ended because one of its shapes or bodies was removed since the
+  /// previous update.
+  bool removed = false;
 };
 
 /// Which shapes may pair, with Box2D's semantics (b2Filter): two shapes of one non-zero group always
@@ -187,30 +191,14 @@ struct WorldOptions {
   unsigned threads = 0;
 };
 
-/// Two solid shapes apart by less than the proximity margin (named as in ShapePair).
-struct Proximity {
-  BodyId a;
-  BodyId b;
-  ShapeId shape_a;
-  ShapeId shape_b;
-  std::uint64_t user_a = 0;
-  std::uint64_t user_b = 0;
-  std::uint64_t shape_user_a = 0;
-  std::uint64_t shape_user_b = 0;
+/// Two solid shapes apart by less than the proximity margin.
+struct Proximity : PairIds {
   DistanceResult result{};  ///< the distance and closest points, point_a on shape_a
 };
 
 /// The contact of an overlapping pair of shapes, or with a speculative margin of a pair apart by at
-/// most the margin (named as in ShapePair).
-struct BodyContact {
-  BodyId a;
-  BodyId b;
-  ShapeId shape_a;
-  ShapeId shape_b;
-  std::uint64_t user_a = 0;
-  std::uint64_t user_b = 0;
-  std::uint64_t shape_user_a = 0;
-  std::uint64_t shape_user_b = 0;
+/// most the margin.
+struct BodyContact : PairIds {
   /// The solids overlap (touching included): the exact verdict of overlaps(), not the sign of a
   /// separation within rounding. False for a speculative contact.
   bool touching = true;
@@ -218,16 +206,8 @@ struct BodyContact {
 };
 
 /// A continuous body's first contact with another body within the step: one per pair of bodies, the
-/// earliest over their shapes' pairs, naming the two shapes that meet (as in ShapePair).
-struct Impact {
-  BodyId a;
-  BodyId b;
-  ShapeId shape_a;
-  ShapeId shape_b;
-  std::uint64_t user_a = 0;
-  std::uint64_t user_b = 0;
-  std::uint64_t shape_user_a = 0;
-  std::uint64_t shape_user_b = 0;
+/// earliest over their shapes' pairs, naming the two shapes that meet.
+struct Impact : PairIds {
   double t = 0.0;               ///< the first time of contact within the step, in [0, 1]
   Vec2 normal = Vec2::UnitX();  ///< from a to b
   Vec2 point = Vec2::Zero();

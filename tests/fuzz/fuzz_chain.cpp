@@ -8,6 +8,7 @@
 // A polyline's chain segments are each valid.
 #include <collide2d/chain.h>
 #include <collide2d/kernels.h>
+#include <collide2d/ray_cast.h>
 #include "fuzz_input.h"
 
 #include <cmath>
