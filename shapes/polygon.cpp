@@ -221,7 +221,7 @@ void validate(const ConvexPolygon& p) {
 Aabb aabb(const ConvexPolygon& p) { return detail::polygon_box(p, Orientation::of(p.angle)); }
 
 Aabb detail::polygon_box(const ConvexPolygon& p, const Orientation& o) {
-  const Rot rot{o.c, o.s};
+  const Rot rot = Rot::of(o);
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec2& v : p.vertices()) {
     const Vec2 w = rot.apply(v);

@@ -1,6 +1,9 @@
-// Private helper: a planar rotation stored as its cosine and sine, generic over the scalar so that
-// the extended-precision fallbacks in narrowphase/ reuse it.
+// Private: a planar rotation stored as its cosine and sine, generic over the scalar so that the
+// extended-precision fallbacks in narrowphase/ reuse it. The public Orientation (shapes.h) is the
+// same pair kept by callers; of() is the one conversion from it.
 #pragma once
+
+#include <collide2d/shapes.h>
 
 #include <cmath>
 
@@ -16,6 +19,7 @@ struct Rotation {
     using std::sin;
     return {cos(static_cast<Real>(angle)), sin(static_cast<Real>(angle))};
   }
+  static Rotation of(const Orientation& o) { return {static_cast<Real>(o.c), static_cast<Real>(o.s)}; }
   // Rotates (x, y) by this rotation.
   template <class V>
   V apply(const V& v) const {

@@ -173,7 +173,7 @@ Aabb oriented_box(const Capsule& c, const Orientation& o) {
 Aabb oriented_box(const ConvexPolygon& p, const Orientation& o) { return detail::polygon_box(p, o); }
 
 Aabb oriented_box(const Segment& s, const Orientation& o) {
-  const Vec2 to = Rot{o.c, o.s}.apply(s.end);
+  const Vec2 to = Rot::of(o).apply(s.end);
   return detail::around(s.center, to.cwiseMin(0.0).cwiseAbs(), to.cwiseMax(0.0), to.cwiseAbs());
 }
 
@@ -239,7 +239,7 @@ Vec2 support(const Capsule& c, const Vec2& d) { return support(c, Rot::of(c.angl
 Vec2 support(const Segment& s, const Vec2& d) { return support(s, Rot::of(s.angle), d); }
 
 Vec2 support(const Shape& s, const Orientation& o, const Vec2& d) {
-  return std::visit([&](const auto& shape) { return support(shape, Rot{o.c, o.s}, d); }, s);
+  return std::visit([&](const auto& shape) { return support(shape, Rot::of(o), d); }, s);
 }
 
 Vec2 support(const Shape& s, const Vec2& d) {

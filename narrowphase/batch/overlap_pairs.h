@@ -40,7 +40,7 @@ struct PairRef {
 // dispatcher's key order.
 inline RectEllipseLanes<double> lanes_of(const PairRef<Rect, Ellipse>& p) {
   const Orientation &ro = p.a_orientation, &eo = p.b_orientation;
-  return rect_ellipse_lanes(rect_ellipse_frame<double>(p.a, {ro.c, ro.s}, p.b, {eo.c, eo.s}));
+  return rect_ellipse_lanes(rect_ellipse_frame<double>(p.a, Rotation<double>::of(ro), p.b, Rotation<double>::of(eo)));
 }
 inline RectRectLanes<double> lanes_of(const PairRef<Rect, Rect>& p) {
   return precedes(p.b, p.a) ? rect_rect_lanes(p.b, p.b_orientation, p.a, p.a_orientation)

@@ -19,13 +19,13 @@ namespace collide2d {
 namespace {
 
 using detail::cross;
+using Rot = detail::Rotation<double>;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 // How far past a cone's edge a normal may lie and still be in it: the rounding of unit normals.
 constexpr double kTurn = 64 * kEpsilon;
 
-Vec2 turned(const Orientation& o, const Vec2& v) { return {o.c * v.x() - o.s * v.y(), o.s * v.x() + o.c * v.y()}; }
 Vec2 right_of(const Vec2& d) { return {d.y(), -d.x()}; }
 
 // The chain segment in the world: its points, its normal n (its direction turned clockwise, towards
@@ -45,13 +45,14 @@ Faces sides_of(const ChainSegment& s, const Orientation& o) {
   const Vec2 in = -s.ghost1, out = s.ghost2 - end;  // the neighbours' directions, in the segment's frame
   Faces f;
   f.p1 = s.segment.center;
-  const Vec2 d = turned(o, end);
+  const Rot rot = Rot::of(o);
+  const Vec2 d = rot.apply(end);
   f.p2 = f.p1 + d;
   f.n = right_of(d);
   f.convex1 = cross(in, end) > 0.0;
   f.convex2 = cross(end, out) > 0.0;
-  if (f.convex1) f.n0 = right_of(turned(o, in));
-  if (f.convex2) f.n2 = right_of(turned(o, out));
+  if (f.convex1) f.n0 = right_of(rot.apply(in));
+  if (f.convex2) f.n2 = right_of(rot.apply(out));
   return f;
 }
 
@@ -66,7 +67,7 @@ Faces unit(Faces f, const ChainSegment& s) {
 
 // The point whose side decides: a shape's centre, a polygon's centroid (its centre may lie outside).
 Vec2 reference_point(const Shape& shape, const Orientation& o) {
-  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->center + turned(o, p->outline->centroid);
+  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->center + Rot::of(o).apply(p->outline->centroid);
   return center_of(shape);
 }
 

@@ -16,7 +16,8 @@ Contact contact_ellipse_ellipse(const Ellipse& a, const Ellipse& b, const Contac
 Contact contact_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                                 const Orientation& b_orientation, const ContactOptions& options) {
   using Pair = detail::SupportPair<double, detail::EllipseSupport<double>, detail::EllipseSupport<double>>;
-  const Pair p = Pair::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  const Pair p =
+      Pair::of(a, detail::Rotation<double>::of(a_orientation), b, detail::Rotation<double>::of(b_orientation));
   const double stop = detail::separation_limit(p.scale, options);
   const detail::Deepest<double> d = detail::deepest_direction(p, p.from_world(options.guess), stop);
   if (detail::beyond_limit(d.at.s, p.scale, options)) return Contact::beyond(d.at.s);

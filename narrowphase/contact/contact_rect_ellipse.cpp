@@ -249,8 +249,8 @@ Contact contact_rect_ellipse(const Rect& a, const Ellipse& b, const ContactOptio
 // options.guess is not needed: the quarters are settled in closed form, from no starting direction.
 Contact contact_rect_ellipse(const Rect& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation, const ContactOptions& options) {
-  const detail::RectEllipse p =
-      detail::RectEllipse::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  const detail::RectEllipse p = detail::RectEllipse::of(a, detail::Rotation<double>::of(a_orientation), b,
+                                                        detail::Rotation<double>::of(b_orientation));
   return detail::rect_ellipse_contact(p, a.center, b.center, options);
 }
 

@@ -59,7 +59,7 @@ template <class A>
 template <class A, int Slots>
 Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
                     const ContactOptions& options) {
-  const Rotation<double> rot{a_orientation.c, a_orientation.s};
+  const Rotation<double> rot = Rotation<double>::of(a_orientation);
   const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
   if (has_limit(options)) {  // as the cores' contact
     if (const auto gap = discs_beyond(c, o.reach + b.radius, options)) return Contact::beyond(*gap);

@@ -11,7 +11,7 @@ namespace collide2d {
 
 DistanceResult distance_circle_ellipse(const Circle& c, const Ellipse& e) {
   const Orientation eo = Orientation::of(e.angle);
-  const detail::Rotation<double> rot{eo.c, eo.s};
+  const detail::Rotation<double> rot = detail::Rotation<double>::of(eo);
   const detail::CircleEllipseLanes<double> f = detail::circle_ellipse_lanes(c, e, eo);
   const Vec2 p(f.px, f.py);
   const PointEllipseResult pe = distance_point_ellipse(e.a, e.b, p);

@@ -306,8 +306,8 @@ SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Ell
 
 SolverReport detail::robust_distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation,
                                                      const Ellipse& b, const Orientation& b_orientation) {
-  std::optional<EllipsePair<double>> pair =
-      EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  std::optional<EllipsePair<double>> pair = EllipsePair<double>::of(a, detail::Rotation<double>::of(a_orientation), b,
+                                                                    detail::Rotation<double>::of(b_orientation));
   return distance_of(a, b, pair);
 }
 

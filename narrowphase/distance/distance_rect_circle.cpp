@@ -12,7 +12,7 @@ namespace collide2d {
 
 DistanceResult distance_rect_circle(const Rect& r, const Circle& c) {
   const Orientation ro = Orientation::of(r.angle);
-  const detail::Rotation<double> rot{ro.c, ro.s};
+  const detail::Rotation<double> rot = detail::Rotation<double>::of(ro);
   const detail::RectCircleLanes<double> f = detail::rect_circle_lanes(r, ro, c);
   const Vec2 center(f.px, f.py);
   const Vec2 nearest = detail::clamp_to_box(center, r.half_extents);

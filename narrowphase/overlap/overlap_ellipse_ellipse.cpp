@@ -152,8 +152,8 @@ bool near_overlap(const Ellipse& a, const Orientation& a_orientation, const Elli
   const auto cubic = detail::ellipse_cubic_verdicts(detail::Scalar{},
                                                     detail::ellipse_ellipse_lanes(a, a_orientation, b, b_orientation));
   if (cubic.separated || cubic.overlap) return cubic.overlap;
-  std::optional<detail::EllipsePair<double>> pair =
-      detail::EllipsePair<double>::of(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
+  std::optional<detail::EllipsePair<double>> pair = detail::EllipsePair<double>::of(
+      a, detail::Rotation<double>::of(a_orientation), b, detail::Rotation<double>::of(b_orientation));
   return detail::ellipse_contact(a, b, pair, nullptr, true).overlap;
 }
 

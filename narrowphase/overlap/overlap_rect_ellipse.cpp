@@ -42,7 +42,9 @@ detail::FilterVerdict detail::overlap_rect_ellipse_filter(const Rect& r, const E
 }
 
 bool overlap_rect_ellipse(const Rect& r, const Orientation& ro, const Ellipse& e, const Orientation& eo) {
-  return detail::minkowski_overlap(detail::rect_ellipse_frame<double>(r, {ro.c, ro.s}, e, {eo.c, eo.s}), r, e);
+  return detail::minkowski_overlap(
+      detail::rect_ellipse_frame<double>(r, detail::Rotation<double>::of(ro), e, detail::Rotation<double>::of(eo)), r,
+      e);
 }
 
 bool overlap_rect_ellipse(const Rect& r, const Ellipse& e) {

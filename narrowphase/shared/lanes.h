@@ -245,11 +245,11 @@ inline CircleCircleLanes<double> circle_circle_lanes(const Circle& a, const Circ
   return {d.x(), d.y(), a.radius, b.radius};
 }
 inline RectCircleLanes<double> rect_circle_lanes(const Rect& r, const Orientation& ro, const Circle& c) {
-  const Vec2 p = Rotation<double>{ro.c, ro.s}.apply_inverse(Vec2(c.center - r.center));
+  const Vec2 p = Rotation<double>::of(ro).apply_inverse(Vec2(c.center - r.center));
   return {p.x(), p.y(), r.half_extents.x(), r.half_extents.y(), c.radius};
 }
 inline CircleEllipseLanes<double> circle_ellipse_lanes(const Circle& c, const Ellipse& e, const Orientation& eo) {
-  const Vec2 p = Rotation<double>{eo.c, eo.s}.apply_inverse(Vec2(c.center - e.center));
+  const Vec2 p = Rotation<double>::of(eo).apply_inverse(Vec2(c.center - e.center));
   return {p.x(), p.y(), e.a, e.b, c.radius};
 }
 // The verdict for a circle–ellipse lane the filter left uncertain: the point–ellipse root

@@ -83,7 +83,7 @@ void validate(const Shape& s, const Motion& m, const char* which) {
 }
 
 // A world direction in a shape's own axes, with its kept orientation.
-Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<double>{o.c, o.s}.apply_inverse(n); }
+Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<double>::of(o).apply_inverse(n); }
 
 // The support function of a shape along a unit direction given in its own axes (a segment's from its
 // first point).
@@ -234,7 +234,7 @@ struct Probe {
 template <class SA, class SB, class X, class Y>
 std::optional<Probe> climb(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const Vec2& guess) {
   using Pair = detail::SupportPair<double, SA, SB>;
-  const Pair p = Pair::of(a, {oa.c, oa.s}, b, {ob.c, ob.s});
+  const Pair p = Pair::of(a, detail::Rotation<double>::of(oa), b, detail::Rotation<double>::of(ob));
   int evaluations = 0;
   const auto d = detail::certified_climb(p, p.from_world(guess), detail::climb_margin(p), evaluations, 3e-2);
   if (!d || !(d->at.s > 0)) return std::nullopt;

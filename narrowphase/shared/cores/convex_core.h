@@ -114,7 +114,7 @@ struct Placement {
 
   // Where a shape posed at `center` and `o` goes in the frame posed at `frame_center` and `frame`.
   static Placement of(const Vec2& center, const Orientation& o, const Vec2& frame_center, const Orientation& frame) {
-    const Rotation<double> r{o.c, o.s}, f{frame.c, frame.s};
+    const Rotation<double> r = Rotation<double>::of(o), f = Rotation<double>::of(frame);
     return {r.relative_to(f), f.apply_inverse(Vec2(center - frame_center))};
   }
   bool moves() const { return rot.c != 1.0 || rot.s != 0.0 || offset != Vec2::Zero(); }
@@ -179,7 +179,8 @@ struct CorePair {
 
   template <class A, class B>
   static CorePair of(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-    CorePair p{core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), {ao.c, ao.s}, a.center};
+    CorePair p{core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), Rotation<double>::of(ao),
+               a.center};
     set_axes(p.a);
     set_axes(p.b);
     return p;
@@ -229,7 +230,8 @@ struct CoreEllipse {
 
   template <class A>
   static CoreEllipse of(const A& shape, const Orientation& ao, const Ellipse& e, const Orientation& eo) {
-    return {core_of(shape, Placement::of(shape.center, ao, e.center, eo)), e.a, e.b, {eo.c, eo.s}, e.center};
+    return {core_of(shape, Placement::of(shape.center, ao, e.center, eo)), e.a, e.b, Rotation<double>::of(eo),
+            e.center};
   }
   Vec2 world_point(const Vec2& p) const { return e_center + e_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return e_rot.apply(d); }

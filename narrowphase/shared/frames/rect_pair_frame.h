@@ -22,7 +22,7 @@ struct RectPairFrame {
 // The overlap test's inputs (overlap_rect_rect-inl.h) for one pair.
 inline RectRectLanes<double> rect_rect_lanes(const Rect& a, const Orientation& ao, const Rect& b,
                                              const Orientation& bo) {
-  const RectPairFrame f(a, {ao.c, ao.s}, b, {bo.c, bo.s});
+  const RectPairFrame f(a, Rotation<double>::of(ao), b, Rotation<double>::of(bo));
   return {f.b_center.x(),     f.b_center.y(),     f.b_rel.c,          f.b_rel.s,
           a.half_extents.x(), a.half_extents.y(), b.half_extents.x(), b.half_extents.y()};
 }
