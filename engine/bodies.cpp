@@ -178,7 +178,7 @@ void WorldState::unloose(std::uint32_t index) {
 }
 
 // Its broad-phase box, after a new pose or margin.
-void WorldState::place(std::uint32_t index) {
+void WorldState::refresh_box(std::uint32_t index) {
   Part& p = parts_[index];
   if (p.is_static) {
     static_tree_.move(p.leaf, broad_box(p));
@@ -191,10 +191,10 @@ void WorldState::place(std::uint32_t index) {
 
 // A shape where its body's pose puts it: its world angle is the body's plus its own, and its
 // orientation that angle's (the kernels' contract), not the two rotations composed.
-void WorldState::pose_part(std::uint32_t index, const Pose& at, const Orientation& turn) {
+void WorldState::place_part(std::uint32_t index, const Pose& at, const Orientation& turn) {
   Part& p = parts_[index];
   if (p.at_origin) {
-    move_shape(p.shape, at.position, at.angle);
+    place(p.shape, at.position, at.angle);
   } else {
     p.shape = placed(locals_[index], at, turn);
   }
@@ -208,9 +208,9 @@ void WorldState::set_local(std::uint32_t index, const Shape& local) {
   Part& p = parts_[index];
   const Body& b = bodies_[p.body.index];
   locals_[index] = local;
-  p.shape = local;  // its sizes: pose_part() moves a shape at the origin as it is
+  p.shape = local;  // its sizes: place_part() moves a shape at the origin as it is
   p.at_origin = at_origin(local);
-  pose_part(index, b.pose, Orientation::of(b.pose.angle));
+  place_part(index, b.pose, Orientation::of(b.pose.angle));
   p.start = pose_of(p.shape);
 }
 
@@ -351,17 +351,17 @@ void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   validate(local);
   require_static_for(local, p.is_static, "set_local_shape");
   set_local(id.index, local);
-  place(id.index);
+  refresh_box(id.index);
 }
 
 void WorldState::move_to(BodyId id, const Vec2& position, double angle) {
   require_not_querying("move_to");
-  pose(body(id), position, angle, "move_to", false);
+  place_body(body(id), position, angle, "move_to", false);
 }
 
 void WorldState::set_pose(BodyId id, const Vec2& position, double angle) {
   require_not_querying("set_pose");
-  pose(body(id), position, angle, "set_pose", true);
+  place_body(body(id), position, angle, "set_pose", true);
 }
 
 void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
@@ -370,12 +370,12 @@ void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
   require_finite(shift.x(), "move_by shift x");
   require_finite(shift.y(), "move_by shift y");
   require_finite(turn, "move_by turn");
-  pose(b, b.pose.position + shift, b.pose.angle + turn, "move_by", false);
+  place_body(b, b.pose.position + shift, b.pose.angle + turn, "move_by", false);
 }
 
 // The body and its shapes at a pose, checked first so that a refusal, named after the call, leaves
 // it as it was. A teleport starts a continuous body's step there.
-void WorldState::pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport) {
+void WorldState::place_body(Body& b, const Vec2& position, double angle, const char* call, bool teleport) {
   // The names are built on a refusal only: poses are set every frame, and a frame allocates nothing.
   if (!(std::abs(position.x()) <= kMaxMagnitude && std::abs(position.y()) <= kMaxMagnitude))
     validate_point(position, (std::string(call) + " position").c_str());
@@ -387,9 +387,9 @@ void WorldState::pose(Body& b, const Vec2& position, double angle, const char* c
   const Orientation turn = alone ? Orientation{} : Orientation::of(angle);
   for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) {
     Part& p = parts_[k];
-    pose_part(k, b.pose, turn);
+    place_part(k, b.pose, turn);
     if (teleport && p.continuous) p.start = pose_of(p.shape);
-    place(k);
+    refresh_box(k);
   }
 }
 
@@ -430,7 +430,7 @@ void WorldState::set_proximity_margin(double margin) {
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
   for (std::uint32_t k = 0; k < parts_.size(); ++k) {
-    if (parts_[k].alive) place(k);
+    if (parts_[k].alive) refresh_box(k);
   }
 }
 
@@ -441,11 +441,11 @@ void WorldState::set_proximity_margin(double margin) {
 Pose pose_of(const Shape& shape) { return {center_of(shape), angle_of(shape)}; }
 
 Shape placed(const Shape& local, const Pose& pose, const Orientation& turn) {
-  if (detail::at_origin(local)) return detail::posed(local, pose.position, pose.angle);
+  if (detail::at_origin(local)) return detail::placed_at(local, pose.position, pose.angle);
   const Vec2 offset = center_of(local);
   const Vec2 center =
       pose.position + Vec2(turn.c * offset.x() - turn.s * offset.y(), turn.s * offset.x() + turn.c * offset.y());
-  return detail::posed(local, center, pose.angle + angle_of(local));
+  return detail::placed_at(local, center, pose.angle + angle_of(local));
 }
 
 bool should_pair(const Filter& a, const Filter& b) {

@@ -26,7 +26,7 @@ Aabb swept(const Pose& start, const Shape& end) {
   const Vec2 c0 = start.position, c1 = center_of(end);
   const double r = reach_of(end);
   return merged(
-      merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(posed(end, start.position, start.angle))),
+      merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(placed_at(end, start.position, start.angle))),
       aabb(end));
 }
 
@@ -48,7 +48,7 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
     }
     p.continuous = continuous;
     p.start = pose_of(p.shape);
-    place(k);
+    refresh_box(k);
   });
 }
 
@@ -58,7 +58,7 @@ void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
   const Part& x = parts_[a];
   const Part& y = parts_[b];
   const auto from = [](const Part& p) {
-    return p.continuous ? posed(p.shape, p.start.position, p.start.angle) : p.shape;
+    return p.continuous ? placed_at(p.shape, p.start.position, p.start.angle) : p.shape;
   };
   const auto motion = [](const Part& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
   // A chain's segment stops only what comes at it from the front (chain.h's one-sided rule, at the
@@ -93,7 +93,7 @@ void WorldState::keep_earliest_impacts() {
 void WorldState::begin_steps() {
   for (const std::uint32_t index : continuous_) {
     parts_[index].start = pose_of(parts_[index].shape);
-    place(index);
+    refresh_box(index);
   }
 }
 

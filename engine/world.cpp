@@ -18,7 +18,7 @@ World& World::operator=(World&&) noexcept = default;
 
 BodyId World::add(const Shape& shape, const BodyDef& def) {
   validate(shape);  // so that a refusal names the shape's own fields
-  const ShapeDef only{.shape = detail::posed(shape, Vec2::Zero(), 0.0)};
+  const ShapeDef only{.shape = detail::placed_at(shape, Vec2::Zero(), 0.0)};
   return state_->add({center_of(shape), angle_of(shape)}, std::span(&only, 1), def);
 }
 BodyId World::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {

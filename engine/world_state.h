@@ -33,6 +33,7 @@
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 
+#include "engine/internal.h"
 #include "engine/thread_pool.h"
 #include "narrowphase/internal.h"
 
@@ -268,9 +269,9 @@ class WorldState {
   Aabb broad_box(const Part& p) const;
   void enter(std::uint32_t index);
   void leave(std::uint32_t index);
-  void place(std::uint32_t index);
-  void pose(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
-  void pose_part(std::uint32_t index, const Pose& at, const Orientation& turn);
+  void refresh_box(std::uint32_t index);
+  void place_body(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
+  void place_part(std::uint32_t index, const Pose& at, const Orientation& turn);
   void set_local(std::uint32_t index, const Shape& local);
   void unloose(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
@@ -317,25 +318,8 @@ class WorldState {
 };
 
 // Shared by the files of the World.
-// Moves the shape to a centre and angle, in place (a circle keeps no angle); inline, as it runs for
-// every shape posed.
-inline void move_shape(Shape& shape, const Vec2& center, double angle) {
-  std::visit(
-      [&](auto& s) {
-        s.center = center;
-        if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Circle>) s.angle = angle;
-      },
-      shape);
-}
 // Whether a shape placed in a body's frame sits at its origin with no angle of its own.
 inline bool at_origin(const Shape& local) { return center_of(local) == Vec2::Zero() && angle_of(local) == 0.0; }
-// The shape moved so.
-inline Shape posed(Shape shape, const Vec2& center, double angle) {
-  move_shape(shape, center, angle);
-  return shape;
-}
-void require_finite(double value, const char* what);
-void require_margin(double value, const char* what);
 Aabb grown(const Aabb& box, double by);
 // The box that holds every pose of a step from `start` to the shape `end` (continuous.cpp).
 Aabb swept(const Pose& start, const Shape& end);

@@ -29,6 +29,22 @@ auto cross(const Eigen::MatrixBase<P>& p, const Eigen::MatrixBase<Q>& q) {
   return p[0] * q[1] - p[1] * q[0];
 }
 
+// Places the shape at a centre and angle, in place (a kind with no angle, a circle, keeps none);
+// inline, as it runs for every shape a World poses.
+inline void place(Shape& shape, const Vec2& center, double angle) {
+  std::visit(
+      [&](auto& s) {
+        s.center = center;
+        if constexpr (requires { s.angle; }) s.angle = angle;
+      },
+      shape);
+}
+// The shape placed so.
+inline Shape placed_at(Shape shape, const Vec2& center, double angle) {
+  place(shape, center, angle);
+  return shape;
+}
+
 // A polygon's support point (support()) given its rotation.
 Vec2 support_turned(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d);
 

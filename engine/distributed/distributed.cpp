@@ -5,7 +5,8 @@
 // bodies' previous reach boxes and slabs, whether it was overlapping then.
 #include <collide2d/distributed.h>
 
-#include "engine/world_state.h"
+#include "engine/internal.h"
+#include "shapes/internal.h"
 #include "shapes/kinds.h"
 
 #include <algorithm>
@@ -313,7 +314,7 @@ void DistributedWorld::move_to(std::uint64_t id, const Vec2& position, double an
   if (it == state_->owned.end()) throw std::out_of_range("body " + std::to_string(id) + " is not this rank's");
   validate_point(position, "move_to position");
   detail::require_finite(angle, "move_to angle");
-  detail::move_shape(it->second.record.shape, position, angle);
+  detail::place(it->second.record.shape, position, angle);
 }
 
 void DistributedWorld::remove(std::uint64_t id) {
