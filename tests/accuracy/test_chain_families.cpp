@@ -6,7 +6,7 @@
 // distance at the segments' own scale. Sunk, the contact is the least way out of the hill's corner,
 // no deeper than the way the shape was sunk. Its normal lies in the cone, and at least one of the
 // two segments gives it.
-#include "flat_families.h"
+#include "core_families.h"
 #include "mp_reference.h"
 
 #include <collide2d/chain.h>

@@ -3,7 +3,7 @@
 // the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
 // against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
 // and on the degenerate configurations of segments and faces.
-#include "flat_families.h"
+#include "core_families.h"
 #include "mp_reference.h"
 
 #include <collide2d/kernels.h>
@@ -27,7 +27,7 @@ namespace {
 
 using testing::cases_of;
 using testing::Flat;
-using testing::flat_families;
+using testing::core_families;
 using testing::FlatCase;
 using testing::FlatFamily;
 
@@ -192,7 +192,7 @@ Contact contact_of(const Shape& a, const Shape& b, const ContactOptions& options
 
 // Two capsules on one line: their cores' only separating directions are the line itself (an end of
 // each) and its normal, which a segment's faces alone would miss.
-TEST(FlatPairs, CapsulesInLine) {
+TEST(CorePairs, CapsulesInLine) {
   const Capsule a{Vec2(0, 0), 1.0, 0.5, 0.0};
   for (const double gap : {0.5, 1e-9, 0.0, -1e-9, -0.5}) {
     const Capsule b{Vec2(3 + gap, 0), 1.0, 0.5, 0.0};
@@ -217,7 +217,7 @@ TEST(FlatPairs, CapsulesInLine) {
 // A box resting on a wider box, gap 1e-9 either way: two points, the upper box's bottom corners,
 // on the lower box's top face (face 2 of a rectangle in these pairs, the 4-gon of
 // ConvexPolygon::box), with the same ids whatever the gap and a slide along the face.
-TEST(FlatPairs, BoxRestingOnABox) {
+TEST(CorePairs, BoxRestingOnABox) {
   const Rect floor{Vec2(0, 0), Vec2(2, 1), 0.0};
   for (const double gap : {1e-9, 0.0, -1e-9}) {
     for (const double slide : {-0.3, 0.0, 0.7}) {
@@ -254,7 +254,7 @@ TEST(FlatPairs, BoxRestingOnABox) {
 // A rounded core far from an ellipse (offsets to 1e40 of its size), and against a needle ellipse
 // of aspect 1e28 across its long axis: the scaled frame's quadratic is then huge, and with it its
 // rounding, which must not decide the radius's reach.
-TEST(FlatPairs, RoundedCoresFarFromAnEllipseOrAcrossANeedle) {
+TEST(CorePairs, RoundedCoresFarFromAnEllipseOrAcrossANeedle) {
   const Ellipse e{Vec2(-8, -8), 8, 8, -8};
   for (double offset = 1e3; offset <= 1e40; offset *= 10) {
     for (const Shape& a : {Shape(Capsule{Vec2(-offset, 4.375), 4.375, 4.375, 4.375}),
@@ -276,7 +276,7 @@ TEST(FlatPairs, RoundedCoresFarFromAnEllipseOrAcrossANeedle) {
 
 // A triangle's tip exactly on a face, a capsule of radius 1e-9 of its length flat on a face, a
 // capsule of length 1e-9 of its radius against a circle: known separations.
-TEST(FlatPairs, KnownSeparations) {
+TEST(CorePairs, KnownSeparations) {
   const Rect floor{Vec2(0, 0), Vec2(2, 1), 0.0};
   const std::vector<Vec2> wedge = {{0, 0}, {1, 2}, {-1, 2}};
   const ConvexPolygon tip = ConvexPolygon::of(wedge).at(Vec2(0.25, 1));
@@ -304,9 +304,9 @@ TEST(FlatPairs, KnownSeparations) {
 // separation, normal, points and feature, on every polygon–, capsule– and segment–circle family; with the contact
 // limited, the same contact or both beyond the limit, each by a lower bound of the separation (the
 // two may find different ones).
-TEST(FlatPairs, CircleKernelsAreTheCoresContact) {
+TEST(CorePairs, CircleKernelsAreTheCoresContact) {
   int compared = 0;
-  for (const FlatFamily& f : flat_families()) {
+  for (const FlatFamily& f : core_families()) {
     const bool flat = is_one_of(testing::kPolygonKinds, f.a) || is_one_of(testing::kCapsuleKinds, f.a);
     if (f.b != Flat::circle || !(flat || f.a == Flat::segment)) {
       continue;
@@ -347,7 +347,7 @@ TEST(FlatPairs, CircleKernelsAreTheCoresContact) {
   EXPECT_GT(compared, 200);
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(testing::flat_families()),
+INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(testing::core_families()),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace

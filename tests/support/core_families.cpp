@@ -1,4 +1,4 @@
-#include "flat_families.h"
+#include "core_families.h"
 
 #include <Eigen/Geometry>
 
@@ -100,7 +100,7 @@ Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) 
 
 void PrintTo(const FlatFamily& f, std::ostream* os) { *os << f.name; }
 
-std::vector<FlatFamily> flat_families() {
+std::vector<FlatFamily> core_families() {
   const Flat kinds[] = {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle};
   const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
   std::vector<FlatFamily> out;

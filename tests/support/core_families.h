@@ -56,7 +56,7 @@ void PrintTo(const FlatFamily& f, std::ostream* os);
 // off (1e9), small (1e-6) and large (1e6); faces touching curves, vertices and capsules' sides at
 // those gaps, and parallel faces (a capsule lying on a segment); the degenerate kinds (triangles,
 // octagons, kinked polygons, needles and stubs) touching at those gaps.
-std::vector<FlatFamily> flat_families();
+std::vector<FlatFamily> core_families();
 
 struct FlatCase {
   Shape a, b;

@@ -5,7 +5,7 @@
 // and of ellipse pairs' candidate pairs in batches of ragged lengths, and lists of different
 // lengths refused.
 #include "batch_testing.h"
-#include "flat_families.h"
+#include "core_families.h"
 #include "hard_cases.h"
 
 #include <collide2d/batch.h>
@@ -244,7 +244,7 @@ bool left_uncertain(const Pairs<A, B>& p, std::size_t k) {
 template <class A, class B>
 void check_flat(std::span<const Flat> as, std::span<const Flat> bs) {
   Pairs<A, B> p;
-  for (FlatFamily f : flat_families()) {
+  for (FlatFamily f : core_families()) {
     if (!is_one_of(as, f.a) || !is_one_of(bs, f.b)) continue;
     f.cases = 240;
     for (const FlatCase& c : cases_of(f)) p.add(std::get<A>(c.a), std::get<B>(c.b));
