@@ -208,7 +208,7 @@ BENCHMARK(box2d<Capsule, Ellipse>)
     ->Name("box2d_collide_polygons/capsule_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
 
-// A segment (Box2D's two-sided b2EdgeShape) against the flat kinds, a circle and an ellipse.
+// A segment (Box2D's two-sided b2EdgeShape) against the core kinds, a circle and an ellipse.
 BENCHMARK(ours_shape<Segment, ConvexPolygon>)->Name("ours/segment_polygon")->Apply(bench::polygon_workloads);
 BENCHMARK(ours_shape<Segment, ConvexPolygon, true>)
     ->Name("ours/segment_polygon_limited")
@@ -274,7 +274,7 @@ void box2d_chain(benchmark::State& state) {
   });
 }
 
-// A chain segment (Box2D's b2ChainShape child edge) against the flat kinds, a circle and an ellipse.
+// A chain segment (Box2D's b2ChainShape child edge) against the core kinds, a circle and an ellipse.
 BENCHMARK(ours_chain<ConvexPolygon>)->Name("ours/chain_polygon_limited")->Apply(bench::polygon_workloads);
 BENCHMARK(box2d_chain<ConvexPolygon>)
     ->Name("box2d_collide_edge_and_polygon/chain_polygon")

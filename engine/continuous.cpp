@@ -25,9 +25,9 @@ Motion step_of(const Pose& start, const Shape& end) {
 Aabb swept(const Pose& start, const Shape& end) {
   const Vec2 c0 = start.position, c1 = center_of(end);
   const double r = reach_of(end);
-  return merged(
-      merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r}, aabb(placed_at(end, start.position, start.angle))),
-      aabb(end));
+  return merged(merged({c0.cwiseMin(c1).array() - r, c0.cwiseMax(c1).array() + r},
+                       aabb(placed_at(end, start.position, start.angle))),
+                aabb(end));
 }
 
 void WorldState::set_continuous(BodyId id, bool continuous) {

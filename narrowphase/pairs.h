@@ -34,7 +34,7 @@ Orientation orientation_of(const T& x) {
   }
 }
 
-// The queries a row does not support: the boundary distance of every pair with a flat shape.
+// The queries a row does not support: the boundary distance of every pair with a core shape.
 struct NoBoundary {
   template <class X, class Y>
   [[noreturn]] static DistanceResult boundary(const X&, const Y&) {

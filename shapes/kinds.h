@@ -129,7 +129,7 @@ struct KindList {
   }
 };
 
-// The library's kinds: flat shapes first, as they take the curved ones in their frames.
+// The library's kinds: core shapes first, as they take the curved ones in their frames.
 using Kinds = KindList<Rect, ConvexPolygon, Capsule, Segment, Circle, Ellipse>;
 
 template <class T>

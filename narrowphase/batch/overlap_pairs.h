@@ -60,7 +60,7 @@ inline EllipseEllipseLanes<double> lanes_of(const PairRef<Ellipse, Ellipse>& p) 
                             : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 
-// A flat shape's core as the lanes take it: every vertex slot (those past the count repeating the
+// A core shape's core as the lanes take it: every vertex slot (those past the count repeating the
 // first), the count and the radius.
 inline const std::array<Vec2, kMaxPolygonVertices>& slots_of(const ConvexPolygon& p) { return p.outline->vertices; }
 inline std::array<Vec2, 2> slots_of(const Capsule& c) { return segment_of(c); }
@@ -69,7 +69,7 @@ inline int count_of(const Capsule&) { return 2; }
 inline double radius_of(const ConvexPolygon& p) { return p.radius(); }
 inline double radius_of(const Capsule& c) { return c.radius; }
 
-// A flat shape's core placed in the frame of an ellipse of semi-axes a, b posed at `frame_center` and
+// A core shape's core placed in the frame of an ellipse of semi-axes a, b posed at `frame_center` and
 // `frame`.
 template <class A, std::size_t N = std::tuple_size_v<std::decay_t<decltype(slots_of(std::declval<A>()))>>>
 CoreEllipseLanes<double, N> core_ellipse_lanes(const A& shape, const Orientation& o, const Vec2& frame_center,
@@ -94,7 +94,7 @@ auto lanes_of(const PairRef<A, Circle>& p) {
   return core_ellipse_lanes(p.a, p.a_orientation, p.b.center, Orientation{}, p.b.radius, p.b.radius);
 }
 
-// Pair k's disc lanes (disc_filter-inl.h, convex_core.h's disc_lanes) for a flat shape A, two
+// Pair k's disc lanes (disc_filter-inl.h, convex_core.h's disc_lanes) for a core shape A, two
 // shapes of one kind in the dispatcher's key order.
 template <class A, class B>
 auto disc_lanes_of(const PairRef<A, B>& p) {
@@ -112,12 +112,12 @@ inline bool exact(const PairRef<Ellipse, Ellipse>& p) {
   return precedes(p.b, p.a) ? overlap_ellipse_ellipse(p.b, p.b_orientation, p.a, p.a_orientation)
                             : overlap_ellipse_ellipse(p.a, p.a_orientation, p.b, p.b_orientation);
 }
-// A flat shape against an ellipse: the one-off test whole.
+// A core shape against an ellipse: the one-off test whole.
 template <class A>
 bool exact(const PairRef<A, Ellipse>& p) {
   return core_ellipse_overlap(CoreEllipse::of(p.a, p.a_orientation, p.b, p.b_orientation));
 }
-// Two flat shapes, or a flat shape and a circle: the one-off test whole, in the dispatcher's order.
+// Two core shapes, or a core shape and a circle: the one-off test whole, in the dispatcher's order.
 template <class A, class B>
 requires(on_cores<A, B> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {

@@ -1,5 +1,5 @@
 // A capsule and a circle: the centre against the capsule's segment, two faces one each way, on the
-// core kernel the flat shapes share (core_circle.h).
+// core kernel the core shapes share (core_circle.h).
 #include "narrowphase/contact/core_circle.h"
 
 #include <array>

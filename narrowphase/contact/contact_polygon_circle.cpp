@@ -1,5 +1,5 @@
 // A convex polygon and a circle: the centre against the polygon's faces in its frame (E. Catto,
-// Box2D's b2CollidePolygonAndCircle), on the core kernel the flat shapes share (core_circle.h).
+// Box2D's b2CollidePolygonAndCircle), on the core kernel the core shapes share (core_circle.h).
 #include "narrowphase/contact/core_circle.h"
 
 #include <array>

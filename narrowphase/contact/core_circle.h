@@ -55,7 +55,7 @@ template <class A>
 // else the face's end beyond which c lies (the core's separation from a point falls away on either
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
 // leaves that end not the core's farthest point towards c, the convex cores' contact decides
-// (narrowphase/shared/cores/convex_core.h), as it does for every other flat pair.
+// (narrowphase/shared/cores/convex_core.h), as it does for every other core pair.
 template <class A, int Slots>
 Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
                     const ContactOptions& options) {

@@ -1,9 +1,9 @@
-// Private: the disc test that settles most pairs of a flat shape (a polygon or a capsule) before its
+// Private: the disc test that settles most pairs of a core shape (a polygon or a capsule) before its
 // vertices are read, written once over lanes (lanes.h): the one-off overlap tests run it first on
 // one pair (disc_verdict, disc_filter.cpp, called from query.cpp), the batch (overlap_batch.cpp) on
 // Highway vectors of pairs, so that the batch's verdicts are the one-off's.
 //
-// A flat shape lies within the disc of its reach about its centre and, where its core holds the
+// A core shape lies within the disc of its reach about its centre and, where its core holds the
 // centre, holds the disc of its inner radius about it (PolygonOutline::inner; a circle is both
 // discs). Each test clears its bound by 16 epsilon of the
 // pair's size, far more than the rounding of the exact tests it stands in for.
@@ -17,7 +17,7 @@
 #define COLLIDE2D_DISC_FILTER_INL_H_
 #endif
 
-// A flat shape A against an ellipse: A's centre o inside the ellipse; else the ellipse's point q
+// A core shape A against an ellipse: A's centre o inside the ellipse; else the ellipse's point q
 // on the ray from its centre through o within A's inner disc, or, o outside the ellipse, the tangent
 // line at q (the ellipse lies behind it) beyond A's reach. (A centre inside the ellipse that A's core
 // does not hold, as a polygon's whose outline lies off its origin, or a segment's first point,
@@ -49,7 +49,7 @@ detail::LaneVerdicts<decltype(V() < V())> disc_verdicts(D d, const detail::DiscE
   return out;
 }
 
-// Two flat shapes, or a flat shape and a circle.
+// Two core shapes, or a core shape and a circle.
 template <class D, class V>
 detail::LaneVerdicts<decltype(V() < V())> disc_verdicts(D d, const detail::DiscPairLanes<V>& f) {
   const V zero = Set(d, 0.0);

@@ -160,7 +160,7 @@ struct CircleEllipseLanes {
   std::array<V, kFields> fields() const { return {px, py, a, b, r}; }
 };
 
-// A flat shape against an ellipse as the disc test takes it (disc_filter-inl.h): the shape's centre
+// A core shape against an ellipse as the disc test takes it (disc_filter-inl.h): the shape's centre
 // in the ellipse's frame, its reach and inner radius, the semi-axes.
 template <class V>
 struct DiscEllipseLanes {
@@ -172,7 +172,7 @@ struct DiscEllipseLanes {
   std::array<V, kFields> fields() const { return {ox, oy, reach, inner, a, b}; }
 };
 
-// Two flat shapes, or a flat shape and a circle, as the disc test takes them: B's centre in A's
+// Two core shapes, or a core shape and a circle, as the disc test takes them: B's centre in A's
 // frame, and each shape's reach and inner radius (a circle's radius both).
 template <class V>
 struct DiscPairLanes {
@@ -184,7 +184,7 @@ struct DiscPairLanes {
   std::array<V, kFields> fields() const { return {dx, dy, a_reach, a_inner, b_reach, b_inner}; }
 };
 
-// A flat shape's core (convex_core.h) against an ellipse, as the batched overlap takes it: the core's
+// A core shape's core (convex_core.h) against an ellipse, as the batched overlap takes it: the core's
 // placement in the ellipse's frame, its N vertex slots in its own frame (every slot set, those past
 // the count repeating the first; 2 for a segment), their count, its radius and the semi-axes.
 template <class V, std::size_t N = kMaxPolygonVertices>

@@ -24,7 +24,7 @@
 namespace collide2d {
 namespace {
 
-using testing::Flat;
+using testing::Form;
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
@@ -61,11 +61,11 @@ TEST(ChainFamilies, GrazingAConvexVertex) {
   const auto random_kind = [&](int kind) -> Shape {
     switch (kind) {
       case 0:
-        return testing::random_shape(Flat::rect, 1.0, 4.0, rng);
+        return testing::random_shape(Form::rect, 1.0, 4.0, rng);
       case 1:
-        return testing::random_shape(Flat::polygon, 1.0, 4.0, rng);
+        return testing::random_shape(Form::polygon, 1.0, 4.0, rng);
       case 2:
-        return testing::random_shape(Flat::capsule, 1.0, 4.0, rng);
+        return testing::random_shape(Form::capsule, 1.0, 4.0, rng);
       case 3:
         return Circle{Vec2::Zero(), 0.25 + u01(rng)};
       default:

@@ -26,10 +26,10 @@ namespace collide2d {
 namespace {
 
 using testing::cases_of;
-using testing::Flat;
 using testing::core_families;
+using testing::CoreFamily;
 using testing::FlatCase;
-using testing::FlatFamily;
+using testing::Form;
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
@@ -98,10 +98,10 @@ double angle_between(const Vec2& u, const Vec2& v) {
 }
 double ulps_of(const Vec2& p) { return 8 * kU * p.cwiseAbs().maxCoeff(); }
 
-class FlatFamilies : public ::testing::TestWithParam<FlatFamily> {};
+class FlatFamilies : public ::testing::TestWithParam<CoreFamily> {};
 
 TEST_P(FlatFamilies, MatchReference) {
-  const FlatFamily& f = GetParam();
+  const CoreFamily& f = GetParam();
   double worst_sep = 0, worst_known = 0, worst_points = 0, worst_normal = 0;
   int k = 0, normals = 0, apart = 0, overlapping = 0;
   for (const FlatCase& c : cases_of(f)) {
@@ -181,7 +181,7 @@ TEST_P(FlatFamilies, MatchReference) {
     }
   }
   std::printf(
-      "[flat] %-28s worst separation %.1f u  known gap %.1f u  points %.1f u  normal %.1e rad (%d)  apart %d "
+      "[cores] %-28s worst separation %.1f u  known gap %.1f u  points %.1f u  normal %.1e rad (%d)  apart %d "
       "overlapping %d\n",
       f.name.c_str(), worst_sep / kU, worst_known / kU, worst_points / kU, worst_normal, normals, apart, overlapping);
 }
@@ -306,9 +306,9 @@ TEST(CorePairs, KnownSeparations) {
 // two may find different ones).
 TEST(CorePairs, CircleKernelsAreTheCoresContact) {
   int compared = 0;
-  for (const FlatFamily& f : core_families()) {
-    const bool flat = is_one_of(testing::kPolygonKinds, f.a) || is_one_of(testing::kCapsuleKinds, f.a);
-    if (f.b != Flat::circle || !(flat || f.a == Flat::segment)) {
+  for (const CoreFamily& f : core_families()) {
+    const bool cored = is_one_of(testing::kPolygonKinds, f.a) || is_one_of(testing::kCapsuleKinds, f.a);
+    if (f.b != Form::circle || !(cored || f.a == Form::segment)) {
       continue;
     }
     for (const FlatCase& c : cases_of(f)) {

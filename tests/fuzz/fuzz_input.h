@@ -18,8 +18,8 @@
 namespace collide2d::fuzz {
 
 // `any`: a circle, an ellipse or a rectangle, as the bytes choose (the corpora were written so);
-// `flat`: a capsule or a polygon; `all`: any of those five; `segment`: a segment.
-enum class Kind { circle, ellipse, rect, any, capsule, polygon, flat, all, segment };
+// `cored`: a capsule or a polygon; `all`: any of those five; `segment`: a segment.
+enum class Kind { circle, ellipse, rect, any, capsule, polygon, cored, all, segment };
 
 class Input {
  public:
@@ -48,8 +48,8 @@ class Input {
   // Each read in its own statement: the order of evaluation of function arguments differs between
   // compilers, and a crash found with clang must decode the same with g++.
   Shape shape(Kind wanted = Kind::any) {
-    if (wanted == Kind::flat || wanted == Kind::all) {
-      const int chosen = byte() % (wanted == Kind::flat ? 2 : 5);
+    if (wanted == Kind::cored || wanted == Kind::all) {
+      const int chosen = byte() % (wanted == Kind::cored ? 2 : 5);
       constexpr Kind kinds[] = {Kind::capsule, Kind::polygon, Kind::circle, Kind::ellipse, Kind::rect};
       return shape(kinds[chosen]);
     }

@@ -302,7 +302,7 @@ void corpus(const std::filesystem::path& root) {
   for (const auto& p : files(root / "polygon")) {
     const std::string bytes = read(p);
     fuzz::Input in(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-    const Shape a = in.shape(fuzz::Kind::flat), b = in.shape(fuzz::Kind::all);
+    const Shape a = in.shape(fuzz::Kind::cored), b = in.shape(fuzz::Kind::all);
     if (fuzz::valid(a) && fuzz::valid(b)) pair_queries("corpus/polygon", a, b, false);
   }
   for (const auto& p : files(root / "query_line")) {

@@ -12,7 +12,7 @@
 
 namespace collide2d::testing {
 
-const char* name_of(Flat k) {
+const char* name_of(Form k) {
   constexpr const char* names[] = {"rect",     "polygon", "rounded", "capsule", "circle", "ellipse",
                                    "triangle", "octagon", "kinked",  "needle",  "stub",   "segment"};
   return names[static_cast<int>(k)];
@@ -57,7 +57,7 @@ std::vector<Vec2> kinked(std::vector<Vec2> v, double size, std::mt19937_64& rng)
 
 }  // namespace
 
-Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) {
+Shape random_shape(Form kind, double size, double aspect, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double angle = 2 * kPi * unit(rng);
   const double thin = size / std::exp(std::log(aspect) * unit(rng));
@@ -66,52 +66,52 @@ Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng) 
   };
   const auto count = [&](int least, int most) { return least + static_cast<int>(unit(rng) * (most - least + 1)); };
   switch (kind) {
-    case Flat::rect:
+    case Form::rect:
       return Rect{Vec2::Zero(), Vec2(size, thin), angle};
-    case Flat::circle:
+    case Form::circle:
       return Circle{Vec2::Zero(), size};
-    case Flat::ellipse:
+    case Form::ellipse:
       return Ellipse{Vec2::Zero(), size, thin, angle};
-    case Flat::capsule: {
+    case Form::capsule: {
       const bool long_one = unit(rng) < 0.5;
       return Capsule{Vec2::Zero(), long_one ? size : thin, long_one ? thin : size, angle};
     }
-    case Flat::needle:
+    case Form::needle:
       return Capsule{Vec2::Zero(), size, 1e-9 * size, angle};
-    case Flat::stub:
+    case Form::stub:
       return Capsule{Vec2::Zero(), 1e-9 * size, size, angle};
-    case Flat::segment:
+    case Form::segment:
       return Segment{Vec2(-size * std::cos(angle), -size * std::sin(angle)), Vec2(2 * size, 0), angle};
-    case Flat::polygon:
+    case Form::polygon:
       return polygon(polygon_around(count(3, 8), size, thin, rng), 0.0);
-    case Flat::rounded: {
+    case Form::rounded: {
       const std::vector<Vec2> v = polygon_around(count(3, 8), size, thin, rng);
       return polygon(v, thin * (0.05 + unit(rng)));
     }
-    case Flat::triangle:
+    case Form::triangle:
       return polygon(polygon_around(3, size, thin, rng), 0.0);
-    case Flat::octagon:
+    case Form::octagon:
       return polygon(polygon_around(8, size, thin, rng), 0.0);
-    case Flat::kinked:
+    case Form::kinked:
       return polygon(kinked(polygon_around(count(3, 7), size, thin, rng), size, rng), 0.0);
   }
   return Circle{};
 }
 
-void PrintTo(const FlatFamily& f, std::ostream* os) { *os << f.name; }
+void PrintTo(const CoreFamily& f, std::ostream* os) { *os << f.name; }
 
-std::vector<FlatFamily> core_families() {
-  const Flat kinds[] = {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle};
+std::vector<CoreFamily> core_families() {
+  const Form kinds[] = {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::circle};
   const std::vector<double> near = {1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 1e-12, -1e-12, 0.0};
-  std::vector<FlatFamily> out;
-  const auto add = [&out](Flat a, Flat b, const std::string& what, double size, double offset, double aspect,
+  std::vector<CoreFamily> out;
+  const auto add = [&out](Form a, Form b, const std::string& what, double size, double offset, double aspect,
                           const std::vector<double>& deltas, Touch touch = Touch::any) {
     const std::string name = std::string(name_of(a)) + "_" + name_of(b) + "_" + what;
     out.push_back({name, a, b, size, offset, aspect, deltas, 24, touch});
   };
-  for (const Flat a : kinds) {
-    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse}) {
-      if ((a == Flat::circle && b == Flat::circle) || (a == Flat::circle && b == Flat::ellipse)) continue;
+  for (const Form a : kinds) {
+    for (const Form b : {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::circle, Form::ellipse}) {
+      if ((a == Form::circle && b == Form::circle) || (a == Form::circle && b == Form::ellipse)) continue;
       add(a, b, "touching", 1.0, 0.0, 4.0, near);
       add(a, b, "deep", 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5});
       add(a, b, "slivers", 1.0, 0.0, 1e6, near);
@@ -120,33 +120,33 @@ std::vector<FlatFamily> core_families() {
       add(a, b, "large", 1e6, 0.0, 4.0, near);
     }
   }
-  const Flat faced[] = {Flat::rect,    Flat::polygon, Flat::rounded, Flat::capsule, Flat::triangle,
-                        Flat::octagon, Flat::kinked,  Flat::needle,  Flat::stub};
-  for (const Flat a : faced) {
-    for (const Flat b : {Flat::ellipse, Flat::circle, Flat::polygon, Flat::capsule}) {
+  const Form faced[] = {Form::rect,    Form::polygon, Form::rounded, Form::capsule, Form::triangle,
+                        Form::octagon, Form::kinked,  Form::needle,  Form::stub};
+  for (const Form a : faced) {
+    for (const Form b : {Form::ellipse, Form::circle, Form::polygon, Form::capsule}) {
       add(a, b, "faces", 1.0, 0.0, 4.0, near, Touch::face);
     }
   }
-  for (const Flat a : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::needle}) {
-    for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::kinked}) {
+  for (const Form a : {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::needle}) {
+    for (const Form b : {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::kinked}) {
       add(a, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
     }
   }
-  for (const Flat a : {Flat::triangle, Flat::octagon, Flat::kinked, Flat::needle, Flat::stub}) {
-    for (const Flat b : {Flat::ellipse, Flat::circle, Flat::polygon, Flat::capsule, Flat::needle}) {
+  for (const Form a : {Form::triangle, Form::octagon, Form::kinked, Form::needle, Form::stub}) {
+    for (const Form b : {Form::ellipse, Form::circle, Form::polygon, Form::capsule, Form::needle}) {
       add(a, b, "touching", 1.0, 0.0, 4.0, near);
     }
   }
-  for (const Flat b : {Flat::rect, Flat::polygon, Flat::rounded, Flat::capsule, Flat::circle, Flat::ellipse,
-                       Flat::triangle, Flat::kinked, Flat::needle, Flat::stub}) {
-    add(Flat::segment, b, "touching", 1.0, 0.0, 4.0, near);
-    add(Flat::segment, b, "deep", 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5});
-    add(Flat::segment, b, "slivers", 1.0, 0.0, 1e6, near);
-    add(Flat::segment, b, "far", 1.0, 1e9, 4.0, near);
-    add(Flat::segment, b, "small", 1e-6, 1e6, 4.0, near);
-    add(Flat::segment, b, "large", 1e6, 0.0, 4.0, near);
-    add(Flat::segment, b, "faces", 1.0, 0.0, 4.0, near, Touch::face);
-    add(Flat::segment, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
+  for (const Form b : {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::circle, Form::ellipse,
+                       Form::triangle, Form::kinked, Form::needle, Form::stub}) {
+    add(Form::segment, b, "touching", 1.0, 0.0, 4.0, near);
+    add(Form::segment, b, "deep", 1.0, 0.0, 4.0, {-0.1, -0.5, -0.9, -1.5});
+    add(Form::segment, b, "slivers", 1.0, 0.0, 1e6, near);
+    add(Form::segment, b, "far", 1.0, 1e9, 4.0, near);
+    add(Form::segment, b, "small", 1e-6, 1e6, 4.0, near);
+    add(Form::segment, b, "large", 1e6, 0.0, 4.0, near);
+    add(Form::segment, b, "faces", 1.0, 0.0, 4.0, near, Touch::face);
+    add(Form::segment, b, "parallel", 1.0, 0.0, 4.0, near, Touch::parallel);
   }
   return out;
 }
@@ -204,7 +204,7 @@ double direction_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 
 }  // namespace
 
-std::vector<FlatCase> cases_of(const FlatFamily& f) {
+std::vector<FlatCase> cases_of(const CoreFamily& f) {
   std::mt19937_64 rng(std::hash<std::string>{}(f.name));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<FlatCase> out;

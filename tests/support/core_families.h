@@ -16,13 +16,13 @@ namespace collide2d::testing {
 // polygon: 3 to 8 vertices; triangle and octagon: 3 and 8; kinked: a polygon with a vertex 1e-12
 // of the size off the line of its neighbours; needle: a capsule of radius 1e-9 of its half length;
 // stub: a capsule of half length 1e-9 of its radius; segment: a segment of half length the size.
-enum class Flat { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub, segment };
-const char* name_of(Flat k);
+enum class Form { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub, segment };
+const char* name_of(Form k);
 
 // The flat kinds held in a ConvexPolygon and in a Capsule.
-inline constexpr Flat kPolygonKinds[] = {Flat::polygon, Flat::rounded, Flat::triangle, Flat::octagon, Flat::kinked};
-inline constexpr Flat kCapsuleKinds[] = {Flat::capsule, Flat::needle, Flat::stub};
-inline bool is_one_of(std::span<const Flat> kinds, Flat k) {
+inline constexpr Form kPolygonKinds[] = {Form::polygon, Form::rounded, Form::triangle, Form::octagon, Form::kinked};
+inline constexpr Form kCapsuleKinds[] = {Form::capsule, Form::needle, Form::stub};
+inline bool is_one_of(std::span<const Form> kinds, Form k) {
   return std::find(kinds.begin(), kinds.end(), k) != kinds.end();
 }
 
@@ -35,11 +35,11 @@ enum class Touch { any, face, parallel };
 // A random shape of the kind about the origin, of size about `size` (its longest half-size) and
 // aspect up to `aspect`: a polygon has 3 to 8 vertices on an ellipse of that aspect, a rounded one
 // a radius of up to its thin half-size.
-Shape random_shape(Flat kind, double size, double aspect, std::mt19937_64& rng);
+Shape random_shape(Form kind, double size, double aspect, std::mt19937_64& rng);
 
-struct FlatFamily {
+struct CoreFamily {
   std::string name;
-  Flat a, b;
+  Form a, b;
   double size = 1.0;
   double offset = 0.0;
   double aspect = 4.0;
@@ -48,15 +48,15 @@ struct FlatFamily {
   Touch touch = Touch::any;
 };
 
-void PrintTo(const FlatFamily& f, std::ostream* os);
+void PrintTo(const CoreFamily& f, std::ostream* os);
 
-// Every pair of a flat kind A with a flat kind or an ellipse B (not circle–circle or
+// Every pair of a core kind A with a core kind or an ellipse B (not circle–circle or
 // circle–ellipse, which have families of their own, nor segment–segment, which never pair in a
 // World): touching at gaps of +-1e-3 ... 1e-12 and 0 of the size, deep, slivers (aspect 1e6), far
 // off (1e9), small (1e-6) and large (1e6); faces touching curves, vertices and capsules' sides at
 // those gaps, and parallel faces (a capsule lying on a segment); the degenerate kinds (triangles,
 // octagons, kinked polygons, needles and stubs) touching at those gaps.
-std::vector<FlatFamily> core_families();
+std::vector<CoreFamily> core_families();
 
 struct FlatCase {
   Shape a, b;
@@ -66,6 +66,6 @@ struct FlatCase {
 // B placed so that its support point along -n lies at A's along n plus delta n (delta in units of
 // the size), n chosen as the family's touch says: for delta >= 0 the pair's distance is delta, to
 // the rounding of B's centre.
-std::vector<FlatCase> cases_of(const FlatFamily& f);
+std::vector<FlatCase> cases_of(const CoreFamily& f);
 
 }  // namespace collide2d::testing

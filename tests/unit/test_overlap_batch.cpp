@@ -237,14 +237,14 @@ bool left_uncertain(const Pairs<A, B>& p, std::size_t k) {
   return true;
 }
 
-// A flat shape of the kinds `as` against one of the kinds `bs`: the flat families (touching at gaps
+// A flat shape of the kinds `as` against one of the kinds `bs`: the core families (touching at gaps
 // of +-1e-3 to 1e-12 of the size and 0, deep, slivers of aspect 1e6, far off, tiny and huge), and
 // candidate pairs at random sizes, half of them at a gap of either sign down to 1e-16 along a random
 // direction.
 template <class A, class B>
-void check_flat(std::span<const Flat> as, std::span<const Flat> bs) {
+void check_cores(std::span<const Form> as, std::span<const Form> bs) {
   Pairs<A, B> p;
-  for (FlatFamily f : core_families()) {
+  for (CoreFamily f : core_families()) {
     if (!is_one_of(as, f.a) || !is_one_of(bs, f.b)) continue;
     f.cases = 240;
     for (const FlatCase& c : cases_of(f)) p.add(std::get<A>(c.a), std::get<B>(c.b));
@@ -253,7 +253,7 @@ void check_flat(std::span<const Flat> as, std::span<const Flat> bs) {
   std::mt19937_64 rng(37);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (std::size_t k = 0; p.size() < family_pairs + 300'000; ++k) {
-    const auto random = [&](std::span<const Flat> kinds) {
+    const auto random = [&](std::span<const Form> kinds) {
       return random_shape(*(kinds.begin() + k % kinds.size()), 0.05 + u(rng), std::pow(10.0, 3 * u(rng)), rng);
     };
     const Shape a = random(as);
@@ -270,23 +270,23 @@ void check_flat(std::span<const Flat> as, std::span<const Flat> bs) {
   on_every_target([&](const char* target) { EXPECT_EQ(mismatches_in_ragged_batches(p, target), 0) << target; });
 }
 
-constexpr Flat kEllipse[] = {Flat::ellipse};
-constexpr Flat kCircle[] = {Flat::circle};
+constexpr Form kEllipse[] = {Form::ellipse};
+constexpr Form kCircle[] = {Form::circle};
 
 TEST(OverlapBatch, PolygonEllipsePairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, Ellipse>(testing::kPolygonKinds, kEllipse);
+  check_cores<ConvexPolygon, Ellipse>(testing::kPolygonKinds, kEllipse);
 }
 TEST(OverlapBatch, CapsuleEllipsePairsMatchTheOneOffKernel) {
-  check_flat<Capsule, Ellipse>(testing::kCapsuleKinds, kEllipse);
+  check_cores<Capsule, Ellipse>(testing::kCapsuleKinds, kEllipse);
 }
 TEST(OverlapBatch, PolygonCirclePairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, Circle>(testing::kPolygonKinds, kCircle);
+  check_cores<ConvexPolygon, Circle>(testing::kPolygonKinds, kCircle);
 }
 TEST(OverlapBatch, CapsuleCirclePairsMatchTheOneOffKernel) {
-  check_flat<Capsule, Circle>(testing::kCapsuleKinds, kCircle);
+  check_cores<Capsule, Circle>(testing::kCapsuleKinds, kCircle);
 }
 TEST(OverlapBatch, PolygonPairsMatchTheOneOffKernel) {
-  check_flat<ConvexPolygon, ConvexPolygon>(testing::kPolygonKinds, testing::kPolygonKinds);
+  check_cores<ConvexPolygon, ConvexPolygon>(testing::kPolygonKinds, testing::kPolygonKinds);
 }
 
 TEST(OverlapBatch, ListsOfDifferentLengthsAreRefusedBeforeAnyWrite) {

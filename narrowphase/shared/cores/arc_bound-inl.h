@@ -1,4 +1,4 @@
-// Private: the bound that spares a vertex of a flat core its roots against an ellipse
+// Private: the bound that spares a vertex of a convex core its roots against an ellipse
 // (core_ellipse.cpp), written once over lanes (lanes.h): core_ellipse.cpp runs it on one arc of
 // directions, face_supports.cpp on every vertex cone of a polygon at once, with the same IEEE
 // operations in the same order.

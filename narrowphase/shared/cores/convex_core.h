@@ -1,4 +1,4 @@
-// Private: the flat shapes as rounded convex cores, the method that settles the pairs of them that
+// Private: the core shapes as rounded convex cores, the method that settles the pairs of them that
 // have no kernel of their own, and the one that settles such a shape against an ellipse.
 //
 // A rectangle, a convex polygon, a capsule and a circle are each a convex core (a polygon of 3 to 8
@@ -40,7 +40,7 @@
 
 namespace collide2d::detail {
 
-// A flat shape's (or a circle's) two discs about its centre: the reach, the largest |vertex| plus
+// A core shape's (or a circle's) two discs about its centre: the reach, the largest |vertex| plus
 // the radius, and the inner radius, that of a disc within the solid (-1 where the core does not hold
 // the centre).
 struct Discs {
@@ -171,7 +171,7 @@ Core core_of(const Capsule& c, const Placement& at);
 Core core_of(const Segment& s, const Placement& at);
 Core core_of(const Circle& c, const Placement& at);
 
-// A pair of flat shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.
+// A pair of core shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.
 struct CorePair {
   Core a, b;
   Rotation<double> a_rot;
@@ -220,7 +220,7 @@ Contact core_contact(const CorePair& p, const ContactOptions& options);
 // point of B's core lies over the face.
 Contact core_face_contact(const CorePair& p, int i, const ContactOptions& options);
 
-// A flat shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
+// A core shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
 // ellipse is centred at the origin with semi-axis a along x and b along y.
 struct CoreEllipse {
   Core core;

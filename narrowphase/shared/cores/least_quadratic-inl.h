@@ -1,4 +1,4 @@
-// Private: the point of a flat shape's core least in an ellipse's quadratic (x/a)^2 + (y/b)^2,
+// Private: the point of a core shape's core least in an ellipse's quadratic (x/a)^2 + (y/b)^2,
 // written once over lanes (lanes.h): core_ellipse.cpp runs it on one pair, the batched overlap
 // (overlap_batch.cpp) on Highway vectors of pairs, with the same IEEE operations in the same order,
 // so that the batch's certain verdicts are the one-off test's.
