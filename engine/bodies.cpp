@@ -41,7 +41,7 @@ bool WorldState::contains(BodyId id) const {
 }
 
 bool WorldState::contains(ShapeId id) const {
-  return id.index < parts_.size() && parts_[id.index].alive && parts_[id.index].generation == id.generation;
+  return id.index < entries_.size() && entries_[id.index].alive && entries_[id.index].generation == id.generation;
 }
 
 namespace {
@@ -78,29 +78,31 @@ const WorldState::Body& WorldState::body(BodyId id) const {
 
 WorldState::Body& WorldState::body(BodyId id) { return const_cast<Body&>(std::as_const(*this).body(id)); }
 
-const WorldState::Part& WorldState::part(ShapeId id) const {
-  if (contains(id)) return parts_[id.index];
-  const bool in_range = id.index < parts_.size();
-  refuse("shape", id.index, id.generation, in_range, in_range ? parts_[id.index].generation : 0);
+const WorldState::ShapeEntry& WorldState::entry(ShapeId id) const {
+  if (contains(id)) return entries_[id.index];
+  const bool in_range = id.index < entries_.size();
+  refuse("shape", id.index, id.generation, in_range, in_range ? entries_[id.index].generation : 0);
 }
 
-WorldState::Part& WorldState::part(ShapeId id) { return const_cast<Part&>(std::as_const(*this).part(id)); }
+WorldState::ShapeEntry& WorldState::entry(ShapeId id) {
+  return const_cast<ShapeEntry&>(std::as_const(*this).entry(id));
+}
 
 void WorldState::set_filter(BodyId id, const Filter& filter) {
   require_not_querying("set_filter");
   Body& b = body(id);
   b.filter = filter;
-  each_part(b, [&](std::uint32_t k) { parts_[k].filter = filter; });
+  each_entry(b, [&](std::uint32_t k) { entries_[k].filter = filter; });
 }
 
 void WorldState::set_filter(ShapeId id, const Filter& filter) {
   require_not_querying("set_filter");
-  part(id).filter = filter;
+  entry(id).filter = filter;
 }
 
 void WorldState::set_sensor(ShapeId id, bool sensor) {
   require_not_querying("set_sensor");
-  part(id).sensor = sensor;
+  entry(id).sensor = sensor;
 }
 
 void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate) {
@@ -109,8 +111,8 @@ void WorldState::set_pair_predicate(std::function<bool(BodyId, BodyId)> predicat
 }
 
 bool WorldState::passes(std::uint32_t a, std::uint32_t b) const {
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
+  const ShapeEntry& x = entries_[a];
+  const ShapeEntry& y = entries_[b];
   return should_pair(x.filter, y.filter) && (!pair_predicate_ || pair_predicate_(x.body, y.body));
 }
 
@@ -124,7 +126,7 @@ std::vector<BodyId> WorldState::bodies() const {
 
 std::vector<ShapeId> WorldState::shapes(BodyId id) const {
   std::vector<ShapeId> out;
-  each_part(body(id), [&](std::uint32_t k) { out.push_back(shape_id(k)); });
+  each_entry(body(id), [&](std::uint32_t k) { out.push_back(shape_id(k)); });
   return out;
 }
 
@@ -132,16 +134,18 @@ Aabb WorldState::broad_box(const Aabb& box) const {
   return grown(box, 0.5 * std::max(proximity_margin_, speculative_margin_));
 }
 
-Aabb WorldState::broad_box(const Part& p) const { return broad_box(p.continuous ? swept(p.start, p.shape) : p.box); }
+Aabb WorldState::broad_box(const ShapeEntry& p) const {
+  return broad_box(p.continuous ? swept(p.start, p.shape) : p.box);
+}
 
 Aabb WorldState::broad_box(ShapeId id) const {
-  const Part& p = part(id);
+  const ShapeEntry& p = entry(id);
   return p.is_static ? broad_box(p) : broad_.fat_box(p.proxy);
 }
 
 // Into the broad phase of its body's kind: the static tree, or the sweep and prune and the moving tree.
 void WorldState::enter(std::uint32_t index) {
-  Part& p = parts_[index];
+  ShapeEntry& p = entries_[index];
   if (p.is_static) {
     p.leaf = static_tree_.insert(broad_box(p), index);
     statics_changed_ = true;
@@ -151,12 +155,12 @@ void WorldState::enter(std::uint32_t index) {
   if (p.proxy >= part_of_.size()) part_of_.resize(static_cast<std::size_t>(p.proxy) + 1, kNone);
   part_of_[p.proxy] = index;
   p.leaf = moving_tree_.insert(broad_.fat_box(p.proxy), index);
-  p.loose = -1;
+  p.stale_at = -1;
   p.queried = kNowhere;
 }
 
 void WorldState::leave(std::uint32_t index) {
-  Part& p = parts_[index];
+  ShapeEntry& p = entries_[index];
   if (p.is_static) {
     static_tree_.remove(p.leaf);
     statics_changed_ = true;
@@ -165,34 +169,34 @@ void WorldState::leave(std::uint32_t index) {
   broad_.remove(p.proxy);
   part_of_[p.proxy] = kNone;
   moving_tree_.remove(p.leaf);
-  if (p.loose >= 0) unloose(index);
+  if (p.stale_at >= 0) drop_stale(index);
   p.statics.clear();
 }
 
-void WorldState::unloose(std::uint32_t index) {
-  const auto at = static_cast<std::size_t>(parts_[index].loose);
-  loose_[at] = loose_.back();
-  parts_[loose_[at]].loose = static_cast<std::int32_t>(at);
-  loose_.pop_back();
-  parts_[index].loose = -1;
+void WorldState::drop_stale(std::uint32_t index) {
+  const auto at = static_cast<std::size_t>(entries_[index].stale_at);
+  stale_leaves_[at] = stale_leaves_.back();
+  entries_[stale_leaves_[at]].stale_at = static_cast<std::int32_t>(at);
+  stale_leaves_.pop_back();
+  entries_[index].stale_at = -1;
 }
 
 // Its broad-phase box, after a new pose or margin.
 void WorldState::refresh_box(std::uint32_t index) {
-  Part& p = parts_[index];
+  ShapeEntry& p = entries_[index];
   if (p.is_static) {
     static_tree_.move(p.leaf, broad_box(p));
     statics_changed_ = true;
-  } else if (broad_.move(p.proxy, broad_box(p)) && p.loose < 0) {
-    p.loose = static_cast<std::int32_t>(loose_.size());
-    loose_.push_back(index);
+  } else if (broad_.move(p.proxy, broad_box(p)) && p.stale_at < 0) {
+    p.stale_at = static_cast<std::int32_t>(stale_leaves_.size());
+    stale_leaves_.push_back(index);
   }
 }
 
 // A shape where its body's pose puts it: its world angle is the body's plus its own, and its
 // orientation that angle's (the kernels' contract), not the two rotations composed.
-void WorldState::place_part(std::uint32_t index, const Pose& at, const Orientation& turn) {
-  Part& p = parts_[index];
+void WorldState::place_entry(std::uint32_t index, const Pose& at, const Orientation& turn) {
+  ShapeEntry& p = entries_[index];
   if (p.at_origin) {
     place(p.shape, at.position, at.angle);
   } else {
@@ -205,21 +209,21 @@ void WorldState::place_part(std::uint32_t index, const Pose& at, const Orientati
 // The shape placed anew in its body's frame, posed where the body is; a continuous body's step for it
 // starts there.
 void WorldState::set_local(std::uint32_t index, const Shape& local) {
-  Part& p = parts_[index];
+  ShapeEntry& p = entries_[index];
   const Body& b = bodies_[p.body.index];
   locals_[index] = local;
-  p.shape = local;  // its sizes: place_part() moves a shape at the origin as it is
+  p.shape = local;  // its sizes: place_entry() moves a shape at the origin as it is
   p.at_origin = at_origin(local);
-  place_part(index, b.pose, Orientation::of(b.pose.angle));
+  place_entry(index, b.pose, Orientation::of(b.pose.angle));
   p.start = pose_of(p.shape);
 }
 
 // A new shape of body `body`, last in its list, posed and in the broad phase; def.shape is valid.
-std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
-  const std::uint32_t index = take_slot(parts_, free_parts_);
+std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
+  const std::uint32_t index = take_slot(entries_, free_entries_);
   Body& b = bodies_[body];
-  Part& p = parts_[index];  // a reused slot keeps the generation free_part() gave it
-  locals_.resize(parts_.size());
+  ShapeEntry& p = entries_[index];  // a reused slot keeps the generation free_entry() gave it
+  locals_.resize(entries_.size());
   p.body = body_id(body);
   p.body_user_id = b.user_id;
   p.next = kNone;
@@ -233,20 +237,20 @@ std::uint32_t WorldState::new_part(std::uint32_t body, const ShapeDef& def) {
   p.alive = true;
   set_local(index, def.shape);
   if (b.continuous) continuous_.push_back(index);
-  (b.first == kNone ? b.first : parts_[b.last].next) = index;
+  (b.first == kNone ? b.first : entries_[b.last].next) = index;
   b.last = index;
   ++b.count;
   enter(index);
   return index;
 }
 
-void WorldState::free_part(std::uint32_t index) {
-  Part& p = parts_[index];
+void WorldState::free_entry(std::uint32_t index) {
+  ShapeEntry& p = entries_[index];
   if (p.continuous) continuous_.erase(std::find(continuous_.begin(), continuous_.end(), index));
   leave(index);
   p.alive = false;
   p.generation = p.generation == UINT32_MAX ? 1 : p.generation + 1;  // 0 names no shape
-  free_parts_.push_back(index);
+  free_entries_.push_back(index);
 }
 
 namespace {
@@ -288,7 +292,7 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
   b.first = kNone;
   b.last = kNone;
   b.count = 0;
-  for (const ShapeDef& s : shapes) new_part(index, s);
+  for (const ShapeDef& s : shapes) new_entry(index, s);
   ++live_;
   return body_id(index);
 }
@@ -301,10 +305,10 @@ BodyId WorldState::add_chain(std::span<const Vec2> points, bool loop, const Body
   defs.reserve(chain.size());
   for (const ChainSegment& s : chain) defs.push_back({.shape = s.segment});
   const BodyId id = add({}, defs, def);
-  ghosts_.resize(parts_.size());
+  ghosts_.resize(entries_.size());
   auto next = chain.begin();
-  each_part(bodies_[id.index], [&](std::uint32_t k) {
-    parts_[k].chain = true;
+  each_entry(bodies_[id.index], [&](std::uint32_t k) {
+    entries_[k].chain = true;
     ghosts_[k] = {next->ghost1, next->ghost2};
     ++next;
   });
@@ -312,7 +316,7 @@ BodyId WorldState::add_chain(std::span<const Vec2> points, bool loop, const Body
 }
 
 std::optional<ChainSegment> WorldState::chain_segment(ShapeId id) const {
-  if (!part(id).chain) return std::nullopt;
+  if (!entry(id).chain) return std::nullopt;
   return chain_of(id.index);
 }
 
@@ -321,13 +325,13 @@ ShapeId WorldState::add_shape(BodyId id, const ShapeDef& def) {
   const Body& b = body(id);
   validate(def.shape);
   require_static_for(def.shape, b.is_static, "add_shape");
-  return shape_id(new_part(id.index, def));
+  return shape_id(new_entry(id.index, def));
 }
 
 void WorldState::remove_shape(ShapeId id) {
   require_not_querying("remove_shape");
-  require_not_chain(part(id).chain, id, "remove_shape");
-  Body& b = bodies_[part(id).body.index];
+  require_not_chain(entry(id).chain, id, "remove_shape");
+  Body& b = bodies_[entry(id).body.index];
   if (b.count == 1) {
     throw std::invalid_argument("remove_shape: shape " + std::to_string(id.index) +
                                 " is its body's last; remove the body instead");
@@ -336,17 +340,17 @@ void WorldState::remove_shape(ShapeId id) {
   std::uint32_t before = kNone;
   while (*link != id.index) {
     before = *link;
-    link = &parts_[*link].next;
+    link = &entries_[*link].next;
   }
-  *link = parts_[id.index].next;
+  *link = entries_[id.index].next;
   if (b.last == id.index) b.last = before;
   --b.count;
-  free_part(id.index);
+  free_entry(id.index);
 }
 
 void WorldState::set_local_shape(ShapeId id, const Shape& local) {
   require_not_querying("set_local_shape");
-  const Part& p = part(id);
+  const ShapeEntry& p = entry(id);
   require_not_chain(p.chain, id, "set_local_shape");
   validate(local);
   require_static_for(local, p.is_static, "set_local_shape");
@@ -383,11 +387,11 @@ void WorldState::place_body(Body& b, const Vec2& position, double angle, const c
   b.pose = {position, angle};
   // A body of one shape at its origin needs no turn of its own (the shape's orientation is computed
   // anyway).
-  const bool alone = b.count == 1 && parts_[b.first].at_origin;
+  const bool alone = b.count == 1 && entries_[b.first].at_origin;
   const Orientation turn = alone ? Orientation{} : Orientation::of(angle);
-  for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) {
-    Part& p = parts_[k];
-    place_part(k, b.pose, turn);
+  for (std::uint32_t k = b.first; k != kNone; k = entries_[k].next) {
+    ShapeEntry& p = entries_[k];
+    place_entry(k, b.pose, turn);
     if (teleport && p.continuous) p.start = pose_of(p.shape);
     refresh_box(k);
   }
@@ -397,11 +401,11 @@ void WorldState::set_static(BodyId id, bool is_static) {
   require_not_querying("set_static");
   Body& b = body(id);
   if (b.is_static == is_static) return;
-  each_part(b, [&](std::uint32_t k) { require_static_for(parts_[k].shape, is_static, "set_static"); });
+  each_entry(b, [&](std::uint32_t k) { require_static_for(entries_[k].shape, is_static, "set_static"); });
   if (b.continuous) set_continuous(id, false);
-  each_part(b, [&](std::uint32_t k) {
+  each_entry(b, [&](std::uint32_t k) {
     leave(k);
-    parts_[k].is_static = is_static;
+    entries_[k].is_static = is_static;
     enter(k);
   });
   b.is_static = is_static;
@@ -411,14 +415,14 @@ void WorldState::set_ghost(BodyId id, bool ghost) {
   require_not_querying("set_ghost");
   Body& b = body(id);
   b.ghost = ghost;
-  each_part(b, [&](std::uint32_t k) { parts_[k].ghost = ghost; });
+  each_entry(b, [&](std::uint32_t k) { entries_[k].ghost = ghost; });
 }
 
 void WorldState::remove(BodyId id) {
   require_not_querying("remove");
   Body& b = body(id);
   if (b.continuous) set_continuous(id, false);
-  each_part(b, [&](std::uint32_t k) { free_part(k); });
+  each_entry(b, [&](std::uint32_t k) { free_entry(k); });
   b.alive = false;
   b.generation = b.generation == UINT32_MAX ? 1 : b.generation + 1;  // 0 names no body
   free_bodies_.push_back(id.index);
@@ -429,8 +433,8 @@ void WorldState::set_proximity_margin(double margin) {
   require_not_querying("set_proximity_margin");
   require_margin(margin, "proximity margin");
   proximity_margin_ = margin;
-  for (std::uint32_t k = 0; k < parts_.size(); ++k) {
-    if (parts_[k].alive) refresh_box(k);
+  for (std::uint32_t k = 0; k < entries_.size(); ++k) {
+    if (entries_[k].alive) refresh_box(k);
   }
 }
 

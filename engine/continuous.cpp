@@ -39,8 +39,8 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
                                 " is static: only moving bodies can be continuous");
   }
   b.continuous = continuous;
-  each_part(b, [&](std::uint32_t k) {
-    Part& p = parts_[k];
+  each_entry(b, [&](std::uint32_t k) {
+    ShapeEntry& p = entries_[k];
     if (continuous) {
       continuous_.push_back(k);
     } else {
@@ -54,13 +54,13 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
 
 // A pair with a continuous body, over the step: each continuous body from its start pose, any other
 // at rest where it is now. Pairs that start the step overlapping are the overlap test's.
-void WorldState::impact(std::uint32_t a, std::uint32_t b, Found& out) const {
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
-  const auto from = [](const Part& p) {
+void WorldState::impact(std::uint32_t a, std::uint32_t b, ChunkResults& out) const {
+  const ShapeEntry& x = entries_[a];
+  const ShapeEntry& y = entries_[b];
+  const auto from = [](const ShapeEntry& p) {
     return p.continuous ? placed_at(p.shape, p.start.position, p.start.angle) : p.shape;
   };
-  const auto motion = [](const Part& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
+  const auto motion = [](const ShapeEntry& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
   // A chain's segment stops only what comes at it from the front (chain.h's one-sided rule, at the
   // step's start).
   if (x.chain && !in_front(chain_of(a), from(y))) return;
@@ -92,7 +92,7 @@ void WorldState::keep_earliest_impacts() {
 // The next step of every continuous body begins at its pose now.
 void WorldState::begin_steps() {
   for (const std::uint32_t index : continuous_) {
-    parts_[index].start = pose_of(parts_[index].shape);
+    entries_[index].start = pose_of(entries_[index].shape);
     refresh_box(index);
   }
 }

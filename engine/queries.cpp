@@ -55,14 +55,14 @@ void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
   const Querying guard(querying_);
   bool go = true;
   const auto consider = [&](std::uint32_t index) {
-    const Part& p = parts_[index];
+    const ShapeEntry& p = entries_[index];
     if (!p.sensor && lets_through(filter, p.filter) && intersects(p.box, box) && test(p.shape))
       go = visit({p.body, shape_id(index)});
     return go;
   };
-  // A loose shape's leaf is out of date: it is tested from loose_ instead (see below).
-  moving_tree_.query(box, [&](std::uint32_t index) { return parts_[index].loose >= 0 || consider(index); });
-  for (std::size_t k = 0; go && k < loose_.size(); ++k) consider(loose_[k]);
+  // A shape whose tree leaf is stale is tested from stale_leaves_ instead (see below).
+  moving_tree_.query(box, [&](std::uint32_t index) { return entries_[index].stale_at >= 0 || consider(index); });
+  for (std::size_t k = 0; go && k < stale_leaves_.size(); ++k) consider(stale_leaves_[k]);
   if (go) static_tree_.query(box, consider);
 }
 
@@ -106,9 +106,9 @@ void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<d
   validate(end);  // the range of the centre
   double reach = 1.0;
   const auto meet = [&](const BodyShape& found) {
-    const Shape& target = parts_[found.shape.index].shape;
+    const Shape& target = entries_[found.shape.index].shape;
     if (options.skip_initial_overlap && overlaps(shape, target)) return true;
-    if (parts_[found.shape.index].chain && !in_front(chain_of(found.shape.index), shape)) return true;  // one-sided
+    if (entries_[found.shape.index].chain && !in_front(chain_of(found.shape.index), shape)) return true;  // one-sided
     const auto hit = shape_cast(shape, translation, target);
     if (hit && hit->fraction <= reach)
       reach = next_reach(visit({found.body, found.shape, hit->fraction, hit->point, hit->normal}), reach);
@@ -131,7 +131,7 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
   const Querying guard(querying_);
   // The reach after shape `index`; the kernel's zero normal marks a shape that contains the origin.
   const auto visit_shape = [&](std::uint32_t index, double reach) {
-    const Part& p = parts_[index];
+    const ShapeEntry& p = entries_[index];
     if (p.sensor || !lets_through(filter, p.filter)) return reach;
     const auto hit = p.chain ? collide2d::ray_cast(chain_of(index), origin, unit, reach)
                              : collide2d::ray_cast(p.shape, origin, unit, reach);
@@ -140,9 +140,10 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
   };
   double reach = max_distance;
   moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) {
-    return reach = parts_[index].loose < 0 ? visit_shape(index, r) : r;  // a loose shape's leaf is out of date
+    return reach =
+               entries_[index].stale_at < 0 ? visit_shape(index, r) : r;  // a stale leaf is tested from stale_leaves_
   });
-  for (std::size_t k = 0; reach >= 0.0 && k < loose_.size(); ++k) reach = visit_shape(loose_[k], reach);
+  for (std::size_t k = 0; reach >= 0.0 && k < stale_leaves_.size(); ++k) reach = visit_shape(stale_leaves_[k], reach);
   if (reach >= 0.0) static_tree_.ray_cast(origin, unit, reach, visit_shape);
 }
 

@@ -10,9 +10,9 @@
 
 namespace collide2d::detail {
 
-void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
+void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const {
   if (!touching) return;
-  const std::uint32_t sensor = parts_[a].sensor ? a : b, visitor = sensor == a ? b : a;
+  const std::uint32_t sensor = entries_[a].sensor ? a : b, visitor = sensor == a ? b : a;
   out.sensing.push_back(record_of<SensorPair>(sensor, visitor));
 }
 

@@ -26,19 +26,19 @@ bool fresh(const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted
 
 }  // namespace
 
-// The moving bodies' tree catches up: each loose body's leaf takes its fat box (its ancestors
+// The moving bodies' tree catches up: each stale leaf takes its shape's fat box (its ancestors
 // refitted), and the tree is rebuilt when a quarter of it is new since its last rebuild or its inner
 // perimeters have grown 1.5 times since. It runs alongside the narrow phase, which does not use it.
 void WorldState::refresh_moving_tree() {
   tree_boxes_.clear();
-  for (const std::uint32_t index : loose_) {
-    Part& p = parts_[index];
+  for (const std::uint32_t index : stale_leaves_) {
+    ShapeEntry& p = entries_[index];
     tree_boxes_.emplace_back(p.leaf, broad_.fat_box(p.proxy));
-    p.loose = -1;
+    p.stale_at = -1;
   }
   moving_tree_.set_boxes(tree_boxes_);
-  const bool moved = !loose_.empty();
-  loose_.clear();
+  const bool moved = !stale_leaves_.empty();
+  stale_leaves_.clear();
   const bool worn = moved && moving_tree_.size() >= 64 && moving_tree_.inner_perimeter() > 1.5 * moving_perimeter_;
   if (fresh(moving_tree_) || worn) {
     moving_tree_.rebuild();
@@ -63,7 +63,7 @@ void WorldState::find_candidates() {
   if (fresh(static_tree_)) static_tree_.rebuild();
   // Two shapes in the order of their bodies, or (kNone, kNone) for two shapes of one body. Static,
   // so that the task below captures no more than std::function holds without allocating.
-  static constexpr auto in_body_order = [](const std::vector<Part>& parts, std::uint32_t x, std::uint32_t y) {
+  static constexpr auto in_body_order = [](const std::vector<ShapeEntry>& parts, std::uint32_t x, std::uint32_t y) {
     const std::uint32_t bx = parts[x].body.index, by = parts[y].body.index;
     return bx == by ? std::pair(kNone, kNone) : bx < by ? std::pair(x, y) : std::pair(y, x);
   };
@@ -74,17 +74,17 @@ void WorldState::find_candidates() {
   candidates_.resize(moving.size());
   parallel((moving.size() + kBlock - 1) / kBlock, [this, &moving](std::size_t block) {
     for (std::size_t k = block * kBlock; k < std::min(moving.size(), (block + 1) * kBlock); ++k)
-      candidates_[k] = in_body_order(parts_, part_of_[moving[k].a], part_of_[moving[k].b]);
+      candidates_[k] = in_body_order(entries_, part_of_[moving[k].a], part_of_[moving[k].b]);
   });
   std::erase_if(candidates_, [](const auto& c) { return c.first == kNone; });
   const auto add = [&](std::uint32_t x, std::uint32_t y) {
-    if (const auto pair = in_body_order(parts_, x, y); pair.first != kNone) candidates_.push_back(pair);
+    if (const auto pair = in_body_order(entries_, x, y); pair.first != kNone) candidates_.push_back(pair);
   };
   const bool statics = static_tree_.size() > 0 || statics_changed_;  // else every shape's list is empty
   for (ProxyId proxy = 0; statics && proxy < part_of_.size(); ++proxy) {
     const std::uint32_t index = part_of_[proxy];
     if (index == kNone) continue;
-    Part& b = parts_[index];
+    ShapeEntry& b = entries_[index];
     const Aabb& fat = broad_.fat_box(proxy);
     if (statics_changed_ || !encloses(b.queried, fat)) {
       // Looked up around the fat box, half its larger side further, so that the next few frames'
@@ -93,18 +93,18 @@ void WorldState::find_candidates() {
       b.queried = grown(fat, 0.5 * (fat.max - fat.min).maxCoeff());
       b.statics.clear();
       static_tree_.query(b.queried, [&](std::uint32_t s) {
-        if (intersects(broad_box(parts_[s]), b.queried)) b.statics.push_back(s);
+        if (intersects(broad_box(entries_[s]), b.queried)) b.statics.push_back(s);
       });
       ++stats_.requeried;
     }
     for (const std::uint32_t s : b.statics) {
-      if (intersects(broad_box(parts_[s]), fat)) add(index, s);
+      if (intersects(broad_box(entries_[s]), fat)) add(index, s);
     }
   }
   statics_changed_ = false;
 }
 
-void WorldState::Found::clear() {
+void WorldState::ChunkResults::clear() {
   overlapping.clear();
   sensing.clear();
   proximity.clear();
@@ -129,12 +129,12 @@ void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_part, std
 }
 
 template <class A, class B>
-void WorldState::Batch<A, B>::run(const std::vector<Part>& parts, std::vector<Verdict>& chunk_verdicts) {
+void WorldState::Batch<A, B>::run(const std::vector<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts) {
   verdicts.resize(places.size());
   overlap_pairs<A, B>(
       [&](std::size_t k) {
-        const Part& x = parts[a[k]];
-        const Part& y = parts[b[k]];
+        const ShapeEntry& x = parts[a[k]];
+        const ShapeEntry& y = parts[b[k]];
         return PairRef<A, B>{std::get<A>(x.shape), x.orientation, std::get<B>(y.shape), y.orientation};
       },
       verdicts);
@@ -186,13 +186,13 @@ void WorldState::narrow_phase() {
   } else {
     pool_->run(chunks + 1, task);
   }
-  now_.clear();
+  frame_pairs_.clear();
   proximity_.clear();
   contacts_.clear();
   impacts_.clear();
   for (std::size_t k = 0; k < chunks; ++k) {
-    const Found& f = chunks_[k];
-    now_.insert(now_.end(), f.overlapping.begin(), f.overlapping.end());
+    const ChunkResults& f = chunks_[k];
+    frame_pairs_.insert(frame_pairs_.end(), f.overlapping.begin(), f.overlapping.end());
     proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
     contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
@@ -212,12 +212,12 @@ void WorldState::narrow_phase() {
   const auto sort = [&by_pair](auto& list) {
     if (!std::is_sorted(list.begin(), list.end(), by_pair)) std::sort(list.begin(), list.end(), by_pair);
   };
-  sort(now_);
+  sort(frame_pairs_);
   sort(proximity_);
   sort(contacts_);
   sort(impacts_);
   keep_earliest_impacts();
-  replace_pairs(overlapping_, now_, began_, ended_);
+  replace_pairs(overlapping_, frame_pairs_, began_, ended_);
   update_body_pairs();
   update_sensing(chunks);
   mark_removed();
@@ -227,19 +227,19 @@ std::vector<ShapePair> WorldState::candidates() const {
   std::vector<ShapePair> out;
   out.reserve(candidates_.size());
   for (const auto& [a, b] : candidates_) {
-    if (parts_[a].alive && parts_[b].alive) out.push_back(record_of<ShapePair>(a, b));
+    if (entries_[a].alive && entries_[b].alive) out.push_back(record_of<ShapePair>(a, b));
   }
   return out;
 }
 
 // The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
 void WorldState::update_body_pairs() {
-  bodies_now_.clear();
+  frame_body_pairs_.clear();
   for (const ShapePair& p : overlapping_) {
-    if (bodies_now_.empty() || bodies_now_.back().a != p.a || bodies_now_.back().b != p.b)
-      bodies_now_.push_back({p.a, p.b, p.user_a, p.user_b});
+    if (frame_body_pairs_.empty() || frame_body_pairs_.back().a != p.a || frame_body_pairs_.back().b != p.b)
+      frame_body_pairs_.push_back({p.a, p.b, p.user_a, p.user_b});
   }
-  replace_pairs(body_overlapping_, bodies_now_, body_began_, body_ended_);
+  replace_pairs(body_overlapping_, frame_body_pairs_, body_began_, body_ended_);
 }
 
 void WorldState::mark_removed() {
@@ -253,11 +253,11 @@ void WorldState::mark_removed() {
 
 // The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
 // (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results in order.
-void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) const {
+void WorldState::narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out) const {
   out.clear();
   for (std::size_t i = begin; i < end; ++i)
     out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  std::apply([&](auto&... batch) { (batch.run(parts_, out.verdicts), ...); }, out.batches);
+  std::apply([&](auto&... batch) { (batch.run(entries_, out.verdicts), ...); }, out.batches);
   for (std::size_t i = begin; i < end; ++i) {
     const Verdict v = out.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
@@ -266,9 +266,9 @@ void WorldState::narrow_chunk(std::size_t begin, std::size_t end, Found& out) co
 
 // A pair of two ghosts, dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
 // batch of its kind, in kernel order.
-WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const {
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
+WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out) const {
+  const ShapeEntry& x = entries_[a];
+  const ShapeEntry& y = entries_[b];
   if (x.ghost && y.ghost) return Verdict::skipped;  // another World's pair, not filtered here
   if (!passes(a, b)) {
     ++out.filtered;
@@ -295,8 +295,8 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
 }
 
 Contact WorldState::pair_contact(std::uint32_t a, std::uint32_t b, const ContactOptions& options) const {
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
+  const ShapeEntry& x = entries_[a];
+  const ShapeEntry& y = entries_[b];
   if (x.chain) return contact(chain_of(a), x.orientation, y.shape, y.orientation, options);
   if (y.chain) return contact(chain_of(b), y.orientation, x.shape, x.orientation, options).swapped();
   return contact(x.shape, x.orientation, y.shape, y.orientation, options);
@@ -304,9 +304,9 @@ Contact WorldState::pair_contact(std::uint32_t a, std::uint32_t b, const Contact
 
 // One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
 // solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
-void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const {
-  const Part& x = parts_[a];
-  const Part& y = parts_[b];
+void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const {
+  const ShapeEntry& x = entries_[a];
+  const ShapeEntry& y = entries_[b];
   if (x.sensor || y.sensor) {
     sense(a, b, touching, out);
     return;

@@ -86,7 +86,7 @@ Aabb World::reach_box(ShapeId id) const { return state_->reach_box(id); }
 
 Vec2 owner_point(const Aabb& a, const Aabb& b) { return a.min.cwiseMax(b.min); }
 
-// As WorldState::broad_box() of a part, to the bit.
+// As WorldState::broad_box() of a shape's entry, to the bit.
 Aabb reach_box(const Shape& shape, const std::optional<Pose>& start, const WorldOptions& options) {
   const Aabb box = start ? detail::swept(*start, shape) : aabb(shape, Orientation::of(angle_of(shape)));
   return detail::grown(box, 0.5 * std::max(options.proximity_margin, options.speculative_margin));

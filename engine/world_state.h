@@ -3,7 +3,7 @@
 // phase, the narrow phase's chunks and batches), sensors.cpp, continuous.cpp (steps and impacts) and
 // queries.cpp.
 //
-// A body is a pose and a list of shapes; each shape (a Part, named by a ShapeId) is what the broad
+// A body is a pose and a list of shapes; each shape (a ShapeEntry, named by a ShapeId) is what the broad
 // and the narrow phase work on. A shape keeps itself where it is in the world, and the cosine and
 // sine of its world angle (as Box2D keeps b2Rot), from its body's last pose: its pairs' overlap
 // tests and contacts use them and skip the validation done when it was posed. A shape placed at its
@@ -76,7 +76,7 @@ class WorldState {
   bool contains(ShapeId id) const;
   std::size_t size() const { return live_; }
   Pose pose(BodyId id) const { return body(id).pose; }
-  const Shape& shape(BodyId id) const { return parts_[body(id).first].shape; }
+  const Shape& shape(BodyId id) const { return entries_[body(id).first].shape; }
   std::uint64_t user_id(BodyId id) const { return body(id).user_id; }
   const Filter& filter(BodyId id) const { return body(id).filter; }
   bool is_static(BodyId id) const { return body(id).is_static; }
@@ -84,16 +84,16 @@ class WorldState {
   bool is_continuous(BodyId id) const { return body(id).continuous; }
   bool is_ghost(BodyId id) const { return body(id).ghost; }
   std::vector<ShapeId> shapes(BodyId id) const;
-  const Shape& shape(ShapeId id) const { return part(id).shape; }
+  const Shape& shape(ShapeId id) const { return entry(id).shape; }
   const Shape& local_shape(ShapeId id) const {
-    part(id);  // refuses an unknown or stale handle
+    entry(id);  // refuses an unknown or stale handle
     return locals_[id.index];
   }
-  BodyId body_of(ShapeId id) const { return part(id).body; }
+  BodyId body_of(ShapeId id) const { return entry(id).body; }
   std::optional<ChainSegment> chain_segment(ShapeId id) const;
-  std::uint64_t user_id(ShapeId id) const { return part(id).user_id; }
-  const Filter& filter(ShapeId id) const { return part(id).filter; }
-  bool is_sensor(ShapeId id) const { return part(id).sensor; }
+  std::uint64_t user_id(ShapeId id) const { return entry(id).user_id; }
+  const Filter& filter(ShapeId id) const { return entry(id).filter; }
+  bool is_sensor(ShapeId id) const { return entry(id).sensor; }
   std::vector<BodyId> bodies() const;
 
   // continuous.cpp
@@ -119,7 +119,7 @@ class WorldState {
   std::vector<ShapePair> candidates() const;
   // bodies.cpp
   Aabb broad_box(ShapeId id) const;
-  Aabb reach_box(ShapeId id) const { return broad_box(part(id)); }
+  Aabb reach_box(ShapeId id) const { return broad_box(entry(id)); }
 
   // The results of the last update.
   std::vector<ShapePair> overlapping_;
@@ -138,7 +138,7 @@ class WorldState {
 
  private:
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
-  // A body: its pose, what it is, and its shapes as a list through Part::next.
+  // A body: its pose, what it is, and its shapes as a list through ShapeEntry::next.
   struct Body {
     Pose pose;
     std::uint64_t user_id = 0;
@@ -155,7 +155,7 @@ class WorldState {
   };
   // A shape of a body, where the broad and the narrow phase work: what a pair's test and record read
   // first, together, then what posing and the broad phase keep.
-  struct Part {
+  struct ShapeEntry {
     Shape shape;              // where it is in the world
     Aabb box;                 // aabb(shape), kept with the pose
     Orientation orientation;  // of the shape's world angle, kept with the pose
@@ -174,7 +174,7 @@ class WorldState {
     std::uint32_t next = kNone;          // its body's next shape
     ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
     AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
-    std::int32_t loose = -1;             // moving: its place in loose_ while its tree leaf is out of date
+    std::int32_t stale_at = -1;          // moving: its place in stale_leaves_ while its tree leaf is out of date
     Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
     std::vector<std::uint32_t> statics;  // moving: those neighbours (shape indices)
     Pose start;                          // continuous: its pose at the last update, where the step begins
@@ -196,7 +196,7 @@ class WorldState {
     std::vector<std::uint32_t> b;
     std::vector<std::uint8_t> verdicts;
     void add(std::uint32_t place, std::uint32_t a_part, std::uint32_t b_part);
-    void run(const std::vector<Part>& parts, std::vector<Verdict>& chunk_verdicts);
+    void run(const std::vector<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts);
     void clear();
   };
   template <class Pairs>
@@ -209,7 +209,7 @@ class WorldState {
   using BatchesOf = typename BatchTuple<Pairs>::type;
   // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
   // verdict, and the batches.
-  struct Found {
+  struct ChunkResults {
     std::vector<ShapePair> overlapping;
     std::vector<SensorPair> sensing;
     std::vector<Proximity> proximity;
@@ -224,16 +224,16 @@ class WorldState {
   std::vector<Body> bodies_;  // by BodyId::index
   std::vector<std::uint32_t> free_bodies_;
   std::size_t live_ = 0;
-  std::vector<Part> parts_;    // by ShapeId::index
-  std::vector<Shape> locals_;  // by ShapeId::index: each shape in its body's frame, apart from the
-                               // parts that every frame reads
-  std::vector<std::uint32_t> free_parts_;
+  std::vector<ShapeEntry> entries_;  // by ShapeId::index
+  std::vector<Shape> locals_;        // by ShapeId::index: each shape in its body's frame, apart from the
+                                     // entries that every frame reads
+  std::vector<std::uint32_t> free_entries_;
   std::vector<std::array<Vec2, 2>> ghosts_;  // by ShapeId::index, for a chain's segments: its ghosts
   SweepAndPrune broad_;                      // the moving shapes
   std::vector<std::uint32_t> part_of_;       // by sweep-and-prune proxy: its shape, or kNone
   AabbTree moving_tree_;                     // the moving shapes' fat boxes as of the last update
   double moving_perimeter_ = 0.0;            // its inner boxes' perimeters right after its last rebuild
-  std::vector<std::uint32_t> loose_;         // moving shapes whose fat box changed since the last update
+  std::vector<std::uint32_t> stale_leaves_;  // moving shapes whose fat box changed since the last update
   std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
   AabbTree static_tree_;                                     // the static shapes' broad-phase boxes
   bool statics_changed_ = false;
@@ -241,69 +241,69 @@ class WorldState {
   bool contacts_on_;
   double speculative_margin_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a's body < b's
-  std::vector<ShapePair> now_;  // the narrow phase's pairs joined: storage kept between frames
-  std::vector<BodyPair> bodies_now_;
+  std::vector<ShapePair> frame_pairs_;  // the narrow phase's pairs joined: storage kept between frames
+  std::vector<BodyPair> frame_body_pairs_;
   std::vector<SensorPair> sensed_;
   std::vector<std::uint32_t> continuous_;  // the continuous bodies' shapes
   std::function<bool(BodyId, BodyId)> pair_predicate_;
-  std::vector<Found> chunks_;  // kept from frame to frame, so that steady state allocates nothing
+  std::vector<ChunkResults> chunks_;  // kept from frame to frame, so that steady state allocates nothing
   std::unique_ptr<ThreadPool> pool_;
 
   // bodies.cpp
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
-  Part& part(ShapeId id);
-  const Part& part(ShapeId id) const;
+  ShapeEntry& entry(ShapeId id);
+  const ShapeEntry& entry(ShapeId id) const;
   BodyId body_id(std::uint32_t index) const { return {index, bodies_[index].generation}; }
-  ShapeId shape_id(std::uint32_t index) const { return {index, parts_[index].generation}; }
+  ShapeId shape_id(std::uint32_t index) const { return {index, entries_[index].generation}; }
   // The record of shapes a and b (a's body < b's) as of now: handles and user ids.
   template <class Record>
   Record record_of(std::uint32_t a, std::uint32_t b) const {
-    const Part& x = parts_[a];
-    const Part& y = parts_[b];
+    const ShapeEntry& x = entries_[a];
+    const ShapeEntry& y = entries_[b];
     return {x.body, y.body, shape_id(a), shape_id(b), x.body_user_id, y.body_user_id, x.user_id, y.user_id};
   }
-  std::uint32_t new_part(std::uint32_t body, const ShapeDef& def);
-  void free_part(std::uint32_t index);
+  std::uint32_t new_entry(std::uint32_t body, const ShapeDef& def);
+  void free_entry(std::uint32_t index);
   Aabb broad_box(const Aabb& box) const;
-  Aabb broad_box(const Part& p) const;
+  Aabb broad_box(const ShapeEntry& p) const;
   void enter(std::uint32_t index);
   void leave(std::uint32_t index);
   void refresh_box(std::uint32_t index);
   void place_body(Body& b, const Vec2& position, double angle, const char* call, bool teleport);
-  void place_part(std::uint32_t index, const Pose& at, const Orientation& turn);
+  void place_entry(std::uint32_t index, const Pose& at, const Orientation& turn);
   void set_local(std::uint32_t index, const Shape& local);
-  void unloose(std::uint32_t index);
+  void drop_stale(std::uint32_t index);
   bool passes(std::uint32_t a, std::uint32_t b) const;
   // A chain's segment where it is, with its ghosts.
   ChainSegment chain_of(std::uint32_t index) const {
-    return {std::get<Segment>(parts_[index].shape), ghosts_[index][0], ghosts_[index][1]};
+    return {std::get<Segment>(entries_[index].shape), ghosts_[index][0], ghosts_[index][1]};
   }
   // The contact of shapes a and b, as of a chain's rules where either is a chain's segment.
   Contact pair_contact(std::uint32_t a, std::uint32_t b, const ContactOptions& options) const;
   // f(index) for each shape of the body.
   template <class F>
-  void each_part(const Body& b, F f) const {
-    for (std::uint32_t k = b.first; k != kNone; k = parts_[k].next) f(k);
+  void each_entry(const Body& b, F f) const {
+    for (std::uint32_t k = b.first; k != kNone; k = entries_[k].next) f(k);
   }
 
   // update.cpp
   void refresh_moving_tree();
   void find_candidates();
   void narrow_phase();
-  void narrow_chunk(std::size_t begin, std::size_t end, Found& out) const;
-  Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, Found& out) const;
-  void narrow(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
+  void narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out) const;
+  Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out) const;
+  void narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const;
   void update_body_pairs();
 
   // sensors.cpp
-  void sense(std::uint32_t a, std::uint32_t b, bool touching, Found& out) const;
+  void sense(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const;
   void update_sensing(std::size_t chunks);
   // update.cpp: marks the ended pairs of shapes or bodies removed since the previous update.
   void mark_removed();
 
   // continuous.cpp
-  void impact(std::uint32_t a, std::uint32_t b, Found& out) const;
+  void impact(std::uint32_t a, std::uint32_t b, ChunkResults& out) const;
   void keep_earliest_impacts();
   void begin_steps();
 
