@@ -235,8 +235,7 @@ template <class SA, class SB, class X, class Y>
 std::optional<Probe> climb(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const Vec2& guess) {
   using Pair = detail::SupportPair<double, SA, SB>;
   const Pair p = Pair::of(a, detail::Rotation<double>::of(oa), b, detail::Rotation<double>::of(ob));
-  int evaluations = 0;
-  const auto d = detail::certified_climb(p, p.from_world(guess), detail::climb_margin(p), evaluations, 3e-2);
+  const auto d = detail::certified_climb(p, p.from_world(guess), detail::climb_margin(p), 3e-2).deepest;
   if (!d || !(d->at.s > 0)) return std::nullopt;
   return Probe{d->at.s, p.to_world(d->n)};
 }

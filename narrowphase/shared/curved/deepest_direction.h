@@ -219,117 +219,158 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p, Real* extent = nullptr) {
 // direction (zero: the one where s is largest), where s has a kink and the maximum of a face
 // contact sits, Halley steps climb s' while s is concave, and the maximum reached is kept when
 // disc_bound certifies it. Pairs apart, and overlaps shallower than the radii, end here after two
-// or three evaluations; nullopt hands the rest (a step leaving its quarter turn, a convex stretch,
-// a bound too loose) to the search;
-// `evaluations` counts the support evaluations either way. A caller that needs only a lower bound
-// of s near its maximum (a time of impact's step far from contact) passes `rough` > 0: the climb
-// then stops, uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is
-// below rough * s. Where the climb reaches a maximum off the face normals that the bound cannot
-// certify (an overlap deeper than the discs), it is left in `reached` for the search. A caller that
-// needs s only up to a limit passes `stop`: the climb ends, uncertified, where s passes it.
+// or three evaluations; no maximum hands the rest (a step leaving its quarter turn, a convex
+// stretch, a bound too loose) to the search. A caller that needs only a lower bound of s near its
+// maximum (a time of impact's step far from contact) passes `rough` > 0: the climb then stops,
+// uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is below rough * s.
+// A caller that needs s only up to a limit passes `stop`: the climb ends, uncertified, where s
+// passes it.
+template <class Real>
+struct Climb {
+  std::optional<Deepest<Real>> deepest;  // the maximum, certified (or near enough, or past `stop`)
+  // A maximum off the face normals, polished but not certified by the bound (an overlap deeper
+  // than the discs), for the search to start from.
+  std::optional<Direction<Real>> reached;
+  int evaluations = 0;  // of the supports, either way
+};
+
+// The climb's state: the direction n and s there; with a rectangle, the face normal it started
+// from and the side of it, which keep it in one quarter turn.
 template <class Real, class SA, class SB>
-std::optional<Deepest<Real>> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin,
-                                             int& evaluations, Real rough = 0,
-                                             std::optional<Direction<Real>>* reached = nullptr,
-                                             Real stop = std::numeric_limits<Real>::infinity()) {
-  using std::abs;
-  constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
-  const V2<Real>& toward = start == V2<Real>::Zero() ? p.delta : start;
-  evaluations = 0;
-  if (toward == V2<Real>::Zero()) return std::nullopt;
-  const Real flat = margin / 2;
-  // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
-  // denormal, and the direction divided by that norm comes out 1e-9 off unit length.
-  // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
-  // Without a guess a rectangle's face normal starts the climb, and takes only its sign from the
-  // line of centres, which is then left as it is.
-  const bool unit = !sided || start != V2<Real>::Zero();
-  V2<Real> n = unit ? V2<Real>(V2<Real>(toward / toward.cwiseAbs().maxCoeff()).normalized()) : toward;
-  V2<Real> face = n;  // with a rectangle: the face normal the climb starts from, and the corners'
-  V2<Real> side = n;  // side, which keeps the climb in one quarter turn from it
-  Separation<Real> e;
-  bool kink = false;
-  // At a rectangle's face normal f, s seen from both sides: a kink where it rises into f and falls
-  // after it (a face contact's maximum), else the climb goes on into the quarter on the rising side.
-  const auto from_face = [&](const V2<Real>& f) {
-    const V2<Real> before = f - perp(f), after = f + perp(f);
-    const std::array<Separation<Real>, 2> at = p.separations(f, before, after);
-    ++evaluations;
-    kink = at[0].slope >= -flat && at[1].slope <= flat;
-    const bool rising = at[1].slope > flat;
-    face = f, n = f, e = at[rising ? 1 : 0], side = rising ? after : before;
-  };
-  if constexpr (sided) {
-    const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p.A.rot : p.B.rot;
-    const V2<Real> x(rot.c, rot.s), y = perp(x);
-    const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p) : (abs(n.dot(x)) >= abs(n.dot(y)) ? x : y);
-    face = n.dot(axis) >= 0 ? axis : V2<Real>(-axis);
-    if (start != V2<Real>::Zero() && abs(cross(face, n)) > Real(1e-2)) {
-      // A guess clear of the face normals (a contact at a corner): the climb starts there.
-      side = n;
-      e = p.separation(n, side);
-      ++evaluations;
+class Climber {
+ public:
+  static constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
+
+  Climber(const SupportPair<Real, SA, SB>& p, Real margin, Real rough, Real stop)
+      : p_(p), margin_(margin), flat_(margin / 2), rough_(rough), stop_(stop) {}
+
+  // The first direction and s there; false where there is none (the centres coincide, no guess).
+  bool begin(const V2<Real>& start) {
+    using std::abs;
+    const V2<Real>& toward = start == V2<Real>::Zero() ? p_.delta : start;
+    if (toward == V2<Real>::Zero()) return false;
+    // Scaled to its largest coordinate before it is squared: centres 1e-158 apart square to a
+    // denormal, and the direction divided by that norm comes out 1e-9 off unit length.
+    // Not Eigen's stableNormalized, which divides the unscaled vector: 1e-321 apart, 2e-3 off.
+    // Without a guess a rectangle's face normal starts the climb, and takes only its sign from the
+    // line of centres, which is then left as it is.
+    const bool unit = !sided || start != V2<Real>::Zero();
+    n_ = unit ? V2<Real>(V2<Real>(toward / toward.cwiseAbs().maxCoeff()).normalized()) : toward;
+    face_ = side_ = n_;
+    if constexpr (sided) {
+      const Rotation<Real>& rot = std::is_same_v<SA, RectSupport<Real>> ? p_.A.rot : p_.B.rot;
+      const V2<Real> x(rot.c, rot.s), y = perp(x);
+      const V2<Real> axis = start == V2<Real>::Zero() ? best_face(p_) : (abs(n_.dot(x)) >= abs(n_.dot(y)) ? x : y);
+      face_ = n_.dot(axis) >= 0 ? axis : V2<Real>(-axis);
+      if (start != V2<Real>::Zero() && abs(cross(face_, n_)) > Real(1e-2)) {
+        // A guess clear of the face normals (a contact at a corner): the climb starts there.
+        side_ = n_;
+        e_ = p_.separation(n_, side_);
+        ++evaluations_;
+      } else {
+        from_face(face_);
+      }
     } else {
-      from_face(face);
+      if constexpr (std::is_same_v<SA, EllipseSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
+        if (start == V2<Real>::Zero()) n_ = best_of_axes(p_, n_);
+      }
+      e_ = p_.separation(n_);
+      ++evaluations_;
     }
-  } else {
-    if constexpr (std::is_same_v<SA, EllipseSupport<Real>> && std::is_same_v<SB, EllipseSupport<Real>>) {
-      if (start == V2<Real>::Zero()) n = best_of_axes(p, n);
-    }
-    e = p.separation(n);
-    ++evaluations;
+    return true;
   }
-  const auto in_quarter = [&](const V2<Real>& v) {
-    return !sided || (cross(face, v) * cross(face, side) > 0 && v.dot(face) > 0);
-  };
+
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
   // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
-  // Where s > 0 the shapes are apart and s is concave on the whole arc where it is positive, with
-  // the maximum inside: a step that is too long (over half a right angle, or landing lower) is cut
+  bool done() const {
+    using std::abs;
+    return near_enough() || kink_ || e_.s > stop_ || (level(e_, flat_) && !(abs(e_.slope) > Real(1e-12) * e_.bend));
+  }
+
+  // The k-th Halley step on s' in tan(angle / 2), slope / (2 bend d) with d = halley(e, 0) =
+  // 1 + sq / b2, in one division: slope bend / (b2 + sq); Newton's where d leaves [1/2, 2]. Where
+  // s > 0 the shapes are apart and s is concave on the whole arc where it is positive, with the
+  // maximum inside: a step that is too long (over half a right angle, or landing lower) is cut
   // instead of handing over to the search. A time of impact climbs from the last step's normal,
   // which the shapes' approach has turned away from, and one in six of its climbs ended there. For
   // the same reason a step out of the quarter turn, apart, goes on from the face normal it crossed
   // (the maximum lies on it or beyond): a fifth of a rectangle–ellipse time of impact's climbs
-  // ended there.
-  const auto near_enough = [&] {
-    return rough > 0 && e.s > 0 && (kink || e.slope * e.slope <= 2 * e.bend * rough * e.s);
-  };
-  for (int k = 0; !near_enough() && !kink && !(e.s > stop) && (!level(e, flat) || abs(e.slope) > Real(1e-12) * e.bend);
-       ++k) {
-    const bool apart = e.s > 0;
+  // ended there. False where the climb gives up.
+  bool step(int k) {
+    using std::abs;
+    const bool apart = e_.s > 0;
     // At least, not equal: touching, s flips sign from one direction to the next.
-    if (k >= (apart ? 12 : 6) || !(e.bend > 0)) return std::nullopt;
-    // Halley's step on s' in tan(angle / 2), slope / (2 bend d) with d = halley(e, 0) = 1 + sq / b2,
-    // in one division: slope bend / (b2 + sq); Newton's where d leaves [1/2, 2].
-    const Real b2 = 2 * e.bend * e.bend, sq = e.slope * (e.slope + e.rho_slope);
-    Real tau = sq >= -b2 / 2 && sq <= b2 ? e.slope * e.bend / (b2 + sq) : e.slope / (2 * e.bend);
+    if (k >= (apart ? 12 : 6) || !(e_.bend > 0)) return false;
+    const Real b2 = 2 * e_.bend * e_.bend, sq = e_.slope * (e_.slope + e_.rho_slope);
+    Real tau = sq >= -b2 / 2 && sq <= b2 ? e_.slope * e_.bend / (b2 + sq) : e_.slope / (2 * e_.bend);
     if (!(abs(tau) < Real(0.5))) {
-      if (!apart) return std::nullopt;
+      if (!apart) return false;
       tau = std::copysign(Real(0.5), tau);
     }
     for (;;) {
-      const V2<Real> next = turned(n, Real(1), tau);
+      const V2<Real> next = turned(n_, Real(1), tau);
       if (!in_quarter(next)) {
-        if (!apart) return std::nullopt;
-        const V2<Real> across = cross(face, side) > 0 ? perp(face) : V2<Real>(-perp(face));
-        from_face(cross(face, next) * cross(face, side) > 0 ? across : face);
-        break;
+        if (!apart) return false;
+        const V2<Real> across = cross(face_, side_) > 0 ? perp(face_) : V2<Real>(-perp(face_));
+        from_face(cross(face_, next) * cross(face_, side_) > 0 ? across : face_);
+        return true;
       }
-      const Separation<Real> en = p.separation(next, sided ? side : next);
-      ++evaluations;
-      if (en.s >= e.s - margin) {
-        n = next, e = en;
-        break;
+      const Separation<Real> en = p_.separation(next, sided ? side_ : next);
+      ++evaluations_;
+      if (en.s >= e_.s - margin_) {
+        n_ = next, e_ = en;
+        return true;
       }
-      if (!apart || evaluations > 16) return std::nullopt;
+      if (!apart || evaluations_ > 16) return false;
       tau /= 2;
     }
   }
-  if (!near_enough() && !(e.s > stop) && !(disc_bound(p, n, e) <= e.s + margin)) {
-    if (reached != nullptr && !kink) *reached = Direction<Real>{n, e};
-    return std::nullopt;
+
+  // The maximum reached, where the bound certifies it (or the caller asked for less).
+  Climb<Real> finish() const {
+    if (!near_enough() && !(e_.s > stop_) && !(disc_bound(p_, n_, e_) <= e_.s + margin_)) {
+      if (kink_) return gave_up();
+      return {std::nullopt, Direction<Real>{n_, e_}, evaluations_};
+    }
+    return {Deepest<Real>{{n_, e_}, evaluations_}, std::nullopt, evaluations_};
   }
-  return Deepest<Real>{{n, e}, evaluations};
+  Climb<Real> gave_up() const { return {std::nullopt, std::nullopt, evaluations_}; }
+
+ private:
+  // At a rectangle's face normal f, s seen from both sides: a kink where it rises into f and falls
+  // after it (a face contact's maximum), else the climb goes on into the quarter on the rising side.
+  void from_face(const V2<Real>& f) {
+    const V2<Real> before = f - perp(f), after = f + perp(f);
+    const std::array<Separation<Real>, 2> at = p_.separations(f, before, after);
+    ++evaluations_;
+    kink_ = at[0].slope >= -flat_ && at[1].slope <= flat_;
+    const bool rising = at[1].slope > flat_;
+    face_ = f, n_ = f, e_ = at[rising ? 1 : 0], side_ = rising ? after : before;
+  }
+  bool in_quarter(const V2<Real>& v) const {
+    return !sided || (cross(face_, v) * cross(face_, side_) > 0 && v.dot(face_) > 0);
+  }
+  bool near_enough() const {
+    return rough_ > 0 && e_.s > 0 && (kink_ || e_.slope * e_.slope <= 2 * e_.bend * rough_ * e_.s);
+  }
+
+  const SupportPair<Real, SA, SB>& p_;
+  Real margin_, flat_, rough_, stop_;
+  V2<Real> n_, face_, side_;
+  Separation<Real> e_;
+  bool kink_ = false;
+  int evaluations_ = 0;
+};
+
+template <class Real, class SA, class SB>
+Climb<Real> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin, Real rough = 0,
+                            Real stop = std::numeric_limits<Real>::infinity()) {
+  Climber<Real, SA, SB> climber(p, margin, rough, stop);
+  if (!climber.begin(start)) return {};
+  for (int k = 0; !climber.done(); ++k) {
+    if (!climber.step(k)) return climber.gave_up();
+  }
+  return climber.finish();
 }
 
 // The rounding within which the climb and the search take two values of s as equal, 8 u of the
@@ -351,9 +392,11 @@ Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Rea
   static_assert(!std::is_same_v<SA, RectSupport<Real>> && !std::is_same_v<SB, RectSupport<Real>>,
                 "a rectangle's quarter turns are settled in closed form (contact_rect_ellipse.cpp)");
   const Real margin = climb_margin(p);
+  const Climb<Real> climb = certified_climb(p, start, margin, Real(0), stop);
+  if (climb.deepest) return *climb.deepest;
+  const std::optional<Direction<Real>>& reached = climb.reached;
   Deepest<Real> best;
-  std::optional<Direction<Real>> reached;
-  if (auto quick = certified_climb(p, start, margin, best.evaluations, Real(0), &reached, stop)) return *quick;
+  best.evaluations = climb.evaluations;
   // The best value is not seeded from a climb that stopped short (a point short of its maximum by
   // less than the rounding of s would be kept over the polished one); a polished maximum it
   // reached joins the arc ends below.
