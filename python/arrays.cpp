@@ -1,0 +1,246 @@
+// The array forms of the pair queries: NumPy arrays of shapes of one kind a row, the GIL released,
+// through the batched kernels where the pair of kinds has one.
+#include "python/module.h"
+
+#include "narrowphase/internal.h"
+#include "shapes/kinds.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace collide2d::python {
+
+namespace {
+
+using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The kinds an array holds, one shape a row in its row of the query grammar (shapes/kinds.h): the
+// moving kinds with a row of fixed length.
+template <class S>
+struct KindTag {
+  using type = S;
+};
+using AnyKind = std::variant<KindTag<Circle>, KindTag<Ellipse>, KindTag<Rect>, KindTag<Capsule>>;
+
+// Each kind's text, `what`, joined: "circle, ellipse, rect or capsule", "circle (cx cy r), ...".
+template <class What>
+std::string each_kind(const char* last, What what) {
+  std::vector<std::string> texts;
+  [&]<class... S>(std::variant<KindTag<S>...>*) { (texts.push_back(what(KindTag<S>{})), ...); }(
+      static_cast<AnyKind*>(nullptr));
+  std::string out;
+  for (std::size_t k = 0; k < texts.size(); ++k) out += (k == 0 ? "" : k + 1 == texts.size() ? last : ", ") + texts[k];
+  return out;
+}
+std::string kind_words() {
+  return each_kind(" or ", [](auto tag) { return std::string(detail::Kind<typename decltype(tag)::type>::word); });
+}
+std::string kind_rows() {
+  return each_kind(", ", [](auto tag) {
+    using S = typename decltype(tag)::type;
+    return std::string(detail::Kind<S>::word) + " (" + std::string(detail::grammar_of<S>()) + ")";
+  });
+}
+
+AnyKind kind_of(const std::string& name) {
+  std::optional<AnyKind> found;
+  [&]<class... S>(std::variant<KindTag<S>...>*) {
+    ((name == detail::Kind<S>::word ? void(found = KindTag<S>{}) : void()), ...);
+  }(static_cast<AnyKind*>(nullptr));
+  if (!found) throw py::value_error("unknown shape kind '" + name + "' (" + kind_words() + ")");
+  return *found;
+}
+
+// Throws where the array is not (n, k) for the kind's k columns.
+template <class S>
+void check_columns(const char* which, const Rows& rows) {
+  constexpr auto columns = static_cast<py::ssize_t>(detail::Kind<S>::row.size());
+  if (rows.ndim() != 2 || rows.shape(1) != columns) {
+    throw py::value_error(std::string(which) + ": " + std::string(detail::Kind<S>::word) + " rows need an (n, " +
+                          std::to_string(columns) + ") array (" + std::string(detail::grammar_of<S>()) + ")");
+  }
+}
+
+// Row i of an array as a checked shape; the error names the array and the row.
+template <class S>
+S checked_row(const char* which, const Rows& rows, py::ssize_t i) {
+  S shape = detail::Kind<S>::from_row(rows.data() + i * rows.shape(1));  // c_style rows
+  try {
+    validate(shape);
+  } catch (const InvalidShape& e) {
+    throw py::value_error(std::string(which) + "[" + std::to_string(i) + "]: " + e.what());
+  }
+  return shape;
+}
+
+// The rows of an (n, k) array as shapes of one kind, each checked.
+std::vector<Shape> shapes_of(const char* which, const std::string& kind_name, const Rows& rows) {
+  std::vector<Shape> out;
+  std::visit(
+      [&](auto tag) {
+        using S = typename decltype(tag)::type;
+        check_columns<S>(which, rows);
+        out.reserve(static_cast<std::size_t>(rows.shape(0)));
+        for (py::ssize_t i = 0; i < rows.shape(0); ++i) out.push_back(checked_row<S>(which, rows, i));
+      },
+      kind_of(kind_name));
+  return out;
+}
+
+void check_lengths(std::size_t a, std::size_t b) {
+  if (a != b) {
+    throw py::value_error("a has " + std::to_string(a) + " rows and b " + std::to_string(b) +
+                          ": pairs need as many of each");
+  }
+}
+
+struct PairLists {
+  std::vector<Shape> a, b;
+};
+
+PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  PairLists p{shapes_of("a", a_kind, a), shapes_of("b", b_kind, b)};
+  check_lengths(p.a.size(), p.b.size());
+  return p;
+}
+
+py::array_t<double> points(std::size_t n) { return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{2}}); }
+
+// One query over every pair, the GIL released: out(i, result) for each.
+template <class Query, class Out>
+void each_pair(const PairLists& p, Query query, Out out) {
+  py::gil_scoped_release released;
+  for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
+}
+
+template <class T>
+T& kept(int slot) {
+  thread_local std::array<T, 2> storage;
+  return storage[static_cast<std::size_t>(slot)];
+}
+
+// An array's rows as checked shapes of one kind and their orientations, as the batches take them,
+// in storage kept by the thread from call to call (`slot` 0 for a, 1 for b), so that a large array
+// does not take fresh pages from the system on every call.
+template <class S>
+struct Typed {
+  std::vector<S>& shapes;
+  std::vector<Orientation>& orientations;
+  Typed(const char* which, const Rows& rows, int slot)
+      : shapes(kept<std::vector<S>>(slot)), orientations(kept<std::vector<Orientation>>(slot)) {
+    shapes.clear();
+    orientations.clear();
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+      shapes.push_back(checked_row<S>(which, rows, i));
+      if constexpr (std::is_same_v<S, Circle>) {
+        orientations.push_back(Orientation{});  // a circle's is not read
+      } else {
+        orientations.push_back(Orientation::of(shapes.back().angle));
+      }
+    }
+  }
+};
+
+// overlaps() of every pair into `out`, the GIL released: through the batched kernels where the
+// kinds have one (in either order: overlap is symmetric), else one pair at a time.
+template <class A, class B>
+void overlaps_into(const Typed<A>& x, const Typed<B>& y, std::span<std::uint8_t> out) {
+  py::gil_scoped_release released;
+  if constexpr (!detail::batched<A, B>) {
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = overlaps(Shape(x.shapes[i]), Shape(y.shapes[i])) ? 1 : 0;
+  } else if constexpr (detail::rank<A>() <= detail::rank<B>()) {
+    detail::overlap_batch<A, B>(x.shapes, x.orientations, y.shapes, y.orientations, out);
+  } else {
+    detail::overlap_batch<B, A>(y.shapes, y.orientations, x.shapes, x.orientations, out);
+  }
+}
+
+py::array_t<bool> overlaps_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  py::array_t<bool> out;
+  std::visit(
+      [&](auto tag_a, auto tag_b) {
+        using A = typename decltype(tag_a)::type;
+        using B = typename decltype(tag_b)::type;
+        check_columns<A>("a", a);
+        check_columns<B>("b", b);
+        check_lengths(static_cast<std::size_t>(a.shape(0)), static_cast<std::size_t>(b.shape(0)));
+        out = py::array_t<bool>(a.shape(0));
+        // A bool array's bytes, 0 or 1, are the batches' verdicts.
+        const std::span<std::uint8_t> verdicts(reinterpret_cast<std::uint8_t*>(out.mutable_data()),
+                                               static_cast<std::size_t>(a.shape(0)));
+        const Typed<A> x("a", a, 0);
+        const Typed<B> y("b", b, 1);
+        overlaps_into(x, y, verdicts);
+      },
+      kind_of(a_kind), kind_of(b_kind));
+  return out;
+}
+
+py::dict distance_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const PairLists p = pair_lists(a_kind, a, b_kind, b);
+  const auto n = static_cast<py::ssize_t>(p.a.size());
+  py::array_t<bool> overlapping(n);
+  py::array_t<double> distances(n);
+  py::array_t<double> pa = points(p.a.size()), pb = points(p.a.size());
+  auto o = overlapping.mutable_unchecked<1>();
+  auto d = distances.mutable_unchecked<1>();
+  auto ua = pa.mutable_unchecked<2>(), ub = pb.mutable_unchecked<2>();
+  each_pair(p, [](const Shape& x, const Shape& y) { return distance(x, y); },
+            [&](std::size_t k, const DistanceResult& r) {
+              const auto i = static_cast<py::ssize_t>(k);
+              o(i) = r.overlapping, d(i) = r.distance;
+              ua(i, 0) = r.point_a.x(), ua(i, 1) = r.point_a.y(), ub(i, 0) = r.point_b.x(), ub(i, 1) = r.point_b.y();
+            });
+  return py::dict(py::arg("overlapping") = overlapping, py::arg("distance") = distances, py::arg("point_a") = pa,
+                  py::arg("point_b") = pb);
+}
+
+py::dict contact_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
+  const PairLists p = pair_lists(a_kind, a, b_kind, b);
+  const auto n = static_cast<py::ssize_t>(p.a.size());
+  py::array_t<double> separations(n);
+  py::array_t<double> normals = points(p.a.size()), pa = points(p.a.size()), pb = points(p.a.size());
+  auto s = separations.mutable_unchecked<1>();
+  auto un = normals.mutable_unchecked<2>(), ua = pa.mutable_unchecked<2>(), ub = pb.mutable_unchecked<2>();
+  each_pair(p, [](const Shape& x, const Shape& y) { return contact(x, y); },
+            [&](std::size_t k, const Contact& c) {
+              const auto i = static_cast<py::ssize_t>(k);
+              s(i) = c.separation;
+              un(i, 0) = c.normal.x(), un(i, 1) = c.normal.y();
+              ua(i, 0) = c.point_a.x(), ua(i, 1) = c.point_a.y(), ub(i, 0) = c.point_b.x(), ub(i, 1) = c.point_b.y();
+            });
+  return py::dict(py::arg("separation") = separations, py::arg("normal") = normals, py::arg("point_a") = pa,
+                  py::arg("point_b") = pb);
+}
+
+}  // namespace
+
+void add_arrays(py::module_& m) {
+  const std::string kinds = "\n\nShapes of one kind a row: " + kind_rows() + "; row i of a with row i of b.";
+  m.def("overlaps_arrays", &overlaps_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        ("overlaps() of every pair: a bool array." + kinds).c_str());
+  m.def("distance_arrays", &distance_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        (std::string("distance() of every pair: a dict of arrays overlapping (n,), distance (n,), point_a\n"
+                     "and point_b (n, 2).") +
+         kinds)
+            .c_str());
+  m.def("contact_arrays", &contact_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        (std::string("contact() of every pair: a dict of arrays separation (n,), normal, point_a and\n"
+                     "point_b (n, 2).") +
+         kinds)
+            .c_str());
+}
+
+}  // namespace collide2d::python
