@@ -154,7 +154,7 @@ void posed_overlap(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return overlaps(a[k], oa[k], b[k], ob[k]); });
 }
 
-// The batched tests (overlap_batch.h) on the whole workload per iteration.
+// The batched tests (batch.h) on the whole workload per iteration.
 template <class A, class B>
 void batch_overlap(benchmark::State& state) {
   const Workload<A, B>& w = bench::pairs<A, B>(state);

@@ -3,7 +3,7 @@
 // it with the benchmarks' results, and scripts/performance.py plots it).
 //
 // Workload: `pairs` separated ellipse pairs (seeded; centres in a 4 x 4 square, semi-axes 0.05 to
-// 1, aspect up to 10). Reference: the 50-digit distance of tests/mp_reference.h. Methods: robust,
+// 1, aspect up to 10). Reference: the 50-digit distance of tests/support/mp_reference.h. Methods: robust,
 // gradient and polynomial, and Box2D's b2Distance on the inscribed and on the circumscribed N-gons
 // for N = 8 ... 256. Time: the median over `repetitions` passes of the mean time per query in the
 // pass. Error: |d - d_ref| / max(size, centre distance), median and maximum over the pairs.

@@ -17,6 +17,8 @@ import pathlib
 import re
 import sys
 
+ROOT = pathlib.Path(__file__).resolve().parent.parent  # the repository, which the page's paths start from
+
 UNITS = {'ns': 1.0, 'us': 1e3, 'ms': 1e6, 's': 1e9}
 WORKLOADS = [('random', 0), ('candidate', 1), ('scene', 2)]
 # The contact benchmarks add the overlapping pairs among the candidate and the scene pairs.
@@ -120,6 +122,9 @@ def collect(args):
     programs = {}
     for path in sorted(runs.glob('bench_*.json')):
         programs[path.stem] = json.loads(path.read_text())
+        # The program by its name: the folder it was built in is the measuring machine's.
+        context = programs[path.stem]['context']
+        context['executable'] = pathlib.PurePath(context['executable']).name
     today = datetime.date.today().isoformat()
     cpu_slug = re.sub(r'[^a-z0-9]+', '-', args.cpu.lower()).strip('-')
     result = {
@@ -552,12 +557,17 @@ separation 0.
 
 ## Results on file
 
-{chr(10).join(f"- `{f.relative_to(pathlib.Path(args.results).parent)}`" for f in files + side_files)}
+{chr(10).join(f"- `{f.resolve().relative_to(ROOT)}`" for f in files + side_files)}
 '''
     out = pathlib.Path(args.out)
     wanted = {out / 'performance.md': text}
     wanted.update({out / 'performance' / name: svg for name, svg in svgs.items()})
     if args.check:
+        # Results name programs, never the folders of the machine that measured them.
+        placed = [str(f) for f in files + side_files if re.search(r'"(/work|/home|/root|/tmp)/', f.read_text())]
+        if placed:
+            print('results with a path of the machine that made them: ' + ', '.join(placed))
+            sys.exit(1)
         stale = [str(p) for p, content in wanted.items() if not p.exists() or p.read_text() != content]
         if stale:
             print('out of date with bench/results (python3 scripts/performance.py page --results bench/results '

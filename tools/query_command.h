@@ -12,10 +12,10 @@
 // so they round-trip. With Answer::boundary, distance and points are those of the boundary curves
 // (circles and ellipses only; a rectangle gives an error line). With Answer::contact, the line is
 // `separation nx ny ax ay bx by`: the signed distance (minus the penetration depth when the solids
-// overlap), the unit normal from A to B and the deepest (or closest) points (narrowphase/contact.h).
+// overlap), the unit normal from A to B and the deepest (or closest) points (Contact in query.h).
 // With Answer::toi, either shape may carry a motion over one step, `<shape> @ vx vy w` (velocity
 // of the centre and turn in radians, per step; at rest without it), and the line is
-// `hit t nx ny px py` (narrowphase/time_of_impact.h): hit 1 and t the first time of contact (0 when
+// `hit t nx ny px py` (time_of_impact.h): hit 1 and t the first time of contact (0 when
 // they overlap at the start; when the iteration stalls, the time up to which they certainly do not
 // touch, still hit 1, so that nothing tunnels), or hit 0 and t 1 for a miss; the normal from A to B
 // and the midpoint of the closest points at t (for a miss, at the last time evaluated). A motion on

@@ -13,7 +13,7 @@
 /// superset of the tight overlaps; a narrow phase confirms them. A box with NaN, infinity or
 /// min > max is refused with std::invalid_argument, an unknown id with std::out_of_range; either
 /// leaves the broad phase as it was. SweepAndPrune keeps the plane in strips across its sweep axis,
-/// each sorted incrementally (docs/algorithms.md); BruteForceBroadPhase tests every pair, the
+/// each sorted incrementally (docs/algorithms/broad-phase.md); BruteForceBroadPhase tests every pair, the
 /// reference for tests.
 #pragma once
 

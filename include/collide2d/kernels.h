@@ -7,7 +7,7 @@
 /// its pair in kernel order, a rectangle before a circle before an ellipse; two shapes of one kind
 /// in either order (the dispatch of query.h fixes one, so that it is symmetric bit for bit). A
 /// kernel that takes Orientations skips the sines and cosines: each must be Orientation::of(angle)
-/// of its shape, and the result is the plain kernel's bit for bit. docs/algorithms.md gives each
+/// of its shape, and the result is the plain kernel's bit for bit. docs/algorithms/README.md gives each
 /// kernel's method and source, docs/accuracy.md the bounds the tests assert.
 #pragma once
 

@@ -5,7 +5,7 @@
 /// Every function here validates its shapes and throws InvalidShape (naming the field) for NaN,
 /// infinity or a size out of range. Each pair runs the exact kernel of its kinds (kernels.h), two
 /// shapes of one kind put in a fixed order first, so that swapping A and B swaps the result bit for
-/// bit. Points and normals are in the world frame. docs/algorithms.md gives each kernel's method and
+/// bit. Points and normals are in the world frame. docs/algorithms/README.md gives each kernel's method and
 /// docs/accuracy.md the bounds the tests assert.
 #pragma once
 

@@ -1,9 +1,9 @@
-// The batched overlap tests (overlap_batch.h). Google Highway (libhwy-dev) compiles the lane-generic
-// filters once per SIMD target and picks the best the CPU offers at the first call; a plain build
-// then runs on any x86-64 (and on ARM) without -march flags. Highway rather than xsimd: its runtime
-// dispatch is built in (xsimd 8 leaves it to the caller), and its operations are plain functions on
-// vector types, so each kernel's template reads the same on one pair and on a vector of them
-// (lanes.h).
+// The batched overlap tests (batch.h, and overlap_pairs.h for the World). Google Highway
+// (libhwy-dev) compiles the lane-generic filters once per SIMD target and picks the best the CPU
+// offers at the first call; a plain build then runs on any x86-64 (and on ARM) without -march flags.
+// Highway rather than xsimd: its runtime dispatch is built in (xsimd 8 leaves it to the caller), and
+// its operations are plain functions on vector types, so each kernel's template reads the same on
+// one pair and on a vector of them (lanes.h).
 //
 // Work goes in chunks (batch_chunk.h): the vector kernel decides the chunk, and the uncertain pairs
 // go to the exact fallback one by one.

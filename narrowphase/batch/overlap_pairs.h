@@ -1,4 +1,4 @@
-// Private: the batched overlap tests (overlap_batch.h) over pairs given by reference rather than as
+// Private: the batched overlap tests (batch.h) over pairs given by reference rather than as
 // lists of copies: pair(k) returns pair k as a PairRef. The World passes its bodies by index this
 // way, so that a batch entry is two indices and no shape is copied; the public functions are this
 // over their lists. A template, so that pair(k) inlines: a call through a function pointer would

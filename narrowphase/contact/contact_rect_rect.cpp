@@ -14,7 +14,7 @@ using detail::Rotation;
 
 double sign_of(double x) { return x < 0 ? -1.0 : 1.0; }
 
-// Corner numbers of contact.h from the signs of the local coordinates.
+// Corner numbers of FeatureKind (query.h) from the signs of the local coordinates.
 int corner_index(double sx, double sy) {
   if (sy < 0) return sx < 0 ? 0 : 1;
   return sx > 0 ? 2 : 3;

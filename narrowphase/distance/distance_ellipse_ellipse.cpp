@@ -281,7 +281,7 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
   // The gap is the distance between the two support lines, as for separated pairs; within the
   // margin of 0 its sign is rounding, and a negative one means curves that touch or cross by less
   // than the margin (the points' distance would report the margin itself: 1.2e-14 for a ring
-  // whose curves meet, in tests/test_ellipse_ellipse.cpp). Their midpoint is then the witness,
+  // whose curves meet, in tests/accuracy/test_ellipse_ellipse.cpp). Their midpoint is then the witness,
   // within half their distance of both curves.
   const double gap = a_in_b ? c.g : -c.g;
   const DistanceResult r =

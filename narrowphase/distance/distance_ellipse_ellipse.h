@@ -25,7 +25,7 @@
 //   brackets sign changes of g' at fixed directions: a circle on an ellipse's axis near the cusp
 //   of its evolute has two minima beside a maximum, and a sample where g' = 0 misses them. Nearly
 //   congruent pairs, where g is flat, are bounded separately (congruence_of in the .cpp).
-//   Accuracy (tests/test_ellipse_ellipse.cpp and test_circle_pairs.cpp, against a 50-digit
+//   Accuracy (tests/accuracy/test_ellipse_ellipse.cpp and test_circle_pairs.cpp, against a 50-digit
 //   reference, as a fraction of max(size, centre distance); asserted at 8 u = 8.9e-16, the target
 //   being 1e-12): worst 3.7e-16 for the distance and for the boundary distance over all families
 //   (near-tangent gaps +-1e-3 ... +-1e-12, aspect ratios to 1e6, offsets to 1e9, sizes 1e-6 and 1e6,

@@ -13,7 +13,7 @@
 //   the support points), so usually one corner, at most two, are solved.
 // Frames: computed in the rectangle frame after subtracting centres; points returned in world.
 // Accuracy: distance error at most 3.1e-16 of max(size, centre separation) over the hard-case
-// families (tests/test_rect_ellipse.cpp, 50-digit reference).
+// families (tests/accuracy/test_rect_ellipse.cpp, 50-digit reference).
 
 #include <collide2d/kernels.h>
 

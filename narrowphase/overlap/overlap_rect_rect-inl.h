@@ -1,4 +1,4 @@
-// Private: the rectangle–rectangle separating-axis test (overlap_rect_rect.h), written once over
+// Private: the rectangle–rectangle separating-axis test (overlap_rect_rect.cpp), written once over
 // lanes like overlap_rect_ellipse-inl.h (see there, and lanes.h): the one-off kernel runs it on
 // a double, the batch on vectors. It is exact as computed, so no lane is ever uncertain.
 //

@@ -1,4 +1,4 @@
-// The batched overlap tests (overlap_batch.h) against the one-off tests, verdict for verdict, on
+// The batched overlap tests (batch.h, overlap_pairs.h) against the one-off tests, verdict for verdict, on
 // every SIMD target Highway compiled that this CPU runs: the hard-case families (rounding-level
 // gaps included, where the rectangle–ellipse batch must hand pairs to the fallback), two million
 // random rectangle–ellipse, a million rectangle–rectangle and half a million of each circle pair's

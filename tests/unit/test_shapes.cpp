@@ -101,7 +101,7 @@ TEST(Shapes, SupportMaximisesTheDirection) {
   }
 }
 
-// Against the exact box (50 digits, rounded outward; tests/mp_reference.h): aabb() holds it, and
+// Against the exact box (50 digits, rounded outward; tests/support/mp_reference.h): aabb() holds it, and
 // exceeds it by no more than its documented slack of 8 eps of the coordinates (asserted: 10 eps,
 // for the rounding of the half widths themselves).
 TEST(Shapes, AabbHoldsTheExactBoxAndIsTight) {

@@ -16,7 +16,7 @@
 //
 // Accuracy: the closest point and the distance are correct to a few ulps of max(a, b, |p|) for any
 // aspect ratio (tested to 1e6) and for points on, near, inside and far from the curve; the
-// circle–ellipse families in tests/test_circle_pairs.cpp see at most 4.5e-16 of the scale.
+// circle–ellipse families in tests/accuracy/test_circle_pairs.cpp see at most 4.5e-16 of the scale.
 #pragma once
 
 #include <collide2d/shapes.h>
