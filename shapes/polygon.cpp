@@ -218,9 +218,9 @@ void validate(const ConvexPolygon& p) {
   if (p.outline == nullptr) refuse("has no outline: make it with ConvexPolygon::of, hull, box or regular");
 }
 
-Aabb aabb(const ConvexPolygon& p) { return detail::polygon_box(p, Orientation::of(p.angle)); }
+Aabb aabb(const ConvexPolygon& p) { return detail::oriented_box(p, Orientation::of(p.angle)); }
 
-Aabb detail::polygon_box(const ConvexPolygon& p, const Orientation& o) {
+Aabb detail::oriented_box(const ConvexPolygon& p, const Orientation& o) {
   const Rot rot = Rot::of(o);
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec2& v : p.vertices()) {
@@ -231,9 +231,9 @@ Aabb detail::polygon_box(const ConvexPolygon& p, const Orientation& o) {
   return detail::around(p.center, p.radius() - lo.array(), hi.array() + p.radius(), reach);
 }
 
-Vec2 support(const ConvexPolygon& p, const Vec2& d) { return detail::support_turned(p, Rot::of(p.angle), d); }
+Vec2 support(const ConvexPolygon& p, const Vec2& d) { return detail::support(p, Rot::of(p.angle), d); }
 
-Vec2 detail::support_turned(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d) {
+Vec2 detail::support(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d) {
   const Vec2 local = rot.apply_inverse(d);
   const std::span<const Vec2> v = p.vertices();
   const Vec2* best = &v[0];
@@ -259,5 +259,16 @@ bool contains(const ConvexPolygon& poly, const Vec2& p) {
   }
   return inside || nearest <= o.radius * o.radius;
 }
+
+double detail::reach(const ConvexPolygon& p) { return p.outline->reach; }
+double detail::turning_reach(const ConvexPolygon& p) { return p.outline->reach - p.radius(); }
+
+double detail::support_along(const ConvexPolygon& p, const Vec2& local) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Vec2& v : p.vertices()) top = std::max(top, local.dot(v));
+  return top + p.radius();
+}
+
+std::span<const Vec2> detail::core_points(const ConvexPolygon& p) { return p.vertices(); }
 
 }  // namespace collide2d

@@ -53,19 +53,11 @@ namespace {
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
 
 // How fast a shape's support function h(n) changes as the shape turns, per radian: the distance
-// from the centre of the normal line at the support point, |p x n|, at its largest. For an ellipse
-// the point (a cos u, b sin u) gives (a^2 - b^2) |sin u cos u| / sqrt(b^2 cos^2 u + a^2 sin^2 u),
-// largest at tan^2 u = b / a, where it is a - b; a rectangle's corner (hx, hy) supports the
-// directions between its two faces' normals, where |hx n_y - hy n_x| is largest at a face normal:
-// the longer half side. Both are less than the farthest point, the bound of plain conservative
+// from the centre of the normal line at the support point, |p x n|, at its largest (each kind's
+// turning_reach, shapes/internal.h): less than the farthest point, the bound of plain conservative
 // advancement, and a circle's is 0.
 double turning_reach(const Shape& s) {
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::abs(e->a - e->b);
-  if (const auto* r = std::get_if<Rect>(&s)) return r->half_extents.maxCoeff();
-  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length;
-  if (const auto* p = std::get_if<ConvexPolygon>(&s)) return p->outline->reach - p->radius();
-  if (const auto* g = std::get_if<Segment>(&s)) return g->end.norm();
-  return 0.0;
+  return std::visit([](const auto& x) { return detail::turning_reach(x); }, s);
 }
 
 // The motion must be finite and keep the centre within the supported range over the step.
@@ -88,30 +80,7 @@ Vec2 in_axes(const Orientation& o, const Vec2& n) { return detail::Rotation<doub
 // The support function of a shape along a unit direction given in its own axes (a segment's from its
 // first point).
 double support_in_axes(const Shape& s, const Vec2& local) {
-  if (const auto* r = std::get_if<Rect>(&s)) return local.cwiseAbs().dot(r->half_extents);
-  if (const auto* e = std::get_if<Ellipse>(&s))
-    return std::sqrt(e->a * e->a * local.x() * local.x() + e->b * e->b * local.y() * local.y());
-  if (const auto* c = std::get_if<Capsule>(&s)) return c->half_length * std::abs(local.x()) + c->radius;
-  if (const auto* p = std::get_if<ConvexPolygon>(&s)) {
-    double top = -std::numeric_limits<double>::infinity();
-    for (const Vec2& v : p->vertices()) top = std::max(top, local.dot(v));
-    return top + p->radius();
-  }
-  if (const auto* g = std::get_if<Segment>(&s)) return std::max(0.0, local.dot(g->end));
-  return std::get<Circle>(s).radius;
-}
-
-// A capsule's, segment's or polygon's core vertices in its own axes.
-std::span<const Vec2> core_vertices(const Shape& s, std::array<Vec2, 2>& ends) {
-  if (const auto* c = std::get_if<Capsule>(&s)) {
-    ends = {Vec2(-c->half_length, 0), Vec2(c->half_length, 0)};
-    return ends;
-  }
-  if (const auto* g = std::get_if<Segment>(&s)) {
-    ends = {Vec2::Zero(), g->end};
-    return ends;
-  }
-  return std::get<ConvexPolygon>(s).vertices();
+  return std::visit([&local](const auto& x) { return detail::support_along(x, local); }, s);
 }
 
 // An upper bound of a turning shape's support function h along a fixed direction n over the rest of
@@ -140,34 +109,38 @@ SupportBound support_bound(const Shape& s, const Orientation& o, double w, const
   if (w == 0) return out;
   const Vec2 local = in_axes(o, n);
   const auto turn = [&](const Vec2& q) { return local.y() * q.x() - local.x() * q.y(); };  // dh/dtheta
-  if (const auto* e = std::get_if<Ellipse>(&s)) {
-    const Vec2 q(e->a * e->a * local.x(), e->b * e->b * local.y());
-    const double major = std::max(e->a, e->b), minor = std::min(e->a, e->b);
-    out.pieces[0] = {0.0, w * turn(q / support_in_axes(s, local)), w * w * (major * major / minor - minor)};
-  } else if (const auto* r = std::get_if<Rect>(&s)) {
-    // The support corner first: its pieces decide most steps. The corners' dot products are written
-    // out in doubles, which compile to shorter code than arrays of Eigen 2-vectors.
-    const double lx = local.x(), ly = local.y();
-    const double px = std::copysign(r->half_extents.x(), lx), py = std::copysign(r->half_extents.y(), ly);
-    const double cx[4] = {px, -px, px, -px}, cy[4] = {py, py, -py, -py};
-    const double top = lx * px + ly * py;
-    for (std::size_t i = 0; i < 4; ++i) {
-      const double along = lx * cx[i] + ly * cy[i], across = ly * cx[i] - lx * cy[i];
-      out.pieces[i] = {top - along, w * across, w * w * (std::abs(along) + std::abs(across))};
-    }
-    out.count = 4;
-  } else if (!std::holds_alternative<Circle>(s)) {  // a capsule, a segment or a polygon
-    // Each vertex's sinusoid (the radius adds a constant) is at most A + B x + (|A| + |B|) x^2 / 2,
-    // and A is at most h now: one parabola with the largest slope and bend covers them all.
-    std::array<Vec2, 2> ends;
-    double slope = -std::numeric_limits<double>::infinity(), bend = 0.0;
-    for (const Vec2& v : core_vertices(s, ends)) {
-      const double along = local.dot(v), across = turn(v);
-      slope = std::max(slope, w * across);
-      bend = std::max(bend, w * w * (std::abs(along) + std::abs(across)));
-    }
-    out.pieces[0] = {0.0, slope, bend};
-  }
+  std::visit(
+      [&](const auto& x) {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, Ellipse>) {
+          const Vec2 q(x.a * x.a * local.x(), x.b * x.b * local.y());
+          const double major = std::max(x.a, x.b), minor = std::min(x.a, x.b);
+          out.pieces[0] = {0.0, w * turn(q / detail::support_along(x, local)), w * w * (major * major / minor - minor)};
+        } else if constexpr (std::is_same_v<T, Rect>) {
+          // The support corner first: its pieces decide most steps. The corners' dot products are
+          // written out in doubles, which compile to shorter code than arrays of Eigen 2-vectors.
+          const double lx = local.x(), ly = local.y();
+          const double px = std::copysign(x.half_extents.x(), lx), py = std::copysign(x.half_extents.y(), ly);
+          const double cx[4] = {px, -px, px, -px}, cy[4] = {py, py, -py, -py};
+          const double top = lx * px + ly * py;
+          for (std::size_t i = 0; i < 4; ++i) {
+            const double along = lx * cx[i] + ly * cy[i], across = ly * cx[i] - lx * cy[i];
+            out.pieces[i] = {top - along, w * across, w * w * (std::abs(along) + std::abs(across))};
+          }
+          out.count = 4;
+        } else if constexpr (requires { detail::core_points(x); }) {
+          // Each core point's sinusoid (the radius adds a constant) is at most A + B x + (|A| + |B|)
+          // x^2 / 2, and A is at most h now: one parabola with the largest slope and bend covers all.
+          double slope = -std::numeric_limits<double>::infinity(), bend = 0.0;
+          for (const Vec2& v : detail::core_points(x)) {
+            const double along = local.dot(v), across = turn(v);
+            slope = std::max(slope, w * across);
+            bend = std::max(bend, w * w * (std::abs(along) + std::abs(across)));
+          }
+          out.pieces[0] = {0.0, slope, bend};
+        }
+      },
+      s);
   return out;
 }
 
