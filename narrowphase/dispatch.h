@@ -3,7 +3,6 @@
 // the list, so that a list with a kind of its own (a test's) dispatches alike.
 #pragma once
 
-#include "narrowphase/kernel_order.h"
 #include "shapes/kinds.h"
 
 #include <collide2d/query.h>
@@ -81,7 +80,7 @@ template <class X, class Y>
 constexpr bool batched = RowOf<Kinds, X, Y>::batched;
 
 // kernel(x, y, swapped) with the pair in the list's rank order, two shapes of one kind by key
-// (kernel_order.h), so that swapping A and B swaps the result bit for bit.
+// (shapes/kinds.h), so that swapping A and B swaps the result bit for bit.
 template <class List, class Variant, class Kernel>
 auto in_rank_order(const Variant& a, const Variant& b, Kernel kernel) {
   return std::visit(

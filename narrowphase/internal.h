@@ -4,5 +4,4 @@
 #pragma once
 
 #include "narrowphase/batch/overlap_pairs.h"
-#include "narrowphase/kernel_order.h"
 #include "narrowphase/pairs.h"

@@ -4,7 +4,9 @@
 // - its number in the replay and wire formats, fixed for ever and never reused;
 // - its row: the numbers the query grammar and the Python arrays write it with, and the shape
 //   made from them (a polygon, whose vertices vary in number, has its own grammar instead);
-// - its fields in the scene format, besides its centre.
+// - its fields in the scene format, besides its centre;
+// - the order of two shapes of it in a pair, by key (or its own precedes()), so that the pair's
+//   kernel takes them one way whichever way the caller gave them.
 // Its geometry (validate, aabb, support, contains, reach_of) is declared in shapes.h and defined in
 // its own file, shapes/<word>.cpp; a kind must have each (ShapeKind, below). What follows from the
 // entries is derived from them at compile time: the rank, the grammar's text, and with the pair table
@@ -50,6 +52,8 @@ struct Kind<Circle> {
   static constexpr RowNames<3> row{"cx", "cy", "r"};
   static Circle from_row(const double* v) { return {Vec2(v[0], v[1]), v[2]}; }
   static constexpr std::array<std::string_view, 1> fields{"radius"};
+  // The order of two circles in a pair (precedes()): by key.
+  static std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
 };
 
 template <>
@@ -59,6 +63,7 @@ struct Kind<Ellipse> {
   static constexpr RowNames<5> row{"cx", "cy", "a", "b", "theta"};
   static Ellipse from_row(const double* v) { return {Vec2(v[0], v[1]), v[2], v[3], v[4]}; }
   static constexpr std::array<std::string_view, 3> fields{"a", "b", "angle"};
+  static std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }
 };
 
 template <>
@@ -68,6 +73,9 @@ struct Kind<Rect> {
   static constexpr RowNames<5> row{"cx", "cy", "hx", "hy", "theta"};
   static Rect from_row(const double* v) { return {Vec2(v[0], v[1]), Vec2(v[2], v[3]), v[4]}; }
   static constexpr std::array<std::string_view, 2> fields{"half_extents", "angle"};
+  static std::array<double, 5> key(const Rect& r) {
+    return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
+  }
 };
 
 template <>
@@ -77,6 +85,9 @@ struct Kind<Capsule> {
   static constexpr RowNames<5> row{"cx", "cy", "h", "r", "theta"};
   static Capsule from_row(const double* v) { return {Vec2(v[0], v[1]), v[2], v[3], v[4]}; }
   static constexpr std::array<std::string_view, 3> fields{"half_length", "radius", "angle"};
+  static std::array<double, 5> key(const Capsule& c) {
+    return {c.center.x(), c.center.y(), c.half_length, c.radius, c.angle};
+  }
 };
 
 template <>
@@ -86,6 +97,18 @@ struct Kind<ConvexPolygon> {
   // 3 to 8 vertices counter-clockwise in its own frame, after its pose and radius.
   static constexpr std::string_view grammar = "cx cy theta r x0 y0 x1 y1 x2 y2 ...";
   static constexpr std::array<std::string_view, 3> fields{"vertices", "radius", "angle"};
+  // Its pose, then its outline's radius, count and vertices (never its address, which would order a
+  // replay differently): the outline is read only where the poses tie, as copies of one polygon do.
+  static bool precedes(const ConvexPolygon& p, const ConvexPolygon& q) {
+    const auto pose = [](const ConvexPolygon& x) { return std::array<double, 3>{x.center.x(), x.center.y(), x.angle}; };
+    if (pose(p) != pose(q)) return pose(p) < pose(q);
+    const auto outline = [](const ConvexPolygon& x) {
+      std::array<double, 2 + 2 * kMaxPolygonVertices> k{x.radius(), static_cast<double>(x.count())};
+      for (int i = 0; i < x.count(); ++i) k[2 + 2 * i] = x.vertices()[i].x(), k[3 + 2 * i] = x.vertices()[i].y();
+      return k;
+    };
+    return outline(p) < outline(q);
+  }
 };
 
 // Level geometry: no centre of its own in the formats users write, its two points place it.
@@ -96,6 +119,9 @@ struct Kind<Segment> {
   static constexpr RowNames<4> row{"x1", "y1", "x2", "y2"};
   static Segment from_row(const double* v) { return Segment::between(Vec2(v[0], v[1]), Vec2(v[2], v[3])); }
   static constexpr std::array<std::string_view, 1> fields{"points"};
+  static std::array<double, 5> key(const Segment& s) {
+    return {s.center.x(), s.center.y(), s.end.x(), s.end.y(), s.angle};
+  }
 };
 
 // Kinds in rank order: a pair of two kinds goes to its kernel in this order (the lower rank as A).
@@ -135,6 +161,17 @@ using Kinds = KindList<Rect, ConvexPolygon, Capsule, Segment, Circle, Ellipse>;
 template <class T>
 constexpr int rank() {
   return Kinds::rank<T>();
+}
+
+// Whether x comes before y, the order in which kernels take two shapes of one kind, so that swapping
+// A and B swaps the result exactly, bit for bit, whatever frame the kernel uses.
+template <class T>
+bool precedes(const T& x, const T& y) {
+  if constexpr (requires { Kind<T>::precedes(x, y); }) {
+    return Kind<T>::precedes(x, y);
+  } else {
+    return Kind<T>::key(x) < Kind<T>::key(y);
+  }
 }
 
 // Whether the kind is written as a row of fixed length.

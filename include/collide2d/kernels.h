@@ -4,11 +4,12 @@
 /// the World runs.
 ///
 /// Contract: the shapes must be valid (validate() in shapes.h); the kernels do not check. Each takes
-/// its pair in kernel order, a rectangle before a circle before an ellipse; two shapes of one kind
-/// in either order (the dispatch of query.h fixes one, so that it is symmetric bit for bit). A
-/// kernel that takes Orientations skips the sines and cosines: each must be Orientation::of(angle)
-/// of its shape, and the result is the plain kernel's bit for bit. docs/algorithms/README.md gives each
-/// kernel's method and source, docs/accuracy.md the bounds the tests assert.
+/// its pair in kernel order, as its name says: a rectangle, a polygon, a capsule, a segment, a
+/// circle, an ellipse; two shapes of one kind in either order (the dispatch of query.h fixes one, so
+/// that it is symmetric bit for bit). A kernel that takes Orientations skips the sines and cosines:
+/// each must be Orientation::of(angle) of its shape, and the result is the plain kernel's bit for
+/// bit. docs/algorithms/README.md gives each pair's kernels and their methods, docs/accuracy.md the
+/// bounds the tests assert.
 #pragma once
 
 #include <collide2d/query.h>

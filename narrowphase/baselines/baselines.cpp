@@ -1,7 +1,7 @@
 #include "narrowphase/baselines/baselines.h"
+#include "shapes/kinds.h"
 
 #include "narrowphase/baselines/ellipse_seed_solvers.h"
-#include "narrowphase/kernel_order.h"
 #include "narrowphase/shared/ellipse/ellipse_contact.h"
 #include "narrowphase/shared/frames/rect_ellipse_frame.h"
 

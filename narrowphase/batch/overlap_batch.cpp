@@ -11,7 +11,6 @@
 #include "narrowphase/batch/overlap_pairs.h"
 
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include "narrowphase/shared/frames/rect_ellipse_frame.h"
 #include "narrowphase/shared/frames/rect_pair_frame.h"

@@ -7,7 +7,6 @@
 
 #include <collide2d/shapes.h>
 #include "narrowphase/batch/batch_chunk.h"
-#include "narrowphase/kernel_order.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include "narrowphase/pairs.h"
@@ -176,9 +175,9 @@ void settle(Pair pair, std::size_t n, At at, std::span<std::uint8_t> overlapping
   }
 }
 
-// overlapping[k] for the pairs k < overlapping.size(), A before B in kernel order (rectangle,
-// polygon, capsule, circle, ellipse). A polygon or a capsule first meets the disc test (a few
-// fields a pair, no vertex read), and only the pairs it leaves go on.
+// overlapping[k] for the pairs k < overlapping.size(), A before B in rank order (shapes/kinds.h).
+// A pair on convex cores first meets the disc test (a few fields a pair, no vertex read), and only
+// the pairs it leaves go on.
 template <class A, class B, class Pair>
 void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
   if constexpr (on_cores<A, B>) {

@@ -38,8 +38,6 @@ Aabb aabb(const HalfPlane&) {
 // direction that is not the normal.
 Vec2 support(const HalfPlane& h, const Vec2&) { return h.offset * h.normal; }
 bool contains(const HalfPlane& h, const Vec2& p) { return h.normal.dot(p) <= h.offset; }
-// The key that orders two half-planes (kernel_order.h).
-std::array<double, 3> key(const HalfPlane& h) { return {h.normal.x(), h.normal.y(), h.offset}; }
 
 using Shape7 = std::variant<Circle, Ellipse, Rect, Capsule, ConvexPolygon, Segment, HalfPlane>;
 
@@ -53,6 +51,7 @@ template <>
 struct Kind<HalfPlane> {
   static constexpr std::string_view word = "halfplane";
   static constexpr std::uint32_t number = 6;
+  static std::array<double, 3> key(const HalfPlane& h) { return {h.normal.x(), h.normal.y(), h.offset}; }
 };
 
 using KindsWithHalfPlane = KindList<Rect, ConvexPolygon, Capsule, Segment, Circle, Ellipse, HalfPlane>;
