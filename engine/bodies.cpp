@@ -2,6 +2,7 @@
 // phase of their kind (the static tree, or the sweep and prune with the moving bodies' tree).
 #include "engine/world_state.h"
 #include "shapes/internal.h"
+#include "shapes/kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -263,10 +264,11 @@ void require_not_chain(bool chain, ShapeId id, const char* call) {
   }
 }
 
-// A segment is level geometry: its body must be static (BodyDef::is_static).
+// A segment is level geometry (shapes/kinds.h): its body must be static (BodyDef::is_static).
 void require_static_for(const Shape& shape, bool is_static, const char* call) {
-  if (!is_static && std::holds_alternative<Segment>(shape)) {
-    throw std::invalid_argument(std::string(call) + ": a segment is level geometry, and its body must be static");
+  if (!is_static && is_level_geometry(shape)) {
+    throw std::invalid_argument(std::string(call) + ": a " + shape_name(shape) +
+                                " is level geometry, and its body must be static");
   }
 }
 

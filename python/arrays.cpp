@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -18,6 +19,7 @@
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <utility>
 #include <vector>
 
 namespace collide2d::python {
@@ -26,22 +28,43 @@ namespace {
 
 using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// The kinds an array holds, one shape a row in its row of the query grammar (shapes/kinds.h): the
-// moving kinds with a row of fixed length.
+// The kinds an array holds, one shape a row in its row of the query grammar (shapes/kinds.h): every
+// kind with a row of fixed length but level geometry.
 template <class S>
 struct KindTag {
   using type = S;
 };
-using AnyKind = std::variant<KindTag<Circle>, KindTag<Ellipse>, KindTag<Rect>, KindTag<Capsule>>;
+template <class Tags>
+struct VariantOf;
+template <class... Tags>
+struct VariantOf<std::tuple<Tags...>> {
+  using type = std::variant<Tags...>;
+};
+template <class... S>
+using RowKinds = typename VariantOf<decltype(std::tuple_cat(
+    std::declval<std::conditional_t<detail::HasRow<S> && !detail::level_geometry<S>(), std::tuple<KindTag<S>>,
+                                    std::tuple<>>>()...))>::type;
+template <class List>
+struct ArrayKindsOf;
+template <class... S>
+struct ArrayKindsOf<detail::KindList<S...>> {
+  using type = RowKinds<S...>;
+};
+using AnyKind = ArrayKindsOf<detail::Kinds>::type;
 
-// Each kind's text, `what`, joined: "circle, ellipse, rect or capsule", "circle (cx cy r), ...".
+// Each kind's text, `what`, by its number, joined: "circle, ellipse, rect or capsule",
+// "circle (cx cy r), ...".
 template <class What>
 std::string each_kind(const char* last, What what) {
-  std::vector<std::string> texts;
-  [&]<class... S>(std::variant<KindTag<S>...>*) { (texts.push_back(what(KindTag<S>{})), ...); }(
-      static_cast<AnyKind*>(nullptr));
+  std::vector<std::pair<std::uint32_t, std::string>> texts;
+  [&]<class... Tags>(std::variant<Tags...>*) {
+    (texts.emplace_back(detail::Kind<typename Tags::type>::number, what(Tags{})), ...);
+  }(static_cast<AnyKind*>(nullptr));
+  std::sort(texts.begin(), texts.end());
   std::string out;
-  for (std::size_t k = 0; k < texts.size(); ++k) out += (k == 0 ? "" : k + 1 == texts.size() ? last : ", ") + texts[k];
+  for (std::size_t k = 0; k < texts.size(); ++k) {
+    out += (k == 0 ? "" : k + 1 == texts.size() ? last : ", ") + texts[k].second;
+  }
   return out;
 }
 std::string kind_words() {
@@ -56,8 +79,8 @@ std::string kind_rows() {
 
 AnyKind kind_of(const std::string& name) {
   std::optional<AnyKind> found;
-  [&]<class... S>(std::variant<KindTag<S>...>*) {
-    ((name == detail::Kind<S>::word ? void(found = KindTag<S>{}) : void()), ...);
+  [&]<class... Tags>(std::variant<Tags...>*) {
+    ((name == detail::Kind<typename Tags::type>::word ? void(found = Tags{}) : void()), ...);
   }(static_cast<AnyKind*>(nullptr));
   if (!found) throw py::value_error("unknown shape kind '" + name + "' (" + kind_words() + ")");
   return *found;
@@ -144,10 +167,10 @@ struct Typed {
     orientations.clear();
     for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
       shapes.push_back(checked_row<S>(which, rows, i));
-      if constexpr (std::is_same_v<S, Circle>) {
-        orientations.push_back(Orientation{});  // a circle's is not read
-      } else {
+      if constexpr (requires { shapes.back().angle; }) {
         orientations.push_back(Orientation::of(shapes.back().angle));
+      } else {
+        orientations.push_back(Orientation{});  // a kind with no angle (a circle) has none to read
       }
     }
   }

@@ -5,6 +5,8 @@
 // - its row: the numbers the query grammar and the Python arrays write it with, and the shape
 //   made from them (a polygon, whose vertices vary in number, has its own grammar instead);
 // - its fields in the scene format, besides its centre;
+// - its sizes in the replay and wire formats (sizes(), outline()), and the shape made of them at a
+//   centre and angle (made());
 // - the order of two shapes of it in a pair, by key (or its own precedes()), so that the pair's
 //   kernel takes them one way whichever way the caller gave them.
 // Its geometry (validate, aabb, support, contains, reach_of) is declared in shapes.h and defined in
@@ -18,6 +20,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -25,6 +30,11 @@
 #include <variant>
 
 namespace collide2d::detail {
+
+// What a shape is apart from where (its centre and angle), as the replay and wire formats write it:
+// two sizes, and a polygon's outline of vertices too (outline(); made() takes it, the others none).
+using Sizes = std::array<double, 2>;
+using Outline = std::span<const Vec2>;
 
 // A kind's entry (below); a type with none is no kind.
 template <class T>
@@ -54,6 +64,8 @@ struct Kind<Circle> {
   static constexpr std::array<std::string_view, 1> fields{"radius"};
   // The order of two circles in a pair (precedes()): by key.
   static std::array<double, 3> key(const Circle& c) { return {c.center.x(), c.center.y(), c.radius}; }
+  static std::array<double, 2> sizes(const Circle& c) { return {c.radius, 0.0}; }
+  static Circle made(const Vec2& center, double, const Sizes& s, Outline) { return {center, s[0]}; }
 };
 
 template <>
@@ -64,6 +76,8 @@ struct Kind<Ellipse> {
   static Ellipse from_row(const double* v) { return {Vec2(v[0], v[1]), v[2], v[3], v[4]}; }
   static constexpr std::array<std::string_view, 3> fields{"a", "b", "angle"};
   static std::array<double, 5> key(const Ellipse& e) { return {e.center.x(), e.center.y(), e.a, e.b, e.angle}; }
+  static std::array<double, 2> sizes(const Ellipse& e) { return {e.a, e.b}; }
+  static Ellipse made(const Vec2& center, double angle, const Sizes& s, Outline) { return {center, s[0], s[1], angle}; }
 };
 
 template <>
@@ -75,6 +89,10 @@ struct Kind<Rect> {
   static constexpr std::array<std::string_view, 2> fields{"half_extents", "angle"};
   static std::array<double, 5> key(const Rect& r) {
     return {r.center.x(), r.center.y(), r.half_extents.x(), r.half_extents.y(), r.angle};
+  }
+  static std::array<double, 2> sizes(const Rect& r) { return {r.half_extents.x(), r.half_extents.y()}; }
+  static Rect made(const Vec2& center, double angle, const Sizes& s, Outline) {
+    return {center, Vec2(s[0], s[1]), angle};
   }
 };
 
@@ -88,6 +106,8 @@ struct Kind<Capsule> {
   static std::array<double, 5> key(const Capsule& c) {
     return {c.center.x(), c.center.y(), c.half_length, c.radius, c.angle};
   }
+  static std::array<double, 2> sizes(const Capsule& c) { return {c.half_length, c.radius}; }
+  static Capsule made(const Vec2& center, double angle, const Sizes& s, Outline) { return {center, s[0], s[1], angle}; }
 };
 
 template <>
@@ -109,9 +129,15 @@ struct Kind<ConvexPolygon> {
     };
     return outline(p) < outline(q);
   }
+  static std::array<double, 2> sizes(const ConvexPolygon& p) { return {p.radius(), 0.0}; }
+  static std::span<const Vec2> outline(const ConvexPolygon& p) { return p.vertices(); }
+  static ConvexPolygon made(const Vec2& center, double angle, const Sizes& s, Outline vertices) {
+    return ConvexPolygon::of(vertices, s[0]).at(center, angle);
+  }
 };
 
-// Level geometry: no centre of its own in the formats users write, its two points place it.
+// Level geometry: on static bodies only; no centre of its own in the formats users write, its two
+// points place it.
 template <>
 struct Kind<Segment> {
   static constexpr std::string_view word = "segment";
@@ -122,6 +148,11 @@ struct Kind<Segment> {
   static std::array<double, 5> key(const Segment& s) {
     return {s.center.x(), s.center.y(), s.end.x(), s.end.y(), s.angle};
   }
+  static std::array<double, 2> sizes(const Segment& s) { return {s.end.x(), s.end.y()}; }
+  static Segment made(const Vec2& center, double angle, const Sizes& s, Outline) {
+    return {center, Vec2(s[0], s[1]), angle};
+  }
+  static constexpr bool level_geometry = true;  // on static bodies only
 };
 
 // Kinds in rank order: a pair of two kinds goes to its kernel in this order (the lower rank as A).
@@ -208,9 +239,33 @@ decltype(auto) with_kind(const Shape& s, F&& f) {
   return std::visit([&f](const auto& x) -> decltype(auto) { return f(x, Kind<std::decay_t<decltype(x)>>{}); }, s);
 }
 
-// The number and word of the kind a shape holds.
+// Whether the kind is level geometry, which the World takes on static bodies only.
+template <class T>
+constexpr bool level_geometry() {
+  if constexpr (requires { Kind<T>::level_geometry; }) {
+    return Kind<T>::level_geometry;
+  } else {
+    return false;
+  }
+}
+inline bool is_level_geometry(const Shape& s) {
+  return with_kind(s, [](const auto& x, auto) { return level_geometry<std::decay_t<decltype(x)>>(); });
+}
+
+// The number of the kind a shape holds.
 inline std::uint32_t kind_number(const Shape& s) {
   return with_kind(s, [](const auto&, auto kind) { return decltype(kind)::number; });
+}
+
+// The shape of the kind numbered `number` with these sizes and outline, at a centre and angle.
+// Throws std::invalid_argument for a number no kind has.
+inline Shape made(std::uint32_t number, const Vec2& center, double angle, const Sizes& sizes, Outline outline) {
+  std::optional<Shape> shape;
+  Kinds::each([&]<class T>() {
+    if (Kind<T>::number == number) shape = Kind<T>::made(center, angle, sizes, outline);
+  });
+  if (!shape) throw std::invalid_argument("no shape kind is numbered " + std::to_string(number));
+  return *shape;
 }
 
 }  // namespace collide2d::detail

@@ -33,7 +33,7 @@ struct Wire {
   std::uint8_t flags = 0;
   std::uint8_t pad = 0;
   std::array<double, 3> start{};   // x, y, angle
-  std::array<double, 5> fields{};  // the shape's centre and sizes, in its kind's order
+  std::array<double, 5> fields{};  // the shape's centre, sizes (shapes/kinds.h) and angle
   std::array<double, 2 * kMaxPolygonVertices> vertices{};
   std::array<double, 4> previous{};  // min x, min y, max x, max y
 };
@@ -51,49 +51,28 @@ Wire wire_of(const BodyRecord& r, const std::optional<Aabb>& previous, bool owne
                                 (r.continuous ? kContinuous : 0) | (previous ? kHadReach : 0) | (owned ? kOwned : 0));
   w.start = {r.start.position.x(), r.start.position.y(), r.start.angle};
   if (previous) w.previous = {previous->min.x(), previous->min.y(), previous->max.x(), previous->max.y()};
-  std::visit(
-      [&](const auto& s) {
-        using S = std::decay_t<decltype(s)>;
-        const Vec2 c = center_of(Shape(s));
-        if constexpr (std::is_same_v<S, Circle>) w.fields = {c.x(), c.y(), s.radius, 0, 0};
-        if constexpr (std::is_same_v<S, Ellipse>) w.fields = {c.x(), c.y(), s.a, s.b, s.angle};
-        if constexpr (std::is_same_v<S, Rect>)
-          w.fields = {c.x(), c.y(), s.half_extents.x(), s.half_extents.y(), s.angle};
-        if constexpr (std::is_same_v<S, Capsule>) w.fields = {c.x(), c.y(), s.half_length, s.radius, s.angle};
-        if constexpr (std::is_same_v<S, Segment>) w.fields = {c.x(), c.y(), s.end.x(), s.end.y(), s.angle};
-        if constexpr (std::is_same_v<S, ConvexPolygon>) {
-          w.fields = {c.x(), c.y(), s.radius(), s.angle, 0};
-          w.count = static_cast<std::uint8_t>(s.count());
-          for (int k = 0; k < s.count(); ++k) {
-            w.vertices[static_cast<std::size_t>(2 * k)] = s.vertices()[static_cast<std::size_t>(k)].x();
-            w.vertices[static_cast<std::size_t>(2 * k + 1)] = s.vertices()[static_cast<std::size_t>(k)].y();
-          }
-        }
-      },
-      r.shape);
+  const Vec2 c = center_of(r.shape);
+  detail::with_kind(r.shape, [&](const auto& x, auto kind) {
+    using K = decltype(kind);
+    const detail::Sizes sizes = K::sizes(x);
+    w.fields = {c.x(), c.y(), sizes[0], sizes[1], angle_of(r.shape)};
+    if constexpr (requires { K::outline(x); }) {
+      w.count = static_cast<std::uint8_t>(K::outline(x).size());
+      for (std::size_t k = 0; k < K::outline(x).size(); ++k) {
+        w.vertices[2 * k] = K::outline(x)[k].x();
+        w.vertices[2 * k + 1] = K::outline(x)[k].y();
+      }
+    }
+  });
   return w;
 }
 
 Shape shape_of(const Wire& w) {
   const auto& f = w.fields;
-  const Vec2 c(f[0], f[1]);
-  switch (std::uint32_t{w.kind}) {
-    case detail::Kind<Circle>::number:
-      return Circle{c, f[2]};
-    case detail::Kind<Ellipse>::number:
-      return Ellipse{c, f[2], f[3], f[4]};
-    case detail::Kind<Rect>::number:
-      return Rect{c, Vec2(f[2], f[3]), f[4]};
-    case detail::Kind<Capsule>::number:
-      return Capsule{c, f[2], f[3], f[4]};
-    case detail::Kind<Segment>::number:
-      return Segment{c, Vec2(f[2], f[3]), f[4]};
-    default: {
-      std::vector<Vec2> vertices;
-      for (int k = 0; k < w.count; ++k) vertices.emplace_back(w.vertices[2 * k], w.vertices[2 * k + 1]);
-      return ConvexPolygon::of(vertices, f[2]).at(c, f[3]);
-    }
-  }
+  std::array<Vec2, kMaxPolygonVertices> outline;
+  for (int k = 0; k < w.count; ++k)
+    outline[static_cast<std::size_t>(k)] = Vec2(w.vertices[2 * k], w.vertices[2 * k + 1]);
+  return detail::made(w.kind, Vec2(f[0], f[1]), f[4], {f[2], f[3]}, std::span(outline.data(), w.count));
 }
 
 BodyRecord record_of(const Wire& w) {

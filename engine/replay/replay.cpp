@@ -62,23 +62,18 @@ void put(Bytes& out, const Pair& p) {
   put(out, p.second);
 }
 
-// A shape's sizes, its pose left out: two numbers, then a polygon's vertices in its own frame.
+// A shape's sizes, its pose left out (shapes/kinds.h): two numbers, then a polygon's vertices in its
+// own frame.
 void put_sizes(Bytes& out, const Shape& s) {
-  std::visit(
-      [&](const auto& x) {
-        using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, Circle>) put(out, Vec2(x.radius, 0.0));
-        if constexpr (std::is_same_v<T, Ellipse>) put(out, Vec2(x.a, x.b));
-        if constexpr (std::is_same_v<T, Rect>) put(out, x.half_extents);
-        if constexpr (std::is_same_v<T, Capsule>) put(out, Vec2(x.half_length, x.radius));
-        if constexpr (std::is_same_v<T, Segment>) put(out, x.end);
-        if constexpr (std::is_same_v<T, ConvexPolygon>) {
-          put(out, Vec2(x.radius(), 0.0));
-          put(out, static_cast<std::uint32_t>(x.count()));
-          for (const Vec2& v : x.vertices()) put(out, v);
-        }
-      },
-      s);
+  detail::with_kind(s, [&](const auto& x, auto kind) {
+    using K = decltype(kind);
+    const detail::Sizes sizes = K::sizes(x);
+    put(out, Vec2(sizes[0], sizes[1]));
+    if constexpr (requires { K::outline(x); }) {
+      put(out, static_cast<std::uint32_t>(K::outline(x).size()));
+      for (const Vec2& v : K::outline(x)) put(out, v);
+    }
+  });
 }
 
 // What a shape is, apart from where: the table's entry for it while this stays the same.

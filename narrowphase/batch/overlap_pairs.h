@@ -59,15 +59,6 @@ inline EllipseEllipseLanes<double> lanes_of(const PairRef<Ellipse, Ellipse>& p) 
                             : ellipse_ellipse_lanes(p.a, p.a_orientation, p.b, p.b_orientation);
 }
 
-// A core shape's core as the lanes take it: every vertex slot (those past the count repeating the
-// first), the count and the radius.
-inline const std::array<Vec2, kMaxPolygonVertices>& slots_of(const ConvexPolygon& p) { return p.outline->vertices; }
-inline std::array<Vec2, 2> slots_of(const Capsule& c) { return segment_of(c); }
-inline int count_of(const ConvexPolygon& p) { return p.count(); }
-inline int count_of(const Capsule&) { return 2; }
-inline double radius_of(const ConvexPolygon& p) { return p.radius(); }
-inline double radius_of(const Capsule& c) { return c.radius; }
-
 // A core shape's core placed in the frame of an ellipse of semi-axes a, b posed at `frame_center` and
 // `frame`.
 template <class A, std::size_t N = std::tuple_size_v<std::decay_t<decltype(slots_of(std::declval<A>()))>>>

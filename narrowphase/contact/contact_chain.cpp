@@ -9,9 +9,11 @@
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
+#include "shapes/kinds.h"
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -165,8 +167,10 @@ Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& opt
   validate(a);
   validate(b);
   detail::validate(options);
-  if (std::holds_alternative<Segment>(b))
-    throw UnsupportedPair("a chain segment does not pair with a segment: both are level geometry");
+  if (detail::is_level_geometry(b)) {
+    throw UnsupportedPair(std::string("a chain segment does not pair with a ") + shape_name(b) +
+                          ": both are level geometry");
+  }
   return contact(a, Orientation::of(a.segment.angle), b, Orientation::of(angle_of(b)), options);
 }
 

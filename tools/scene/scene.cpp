@@ -286,8 +286,7 @@ SceneBody parse_body(const json& b, std::size_t index) {
     fail(field, "a static body does not move: remove its velocity and angular_velocity");
   }
   if (body.is_static && body.continuous) fail(field, "a static body cannot be continuous");
-  const auto segment = [](const Shape& s) { return std::holds_alternative<Segment>(s); };
-  if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), segment)) {
+  if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), detail::is_level_geometry)) {
     fail(field, std::string("a ") + (body.chain.empty() ? "segment" : "chain") +
                     " is level geometry: its body must be static (\"static\": true)");
   }

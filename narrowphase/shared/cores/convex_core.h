@@ -152,6 +152,15 @@ inline std::array<Vec2, 4> segment_normals(const Segment& s) {
   return {right, -right, d, -d};
 }
 
+// A core shape's core as the lanes take it: every vertex slot (those past the count repeating the
+// first), the count and the radius.
+inline const std::array<Vec2, kMaxPolygonVertices>& slots_of(const ConvexPolygon& p) { return p.outline->vertices; }
+inline std::array<Vec2, 2> slots_of(const Capsule& c) { return segment_of(c); }
+inline int count_of(const ConvexPolygon& p) { return p.count(); }
+inline int count_of(const Capsule&) { return 2; }
+inline double radius_of(const ConvexPolygon& p) { return p.radius(); }
+inline double radius_of(const Capsule& c) { return c.radius; }
+
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
 // vertex there. Every axis at once in SIMD lanes (best_axis.cpp); x has an axis.
