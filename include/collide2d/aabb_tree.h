@@ -79,11 +79,11 @@ class AabbTree {
   template <class Visit>
   void query(const Aabb& box, Visit&& visit) const;
 
-  /// visit(value, reach) -> new reach, for each stored box the ray origin + t * direction, t in
-  /// [0, reach], meets. The reach returned bounds the rest of the walk, and the nearer child of each
-  /// node is walked first, so that a near hit skips the boxes behind it (the order is not sorted
-  /// overall); a negative reach stops the walk. The direction need not be a unit vector: t is in its
-  /// lengths.
+  /// visit(value, reach) -> new reach for each stored box the ray meets, nearer boxes first.
+  /// The ray is origin + t * direction, t in [0, reach]. The reach returned bounds the rest of the
+  /// walk, and the nearer child of each node is walked first, so that a near hit skips the boxes
+  /// behind it (the order is not sorted overall); a negative reach stops the walk. The direction
+  /// need not be a unit vector: t is in its lengths.
   template <class Visit>
   void ray_cast(const Vec2& origin, const Vec2& direction, double reach, Visit&& visit) const;
 

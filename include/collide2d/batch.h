@@ -34,7 +34,8 @@ void overlap_circle_ellipse(std::span<const Circle> circles, std::span<const Ell
 void overlap_ellipse_ellipse(std::span<const Ellipse> a, std::span<const Orientation> a_orientations,
                              std::span<const Ellipse> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping);
-
+/// The same for the pairs on convex cores: a polygon or a capsule with an ellipse or a circle, and
+/// two polygons.
 void overlap_polygon_ellipse(std::span<const ConvexPolygon> polygons, std::span<const Orientation> polygon_orientations,
                              std::span<const Ellipse> ellipses, std::span<const Orientation> ellipse_orientations,
                              std::span<std::uint8_t> overlapping);
@@ -49,13 +50,13 @@ void overlap_polygon_polygon(std::span<const ConvexPolygon> a, std::span<const O
                              std::span<const ConvexPolygon> b, std::span<const Orientation> b_orientations,
                              std::span<std::uint8_t> overlapping);
 
-/// contacts[i] = contact_circle_ellipse(circles[i], ellipses[i], ellipse_orientations[i]), bit for
-/// bit: the point-ellipse roots of several vectors of pairs step side by side, each lane stopping
+/// contacts[i] = contact_circle_ellipse(circles[i], ellipses[i], ellipse_orientations[i]).
+/// Bit for bit: the point-ellipse roots of several vectors of pairs step side by side, each lane stopping
 /// where the one-off root stops.
 void contact_circle_ellipse(std::span<const Circle> circles, std::span<const Ellipse> ellipses,
                             std::span<const Orientation> ellipse_orientations, std::span<Contact> contacts);
-/// contacts[i] = contact_rect_circle(rects[i], rect_orientations[i], circles[i]), bit for bit: every
-/// case of the closed form computed per lane and the pair's own kept.
+/// contacts[i] = contact_rect_circle(rects[i], rect_orientations[i], circles[i]).
+/// Bit for bit: every case of the closed form computed per lane and the pair's own kept.
 void contact_rect_circle(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,
                          std::span<const Circle> circles, std::span<Contact> contacts);
 

@@ -95,8 +95,8 @@ class BroadPhaseBase {
   void check(ProxyId id) const;
 };
 
-/// Runs task(k) for every k in [0, count), possibly at once on several threads, and returns when all
-/// are done (the World passes its thread pool's).
+/// Runs task(k) for every k in [0, count) and returns when all are done.
+/// The tasks may run at once on several threads (the World passes its thread pool's).
 using ParallelFor = std::function<void(std::size_t count, const std::function<void(std::size_t)>& task)>;
 
 /// The incremental sweep and prune over strips of the plane.
@@ -117,6 +117,7 @@ class SweepAndPrune : public BroadPhaseBase {
     std::size_t strips = 0;         ///< strips holding boxes
     std::size_t axis_overlaps = 0;  ///< pairs overlapping on the sweep axis within a strip (checked across)
   };
+  /// What the last update() did.
   const UpdateStats& last_update() const { return stats_; }
 
  private:

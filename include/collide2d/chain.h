@@ -44,8 +44,9 @@ struct ChainSegment {
   }
 };
 
-/// Throws InvalidShape unless the segment is valid and each ghost is a valid point apart from the
-/// segment's point next to it and not folded back onto the segment (the chain turning a half turn).
+/// Throws InvalidShape unless the chain segment is valid.
+/// Valid: the segment is, and each ghost is a valid point apart from the segment's point next to it
+/// and not folded back onto the segment (the chain turning a half turn).
 void validate(const ChainSegment& s);
 
 /// The chain segments of a polyline, in the world: a loop of 3 or more points closes on its first

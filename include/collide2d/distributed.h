@@ -28,8 +28,8 @@ struct DistributedOptions {
   /// The slab bounds to start with, ranks - 1 of them, increasing; empty: 0 for two ranks, and for
   /// more, bounds 100 apart centred on 0.
   std::vector<double> bounds{};
-  /// Frames between moves of the bounds to the bodies' distribution (each slab about as many
-  /// bodies); 0: never. No result depends on the bounds.
+  /// Frames between moves of the bounds to the bodies' distribution; 0: never.
+  /// Each slab then holds about as many bodies. No result depends on the bounds.
   int rebalance_every = 0;
 };
 
@@ -56,6 +56,7 @@ struct DistributedStats {
   double seconds = 0.0;        ///< the whole update, exchanges included
 };
 
+/// A World split over the ranks of an MPI communicator, one slab along x per rank (the file comment).
 class DistributedWorld {
  public:
   /// Collective over `comm` (which MPI_Init made; this class never calls it). Throws
@@ -66,11 +67,12 @@ class DistributedWorld {
   DistributedWorld(const DistributedWorld&) = delete;
   DistributedWorld& operator=(const DistributedWorld&) = delete;
 
-  /// Adds a body of one shape that this rank owns until its reach box's lower-left corner lies in
-  /// another rank's slab (it migrates there at an update). `id` is unique over all ranks: an update
-  /// that finds one id handed to a rank twice throws std::logic_error on every rank (the bodies are
-  /// then half exchanged: make a new DistributedWorld). A static body is copied to every rank at the
-  /// next update. Throws std::invalid_argument for an id in use on this rank, and as World::add().
+  /// Adds a body of one shape, which this rank owns until it migrates.
+  /// It migrates at an update where its reach box's lower-left corner lies in another rank's slab.
+  /// `id` is unique over all ranks: an update that finds one id handed to a rank twice throws
+  /// std::logic_error on every rank (the bodies are then half exchanged: make a new
+  /// DistributedWorld). A static body is copied to every rank at the next update. Throws
+  /// std::invalid_argument for an id in use on this rank, and as World::add().
   void add(std::uint64_t id, const Shape& shape, const BodyDef& def = {}, bool continuous = false);
   /// Adds a chain of level geometry (World::add_chain()). Chains are replicated, not exchanged:
   /// every rank adds the same chains, under the same ids, in the same order.
@@ -95,15 +97,16 @@ class DistributedWorld {
   void update();
   /// This rank's share of the last update (RegionReport), by ids.
   const RegionReport& report() const;
-  /// The overlapping pairs this rank reported that began at the last update, and those it reported
-  /// the update before that ended (also when a body was removed); the same for sensor pairs.
+  /// The pairs this rank reported that began at the last update, and those that ended then.
+  /// Ended: reported the update before, and no longer (also where a body was removed). The same
+  /// for sensor pairs.
   const std::vector<IdPair>& began() const;
   const std::vector<IdPair>& ended() const;
   const std::vector<IdSensorPair>& sensor_began() const;
   const std::vector<IdSensorPair>& sensor_ended() const;
 
-  /// Collective queries on the bodies where the last update left them, every rank given the whole
-  /// answer: the ids of the bodies whose solid shapes overlap the shape or meet the box, sorted; the
+  /// Collective queries on the bodies where the last update left them; every rank gets the answer.
+  /// The ids of the bodies whose solid shapes overlap the shape or meet the box, sorted; the
   /// first body a ray meets and its distance, or that a shape moved by `translation` meets and the
   /// fraction (the lowest id on a tie).
   std::vector<std::uint64_t> overlapping(const Shape& shape);

@@ -11,9 +11,11 @@
 
 namespace collide2d {
 
+/// A reference to a callable of the signature, as FunctionRef<bool(const BodyShape&)>.
 template <class Signature>
 class FunctionRef;
 
+/// A reference to a callable invocable as R(Args...).
 template <class R, class... Args>
 class FunctionRef<R(Args...)> {
  public:
@@ -28,6 +30,7 @@ class FunctionRef<R(Args...)> {
                              std::forward<Args>(args)...);
         }) {}
 
+  /// Calls the callable referred to.
   R operator()(Args... args) const { return call_(object_, std::forward<Args>(args)...); }
 
  private:

@@ -89,8 +89,8 @@ class RegionWorld {
   std::uint32_t part_of(ShapeId shape) const;
   /// A chain segment's reach box (it never changes), nullopt for a shape of another body.
   std::optional<Aabb> level_reach(ShapeId shape) const;
-  /// Filters candidate pairs by the bodies' ids, the lower first (World::set_pair_predicate()), so
-  /// that every region asks it the same question of a pair; an empty function for none.
+  /// Filters candidate pairs by the bodies' ids, the lower first; an empty function for none.
+  /// As World::set_pair_predicate(), so that every region asks it the same question of a pair.
   void set_pair_predicate(std::function<bool(std::uint64_t, std::uint64_t)> predicate);
   /// The World's update, then its report.
   void update();

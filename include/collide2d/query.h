@@ -140,16 +140,17 @@ inline Contact Contact::of(double separation, const Vec2& normal, const Vec2& po
 
 /// What a contact query may use beyond the two shapes.
 struct ContactOptions {
-  /// Rectangle manifolds keep, beside the deepest point, the points whose separation is at most
-  /// max(deepest, 0) + margin: 0 keeps the points touching or overlapping as deep; a speculative
+  /// How far beyond the deepest point a manifold keeps points: 0 keeps only the touching.
+  /// A rectangle pair's manifold keeps, beside the deepest point, the points whose separation is at
+  /// most max(deepest, 0) + margin: 0 keeps the points touching or overlapping as deep; a speculative
   /// solver passes its margin.
   double margin = 0.0;
   /// A direction near the expected normal (last frame's): two ellipses start their search there
   /// and end sooner. Any direction gives the same contact to rounding; zero means none. Other pairs
   /// ignore it. Must be finite.
   Vec2 guess = Vec2::Zero();
-  /// No contact for a pair apart by more than this (Contact::beyond, an empty manifold, as Box2D's
-  /// manifold is empty beyond its margin): the kernels stop as soon as a lower bound of the
+  /// No contact for a pair apart by more than this: Contact::beyond, an empty manifold.
+  /// As Box2D's manifold is empty beyond its margin. The kernels stop as soon as a lower bound of the
   /// separation shows it, and compute the rest only for the pairs within it. A lower bound must
   /// exceed the limit by 64 u of the pair's scale (more than its rounding), so that
   /// `contact(a, b, {.max_separation = m})` and `contact(a, b)` agree to the bit on every pair
@@ -165,9 +166,9 @@ class UnsupportedPair : public std::logic_error {
 
 /// Whether the solids share a point (touching counts). Computes nothing beyond the verdict.
 bool overlaps(const Shape& a, const Shape& b);
-/// Whether the solid shape meets the closed box, which may have no width or height (a segment or a
-/// point). Exact up to the rounding of the shape's coordinates. Throws InvalidShape for an invalid
-/// box too.
+/// Whether the solid shape meets the closed box, which may have no width or height.
+/// A box of no width or height is a segment or a point. Exact up to the rounding of the shape's
+/// coordinates. Throws InvalidShape for an invalid box too.
 bool overlaps(const Shape& shape, const Aabb& box);
 /// The distance and closest points, or 0 and a common point when the solids overlap.
 DistanceResult distance(const Shape& a, const Shape& b);

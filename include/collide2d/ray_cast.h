@@ -23,8 +23,8 @@ struct RayShapeHit {
 /// a unit direction and max_distance >= 0; nothing is validated (World::ray_cast validates).
 std::optional<RayShapeHit> ray_cast(const Shape& shape, const Vec2& origin, const Vec2& direction, double max_distance);
 
-/// The ray's hit on the chain segment's front (ray_cast() of the segment), or nullopt for a ray
-/// from behind its line, which passes through. The contract of ray_cast().
+/// The ray's hit on the chain segment's front, or nullopt for a ray from behind its line.
+/// A ray from behind passes through; else the segment's ray_cast(), with its contract.
 std::optional<RayShapeHit> ray_cast(const ChainSegment& s, const Vec2& origin, const Vec2& direction,
                                     double max_distance);
 

@@ -26,15 +26,17 @@
 
 namespace collide2d {
 
+/// Records a World frame by frame into a replay (the file comment).
 class Recorder {
  public:
+  /// A recorder of no frames yet; it moves, and is not copied.
   Recorder();
   ~Recorder();
   Recorder(Recorder&&) noexcept;
   Recorder& operator=(Recorder&&) noexcept;
 
-  /// Records the world as its last update left it (call it right after update(), before any shape
-  /// is removed).
+  /// Records the world as its last update left it.
+  /// Call it right after update(), before any shape is removed.
   void record(const World& world);
   /// The frames recorded.
   std::size_t frames() const;

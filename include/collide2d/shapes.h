@@ -81,19 +81,19 @@ struct Segment {
 /// The most vertices a convex polygon has (Box2D's cap): its outline stays inline, 2 x 8 points.
 inline constexpr int kMaxPolygonVertices = 8;
 
-/// The outline of a convex polygon in its own frame, built and checked by ConvexPolygon's makers and
-/// immutable after: 3 to 8 vertices counter-clockwise, strictly convex (each vertex strictly left of
+/// The outline of a convex polygon in its own frame, immutable once ConvexPolygon's makers built it.
+/// They check it: 3 to 8 vertices counter-clockwise, strictly convex (each vertex strictly left of
 /// every edge it is not on, beyond the rounding of the orientation test), each edge's outward unit
 /// normal, and a rounding radius (0, or a size) that grows the polygon into a rounded one.
 struct PolygonOutline {
   int count = 0;
   double radius = 0.0;
   double reach = 0.0;  ///< the largest |vertex| plus the radius: the farthest point from the origin
-  /// Where the origin lies within the core, the radius of a disc about it within the solid (the
-  /// distance to the nearest face's line, plus the radius); else -1.
+  /// The radius of a disc about the origin within the solid, or -1 where the core lacks the origin.
+  /// The distance to the nearest face's line, plus the radius.
   double inner = -1.0;
-  /// normals[i] is the outward unit normal of the edge from vertices[i] to vertices[(i + 1) % count],
-  /// and past the count copies of the first.
+  /// Each edge's outward unit normal, and past the count copies of the first.
+  /// normals[i] is the normal of the edge from vertices[i] to vertices[(i + 1) % count].
   std::array<Vec2, kMaxPolygonVertices> normals{};
   /// offsets[i] = normals[i].dot(vertices[i]): face i's line is {p : normals[i].dot(p) = offsets[i]}.
   std::array<double, kMaxPolygonVertices> offsets{};
@@ -127,11 +127,11 @@ struct ConvexPolygon {
   /// the larger side of their bounding box, so that the weld scales with the polygon). Throws
   /// InvalidShape as of(), and for points that are all collinear or more than 8 on the hull.
   static ConvexPolygon hull(std::span<const Vec2> points, double radius = 0.0, double weld = 1e-9);
-  /// The rectangle of half extents hx, hy about the centre, rounded by `radius` (Box2D's box and
-  /// rounded box): the rounded box reaches hx + radius along x.
+  /// The rectangle of half extents hx, hy about the centre, rounded by `radius`.
+  /// Box2D's box and rounded box: the rounded box reaches hx + radius along x.
   static ConvexPolygon box(double hx, double hy, double radius = 0.0);
-  /// The regular polygon of `count` vertices on the circle of radius `circumradius` about the
-  /// centre, vertex 0 on the +x axis, rounded by `radius`.
+  /// The regular polygon of `count` vertices, rounded by `radius`.
+  /// Its vertices lie on the circle of radius `circumradius` about the centre, vertex 0 on +x.
   static ConvexPolygon regular(int count, double circumradius, double radius = 0.0);
 
   /// The same outline, posed at `center` and `angle`.
@@ -157,8 +157,8 @@ struct Aabb {
   Vec2 max = Vec2::Zero();
 };
 
-/// The cosine and sine of a shape's angle, kept by callers that query a pose many times (as Box2D
-/// keeps b2Rot). Kernels that take one skip evaluating them; it must be Orientation::of(angle).
+/// The cosine and sine of a shape's angle, kept by callers that query a pose many times.
+/// As Box2D keeps b2Rot. Kernels that take one skip evaluating them; it must be Orientation::of(angle).
 struct Orientation {
   double c = 1.0;
   double s = 0.0;
@@ -206,8 +206,8 @@ bool intersects(const Aabb& p, const Aabb& q);
 /// Whether the closed box `outer` holds all of `inner`.
 bool encloses(const Aabb& outer, const Aabb& inner);
 
-/// The tightest axis-aligned box around the shape, grown by a few ulps of its coordinates so that
-/// no point of the shape, as any kernel rounds it, lies outside.
+/// The tightest axis-aligned box around the shape, grown by a few ulps of its coordinates.
+/// Grown so that no point of the shape, as any kernel rounds it, lies outside.
 Aabb aabb(const Circle& c);
 Aabb aabb(const Ellipse& e);
 Aabb aabb(const Rect& r);

@@ -196,8 +196,7 @@ struct Proximity : PairIds {
   DistanceResult result{};  ///< the distance and closest points, point_a on shape_a
 };
 
-/// The contact of an overlapping pair of shapes, or with a speculative margin of a pair apart by at
-/// most the margin.
+/// The contact of an overlapping pair of shapes, or of a pair within the speculative margin.
 struct BodyContact : PairIds {
   /// The solids overlap (touching included): the exact verdict of overlaps(), not the sign of a
   /// separation within rounding. False for a speculative contact.
@@ -245,8 +244,8 @@ struct RayOptions {
 
 /// How a cast treats a shape that the cast shape overlaps at the start.
 struct CastOptions {
-  /// Skip such a shape, instead of reporting it hit at fraction 0 (a shape that starts in contact
-  /// with the ground then finds the wall it moves towards).
+  /// Skip such a shape instead of reporting it hit at fraction 0.
+  /// A shape that starts in contact with the ground then finds the wall it moves towards.
   bool skip_initial_overlap = false;
 };
 
@@ -271,10 +270,10 @@ struct Pose {
   double angle = 0.0;
 };
 
-/// Where a body at `pose` puts a shape placed in its frame (its centre and angle are its offset and
-/// angle from the body's origin): the offset turned by `turn` and moved to the position, the angles
-/// added. `turn` is Orientation::of(pose.angle), computed once for all of a body's shapes. The World
-/// places its bodies' shapes so, to the bit.
+/// Where a body at `pose` puts a shape placed in its frame, to the bit as the World places it.
+/// The shape's centre and angle are its offset and angle from the body's origin: the offset turned
+/// by `turn` and moved to the position, the angles added. `turn` is Orientation::of(pose.angle),
+/// computed once for all of a body's shapes.
 Shape placed(const Shape& local, const Pose& pose, const Orientation& turn);
 /// The pose of a shape's own centre and angle: the origin of the body add(shape) makes of it.
 Pose pose_of(const Shape& shape);
@@ -283,8 +282,8 @@ Pose pose_of(const Shape& shape);
 /// `start` is a continuous shape's pose at the last update, nullopt for another.
 Aabb reach_box(const Shape& shape, const std::optional<Pose>& start, const WorldOptions& options);
 
-/// The lower-left corner of the intersection of two boxes that meet (for two reach boxes,
-/// World::reach_box(), a point of both): the point that decides which region of a domain
+/// The lower-left corner of the intersection of two boxes that meet: the owner of their pair.
+/// For two reach boxes (World::reach_box()) a point of both: the point that decides which region of a domain
 /// decomposition reports their pair, so that each pair is reported by exactly one region.
 Vec2 owner_point(const Aabb& a, const Aabb& b);
 
@@ -303,8 +302,8 @@ class World {
   BodyId add(const Shape& shape, const BodyDef& def = {});
   /// Adds a body at `pose` with the shapes (at least one), each placed in the body's frame.
   BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def = {});
-  /// Adds a chain (chain.h) of points in the world as one static body at the origin (def.is_static
-  /// must be set), one segment shape per chain segment in the chain's order (shapes(id)[k] is
+  /// Adds a chain (chain.h) of points in the world as one static body at the origin.
+  /// def.is_static must be set. One segment shape per chain segment in the chain's order (shapes(id)[k] is
   /// segment k of chain_segments()), each one-sided and smooth as chain.h says. Throws InvalidShape
   /// for the points as chain_segments() does; std::invalid_argument for a body that is not static.
   BodyId add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def);
@@ -335,17 +334,18 @@ class World {
   /// Places a shape anew in its body's frame (its centre and angle are the offset and angle). On a
   /// continuous body the shape's step starts at its new place. A chain's segment is refused.
   void set_local_shape(ShapeId id, const Shape& local);
-  /// A test of the caller's, called for the candidate pairs of shapes that pass both filters, with
-  /// their bodies (a.index < b.index), before any narrow-phase work; false drops the pair. An empty
-  /// function passes all.
+  /// A test of the caller's that drops a candidate pair where it returns false; empty passes all.
+  /// Called for the candidate pairs of shapes that pass both filters, with their bodies
+  /// (a.index < b.index), before any narrow-phase work.
   void set_pair_predicate(std::function<bool(BodyId, BodyId)> predicate);
   /// Removes a body and its shapes; their pairs end at the next update, and their handles are stale
   /// from now on.
   void remove(BodyId id);
   /// A new proximity margin (>= 0), from the next update.
   void set_proximity_margin(double margin);
-  /// A continuous body's step runs from its pose at the last update (or at this call, or at its last
-  /// set_pose()) to its pose at the next update, and update() reports its first contacts within it in
+  /// Makes a body continuous (or not): update() reports its first contacts within each step.
+  /// Its step runs from its pose at the last update (or at this call, or at its last set_pose())
+  /// to its pose at the next update, and update() reports its first contacts within it in
   /// impacts(). Each of its shapes moves from its place at the start to its place at the end along a
   /// straight line, turning at a steady rate about its own centre. Throws std::invalid_argument for
   /// a static body.
@@ -360,9 +360,9 @@ class World {
   bool contains(ShapeId id) const;
   /// Bodies in the World.
   std::size_t size() const;
-  /// A body's pose, its user id, filter and kind, its first shape where it is (its only one when it
-  /// was added with one), and its shapes in the order added. Each throws std::out_of_range for an
-  /// unknown or stale handle.
+  /// A body's pose, user id, filter, kind, first shape and shapes. Each throws std::out_of_range for an
+  /// unknown or stale handle. The first shape is where it is (the only one of a body added with
+  /// one); the shapes come in the order added.
   Pose pose(BodyId id) const;
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
@@ -372,8 +372,8 @@ class World {
   bool is_continuous(BodyId id) const;
   bool is_ghost(BodyId id) const;
   std::vector<ShapeId> shapes(BodyId id) const;
-  /// A shape where it is in the world, as placed in its body's frame, its body, user id, filter and
-  /// kind. Each throws std::out_of_range for an unknown or stale handle.
+  /// A shape where it is, as placed in its body's frame, its body, user id, filter and kind.
+  /// Each throws std::out_of_range for an unknown or stale handle.
   const Shape& shape(ShapeId id) const;
   const Shape& local_shape(ShapeId id) const;
   BodyId body(ShapeId id) const;
@@ -410,19 +410,20 @@ class World {
   const std::vector<SensorPair>& sensor_ended() const;
   /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
-  /// The last update's candidate pairs from the broad phase (FrameStats::candidates, those the
-  /// filters dropped among them), a's body the lower slot, in no order. Built on each call, for
+  /// The last update's candidate pairs from the broad phase, in no order, a's body the lower slot.
+  /// FrameStats::candidates of them, those the filters dropped among them. Built on each call, for
   /// debugging and replays (Recorder): read it before any shape is removed.
   std::vector<ShapePair> candidates() const;
   /// The box the broad phase keeps for the shape: its box grown by half the proximity or speculative
   /// margin and, for a moving shape, by the fat margin as of the last time it left its fat box (a
   /// continuous shape's box holds its whole step).
   Aabb broad_box(ShapeId id) const;
-  /// The shape's box for the step the next update() takes (a continuous shape's holds the whole
-  /// step), grown by half the proximity or speculative margin: the boxes of any two shapes that the
-  /// update reports together meet. A function of the shape where it is, a continuous shape's pose at
-  /// the last update, and the margins (no fat margin), so that Worlds that hold the same body agree
-  /// on it to the bit: a domain decomposition places bodies and pairs by it (owner_point()).
+  /// The shape's box for the step the next update() takes, grown by half a margin.
+  /// A continuous shape's holds the whole step; the margin is the larger of the proximity and the
+  /// speculative margins. The boxes of any two shapes that the update reports together meet. A
+  /// function of the shape where it is, a continuous shape's pose at the last update, and the
+  /// margins (no fat margin), so that Worlds that hold the same body agree on it to the bit: a
+  /// domain decomposition places bodies and pairs by it (owner_point()).
   Aabb reach_box(ShapeId id) const;
 
   /// Queries on the current poses (no update needed). Each comes in two forms. The callback form
@@ -447,8 +448,8 @@ class World {
   void within(const Shape& shape, double distance, FunctionRef<bool(const BodyShape&)> visit,
               const QueryFilter& filter = {}) const;
 
-  /// The first shape hit by the ray from `origin` along `direction` (any non-zero length) within
-  /// `max_distance` (the lowest body index, then shape index, on a tie). Exact on curves. A shape
+  /// The first shape the ray from `origin` along `direction` hits within `max_distance`.
+  /// The direction has any non-zero length; the lowest body index, then shape index, on a tie. Exact on curves. A shape
   /// that contains the origin is skipped, as in Box2D v3, unless `options.from_inside`.
   std::optional<RayHit> ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                                  const QueryFilter& filter = {}, const RayOptions& options = {}) const;
@@ -459,18 +460,18 @@ class World {
   void ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,
                 FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter = {},
                 const RayOptions& options = {}) const;
-  /// Every shape the ray hits within `max_distance`, nearest first (by body index, then shape index,
-  /// on a tie).
+  /// Every shape the ray hits within `max_distance`, nearest first.
+  /// By body index, then shape index, on a tie.
   std::vector<RayHit> ray_cast_all(const Vec2& origin, const Vec2& direction, double max_distance,
                                    const QueryFilter& filter = {}, const RayOptions& options = {}) const;
 
-  /// The first shape the cast shape meets when translated by `translation` (the lowest body index,
-  /// then shape index, on a tie). A shape it overlaps at the start is hit at fraction 0, unless
+  /// The first shape the cast shape meets when translated by `translation`.
+  /// The lowest body index, then shape index, on a tie. A shape it overlaps at the start is hit at fraction 0, unless
   /// `options.skip_initial_overlap`.
   std::optional<BodyCastHit> cast(const Shape& shape, const Vec2& translation, const QueryFilter& filter = {},
                                   const CastOptions& options = {}) const;
-  /// visit(hit) for the shapes the translated shape meets, as ray_cast()'s callback form, in
-  /// fractions of the translation: the reach starts at 1.
+  /// visit(hit) for the shapes the translated shape meets, as ray_cast()'s callback form.
+  /// In fractions of the translation: the reach starts at 1.
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter = {}, const CastOptions& options = {}) const;
 
