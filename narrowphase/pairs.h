@@ -9,7 +9,8 @@
 // overlap_core_ellipse.cpp, and their distance and contact twins) names the kernels it has of its
 // own. The queries (query.cpp), the World's batches and the batched kernels are derived from the
 // table; every pair of kinds must have a row (the check at the end names a pair without one).
-// docs/algorithms/README.md gives the same table with each method's page; a test holds it to this.
+// docs/algorithms/README.md shows the table, each query's kernel file for each pair; the pair_table
+// test holds it to this one.
 #pragma once
 
 #include <collide2d/kernels.h>
@@ -24,13 +25,13 @@
 
 namespace collide2d::detail {
 
-// The orientation a kernel takes for a shape: a circle has none.
+// The orientation a kernel takes for a shape: a kind with no angle (a circle) has none.
 template <class T>
 Orientation orientation_of(const T& x) {
-  if constexpr (std::is_same_v<T, Circle>) {
-    return {};
-  } else {
+  if constexpr (requires { x.angle; }) {
     return Orientation::of(x.angle);
+  } else {
+    return {};
   }
 }
 
@@ -246,7 +247,7 @@ struct Pair<Circle, Circle> {
                          const ContactOptions& o, bool) {
     return contact_circle_circle(a, b, o);
   }
-  static DistanceResult boundary(const Circle& a, const Circle& b);  // query.cpp
+  static DistanceResult boundary(const Circle& a, const Circle& b) { return boundary_distance_circle_circle(a, b); }
 };
 template <>
 struct Pair<Circle, Ellipse> {

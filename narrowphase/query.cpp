@@ -3,7 +3,6 @@
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/pairs.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
@@ -11,25 +10,6 @@
 namespace collide2d {
 
 using detail::Kinds;
-
-// Nested circles: the gap lies on the line of centres, on the side away from the larger circle's
-// centre (any side when the centres coincide).
-DistanceResult detail::Pair<Circle, Circle>::boundary(const Circle& a, const Circle& b) {
-  const Vec2 delta = b.center - a.center;
-  const double d = delta.norm();
-  if (d >= a.radius + b.radius) return distance_circle_circle(a, b);
-  const Vec2 u = d > 0 ? Vec2(delta / d) : Vec2::UnitX();
-  if (d <= std::abs(a.radius - b.radius)) {
-    const Vec2 away = a.radius >= b.radius ? u : Vec2(-u);
-    const Vec2 pa = a.center + a.radius * away;
-    const Vec2 pb = b.center + b.radius * away;
-    const double gap = std::abs(a.radius - b.radius) - d;
-    return gap > 0 ? DistanceResult::apart(gap, pa, pb) : DistanceResult::touching(pa);
-  }
-  const double along = (d * d + a.radius * a.radius - b.radius * b.radius) / (2 * d);
-  const double across = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
-  return DistanceResult::touching(a.center + along * u + across * Vec2(-u.y(), u.x()));
-}
 
 void detail::validate(const ContactOptions& options) {
   if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");

@@ -17,6 +17,7 @@
 
 #include <collide2d/shapes.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -173,21 +174,32 @@ struct KindList {
   // The kinds' words by number, joined by ", " and, before `last` (or else the last kind's), "or":
   // "circle, ellipse, rect, capsule, polygon, segment or chain".
   static std::string words(std::string_view last = {}) {
-    std::array<std::string_view, size> by_number{};
-    ((by_number[Kind<Ts>::number] = Kind<Ts>::word), ...);
+    std::array<std::pair<std::uint32_t, std::string_view>, size> by_number{{{Kind<Ts>::number, Kind<Ts>::word}...}};
+    std::sort(by_number.begin(), by_number.end());
     std::string out;
     for (std::size_t k = 0; k < size; ++k) {
       const bool final = last.empty() && k + 1 == size;
       out += k == 0 ? "" : final ? " or " : ", ";
-      out += by_number[k];
+      out += by_number[k].second;
     }
     if (!last.empty()) out += std::string(" or ") + std::string(last);
     return out;
+  }
+  // Whether no two kinds of the list share a number: the formats tell kinds apart by them.
+  static constexpr bool numbers_distinct() {
+    const std::array<std::uint32_t, size> numbers{Kind<Ts>::number...};
+    for (std::size_t i = 0; i < size; ++i) {
+      for (std::size_t j = i + 1; j < size; ++j) {
+        if (numbers[i] == numbers[j]) return false;
+      }
+    }
+    return true;
   }
 };
 
 // The library's kinds: core shapes first, as they take the curved ones in their frames.
 using Kinds = KindList<Rect, ConvexPolygon, Capsule, Segment, Circle, Ellipse>;
+static_assert(Kinds::numbers_distinct(), "two kinds share a number of the replay and wire formats");
 
 template <class T>
 constexpr int rank() {

@@ -60,6 +60,8 @@ DistanceResult distance_ellipse_ellipse(const Ellipse& a, const Orientation& a_o
                                         const Orientation& b_orientation);
 /// The gap between two ellipse curves (boundary_distance() in query.h).
 DistanceResult boundary_distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
+/// The gap between two circles' curves: on the line of centres, for one nested in the other.
+DistanceResult boundary_distance_circle_circle(const Circle& a, const Circle& b);
 
 /// Contacts (Contact in query.h), one kernel per pair. Each honours options.max_separation; the
 /// other options only where ContactOptions says.

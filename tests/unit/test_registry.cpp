@@ -108,6 +108,7 @@ template <>
 struct Pair<HalfPlane, HalfPlane> : Unsupported {};
 
 static_assert(every_pair_has_a_row<KindsWithHalfPlane>());
+static_assert(KindsWithHalfPlane::numbers_distinct());
 
 }  // namespace collide2d::detail
 
