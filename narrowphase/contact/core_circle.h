@@ -56,6 +56,13 @@ template <class A>
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
 // leaves that end not the core's farthest point towards c, the convex cores' contact decides
 // (narrowphase/shared/cores/convex_core.h), as it does for every other core pair.
+//
+// Local to each kernel's file, its one caller, so that the compiler inlines it there as a function
+// called once; shared across files it stays out of line, or inlined against its will it spills
+// the centre in halves that are then read whole (a stalled load), and either weighs on these short
+// kernels.
+namespace {
+
 template <class A, int Slots>
 Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
                     const ContactOptions& options) {
@@ -87,5 +94,7 @@ Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_o
   const LengthAndDirection u = length_and_direction(d);
   return one(o.vertices[end], u.direction, u.length - radii, feature_id(FeatureKind::corner_corner, end, 0));
 }
+
+}  // namespace
 
 }  // namespace collide2d::detail

@@ -74,12 +74,6 @@ bool farthest_at(const Core& x, int k, const Vec2& d) {
 
 }  // namespace
 
-Plane plane_of(const Core& x, const Axis& axis) {
-  if (axis.face >= 0) return {x.n[axis.face], x.v[axis.face]};
-  const Vec2 e = perp(x.n[0]);
-  return {axis.end == 1 ? e : Vec2(-e), x.v[axis.end]};
-}
-
 Closest nearest_features(const CorePair& p) {
   Closest best;
   vertex_edge(p.a, p.b, true, best);
@@ -211,15 +205,6 @@ double CorePair::scale() const {
     reach[i] = std::max(std::max(std::abs(a.x[i]), std::abs(a.y[i])), std::max(std::abs(b.x[i]), std::abs(b.y[i])));
   }
   return 2 * tree_fold(reach, [](double l, double r) { return std::max(l, r); }) + a.radius + b.radius;
-}
-
-// The axes settle most pairs; a pair apart by less than the radii needs its cores' gap.
-CoreVerdict verdict(const CorePair& p, const Axes& axes) {
-  const double s = axes.s();
-  if (s <= 0.0) return {true, {}};
-  if (s > radii(p)) return {false, {}};
-  const Closest c = gap(p, axes);
-  return {c.squared <= radii(p) * radii(p), c};
 }
 
 }  // namespace collide2d::detail

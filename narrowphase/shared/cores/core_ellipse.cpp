@@ -153,23 +153,16 @@ Faces best_face(const CoreEllipse& p) {
   return out;
 }
 
-double scale(const CoreEllipse& p) {
-  return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
-}
-
 Deepest deepest(const CoreEllipse& p, const Faces& faces) {
-  Deepest out;
+  int roots = 0;  // a local, not the result's: the peaks' loop keeps it in a register
   switch (p.core.count) {
     case 1:
-      out.peak = deepest_of<CoreKind::point>(p, faces, out.roots);
-      break;
+      return {deepest_of<CoreKind::point>(p, faces, roots), roots};
     case 2:
-      out.peak = deepest_of<CoreKind::segment>(p, faces, out.roots);
-      break;
+      return {deepest_of<CoreKind::segment>(p, faces, roots), roots};
     default:
-      out.peak = deepest_of<CoreKind::polygon>(p, faces, out.roots);
+      return {deepest_of<CoreKind::polygon>(p, faces, roots), roots};
   }
-  return out;
 }
 
 // Overlapping where the core's least ellipse quadratic is below 1 by more than its rounding (that

@@ -7,6 +7,7 @@
 
 #include "narrowphase/shared/cores/convex_core.h"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -34,7 +35,9 @@ struct Faces {
 Faces best_face(const CoreEllipse& p);
 
 // The pair's scale: what the rounding of its separations is a few u of.
-double scale(const CoreEllipse& p);
+inline double scale(const CoreEllipse& p) {
+  return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
+}
 
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
 // point–ellipse roots it took.

@@ -24,7 +24,11 @@ struct Axis {
 struct Plane {
   Vec2 normal, origin;
 };
-Plane plane_of(const Core& x, const Axis& axis);
+inline Plane plane_of(const Core& x, const Axis& axis) {
+  if (axis.face >= 0) return {x.n[axis.face], x.v[axis.face]};
+  const Vec2 e = perp(x.n[0]);
+  return {axis.end == 1 ? e : Vec2(-e), x.v[axis.end]};
+}
 
 // The two cores' axes: A's best against B and B's best against A.
 struct Axes {
@@ -66,7 +70,15 @@ struct CoreVerdict {
   bool overlapping = false;
   Closest gap;  // the cores' nearest points, where the verdict needed them (else squared is infinite)
 };
-CoreVerdict verdict(const CorePair& p, const Axes& axes);
+// The axes settle most pairs; a pair apart by less than the radii needs its cores' gap. Inline: the
+// overlap test, which reads only the verdict, then never builds the gap.
+inline CoreVerdict verdict(const CorePair& p, const Axes& axes) {
+  const double s = axes.s();
+  if (s <= 0.0) return {true, {}};
+  if (s > radii(p)) return {false, {}};
+  const Closest c = gap(p, axes);
+  return {c.squared <= radii(p) * radii(p), c};
+}
 
 // The feature number of a point where a side plane of the reference face cut the incident face:
 // at the face's first vertex's end, or at its second's.

@@ -235,7 +235,8 @@ struct Climb {
 };
 
 // The climb's state: the direction n and s there; with a rectangle, the face normal it started
-// from and the side of it, which keep it in one quarter turn.
+// from and the side of it, which keep it in one quarter turn. Its steps are inlined into
+// certified_climb, so that the state lives in registers rather than in the object.
 template <class Real, class SA, class SB>
 class Climber {
  public:
@@ -245,7 +246,7 @@ class Climber {
       : p_(p), margin_(margin), flat_(margin / 2), rough_(rough), stop_(stop) {}
 
   // The first direction and s there; false where there is none (the centres coincide, no guess).
-  bool begin(const V2<Real>& start) {
+  [[gnu::always_inline]] bool begin(const V2<Real>& start) {
     using std::abs;
     const V2<Real>& toward = start == V2<Real>::Zero() ? p_.delta : start;
     if (toward == V2<Real>::Zero()) return false;
@@ -282,7 +283,7 @@ class Climber {
 
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
   // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
-  bool done() const {
+  [[gnu::always_inline]] bool done() const {
     using std::abs;
     return near_enough() || kink_ || e_.s > stop_ || (level(e_, flat_) && !(abs(e_.slope) > Real(1e-12) * e_.bend));
   }
@@ -296,7 +297,7 @@ class Climber {
   // the same reason a step out of the quarter turn, apart, goes on from the face normal it crossed
   // (the maximum lies on it or beyond): a fifth of a rectangle–ellipse time of impact's climbs
   // ended there. False where the climb gives up.
-  bool step(int k) {
+  [[gnu::always_inline]] bool step(int k) {
     using std::abs;
     const bool apart = e_.s > 0;
     // At least, not equal: touching, s flips sign from one direction to the next.
@@ -327,7 +328,7 @@ class Climber {
   }
 
   // The maximum reached, where the bound certifies it (or the caller asked for less).
-  Climb<Real> finish() const {
+  [[gnu::always_inline]] Climb<Real> finish() const {
     if (!near_enough() && !(e_.s > stop_) && !(disc_bound(p_, n_, e_) <= e_.s + margin_)) {
       if (kink_) return gave_up();
       return {std::nullopt, Direction<Real>{n_, e_}, evaluations_};
@@ -339,7 +340,7 @@ class Climber {
  private:
   // At a rectangle's face normal f, s seen from both sides: a kink where it rises into f and falls
   // after it (a face contact's maximum), else the climb goes on into the quarter on the rising side.
-  void from_face(const V2<Real>& f) {
+  [[gnu::always_inline]] void from_face(const V2<Real>& f) {
     const V2<Real> before = f - perp(f), after = f + perp(f);
     const std::array<Separation<Real>, 2> at = p_.separations(f, before, after);
     ++evaluations_;
