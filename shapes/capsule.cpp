@@ -1,7 +1,7 @@
 // A capsule's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
 #include <collide2d/shapes.h>
 
-#include "shapes/internal.h"
+#include "shapes/capsule.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,23 +31,4 @@ bool contains(const Capsule& c, const Vec2& p) {
   return along * along + q.y() * q.y() <= c.radius * c.radius;
 }
 
-namespace detail {
-
-Aabb oriented_box(const Capsule& c, const Orientation& o) {
-  return around(c.center, Vec2(c.half_length * std::abs(o.c) + c.radius, c.half_length * std::abs(o.s) + c.radius));
-}
-
-Vec2 support(const Capsule& c, const Rot& rot, const Vec2& d) {
-  const Vec2 axis(rot.c, rot.s);
-  const double n = d.norm();
-  const Vec2 end = c.center + (d.dot(axis) >= 0.0 ? c.half_length : -c.half_length) * axis;
-  return n > 0.0 ? Vec2(end + (c.radius / n) * d) : end;
-}
-
-double reach(const Capsule& c) { return c.half_length + c.radius; }
-double turning_reach(const Capsule& c) { return c.half_length; }
-double support_along(const Capsule& c, const Vec2& local) { return c.half_length * std::abs(local.x()) + c.radius; }
-std::array<Vec2, 2> core_points(const Capsule& c) { return {Vec2(-c.half_length, 0), Vec2(c.half_length, 0)}; }
-
-}  // namespace detail
 }  // namespace collide2d

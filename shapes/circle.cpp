@@ -1,7 +1,7 @@
 // A circle's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
 #include <collide2d/shapes.h>
 
-#include "shapes/internal.h"
+#include "shapes/circle.h"
 
 namespace collide2d {
 
@@ -11,22 +11,10 @@ void validate(const Circle& c) {
   detail::require_size("circle", "radius", c.radius);
 }
 
-Aabb aabb(const Circle& c) { return detail::around(c.center, Vec2::Constant(c.radius)); }
+Aabb aabb(const Circle& c) { return detail::oriented_box(c, Orientation{}); }
 
-Vec2 support(const Circle& c, const Vec2& d) {
-  const double n = d.norm();
-  return n > 0.0 ? Vec2(c.center + (c.radius / n) * d) : c.center;
-}
+Vec2 support(const Circle& c, const Vec2& d) { return detail::support(c, detail::Rotation<double>{}, d); }
 
 bool contains(const Circle& c, const Vec2& p) { return (p - c.center).squaredNorm() <= c.radius * c.radius; }
 
-namespace detail {
-
-Aabb oriented_box(const Circle& c, const Orientation&) { return aabb(c); }
-Vec2 support(const Circle& c, const Rotation<double>&, const Vec2& d) { return collide2d::support(c, d); }
-double reach(const Circle& c) { return c.radius; }
-double turning_reach(const Circle&) { return 0.0; }
-double support_along(const Circle& c, const Vec2&) { return c.radius; }
-
-}  // namespace detail
 }  // namespace collide2d

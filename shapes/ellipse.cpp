@@ -1,7 +1,7 @@
 // An ellipse's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
 #include <collide2d/shapes.h>
 
-#include "shapes/internal.h"
+#include "shapes/ellipse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,33 +29,4 @@ bool contains(const Ellipse& e, const Vec2& p) {
   return u * u + v * v <= 1.0;
 }
 
-namespace detail {
-
-// The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
-Aabb oriented_box(const Ellipse& e, const Orientation& o) {
-  return around(e.center, Vec2(std::hypot(e.a * o.c, e.b * o.s), std::hypot(e.a * o.s, e.b * o.c)));
-}
-
-// Support of {K + V diag(a,b) u : |u| <= 1} in direction d is K + V diag(a,b)^2 w / |diag(a,b) w|
-// with w = V^T d; d is scaled by its largest component first so that squares cannot overflow.
-Vec2 support(const Ellipse& e, const Rot& r, const Vec2& d) {
-  const double m = d.cwiseAbs().maxCoeff();
-  if (!(m > 0.0)) return e.center;
-  const Vec2 w = r.apply_inverse(Vec2(d / m));
-  const Vec2 scaled(e.a * w.x(), e.b * w.y());
-  const Vec2 local(e.a * scaled.x(), e.b * scaled.y());
-  return e.center + r.apply(Vec2(local / scaled.norm()));
-}
-
-double reach(const Ellipse& e) { return std::max(e.a, e.b); }
-
-// The point (a cos u, b sin u) gives (a^2 - b^2) |sin u cos u| / sqrt(b^2 cos^2 u + a^2 sin^2 u),
-// largest at tan^2 u = b / a, where it is a - b.
-double turning_reach(const Ellipse& e) { return std::abs(e.a - e.b); }
-
-double support_along(const Ellipse& e, const Vec2& local) {
-  return std::sqrt(e.a * e.a * local.x() * local.x() + e.b * e.b * local.y() * local.y());
-}
-
-}  // namespace detail
 }  // namespace collide2d

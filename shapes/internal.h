@@ -47,50 +47,6 @@ inline Shape placed_at(Shape shape, const Vec2& center, double angle) {
   return shape;
 }
 
-// Each kind's geometry as the generic code takes it, beside its public validate, aabb, support and
-// contains (shapes.h), defined in its own file (shapes/<word>.cpp):
-//   oriented_box(s, o)       its box, given its orientation, Orientation::of(its angle)
-//   support(s, rotation, d)  its support point along d, given its rotation
-//   reach(s)                 the distance from its centre to its farthest point (reach_of)
-//   turning_reach(s)         how fast its support function changes as it turns, per radian: the
-//                            largest distance of its normal lines from its centre
-//   support_along(s, u)      its support function along a unit direction u of its own axes (a
-//                            segment's from its first point)
-// and, for a kind with a convex core, core_points(s): its core's points in its own axes.
-Aabb oriented_box(const Circle& c, const Orientation& o);
-Aabb oriented_box(const Ellipse& e, const Orientation& o);
-Aabb oriented_box(const Rect& r, const Orientation& o);
-Aabb oriented_box(const Capsule& c, const Orientation& o);
-Aabb oriented_box(const ConvexPolygon& p, const Orientation& o);
-Aabb oriented_box(const Segment& s, const Orientation& o);
-Vec2 support(const Circle& c, const Rotation<double>& rot, const Vec2& d);
-Vec2 support(const Ellipse& e, const Rotation<double>& rot, const Vec2& d);
-Vec2 support(const Rect& r, const Rotation<double>& rot, const Vec2& d);
-Vec2 support(const Capsule& c, const Rotation<double>& rot, const Vec2& d);
-Vec2 support(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d);
-Vec2 support(const Segment& s, const Rotation<double>& rot, const Vec2& d);
-double reach(const Circle& c);
-double reach(const Ellipse& e);
-double reach(const Rect& r);
-double reach(const Capsule& c);
-double reach(const ConvexPolygon& p);
-double reach(const Segment& s);
-double turning_reach(const Circle& c);
-double turning_reach(const Ellipse& e);
-double turning_reach(const Rect& r);
-double turning_reach(const Capsule& c);
-double turning_reach(const ConvexPolygon& p);
-double turning_reach(const Segment& s);
-double support_along(const Circle& c, const Vec2& local);
-double support_along(const Ellipse& e, const Vec2& local);
-double support_along(const Rect& r, const Vec2& local);
-double support_along(const Capsule& c, const Vec2& local);
-double support_along(const ConvexPolygon& p, const Vec2& local);
-double support_along(const Segment& s, const Vec2& local);
-std::array<Vec2, 2> core_points(const Capsule& c);
-std::span<const Vec2> core_points(const ConvexPolygon& p);
-std::array<Vec2, 2> core_points(const Segment& s);
-
 // Throws InvalidShape("<what> <field> <rule> (got <value>)"), the form of every validation message
 // ("ellipse a must be positive (got -1)"), for the checks of other modules to share.
 [[noreturn]] void reject(const char* what, const char* field, double value, const char* rule);
@@ -123,3 +79,20 @@ inline Aabb around(const Vec2& center, const Vec2& half) { return around(center,
 std::string shortest(double value);
 
 }  // namespace collide2d::detail
+
+// Each kind's geometry as the generic code takes it, defined inline in its own header
+// (shapes/<word>.h, below; its public validate, aabb, support and contains are in shapes/<word>.cpp):
+//   oriented_box(s, o)       its box, given its orientation, Orientation::of(its angle)
+//   support(s, rotation, d)  its support point along d, given its rotation
+//   reach(s)                 the distance from its centre to its farthest point (reach_of)
+//   turning_reach(s)         how fast its support function changes as it turns, per radian: the
+//                            largest distance of its normal lines from its centre
+//   support_along(s, u)      its support function along a unit direction u of its own axes (a
+//                            segment's from its first point)
+// and, for a kind with a convex core, core_points(s): its core's points in its own axes.
+#include "shapes/capsule.h"
+#include "shapes/circle.h"
+#include "shapes/ellipse.h"
+#include "shapes/polygon.h"
+#include "shapes/rect.h"
+#include "shapes/segment.h"

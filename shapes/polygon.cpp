@@ -1,7 +1,7 @@
 // Convex polygons: their outlines made and checked once, and the geometry of a posed polygon.
 #include <collide2d/shapes.h>
 
-#include "shapes/internal.h"
+#include "shapes/polygon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -220,30 +220,7 @@ void validate(const ConvexPolygon& p) {
 
 Aabb aabb(const ConvexPolygon& p) { return detail::oriented_box(p, Orientation::of(p.angle)); }
 
-Aabb detail::oriented_box(const ConvexPolygon& p, const Orientation& o) {
-  const Rot rot = Rot::of(o);
-  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Vec2& v : p.vertices()) {
-    const Vec2 w = rot.apply(v);
-    lo = lo.cwiseMin(w), hi = hi.cwiseMax(w);
-  }
-  const Vec2 reach = lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).array() + p.radius();
-  return detail::around(p.center, p.radius() - lo.array(), hi.array() + p.radius(), reach);
-}
-
 Vec2 support(const ConvexPolygon& p, const Vec2& d) { return detail::support(p, Rot::of(p.angle), d); }
-
-Vec2 detail::support(const ConvexPolygon& p, const Rotation<double>& rot, const Vec2& d) {
-  const Vec2 local = rot.apply_inverse(d);
-  const std::span<const Vec2> v = p.vertices();
-  const Vec2* best = &v[0];
-  for (const Vec2& w : v.subspan(1)) {
-    if (w.dot(local) > best->dot(local)) best = &w;
-  }
-  const Vec2 vertex = p.center + rot.apply(*best);
-  const double n = d.norm();
-  return n > 0.0 && p.radius() > 0.0 ? Vec2(vertex + (p.radius() / n) * d) : vertex;
-}
 
 bool contains(const ConvexPolygon& poly, const Vec2& p) {
   const Vec2 q = Rot::of(poly.angle).apply_inverse(Vec2(p - poly.center));
@@ -259,16 +236,5 @@ bool contains(const ConvexPolygon& poly, const Vec2& p) {
   }
   return inside || nearest <= o.radius * o.radius;
 }
-
-double detail::reach(const ConvexPolygon& p) { return p.outline->reach; }
-double detail::turning_reach(const ConvexPolygon& p) { return p.outline->reach - p.radius(); }
-
-double detail::support_along(const ConvexPolygon& p, const Vec2& local) {
-  double top = -std::numeric_limits<double>::infinity();
-  for (const Vec2& v : p.vertices()) top = std::max(top, local.dot(v));
-  return top + p.radius();
-}
-
-std::span<const Vec2> detail::core_points(const ConvexPolygon& p) { return p.vertices(); }
 
 }  // namespace collide2d

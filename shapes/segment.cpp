@@ -1,7 +1,7 @@
 // A segment's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
 #include <collide2d/shapes.h>
 
-#include "shapes/internal.h"
+#include "shapes/segment.h"
 
 #include <algorithm>
 
@@ -34,22 +34,4 @@ bool contains(const Segment& s, const Vec2& p) {
   return q.x() * s.end.y() == q.y() * s.end.x() && along >= 0.0 && along <= s.end.squaredNorm();
 }
 
-namespace detail {
-
-Aabb oriented_box(const Segment& s, const Orientation& o) {
-  const Vec2 to = Rot::of(o).apply(s.end);
-  return around(s.center, to.cwiseMin(0.0).cwiseAbs(), to.cwiseMax(0.0), to.cwiseAbs());
-}
-
-Vec2 support(const Segment& s, const Rot& rot, const Vec2& d) {
-  const Vec2 to = rot.apply(s.end);
-  return d.dot(to) >= 0.0 ? Vec2(s.center + to) : s.center;
-}
-
-double reach(const Segment& s) { return s.end.norm(); }
-double turning_reach(const Segment& s) { return s.end.norm(); }
-double support_along(const Segment& s, const Vec2& local) { return std::max(0.0, local.dot(s.end)); }
-std::array<Vec2, 2> core_points(const Segment& s) { return {Vec2::Zero(), s.end}; }
-
-}  // namespace detail
 }  // namespace collide2d

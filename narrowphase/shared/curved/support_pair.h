@@ -142,8 +142,10 @@ RectSupport<Real> support_in(const Rect& r, const Rotation<Real>& rot) {
 }
 inline double longest(const Ellipse& e) { return std::max(e.a, e.b); }
 inline double longest(const Rect& r) { return r.half_extents.maxCoeff(); }
-inline double reach(const Ellipse& e) { return longest(e); }
-inline double reach(const Rect& r) { return r.half_extents.sum(); }
+// What a shape adds to the pair's scale: its reach, or for a rectangle its half sides summed, which
+// bounds the sum of its coordinates' magnitudes.
+inline double scale_reach(const Ellipse& e) { return longest(e); }
+inline double scale_reach(const Rect& r) { return r.half_extents.sum(); }
 
 // Everything here (directions, offsets, delta) is in the pair's frame: the axes of the longer shape,
 // whose rotation is then exactly the identity. In world axes a needle's normal carries an absolute
@@ -176,7 +178,7 @@ struct SupportPair {
     };
     return {support_in(a, a_longer ? Rotation<Real>{} : in_frame(ra)),
             support_in(b, a_longer ? in_frame(rb) : Rotation<Real>{}), frame.apply_inverse(d),
-            d.norm() + static_cast<Real>(reach(a) + reach(b)), frame};
+            d.norm() + static_cast<Real>(scale_reach(a) + scale_reach(b)), frame};
   }
 
   V2<Real> to_world(const V2<Real>& v) const { return frame.apply(v); }
