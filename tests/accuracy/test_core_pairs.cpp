@@ -1,4 +1,4 @@
-// Pairs of flat shapes (rectangles, convex polygons sharp and rounded, capsules, circles) settled on
+// Pairs of core shapes (rectangles, convex polygons sharp and rounded, capsules, circles) settled on
 // their convex cores (narrowphase/shared/cores/convex_core.h): overlap, distance and contact against
 // the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
 // against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
@@ -27,8 +27,8 @@ namespace {
 
 using testing::cases_of;
 using testing::core_families;
+using testing::CoreCase;
 using testing::CoreFamily;
-using testing::FlatCase;
 using testing::Form;
 
 constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
@@ -48,7 +48,7 @@ detail::CorePair pair_of(const Shape& a, const Shape& b) {
       [](const auto& x, const auto& y) -> detail::CorePair {
         if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Ellipse> ||
                       std::is_same_v<std::decay_t<decltype(y)>, Ellipse>) {
-          throw std::logic_error("not a flat pair");
+          throw std::logic_error("not a pair of core shapes");
         } else {
           return detail::CorePair::of(x, orientation_of(x), y, orientation_of(y));
         }
@@ -98,13 +98,13 @@ double angle_between(const Vec2& u, const Vec2& v) {
 }
 double ulps_of(const Vec2& p) { return 8 * kU * p.cwiseAbs().maxCoeff(); }
 
-class FlatFamilies : public ::testing::TestWithParam<CoreFamily> {};
+class CoreFamilies : public ::testing::TestWithParam<CoreFamily> {};
 
-TEST_P(FlatFamilies, MatchReference) {
+TEST_P(CoreFamilies, MatchReference) {
   const CoreFamily& f = GetParam();
   double worst_sep = 0, worst_known = 0, worst_points = 0, worst_normal = 0;
   int k = 0, normals = 0, apart = 0, overlapping = 0;
-  for (const FlatCase& c : cases_of(f)) {
+  for (const CoreCase& c : cases_of(f)) {
     const std::string what = f.name + " case " + std::to_string(k++);
     const Kernels kernels = kernels_of(c.a, c.b);
     const Contact got = kernels.contact({});
@@ -311,7 +311,7 @@ TEST(CorePairs, CircleKernelsAreTheCoresContact) {
     if (f.b != Form::circle || !(cored || f.a == Form::segment)) {
       continue;
     }
-    for (const FlatCase& c : cases_of(f)) {
+    for (const CoreCase& c : cases_of(f)) {
       const auto& y = std::get<Circle>(c.b);
       for (const double limit : {HUGE_VAL, 0.0}) {
         const ContactOptions o{.max_separation = limit};
@@ -347,7 +347,7 @@ TEST(CorePairs, CircleKernelsAreTheCoresContact) {
   EXPECT_GT(compared, 200);
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, FlatFamilies, ::testing::ValuesIn(testing::core_families()),
+INSTANTIATE_TEST_SUITE_P(Families, CoreFamilies, ::testing::ValuesIn(testing::core_families()),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace

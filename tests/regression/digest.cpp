@@ -297,7 +297,7 @@ void corpus(const std::filesystem::path& root) {
       pair_queries(std::string("corpus/") + name, a, b, false);
     }
   }
-  // As the fuzz target reads them, a flat shape, then any; the valid pairs (an outline that
+  // As the fuzz target reads them, a core shape, then any; the valid pairs (an outline that
   // ConvexPolygon::of refused is left out, and the helpers the queries here use take valid shapes).
   for (const auto& p : files(root / "polygon")) {
     const std::string bytes = read(p);

@@ -204,10 +204,10 @@ double direction_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 
 }  // namespace
 
-std::vector<FlatCase> cases_of(const CoreFamily& f) {
+std::vector<CoreCase> cases_of(const CoreFamily& f) {
   std::mt19937_64 rng(std::hash<std::string>{}(f.name));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<FlatCase> out;
+  std::vector<CoreCase> out;
   for (int k = 0; k < f.cases; ++k) {
     const double delta = f.deltas[k % f.deltas.size()] * f.size;
     const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));

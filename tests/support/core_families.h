@@ -1,4 +1,4 @@
-// Families of flat pairs for the tests (rectangles, convex polygons sharp and rounded, capsules,
+// Families of pairs of core shapes for the tests (rectangles, convex polygons sharp and rounded, capsules,
 // segments and circles against each other and against ellipses): B placed against A at a known gap along a
 // random direction, on near-tangent, deep, sliver, far-off and extreme-scale families.
 #pragma once
@@ -19,7 +19,7 @@ namespace collide2d::testing {
 enum class Form { rect, polygon, rounded, capsule, circle, ellipse, triangle, octagon, kinked, needle, stub, segment };
 const char* name_of(Form k);
 
-// The flat kinds held in a ConvexPolygon and in a Capsule.
+// The core forms held in a ConvexPolygon and in a Capsule.
 inline constexpr Form kPolygonKinds[] = {Form::polygon, Form::rounded, Form::triangle, Form::octagon, Form::kinked};
 inline constexpr Form kCapsuleKinds[] = {Form::capsule, Form::needle, Form::stub};
 inline bool is_one_of(std::span<const Form> kinds, Form k) {
@@ -58,7 +58,7 @@ void PrintTo(const CoreFamily& f, std::ostream* os);
 // octagons, kinked polygons, needles and stubs) touching at those gaps.
 std::vector<CoreFamily> core_families();
 
-struct FlatCase {
+struct CoreCase {
   Shape a, b;
   double delta;  // the nominal gap
 };
@@ -66,6 +66,6 @@ struct FlatCase {
 // B placed so that its support point along -n lies at A's along n plus delta n (delta in units of
 // the size), n chosen as the family's touch says: for delta >= 0 the pair's distance is delta, to
 // the rounding of B's centre.
-std::vector<FlatCase> cases_of(const CoreFamily& f);
+std::vector<CoreCase> cases_of(const CoreFamily& f);
 
 }  // namespace collide2d::testing

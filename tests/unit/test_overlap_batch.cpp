@@ -237,7 +237,7 @@ bool left_uncertain(const Pairs<A, B>& p, std::size_t k) {
   return true;
 }
 
-// A flat shape of the kinds `as` against one of the kinds `bs`: the core families (touching at gaps
+// A core shape of the kinds `as` against one of the kinds `bs`: the core families (touching at gaps
 // of +-1e-3 to 1e-12 of the size and 0, deep, slivers of aspect 1e6, far off, tiny and huge), and
 // candidate pairs at random sizes, half of them at a gap of either sign down to 1e-16 along a random
 // direction.
@@ -247,7 +247,7 @@ void check_cores(std::span<const Form> as, std::span<const Form> bs) {
   for (CoreFamily f : core_families()) {
     if (!is_one_of(as, f.a) || !is_one_of(bs, f.b)) continue;
     f.cases = 240;
-    for (const FlatCase& c : cases_of(f)) p.add(std::get<A>(c.a), std::get<B>(c.b));
+    for (const CoreCase& c : cases_of(f)) p.add(std::get<A>(c.a), std::get<B>(c.b));
   }
   const std::size_t family_pairs = p.size();
   std::mt19937_64 rng(37);
