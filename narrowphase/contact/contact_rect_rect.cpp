@@ -226,8 +226,9 @@ Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const
 Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
                                   const Orientation& b_orientation, const ContactOptions& options,
                                   PreferredFace preferred) {
-  const detail::RectPairFrame f(a, detail::Rotation<double>::of(a_orientation), b,
-                                detail::Rotation<double>::of(b_orientation));
+  // The fields as they are, not Rotation::of: through it GCC spills the rotations in halves and then
+  // stalls reading them whole (bench_contact's rect_rect rows).
+  const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
   const View from_a{a.half_extents, b.half_extents, f.b_rel, f.b_center, true};
   const View from_b{b.half_extents, a.half_extents, {f.b_rel.c, -f.b_rel.s}, -f.b_rel.apply_inverse(f.b_center), false};
   const Face on_a = deepest_face(from_a), on_b = deepest_face(from_b);
