@@ -1,4 +1,4 @@
-// A capsule's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
+// A capsule's geometry: the public functions of shapes.h (its traits are inline in shapes/capsule.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/capsule.h"

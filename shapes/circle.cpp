@@ -1,4 +1,4 @@
-// A circle's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
+// A circle's geometry: the public functions of shapes.h (its traits are inline in shapes/circle.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/circle.h"

@@ -1,4 +1,4 @@
-// An ellipse's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
+// An ellipse's geometry: the public functions of shapes.h (its traits are inline in shapes/ellipse.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/ellipse.h"

@@ -1,4 +1,5 @@
-// Convex polygons: their outlines made and checked once, and the geometry of a posed polygon.
+// Convex polygons: their outlines made and checked once, and the public geometry of a posed polygon
+// (its traits are inline in shapes/polygon.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/polygon.h"

@@ -1,4 +1,4 @@
-// A rectangle's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
+// A rectangle's geometry: the public functions of shapes.h (its traits are inline in shapes/rect.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/rect.h"

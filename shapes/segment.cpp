@@ -1,4 +1,4 @@
-// A segment's geometry: the public functions of shapes.h and the traits of shapes/internal.h.
+// A segment's geometry: the public functions of shapes.h (its traits are inline in shapes/segment.h).
 #include <collide2d/shapes.h>
 
 #include "shapes/segment.h"
