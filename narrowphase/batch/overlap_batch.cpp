@@ -21,8 +21,11 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -175,6 +178,81 @@ void detail::decide(Chunk<DiscEllipseLanes<double>::kFields>& chunk, std::size_t
 void detail::decide(Chunk<DiscPairLanes<double>::kFields>& chunk, std::size_t count, KernelOf<DiscPairLanes<double>>) {
   HWY_DYNAMIC_DISPATCH(disc_pair_chunk)(chunk, count);
 }
+
+namespace {
+
+// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
+template <class S>
+const Orientation& orientation_at(std::span<const Orientation> list, std::size_t k) {
+  static const Orientation unturned;
+  if constexpr (std::is_same_v<S, Circle>) {
+    return unturned;
+  } else {
+    return list[k];
+  }
+}
+
+// The name of the pair's batch in messages: "overlap_rect_ellipse".
+template <class A, class B>
+inline constexpr auto kBatchName = [] {
+  std::array<char, 48> out{};
+  std::size_t n = 0;
+  for (const std::string_view part :
+       {std::string_view("overlap_"), detail::Kind<A>::word, std::string_view("_"), detail::Kind<B>::word}) {
+    for (const char c : part) out[n++] = c;
+  }
+  return out;
+}();
+
+template <class S>
+using List = std::span<const S>;
+using Turns = std::span<const Orientation>;
+using Verdicts = std::span<std::uint8_t>;
+
+// The lists as pairs. A function of internal linkage, so that overlap_pairs' instance for its lambda
+// is local too and GCC inlines the filling of the chunks into it; for the lambda of an externally
+// visible function it calls the filling out of line.
+template <class A, class B>
+void overlap_lists(List<A> a, Turns a_orientations, List<B> b, Turns b_orientations, Verdicts overlapping) {
+  detail::overlap_pairs<A, B>(
+      [&](std::size_t k) {
+        return detail::PairRef<A, B>{a[k], orientation_at<A>(a_orientations, k), b[k],
+                                     orientation_at<B>(b_orientations, k)};
+      },
+      overlapping);
+}
+
+}  // namespace
+
+template <class A, class B>
+void detail::overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
+                           std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  constexpr bool a_turns = !std::is_same_v<A, Circle>, b_turns = !std::is_same_v<B, Circle>;
+  std::array<std::size_t, 4> lengths{};
+  std::size_t n = 0;
+  lengths[n++] = a.size();
+  if (a_turns) lengths[n++] = a_orientations.size();
+  lengths[n++] = b.size();
+  if (b_turns) lengths[n++] = b_orientations.size();
+  detail::check_lengths(kBatchName<A, B>.data(), std::span(lengths.data(), n), overlapping.size());
+  overlap_lists<A, B>(a, a_orientations, b, b_orientations, overlapping);
+}
+
+// Every batched pair's, compiled here with the library's flags. The tests run each pair of the
+// table's batched list (tests/unit/test_overlap_batch.cpp), so that one missing here fails to link.
+static_assert(std::tuple_size_v<detail::BatchedPairs<detail::Kinds>> == 11, "a batched pair to instantiate below");
+template void detail::overlap_batch<Rect, Ellipse>(List<Rect>, Turns, List<Ellipse>, Turns, Verdicts);
+template void detail::overlap_batch<Rect, Rect>(List<Rect>, Turns, List<Rect>, Turns, Verdicts);
+template void detail::overlap_batch<Circle, Circle>(List<Circle>, Turns, List<Circle>, Turns, Verdicts);
+template void detail::overlap_batch<Rect, Circle>(List<Rect>, Turns, List<Circle>, Turns, Verdicts);
+template void detail::overlap_batch<Circle, Ellipse>(List<Circle>, Turns, List<Ellipse>, Turns, Verdicts);
+template void detail::overlap_batch<Ellipse, Ellipse>(List<Ellipse>, Turns, List<Ellipse>, Turns, Verdicts);
+template void detail::overlap_batch<ConvexPolygon, Ellipse>(List<ConvexPolygon>, Turns, List<Ellipse>, Turns, Verdicts);
+template void detail::overlap_batch<Capsule, Ellipse>(List<Capsule>, Turns, List<Ellipse>, Turns, Verdicts);
+template void detail::overlap_batch<ConvexPolygon, Circle>(List<ConvexPolygon>, Turns, List<Circle>, Turns, Verdicts);
+template void detail::overlap_batch<Capsule, Circle>(List<Capsule>, Turns, List<Circle>, Turns, Verdicts);
+template void detail::overlap_batch<ConvexPolygon, ConvexPolygon>(List<ConvexPolygon>, Turns, List<ConvexPolygon>,
+                                                                  Turns, Verdicts);
 
 // The public functions: each the generic form (overlap_pairs.h) of its pair.
 void overlap_rect_ellipse(std::span<const Rect> rects, std::span<const Orientation> rect_orientations,

@@ -194,49 +194,13 @@ void overlap_pairs(Pair pair, std::span<std::uint8_t> overlapping) {
   }
 }
 
-// Shape k's orientation from its list; a circle's is not read, and its list may be empty.
-template <class S>
-const Orientation& orientation_at(std::span<const Orientation> list, std::size_t k) {
-  static const Orientation unturned;
-  if constexpr (std::is_same_v<S, Circle>) {
-    return unturned;
-  } else {
-    return list[k];
-  }
-}
-
-// The name of the pair's batch in messages: "overlap_rect_ellipse".
-template <class A, class B>
-inline constexpr auto kBatchName = [] {
-  std::array<char, 48> out{};
-  std::size_t n = 0;
-  for (const std::string_view part :
-       {std::string_view("overlap_"), Kind<A>::word, std::string_view("_"), Kind<B>::word}) {
-    for (const char c : part) out[n++] = c;
-  }
-  return out;
-}();
-
 // The batched overlap tests of a pair of kinds with a batch (pairs.h), A before B in rank order, on
 // lists: each list as long as the results (a circle's orientations aside), then overlap_pairs.
-// Throws std::invalid_argument, naming the lengths, before anything is written.
+// Throws std::invalid_argument, naming the lengths, before anything is written. Instantiated in
+// overlap_batch.cpp for every batched pair, so that the tests, the benchmarks and the Python module
+// run the code the library compiled.
 template <class A, class B>
 void overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
-                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
-  static_assert(Pair<A, B>::batched, "the pair table gives this pair of kinds no batch");
-  constexpr bool a_turns = !std::is_same_v<A, Circle>, b_turns = !std::is_same_v<B, Circle>;
-  std::array<std::size_t, 4> lengths{};
-  std::size_t n = 0;
-  lengths[n++] = a.size();
-  if (a_turns) lengths[n++] = a_orientations.size();
-  lengths[n++] = b.size();
-  if (b_turns) lengths[n++] = b_orientations.size();
-  check_lengths(kBatchName<A, B>.data(), std::span(lengths.data(), n), overlapping.size());
-  overlap_pairs<A, B>(
-      [&](std::size_t k) {
-        return PairRef<A, B>{a[k], orientation_at<A>(a_orientations, k), b[k], orientation_at<B>(b_orientations, k)};
-      },
-      overlapping);
-}
+                   std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping);
 
 }  // namespace collide2d::detail
