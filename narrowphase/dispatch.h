@@ -50,13 +50,16 @@ struct RowCheck {
       requires { sizeof(Pair<A, B>); },
       "the pair table has no row for this pair of kinds: give it its kernels, or Unsupported "
       "(narrowphase/pairs.h)");
-  static constexpr bool ok = true;
 };
+// Each pair's check is a base of its own, so that the compiler instantiates (and names) every one
+// that fails rather than stopping at the first.
+template <class Tuple>
+struct RowChecks;
+template <class... P>
+struct RowChecks<std::tuple<P...>> : RowCheck<typename P::First, typename P::Second>... {};
 template <class List>
 constexpr bool every_pair_has_a_row() {
-  return []<class... P>(std::tuple<P...>*) {
-    return (RowCheck<typename P::First, typename P::Second>::ok && ...);
-  }(static_cast<typename AllPairs<List>::type*>(nullptr));
+  return sizeof(RowChecks<typename AllPairs<List>::type>) > 0;
 }
 
 // The pairs of the list whose row has a batch (batch.h), as a tuple of KindPair.
