@@ -67,7 +67,7 @@ void WorldState::impact(std::uint32_t a, std::uint32_t b, ChunkResults& out) con
   if (y.chain && !in_front(chain_of(b), from(x))) return;
   const TimeOfImpact r = time_of_impact(from(x), motion(x), from(y), motion(y));
   if (r.status == ToiStatus::hit || r.status == ToiStatus::stalled) {
-    Impact& i = out.impacts.emplace_back(record_of<Impact>(a, b));
+    Impact& i = out.impacts.emplace_back(Impact{ids_of(a, b)});
     i.t = r.t;
     i.normal = r.normal;
     i.point = r.point;

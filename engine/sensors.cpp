@@ -13,7 +13,9 @@ namespace collide2d::detail {
 void WorldState::sense(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const {
   if (!touching) return;
   const std::uint32_t sensor = entries_[a].sensor ? a : b, visitor = sensor == a ? b : a;
-  out.sensing.push_back(record_of<SensorPair>(sensor, visitor));
+  const PairIds ids = ids_of(sensor, visitor);
+  out.sensing.push_back(
+      {ids.a, ids.b, ids.shape_a, ids.shape_b, ids.user_a, ids.user_b, ids.shape_user_a, ids.shape_user_b});
 }
 
 // The first `chunks` chunks' sensor pairs joined in chunk order and sorted, and what entered and

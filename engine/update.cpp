@@ -227,7 +227,7 @@ std::vector<ShapePair> WorldState::candidates() const {
   std::vector<ShapePair> out;
   out.reserve(candidates_.size());
   for (const auto& [a, b] : candidates_) {
-    if (entries_[a].alive && entries_[b].alive) out.push_back(record_of<ShapePair>(a, b));
+    if (entries_[a].alive && entries_[b].alive) out.push_back(ShapePair{ids_of(a, b)});
   }
   return out;
 }
@@ -314,7 +314,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
   const ContactOptions manifold{.margin = speculative_margin_};
   if (x.continuous || y.continuous) impact(a, b, out);
   const auto record = [&](bool solids_touch, const Contact& c) {
-    BodyContact& r = out.contacts.emplace_back(record_of<BodyContact>(a, b));
+    BodyContact& r = out.contacts.emplace_back(BodyContact{ids_of(a, b)});
     r.touching = solids_touch;
     r.contact = c;
   };
@@ -324,7 +324,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
     const bool chained = x.chain || y.chain;
     const Contact c = chained || contacts_on_ ? pair_contact(a, b, manifold) : Contact{};
     if (!chained || !c.empty()) {
-      out.overlapping.push_back(record_of<ShapePair>(a, b));
+      out.overlapping.push_back(ShapePair{ids_of(a, b)});
       if (contacts_on_) record(true, c);
       return;
     }
@@ -332,7 +332,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
   if (proximity_margin_ > 0.0) {
     const DistanceResult d = distance(x.shape, y.shape);
     if (!d.overlapping && d.distance <= proximity_margin_)
-      out.proximity.emplace_back(record_of<Proximity>(a, b)).result = d;
+      out.proximity.emplace_back(Proximity{ids_of(a, b)}).result = d;
   }
   if (speculative_margin_ > 0.0 &&
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {

@@ -256,9 +256,8 @@ class WorldState {
   const ShapeEntry& entry(ShapeId id) const;
   BodyId body_id(std::uint32_t index) const { return {index, bodies_[index].generation}; }
   ShapeId shape_id(std::uint32_t index) const { return {index, entries_[index].generation}; }
-  // The record of shapes a and b (a's body < b's) as of now: handles and user ids.
-  template <class Record>
-  Record record_of(std::uint32_t a, std::uint32_t b) const {
+  // The ids of shapes a and b (a's body < b's) as of now: handles and user ids.
+  PairIds ids_of(std::uint32_t a, std::uint32_t b) const {
     const ShapeEntry& x = entries_[a];
     const ShapeEntry& y = entries_[b];
     return {x.body, y.body, shape_id(a), shape_id(b), x.body_user_id, y.body_user_id, x.user_id, y.user_id};
