@@ -108,7 +108,10 @@ Shape shrunk_inside(Rng& rng, const Shape& a, Kind kind, const Family& f) {
   if (const auto* c = std::get_if<Circle>(&a)) inner = c->radius;
   if (const auto* e = std::get_if<Ellipse>(&a)) inner = std::min(e->a, e->b);
   if (const auto* r = std::get_if<Rect>(&a)) inner = r->half_extents.minCoeff();
-  const Vec2 center = center_of(a) + uniform(rng, 0.0, 0.4 * inner) * unit(uniform(rng, 0.0, 6.3));
+  // One draw per statement (here and below): the order of two draws within one expression is
+  // unspecified, and GCC and clang differ; this is GCC's.
+  const double angle = uniform(rng, 0.0, 6.3);
+  const Vec2 center = center_of(a) + uniform(rng, 0.0, 0.4 * inner) * unit(angle);
   return random_shape(rng, kind, 0.25 * inner, Family{.aspect_min = 1.0, .aspect_max = 2.0}, center);
 }
 
@@ -202,7 +205,8 @@ Case cusp_case(Rng& rng, const Family& f, int k, const Vec2& origin) {
   const Vec2 u = f.axis_aligned ? Vec2(1, 0) : unit(e.angle), v(-u.y(), u.x());
   const Vec2 along = e.a >= e.b ? u : v, beside = e.a >= e.b ? v : u;
   const double side = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
-  const double eta = (uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -uniform(rng, 0.0, 8.0));
+  const double eta_sign = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+  const double eta = eta_sign * std::pow(10.0, -uniform(rng, 0.0, 8.0));
   const double spread = major * major - minor * minor;
   Vec2 c;
   double radius = 0.0;
@@ -280,7 +284,8 @@ namespace {
 double ulps_of(const Vec2& p) { return 4 * kU * 2 * std::max(std::abs(p.x()), std::abs(p.y())); }
 
 Case make_case(Rng& rng, const Family& f, int k) {
-  const Vec2 origin = f.offset * Vec2(1.0, -0.7) + f.size * Vec2(uniform(rng, -1, 1), uniform(rng, -1, 1));
+  const double y = uniform(rng, -1, 1);
+  const Vec2 origin = f.offset * Vec2(1.0, -0.7) + f.size * Vec2(uniform(rng, -1, 1), y);
   if (f.placement == Placement::cusp) return cusp_case(rng, f, k, origin);
   Shape a = random_shape(rng, f.a, f.size, f, origin);
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -92,7 +92,7 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
       ASSERT_EQ(world.contacts().size(), expected.size()) << "frame " << frame;
       for (std::size_t k = 0; k < expected.size(); ++k) {
         const BodyContact& got = world.contacts()[k];
-        ASSERT_EQ(BodyPair(got.a, got.b), BodyPair(expected[k].a, expected[k].b)) << "frame " << frame;
+        ASSERT_EQ((BodyPair{got.a, got.b}), (BodyPair{expected[k].a, expected[k].b})) << "frame " << frame;
         // A speculative contact says so, from the exact verdict; the record carries both user ids.
         ASSERT_EQ(got.touching, expected[k].touching) << "frame " << frame;
         ASSERT_EQ(got.user_a, expected[k].user_a);

@@ -126,9 +126,9 @@ std::vector<RunSummary::Sensor> sensor_contents(const Scene& scene,
   for (const SceneBody& b : scene.bodies) {
     if (b.sensor) out.push_back({b.id, {}});
   }
-  for (const auto& [sensor, visitor] : sensing) {
-    const auto it = std::find_if(out.begin(), out.end(), [&](const RunSummary::Sensor& x) { return x.id == sensor; });
-    it->visitors.push_back(visitor);
+  for (const std::pair<std::uint64_t, std::uint64_t>& p : sensing) {
+    const auto it = std::find_if(out.begin(), out.end(), [&](const RunSummary::Sensor& x) { return x.id == p.first; });
+    it->visitors.push_back(p.second);
   }
   return out;
 }
