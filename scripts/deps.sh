@@ -2,7 +2,7 @@
 # Installs the Debian packages collide2d needs to build, test and benchmark, and the npm package
 # its browser tests drive chromium with, when any is missing.
 set -euo pipefail
-packages=(build-essential cmake pkg-config python3 clang-format libeigen3-dev libhwy-dev libbox2d-dev googletest libgtest-dev libbenchmark-dev libboost-dev nlohmann-json3-dev zlib1g-dev clang libclang-rt-14-dev
+packages=(build-essential ccache cmake pkg-config python3 clang-format libeigen3-dev libhwy-dev libbox2d-dev googletest libgtest-dev libbenchmark-dev libboost-dev nlohmann-json3-dev zlib1g-dev clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-venv python3-matplotlib
   libopenmpi-dev openmpi-bin)
 missing=()

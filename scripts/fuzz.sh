@@ -2,15 +2,18 @@
 # Builds the libFuzzer targets with clang (AddressSanitizer and UndefinedBehaviorSanitizer on) and
 # runs each of the nine on its corpus in tests/fuzz/corpus for FUZZ_SECONDS seconds (default 10). New
 # inputs stay in a scratch copy of the corpus. The script fails when a fuzzer exits with an error
-# (a failed property, a sanitizer finding, a crash, a timeout), writes a failing input to
-# build-fuzz/, or runs no input at all. A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
+# (a failed property, a sanitizer finding, a crash, a timeout), writes a failing input to its build
+# folder (build-fuzz/ unless FUZZ_BUILD_DIR names another), or runs no input at all. A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-10}
-CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_FUZZ=ON \
-  -DCOLLIDE2D_BUILD_TESTS=OFF -DCOLLIDE2D_BUILD_BENCHMARKS=OFF > /dev/null
+# A fuzzing build made already (scripts/test.sh's, which also has the tests) is kept as it is.
+if ! grep -q '^COLLIDE2D_FUZZ:BOOL=ON$' "$build/CMakeCache.txt" 2> /dev/null; then
+  CXX=clang++ CC=clang cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_FUZZ=ON \
+    -DCOLLIDE2D_BUILD_TESTS=OFF -DCOLLIDE2D_BUILD_BENCHMARKS=OFF > /dev/null
+fi
 names="rect_ellipse ellipse_ellipse rect_rect circle polygon segment chain query_line world"
 cmake --build "$build" -j "$(nproc)" --target $(printf 'fuzz_%s ' $names)
 rm -f "$build"/crash-* "$build"/timeout-* "$build"/leak-* "$build"/oom-*
