@@ -12,7 +12,7 @@
 #   BENCH_REPETITIONS=3 BENCH_MIN_TIME=0.05 bash scripts/bench.sh   # quicker, noisier
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/deps.sh"
+bash "$root/scripts/deps.sh" --test
 build=${BENCH_BUILD_DIR:-$root/build-bench}
 repetitions=${BENCH_REPETITIONS:-5}
 min_time=${BENCH_MIN_TIME:-0.1}

@@ -6,7 +6,7 @@
 # folder (build-fuzz/ unless FUZZ_BUILD_DIR names another), or runs no input at all. A long run: FUZZ_SECONDS=3600 bash scripts/fuzz.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/deps.sh"
+bash "$root/scripts/deps.sh" --test
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-10}
 # A fuzzing build made already (scripts/test.sh's, which also has the tests) is kept as it is.

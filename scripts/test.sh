@@ -5,13 +5,13 @@
 # (scripts/fuzz.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/deps.sh"
+bash "$root/scripts/deps.sh" --test
 # The packaging and Python install tests build the library again from its source, as a user does;
 # through the compiler cache they reuse this build's objects.
 export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
 build=${BUILD_DIR:-$root/build}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON \
-  -DCOLLIDE2D_BUILD_PYTHON=ON \
+  -DCOLLIDE2D_BUILD_PYTHON=ON -DCOLLIDE2D_BUILD_TESTBED=ON \
   -DCOLLIDE2D_BOX2D_SOURCE="$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")"
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"

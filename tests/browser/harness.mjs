@@ -1,12 +1,12 @@
 // What the browser tests share: Debian's chromium launched headless through puppeteer-core, or a skip
-// that says which of the two is missing (exit 77, which ctest reports as skipped; scripts/deps.sh
+// that says which of the two is missing (exit 77, which ctest reports as skipped; scripts/deps.sh --test
 // installs both), and a tally of checks.
 import { existsSync } from 'node:fs';
 
 const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
 
 export function skip(why) {
-  console.log(`SKIPPED: ${why} (bash scripts/deps.sh installs it)`);
+  console.log(`SKIPPED: ${why} (bash scripts/deps.sh --test installs it)`);
   process.exit(77);
 }
 

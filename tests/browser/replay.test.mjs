@@ -5,7 +5,7 @@
 // the run's frames, bodies and per-frame pair counts, draws the bullet's impact where the geometry
 // puts it, and names a clicked body. Then it loads the built-in scene's page (600 frames), checks
 // its size, and prints the median time to draw a frame at 1280 x 800. Exits 77 (ctest: skipped),
-// saying why, where no browser or no puppeteer-core is installed (scripts/deps.sh installs both).
+// saying why, where no browser or no puppeteer-core is installed (scripts/deps.sh --test installs both).
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, statSync, writeFileSync } from 'node:fs';
 import path from 'node:path';

@@ -3,7 +3,7 @@
 // runs `collide2d_report --pairs 10` with --json and --html, and checks that the page plots a point
 // for every measurement of the JSON, that hovering one shows its method, time and error, and that
 // unticking a pair kind takes its points and its table away. Exits 77 (ctest: skipped), saying why,
-// where no browser or no puppeteer-core is installed (scripts/deps.sh installs both).
+// where no browser or no puppeteer-core is installed (scripts/deps.sh --test installs both).
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';

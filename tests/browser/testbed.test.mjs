@@ -3,8 +3,8 @@
 // drags shape B into shape A for a few pairs of kinds and checks that what the page shows (the
 // overlap, the separation and normal, the drag's time of impact) is what `collide2d query` prints for
 // the query line the page shows, to the digits the page shows. Exits 77 (ctest: skipped), saying why,
-// where there is no browser, no puppeteer-core, or no testbed page (the build makes it where
-// Emscripten is installed; scripts/deps.sh installs all three).
+// where there is no browser, no puppeteer-core, or no testbed page (a build configured with
+// -DCOLLIDE2D_BUILD_TESTBED=ON makes it; scripts/deps.sh --test installs all three's tools).
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { pathToFileURL } from 'node:url';
@@ -12,7 +12,7 @@ import { pathToFileURL } from 'node:url';
 import { check, finish, launch, skip } from './harness.mjs';
 
 const [testbed, collide2d] = process.argv.slice(2);
-if (!existsSync(testbed)) skip(`no testbed page at ${testbed}: the build makes it where emcc is installed`);
+if (!existsSync(testbed)) skip(`no testbed page at ${testbed}: configure with -DCOLLIDE2D_BUILD_TESTBED=ON`);
 
 // What the command prints for a line, as numbers.
 function query(mode, line) {
