@@ -3,6 +3,8 @@
 // a message, the usage's synopsis and exit status 2.
 #pragma once
 
+#include <collide2d/version.h>
+
 #include <charconv>
 #include <fstream>
 #include <iostream>
@@ -43,13 +45,18 @@ void write_file(const std::string& path, const char* what, Draw draw) {
   std::cout << what << ": " << path << '\n';
 }
 
-// The body of a main: --help or -h prints the usage; otherwise `command()` runs, and any exception
+// The body of a main: --help or -h prints the usage, --version the program's name and version;
+// otherwise `command()` runs, and any exception
 // becomes one line, "<program>: <what>", on stderr with exit status 2. A UsageError adds the
 // usage's synopsis lines (those that start with "usage:") and where the rest is.
 template <class Command>
 int run_main(int argc, char** argv, const char* program, const char* usage, Command command) {
   if (argc >= 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h")) {
     std::cout << usage;
+    return 0;
+  }
+  if (argc >= 2 && std::string_view(argv[1]) == "--version") {
+    std::cout << program << ' ' << COLLIDE2D_VERSION_STRING << '\n';
     return 0;
   }
   try {

@@ -33,7 +33,8 @@ const std::string kQueryUsage =
     "      reference methods in plain double)\n"
     "  --method robust|gradient|polynomial\n"
     "      the ellipse-ellipse distance solver (default robust, the kernel; gradient and\n"
-    "      polynomial are reference methods, to measure it)\n"
+    "      polynomial are reference methods, to measure it; with --boundary, a circle and an\n"
+    "      ellipse too). With a method named, a line of a pair it does not cover is an error\n"
     "  --boundary  distance and closest points between the boundary curves instead of the\n"
     "      solids (circles and ellipses; nested shapes give their gap)\n"
     "  --contact   writes 'separation nx ny ax ay bx by' instead: the signed distance (minus\n"
@@ -100,6 +101,11 @@ int query(int argc, char** argv) {
     } else {
       throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
+  }
+  try {
+    collide2d::tool::check_options(options);
+  } catch (const collide2d::tool::ParseError& e) {
+    throw collide2d::cli::UsageError(e.what());
   }
   std::ios::sync_with_stdio(false);
   return collide2d::tool::run_query(std::cin, std::cout, std::cerr, options);

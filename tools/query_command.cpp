@@ -155,6 +155,29 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
 }
 
+template <class X, class Y>
+bool is_pair(const QueryLine& q) {
+  return (std::holds_alternative<X>(q.a) && std::holds_alternative<Y>(q.b)) ||
+         (std::holds_alternative<Y>(q.a) && std::holds_alternative<X>(q.b));
+}
+
+// A named method answers its own pairs only; any other line is refused, naming both.
+void check_method_covers(const QueryLine& q, const QueryOptions& options) {
+  const auto refuse = [&q](std::string_view word, const char* covers) {
+    const std::string kinds = q.chain ? std::string("chain") : shape_name(q.a);
+    throw ParseError("--method " + std::string(word) + " " + covers + "; this line is " + kinds + " ; " +
+                     shape_name(q.b));
+  };
+  if (options.rect_ellipse && !is_pair<Rect, Ellipse>(q)) {
+    refuse(options.rect_ellipse->word, "tests a rect and an ellipse");
+  }
+  const bool boundary = options.answer == Answer::boundary;
+  if (options.ellipse && !is_pair<Ellipse, Ellipse>(q) && !(boundary && is_pair<Circle, Ellipse>(q))) {
+    refuse(options.ellipse->word,
+           boundary ? "measures two ellipses, or a circle and an ellipse" : "measures two ellipses");
+  }
+}
+
 }  // namespace
 
 std::string shape_grammar(std::string_view indent) {
@@ -195,26 +218,33 @@ std::optional<QueryLine> parse_query_line(std::string_view line) {
 void apply_method(std::string_view name, QueryOptions& options) {
   using baselines::EllipseSolver;
   using baselines::RectEllipseTest;
-  constexpr std::pair<std::string_view, std::optional<RectEllipseTest>> overlap_methods[] = {
-      {"minkowski", std::nullopt},
-      {"closest-features", RectEllipseTest::closest_features},
-      {"all-features", RectEllipseTest::all_features}};
-  constexpr std::pair<std::string_view, std::optional<EllipseSolver>> distance_methods[] = {
+  constexpr NamedMethod<RectEllipseTest> overlap_methods[] = {{"minkowski", std::nullopt},
+                                                              {"closest-features", RectEllipseTest::closest_features},
+                                                              {"all-features", RectEllipseTest::all_features}};
+  constexpr NamedMethod<EllipseSolver> distance_methods[] = {
       {"robust", std::nullopt}, {"gradient", EllipseSolver::gradient}, {"polynomial", EllipseSolver::polynomial}};
-  for (const auto& [word, method] : overlap_methods) {
-    if (name == word) return void(options.rect_ellipse = method);
+  for (const auto& named : overlap_methods) {
+    if (name == named.word) return void(options.rect_ellipse = named);
   }
-  for (const auto& [word, method] : distance_methods) {
-    if (name == word) return void(options.ellipse = method);
+  for (const auto& named : distance_methods) {
+    if (name == named.word) return void(options.ellipse = named);
   }
   throw ParseError("unknown method '" + std::string(name) +
                    "' (expected minkowski, closest-features, all-features, robust, gradient or polynomial)");
+}
+
+void check_options(const QueryOptions& options) {
+  if ((options.rect_ellipse || options.ellipse) &&
+      (options.answer == Answer::contact || options.answer == Answer::toi)) {
+    throw ParseError("--method picks an overlap test or a distance solver: it does not go with --contact or --toi");
+  }
 }
 
 std::string answer(const QueryLine& q, const QueryOptions& options) {
   char buf[200];
   int n = 0;
   if (q.moving && options.answer != Answer::toi) throw ParseError("a motion ('@ vx vy w') needs --toi");
+  check_method_covers(q, options);
   if (options.answer == Answer::toi) {
     // A chain segment stops only what starts in front of it.
     const TimeOfImpact r =
@@ -229,12 +259,14 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
                       c.normal.x() + 0.0, c.normal.y() + 0.0, c.point_a.x() + 0.0, c.point_a.y() + 0.0,
                       c.point_b.x() + 0.0, c.point_b.y() + 0.0);
   } else {
-    const bool hit = options.rect_ellipse ? baselines::overlaps(q.a, q.b, *options.rect_ellipse) : overlaps(q.a, q.b);
+    const auto overlap_test = options.rect_ellipse ? options.rect_ellipse->method : std::nullopt;
+    const auto solver = options.ellipse ? options.ellipse->method : std::nullopt;
+    const bool hit = overlap_test ? baselines::overlaps(q.a, q.b, *overlap_test) : overlaps(q.a, q.b);
     const bool boundary = options.answer == Answer::boundary;
-    const DistanceResult d = options.ellipse ? boundary ? baselines::boundary_distance(q.a, q.b, *options.ellipse)
-                                                        : baselines::distance(q.a, q.b, *options.ellipse)
-                             : boundary ? boundary_distance(q.a, q.b)
-                                             : distance(q.a, q.b);
+    const DistanceResult d =
+        solver     ? boundary ? baselines::boundary_distance(q.a, q.b, *solver) : baselines::distance(q.a, q.b, *solver)
+            : boundary ? boundary_distance(q.a, q.b)
+                   : distance(q.a, q.b);
     n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", hit ? 1 : 0, d.distance, d.point_a.x(),
                       d.point_a.y(), d.point_b.x(), d.point_b.y());
   }

@@ -63,12 +63,21 @@ std::optional<QueryLine> parse_query_line(std::string_view line);
 
 enum class Answer { distance, boundary, contact, toi };
 
+// A method named on the command line: its word, and the reference method it picks (nullopt: the
+// kernel).
+template <class Method>
+struct NamedMethod {
+  std::string_view word;
+  std::optional<Method> method;
+};
+
 struct QueryOptions {
-  // A reference method instead of the kernel (narrowphase/baselines/baselines.h): for the
-  // rectangle–ellipse overlap, and for the ellipse distances (both solid and boundary; a circle's
-  // boundary with an ellipse too).
-  std::optional<baselines::RectEllipseTest> rect_ellipse;
-  std::optional<baselines::EllipseSolver> ellipse;
+  // The method named for the rectangle–ellipse overlap, and for the ellipse distances (both solid
+  // and boundary; a circle's boundary with an ellipse too): the kernel or a reference method
+  // (narrowphase/baselines/baselines.h). A line of a pair the named method does not cover is an
+  // error, not answered by another method.
+  std::optional<NamedMethod<baselines::RectEllipseTest>> rect_ellipse;
+  std::optional<NamedMethod<baselines::EllipseSolver>> ellipse;
   Answer answer = Answer::distance;
 };
 
@@ -77,7 +86,11 @@ struct QueryOptions {
 // polynomial). Throws ParseError for other names.
 void apply_method(std::string_view name, QueryOptions& options);
 
-// The output line for one query (without newline). Throws UnsupportedPair.
+// Throws ParseError when the options do not go together: a method with --contact or --toi.
+void check_options(const QueryOptions& options);
+
+// The output line for one query (without newline). Throws UnsupportedPair, and ParseError for a
+// pair that the named method does not cover.
 std::string answer(const QueryLine& q, const QueryOptions& options);
 
 // Streams queries from `in` to `out`, reporting bad lines on `err`. Returns the exit status: 0 when

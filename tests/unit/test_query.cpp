@@ -143,12 +143,11 @@ struct CommandRun {
   std::string err;
 };
 
-CommandRun run(const std::string& input, const char* method = "minkowski",
-               tool::Answer answer = tool::Answer::distance) {
+CommandRun run(const std::string& input, const char* method = nullptr, tool::Answer answer = tool::Answer::distance) {
   std::istringstream in(input);
   std::ostringstream out, err;
   tool::QueryOptions options;
-  tool::apply_method(method, options);
+  if (method != nullptr) tool::apply_method(method, options);
   options.answer = answer;
   const int status = tool::run_query(in, out, err, options);
   std::vector<std::string> lines;
@@ -239,7 +238,7 @@ TEST(QueryCommand, ChainSegmentLines) {
   const ChainSegment floor = ChainSegment::of(Vec2(2, 0), Vec2(0, 0), Vec2(-2, 0), Vec2(-3, 0));
   const std::string chain = "chain 2 0 0 0 -2 0 -3 0 ; ";
   const CommandRun contacts = run(chain + "rect 0.4921875 0.484375 0.5 0.5 0\n" + chain + "circle -1 -0.25 0.5\n",
-                                  "minkowski", tool::Answer::contact);
+                                  nullptr, tool::Answer::contact);
   ASSERT_EQ(contacts.status, 0) << contacts.err;
   const Contact c = contact(floor, Rect{Vec2(0.4921875, 0.484375), Vec2(0.5, 0.5), 0.0});
   std::ostringstream expected;
@@ -247,8 +246,8 @@ TEST(QueryCommand, ChainSegmentLines) {
   expected << c.separation << ' ' << c.normal.x() + 0.0 << ' ' << c.normal.y() + 0.0 << ' ' << c.point_a.x() + 0.0
            << ' ' << c.point_a.y() + 0.0 << ' ' << c.point_b.x() + 0.0 << ' ' << c.point_b.y() + 0.0;
   EXPECT_EQ(contacts.out, (std::vector<std::string>{expected.str(), "none"}));
-  const CommandRun impacts = run(chain + "circle -1 5 0.5 @ 0 -10 0\n" + chain + "circle -1 -5 0.5 @ 0 10 0\n",
-                                 "minkowski", tool::Answer::toi);
+  const CommandRun impacts =
+      run(chain + "circle -1 5 0.5 @ 0 -10 0\n" + chain + "circle -1 -5 0.5 @ 0 10 0\n", nullptr, tool::Answer::toi);
   ASSERT_EQ(impacts.out.size(), 2u);
   EXPECT_EQ(impacts.out[0].rfind("1 0.44999", 0), 0u) << impacts.out[0];
   EXPECT_EQ(impacts.out[1], "0 1 1 0 0 0") << "from below it passes";
@@ -295,9 +294,39 @@ TEST(QueryCommand, MethodsAndBoundaryForEllipses) {
     EXPECT_NEAR(ax, 3.0, 1e-3) << m;
     EXPECT_NEAR(bx, 2.0, 1e-3) << m;
   }
-  const CommandRun r = run("rect 0 0 1 1 0 ; circle 5 0 1\n", "robust", tool::Answer::boundary);
+  const CommandRun r = run("rect 0 0 1 1 0 ; circle 5 0 1\n", nullptr, tool::Answer::boundary);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.at(0).find("error: the boundary distance covers circles and ellipses"), std::string::npos);
+}
+
+// A named method answers its own pairs; a line of another pair is refused, naming the line and the
+// pair, and the lines around it are answered.
+TEST(QueryCommand, MethodRefusesPairsItDoesNotCover) {
+  const std::string lines =
+      "ellipse 0 0 2 1 0 ; ellipse 5 0 2 1 0.3\nrect 0 0 1 1 0 ; circle 5 0 1\n"
+      "circle 0 0 1 ; ellipse 4 0 2 1 0\n";
+  const CommandRun solid = run(lines, "polynomial");
+  EXPECT_EQ(solid.status, 2);
+  ASSERT_EQ(solid.out.size(), 3u);
+  EXPECT_EQ(solid.out[0].substr(0, 2), "0 ");
+  EXPECT_EQ(solid.out[1], "error: --method polynomial measures two ellipses; this line is rect ; circle");
+  EXPECT_EQ(solid.out[2], "error: --method polynomial measures two ellipses; this line is circle ; ellipse");
+  EXPECT_EQ(solid.err,
+            "line 2: --method polynomial measures two ellipses; this line is rect ; circle\n"
+            "line 3: --method polynomial measures two ellipses; this line is circle ; ellipse\n");
+  const CommandRun boundary = run(lines, "gradient", tool::Answer::boundary);
+  EXPECT_EQ(boundary.out[1].rfind("error: --method gradient measures two ellipses, or a circle and an ellipse", 0), 0u);
+  EXPECT_EQ(boundary.out[2].substr(0, 2), "0 ");
+  const CommandRun overlap =
+      run("ellipse 0 0 2 1 0 ; rect 1 0 1 1 0\nchain 2 0 0 0 -2 0 -3 0 ; ellipse 0 3 1 1 0\n", "minkowski");
+  EXPECT_EQ(overlap.out[0].substr(0, 2), "1 ");
+  EXPECT_EQ(overlap.out[1], "error: --method minkowski tests a rect and an ellipse; this line is chain ; ellipse");
+  tool::QueryOptions options;
+  tool::apply_method("closest-features", options);
+  options.answer = tool::Answer::contact;
+  EXPECT_THROW(tool::check_options(options), tool::ParseError);
+  options.answer = tool::Answer::boundary;
+  EXPECT_NO_THROW(tool::check_options(options));
 }
 
 // The numbers of an answer line; empty when it does not hold N of them.
@@ -321,7 +350,7 @@ TEST(QueryCommand, ContactLinesForEveryPair) {
       "circle 0 0 1 ; ellipse 2.5 0 2 1 0\n"
       "ellipse 0 0 2 1 0 ; ellipse 3 0 2 1 0\n"
       "circle 0 0 -1 ; circle 0 0 1\n";
-  const CommandRun r = run(input, "minkowski", tool::Answer::contact);
+  const CommandRun r = run(input, nullptr, tool::Answer::contact);
   EXPECT_EQ(r.status, 2);
   const std::vector<std::array<double, 7>> expected = {{-0.5, 1, 0, 1, 0, 0.5, 0},
                                                        {-0.5, 0, 1, 0, 1, 0, 0.5},
@@ -350,7 +379,7 @@ TEST(QueryCommand, TimeOfImpactLines) {
       "ellipse 0 0 2 1 0.3 ; circle 1 0 1 @ 5 0 0\n"
       "circle 0 0 1 @ 1 0 ; circle 1 0 1\n"
       "circle 0 0 1 @ nan 0 0 ; circle 5 0 1\n";
-  const CommandRun r = run(input, "minkowski", tool::Answer::toi);
+  const CommandRun r = run(input, nullptr, tool::Answer::toi);
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.out.size(), 7u);
   const std::array<double, 5> times = {0.4, (1000 - 0.005 - 0.001) / 2000, std::acos(0.22) / 100, 1.0, 0.0};
