@@ -39,6 +39,7 @@ int report(int argc, char** argv) {
       throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
   }
+  collide2d::cli::check_writable({json_path, html_path});
   const auto distance = collide2d::report::measure_methods(options);
   collide2d::report::print_report(
       distance, "ellipse-ellipse distance, " + std::to_string(options.pairs) + " separated pairs", options, std::cout);

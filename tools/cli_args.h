@@ -6,7 +6,9 @@
 #include <collide2d/version.h>
 
 #include <charconv>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +35,20 @@ inline int positive_count(std::string_view option, std::string_view word) {
 inline const char* value_of(int& i, int argc, char** argv) {
   if (i + 1 == argc) throw UsageError(std::string(argv[i]) + " needs a value");
   return argv[++i];
+}
+
+// Throws when a file cannot be written at one of `paths` (empty ones are skipped), so that a main
+// refuses a bad output path before its work rather than after it. A file there is left as it is;
+// none is left where there was none.
+inline void check_writable(std::initializer_list<std::string_view> paths) {
+  for (const std::string_view path : paths) {
+    if (path.empty()) continue;
+    const bool existed = std::filesystem::exists(path);
+    if (!std::ofstream(std::string(path), std::ios::app)) {
+      throw std::runtime_error("cannot write '" + std::string(path) + "'");
+    }
+    if (!existed) std::filesystem::remove(path);
+  }
 }
 
 // Writes a file with `draw` when a path was given, and says where on stdout.

@@ -1,6 +1,7 @@
 // collide2d: the command line.
 //   collide2d query [--method NAME]... [--boundary | --contact | --toi] < queries   (query_command.h)
-//   collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N]   (scene_run.h)
+//   collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N] [--threads N]
+//       (scene_run.h)
 //   collide2d replay FILE.c2dr --html FILE                       (replay_page.h)
 // It links the library and the JSON reader only; the speed-against-error report, which needs Box2D
 // and the 50-digit reference, is bench/collide2d_report.
@@ -46,7 +47,7 @@ const std::string kQueryUsage =
     "      and t 1; the normal from A to B and the midpoint of the closest points at t\n";
 
 constexpr const char* kRunUsage =
-    "usage: collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N]\n"
+    "usage: collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N] [--threads N]\n"
     "  Runs the scene (default: a built-in scene of 4000 moving circles, ellipses and\n"
     "  rectangles on two layers that never pair, 8 continuous bullets, a static level (a\n"
     "  chain cave with a hilly floor, slopes and rocks), and 4 static sensors) through\n"
@@ -55,7 +56,8 @@ constexpr const char* kRunUsage =
     "  impacts within each frame; the pairs the filters drop; each sensor's contents)\n"
     "  and how long it took. --svg draws the last frame; --html writes a page that\n"
     "  replays every frame in a browser; --replay writes the recording itself (a .c2dr\n"
-    "  file, as a Recorder writes one); --frames overrides the scene's frame count.\n";
+    "  file, as a Recorder writes one); --frames overrides the scene's frame count;\n"
+    "  --threads the World's update threads (default: every hardware thread).\n";
 
 constexpr const char* kReplayUsage =
     "usage: collide2d replay FILE.c2dr --html FILE\n"
@@ -122,7 +124,7 @@ std::string read_file(const std::string& path) {
 #ifdef COLLIDE2D_WITH_MPI
 // Under mpirun (Open MPI names the rank count in the environment): every rank runs the scene, rank
 // 0 prints.
-int run_on_ranks(collide2d::tool::Scene scene, const std::string& title) {
+int run_on_ranks(collide2d::tool::Scene scene, unsigned threads, const std::string& title) {
   MPI_Init(nullptr, nullptr);
   struct Finalize {
     ~Finalize() { MPI_Finalize(); }
@@ -131,7 +133,7 @@ int run_on_ranks(collide2d::tool::Scene scene, const std::string& title) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::cout << title << std::flush;
   const collide2d::tool::RunSummary summary =
-      collide2d::tool::run_distributed(std::move(scene), MPI_COMM_WORLD, rank == 0 ? &std::cerr : nullptr);
+      collide2d::tool::run_distributed(std::move(scene), MPI_COMM_WORLD, threads, rank == 0 ? &std::cerr : nullptr);
   if (rank == 0) collide2d::tool::print_summary(summary, std::cout);
   return 0;
 }
@@ -144,6 +146,7 @@ int run(int argc, char** argv) {
   }
   std::string scene_path, svg_path, html_path, replay_path;
   int frames = 0;
+  unsigned threads = 0;
   for (int i = 2; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--svg") {
@@ -154,12 +157,15 @@ int run(int argc, char** argv) {
       replay_path = collide2d::cli::value_of(i, argc, argv);
     } else if (arg == "--frames") {
       frames = collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv));
+    } else if (arg == "--threads") {
+      threads = static_cast<unsigned>(collide2d::cli::positive_count(arg, collide2d::cli::value_of(i, argc, argv)));
     } else if (!arg.starts_with("--") && scene_path.empty()) {
       scene_path = arg;
     } else {
       throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
   }
+  collide2d::cli::check_writable({svg_path, html_path, replay_path});
   collide2d::tool::Scene scene =
       scene_path.empty() ? collide2d::tool::default_scene() : collide2d::tool::parse_scene(read_file(scene_path));
   if (frames > 0) scene.frames = frames;
@@ -171,11 +177,11 @@ int run(int argc, char** argv) {
     if (!svg_path.empty() || !html_path.empty() || !replay_path.empty()) {
       throw collide2d::cli::UsageError("--svg, --html and --replay draw one process's World: run without mpirun");
     }
-    return run_on_ranks(std::move(scene), title.str());
+    return run_on_ranks(std::move(scene), threads, title.str());
   }
 #endif
   std::cout << title.str();
-  collide2d::tool::SceneRun runner(std::move(scene));
+  collide2d::tool::SceneRun runner(std::move(scene), threads);
   collide2d::Recorder recorder;
   const bool records = !html_path.empty() || !replay_path.empty();
   const collide2d::tool::RunSummary summary = runner.run(&std::cerr, records ? &recorder : nullptr);
@@ -209,6 +215,7 @@ int replay(int argc, char** argv) {
   }
   if (input.empty()) throw collide2d::cli::UsageError("replay needs a recording (a .c2dr file)");
   if (html_path.empty()) throw collide2d::cli::UsageError("replay needs --html FILE, the page to write");
+  collide2d::cli::check_writable({html_path});
   const std::string bytes = read_file(input);
   collide2d::cli::write_file(html_path, "replay page",
                              [&bytes](std::ostream& out) { collide2d::tool::write_replay_page(bytes, out); });

@@ -35,6 +35,7 @@ int run(int argc, char** argv) {
       throw collide2d::cli::UsageError("unknown argument '" + std::string(arg) + "'");
     }
   }
+  collide2d::cli::check_writable({svg_path});
   const collide2d::settle::SettleResult r = collide2d::settle::settle(options, &std::cerr);
   std::cout << r.shapes.size() << " bodies, " << (r.at_rest ? "at rest" : "still moving") << " after " << r.seconds
             << " s (" << r.steps << " steps); fastest " << r.max_speed << "; deepest contact " << r.max_penetration

@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace collide2d::tool {
 namespace {
@@ -291,6 +293,28 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   EXPECT_GT(occurrences(text, "class=\"sensor"), 0u);
   EXPECT_GT(occurrences(text, "class=\"static"), 0u);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+// The summary names the threads asked for (every hardware thread when none is named), and each
+// phase's slowest frame is the frame of its largest time: the percentiles lie between the frames'
+// fastest and that one.
+TEST(SceneRun, SummaryNamesThreadsAndSlowestFrames) {
+  EXPECT_EQ(thread_count(3), 3u);
+  EXPECT_EQ(thread_count(0), std::max(1u, std::thread::hardware_concurrency()));
+  SceneRun run(default_scene(200, 12, 3), 1);
+  const RunSummary s = run.run(nullptr);
+  EXPECT_EQ(s.threads, 1u);
+  for (const PhaseTimes& t : {s.broad, s.narrow}) {
+    ASSERT_GE(t.slowest_frame, 0);
+    ASSERT_LT(t.slowest_frame, 12);
+    EXPECT_LE(t.median_ms, t.p95_ms);
+    EXPECT_LE(t.p95_ms, t.slowest_ms);
+    EXPECT_GT(t.slowest_ms, 0.0);
+  }
+  std::ostringstream summary;
+  print_summary(s, summary);
+  EXPECT_NE(summary.str().find("\nthreads                     1\n"), std::string::npos) << summary.str();
+  EXPECT_NE(summary.str().find(" ms (frame " + std::to_string(s.narrow.slowest_frame) + ")\n"), std::string::npos);
 }
 
 // What the caption counts can be seen at 1000 pixels: each proximity pair is ringed 3 pixels

@@ -46,7 +46,7 @@ std::vector<RunSummary::Sensor> gathered_sensors(const Scene& scene, Distributed
 
 }  // namespace
 
-RunSummary run_distributed(Scene scene, MPI_Comm comm, std::ostream* progress) {
+RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::ostream* progress) {
   check_motion(scene);
   for (const SceneBody& b : scene.bodies) {
     if (b.chain.empty() && b.shapes.size() != 1) {
@@ -58,11 +58,13 @@ RunSummary run_distributed(Scene scene, MPI_Comm comm, std::ostream* progress) {
   MPI_Comm_size(comm, &ranks);
   DistributedWorld world(comm, {.world = {.fat_margin = scene.fat_margin,
                                           .proximity_margin = scene.proximity_margin,
-                                          .contacts = scene.contacts},
+                                          .contacts = scene.contacts,
+                                          .threads = thread_count(threads)},
                                 .bounds = starting_bounds(scene, ranks),
                                 .rebalance_every = 30});
   add_bodies(scene, world);
   RunSummary s = scene_totals(scene);
+  s.threads = thread_count(threads);
   s.ranks = ranks;
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene.frames / 50);

@@ -14,6 +14,6 @@ namespace collide2d::tool {
 // Every rank runs the whole scene's kinematics and moves the bodies it owns; rank r adds the scene
 // bodies whose index modulo the rank count is r, and every rank the chains. Throws SceneError for a
 // body of several shapes, before any frame.
-RunSummary run_distributed(Scene scene, MPI_Comm comm, std::ostream* progress);
+RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::ostream* progress);
 
 }  // namespace collide2d::tool

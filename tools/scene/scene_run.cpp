@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 
 namespace collide2d::tool {
@@ -22,6 +23,20 @@ double percentile(std::vector<double> v, double q) {
   return v[k];
 }
 
+PhaseTimes phase_times(std::vector<double> ms) {
+  if (ms.empty()) return {};
+  const auto slowest = std::max_element(ms.begin(), ms.end());
+  PhaseTimes t{.slowest_ms = *slowest, .slowest_frame = static_cast<int>(slowest - ms.begin())};
+  t.median_ms = percentile(ms, 0.5);
+  t.p95_ms = percentile(ms, 0.95);
+  return t;
+}
+
+std::ostream& operator<<(std::ostream& out, const PhaseTimes& t) {
+  return out << "median " << t.median_ms << " ms, 95th percentile " << t.p95_ms << " ms, slowest " << t.slowest_ms
+             << " ms (frame " << t.slowest_frame << ")";
+}
+
 }  // namespace
 
 void draw_progress(std::ostream& out, int done, int total) {
@@ -32,12 +47,17 @@ void draw_progress(std::ostream& out, int done, int total) {
       << "% (" << done << '/' << total << " frames)" << std::flush;
 }
 
+unsigned thread_count(unsigned requested) {
+  return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
 SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
+      threads_(thread_count(threads)),
       world_({.fat_margin = scene_.fat_margin,
               .proximity_margin = scene_.proximity_margin,
               .contacts = scene_.contacts,
-              .threads = threads}) {
+              .threads = threads_}) {
   check_motion(scene_);
   std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
@@ -74,10 +94,8 @@ void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> nar
   s.overlapping_per_frame /= n;
   s.proximity_per_frame /= n;
   s.sensing_per_frame /= n;
-  s.broad_median_ms = percentile(broad_ms, 0.5);
-  s.broad_p95_ms = percentile(broad_ms, 0.95);
-  s.narrow_median_ms = percentile(narrow_ms, 0.5);
-  s.narrow_p95_ms = percentile(narrow_ms, 0.95);
+  s.broad = phase_times(std::move(broad_ms));
+  s.narrow = phase_times(std::move(narrow_ms));
 }
 
 void SceneRun::frame() {
@@ -91,6 +109,7 @@ void SceneRun::frame() {
 
 RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
   RunSummary s = scene_totals(scene_);
+  s.threads = threads_;
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
@@ -148,10 +167,9 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "static bodies               " << s.statics << " (level geometry; sensors included)\n"
       << "sensors                     " << s.sensors << ", " << s.sensing_per_frame << " bodies inside them per frame, "
       << s.sensor_began << " entries and " << s.sensor_ended << " exits over the run\n"
-      << "broad phase per frame       median " << s.broad_median_ms << " ms, 95th percentile " << s.broad_p95_ms
-      << " ms\n"
-      << "narrow phase per frame      median " << s.narrow_median_ms << " ms, 95th percentile " << s.narrow_p95_ms
-      << " ms\n";
+      << "threads                     " << s.threads << (s.ranks > 1 ? " on each rank\n" : "\n")
+      << "broad phase per frame       " << s.broad << '\n'
+      << "narrow phase per frame      " << s.narrow << '\n';
   for (const RunSummary::Sensor& sensor : s.sensor_contents) {
     out << "sensor " << sensor.id << " at the last frame: " << sensor.visitors.size() << " bodies";
     constexpr std::size_t kListed = 12;

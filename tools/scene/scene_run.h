@@ -13,8 +13,17 @@
 
 namespace collide2d::tool {
 
+// A phase's wall-clock time per frame.
+struct PhaseTimes {
+  double median_ms = 0.0;
+  double p95_ms = 0.0;
+  double slowest_ms = 0.0;
+  int slowest_frame = 0;  // counted from 0
+};
+
 struct RunSummary {
-  int ranks = 1;  // MPI ranks (collide2d run under mpirun)
+  int ranks = 1;         // MPI ranks (collide2d run under mpirun)
+  unsigned threads = 1;  // the World's update threads (on each rank)
   int frames = 0;
   std::size_t bodies = 0;
   double candidates_per_frame = 0.0;   // broad-phase pairs, mean over frames
@@ -35,10 +44,8 @@ struct RunSummary {
     std::vector<std::uint64_t> visitors;  // scene ids, at the last frame
   };
   std::vector<Sensor> sensor_contents;
-  double broad_median_ms = 0.0;
-  double broad_p95_ms = 0.0;
-  double narrow_median_ms = 0.0;
-  double narrow_p95_ms = 0.0;
+  PhaseTimes broad;
+  PhaseTimes narrow;
 };
 
 class SceneRun {
@@ -58,9 +65,13 @@ class SceneRun {
 
  private:
   Scene scene_;
+  unsigned threads_;
   World world_;
   std::vector<BodyId> ids_;  // World id of each scene body
 };
+
+// The thread count a World runs on when asked for `requested` (0: every hardware thread).
+unsigned thread_count(unsigned requested);
 
 // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
 RunSummary scene_totals(const Scene& scene);
