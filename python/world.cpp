@@ -6,13 +6,15 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
-#include <tuple>
 #include <span>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -22,6 +24,13 @@ namespace collide2d::python {
 namespace {
 
 using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// An array's shape as NumPy writes it: "(3,)", "(3, 2)".
+std::string shape_text(const py::array& a) {
+  std::string text = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) text += (d > 0 ? ", " : "") + std::to_string(a.shape(d));
+  return text + (a.ndim() == 1 ? ",)" : ")");
+}
 
 // A body's id in Python: generation << 32 | index, one uint64.
 std::uint64_t id_of(BodyId b) { return static_cast<std::uint64_t>(b.generation) << 32 | b.index; }
@@ -40,7 +49,8 @@ py::array_t<std::uint64_t> id_pairs(const Records& records, A a, B b) {
 
 template <class Records>
 py::array_t<std::uint64_t> body_pairs(const Records& records) {
-  return id_pairs(records, [](const auto& r) { return r.a; }, [](const auto& r) { return r.b; });
+  return id_pairs(
+      records, [](const auto& r) { return r.a; }, [](const auto& r) { return r.b; });
 }
 
 // Columns of doubles from the records: each `get` fills one row of `width`.
@@ -77,24 +87,32 @@ class PyWorld {
     if (continuous) world_.set_continuous(id);
     return id_of(id);
   }
+  // Every row is checked before any body moves, so that a refusal leaves the World as it was.
   void set_poses(const py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>& ids, const Rows& centres,
                  const Rows& angles) {
-    const py::ssize_t n = ids.size();
-    if (ids.ndim() != 1 || centres.ndim() != 2 || centres.shape(0) != n || centres.shape(1) != 2 ||
-        angles.ndim() != 1 || angles.shape(0) != n) {
-      throw py::value_error("set_poses needs ids (n,), centres (n, 2) and angles (n,); got " + std::to_string(n) +
-                            " ids");
+    if (ids.ndim() != 1) throw py::value_error("set_poses: ids must be an (n,) array, got shape " + shape_text(ids));
+    const py::ssize_t n = ids.shape(0);
+    const std::string for_ids = " array for the n = " + std::to_string(n) + " ids, got shape ";
+    if (centres.ndim() != 2 || centres.shape(0) != n || centres.shape(1) != 2) {
+      throw py::value_error("set_poses: centres must be an (n, 2)" + for_ids + shape_text(centres));
+    }
+    if (angles.ndim() != 1 || angles.shape(0) != n) {
+      throw py::value_error("set_poses: angles must be an (n,)" + for_ids + shape_text(angles));
     }
     const auto id = ids.unchecked<1>();
     const auto centre = centres.unchecked<2>();
     const auto angle = angles.unchecked<1>();
     for (py::ssize_t i = 0; i < n; ++i) {
       try {
-        world_.move_to(body_of(id(i)), {centre(i, 0), centre(i, 1)}, angle(i));
+        (void)world_.pose(body_of(id(i)));
+        validate_point({centre(i, 0), centre(i, 1)}, "centre");
+        if (!std::isfinite(angle(i)))
+          throw std::invalid_argument("angle " + std::to_string(angle(i)) + " must be finite");
       } catch (const std::exception& e) {
-        throw py::value_error("row " + std::to_string(i) + ": " + e.what());
+        throw py::value_error("set_poses row " + std::to_string(i) + ": " + e.what());
       }
     }
+    for (py::ssize_t i = 0; i < n; ++i) world_.move_to(body_of(id(i)), {centre(i, 0), centre(i, 1)}, angle(i));
   }
   void set_pair_predicate(py::object predicate) {
     if (predicate.is_none()) return world_.set_pair_predicate({});
@@ -138,7 +156,8 @@ auto query_filter_args() {
 }
 
 void add_world_hits(py::module_& m) {
-  py::class_<RayHit>(m, "BodyRayHit", "What World.ray_cast() hits: the body, the distance along the ray, point and normal.")
+  py::class_<RayHit>(m, "BodyRayHit",
+                     "What World.ray_cast() hits: the body, the distance along the ray, point and normal.")
       .def_property_readonly("body", [](const RayHit& h) { return id_of(h.body); })
       .def_readonly("distance", &RayHit::distance)
       .def_property_readonly("point", [](const RayHit& h) { return tuple(h.point); })
@@ -155,11 +174,11 @@ void add_world_hits(py::module_& m) {
 using Bodies = py::class_<PyWorld>;
 
 void add_world_bodies(Bodies& c) {
-  c.def(py::init([](double fat_margin, double proximity_margin, bool contacts, double speculative_margin,
-                    unsigned threads) {
-          return std::make_unique<PyWorld>(
-              WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin, threads});
-        }),
+  c.def(py::init(
+            [](double fat_margin, double proximity_margin, bool contacts, double speculative_margin, unsigned threads) {
+              return std::make_unique<PyWorld>(
+                  WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin, threads});
+            }),
         py::kw_only(), py::arg("fat_margin") = 0.0, py::arg("proximity_margin") = 0.0, py::arg("contacts") = false,
         py::arg("speculative_margin") = 0.0, py::arg("threads") = 0u,
         "fat_margin: how far a shape may move before the broad phase looks again; proximity_margin > 0:\n"
@@ -176,9 +195,9 @@ void add_world_bodies(Bodies& c) {
                      {.user_id = user_id, .filter = {category, mask, group}, .is_static = is_static, .sensor = sensor},
                      continuous);
       },
-      py::arg("shape"), py::kw_only(), py::arg("center") = py::none(), py::arg("angle") = 0.0,
-      py::arg("user_id") = 0, py::arg("category") = 1, py::arg("mask") = ~std::uint64_t{0}, py::arg("group") = 0,
-      py::arg("static") = false, py::arg("sensor") = false, py::arg("continuous") = false,
+      py::arg("shape"), py::kw_only(), py::arg("center") = py::none(), py::arg("angle") = 0.0, py::arg("user_id") = 0,
+      py::arg("category") = 1, py::arg("mask") = ~std::uint64_t{0}, py::arg("group") = 0, py::arg("static") = false,
+      py::arg("sensor") = false, py::arg("continuous") = false,
       "Adds a body and returns its id. One shape: the body's origin is the shape's centre and angle.\n"
       "A list of shapes: each placed in the body's frame, the body at center and angle. Two shapes pair\n"
       "when each one's category is in the other's mask, unless they share a group: positive, always;\n"
@@ -203,9 +222,8 @@ void add_world_bodies(Bodies& c) {
       py::arg("id"), py::arg("category") = 1, py::arg("mask") = ~std::uint64_t{0}, py::arg("group") = 0,
       "The filter of every shape of the body, from the next update.");
   c.def(
-      "set_static", [](PyWorld& w, std::uint64_t id, bool on) { w.world().set_static(body_of(id), on); },
-      py::arg("id"), py::arg("static") = true,
-      "Makes a body level geometry (never pairs with a static body) or moving again.");
+      "set_static", [](PyWorld& w, std::uint64_t id, bool on) { w.world().set_static(body_of(id), on); }, py::arg("id"),
+      py::arg("static") = true, "Makes a body level geometry (never pairs with a static body) or moving again.");
   c.def(
       "set_continuous", [](PyWorld& w, std::uint64_t id, bool on) { w.world().set_continuous(body_of(id), on); },
       py::arg("id"), py::arg("continuous") = true,
@@ -269,10 +287,11 @@ void add_world_pairs(Bodies& c) {
       "proximity",
       [](PyWorld& w) {
         const auto& r = w.world().proximity();
-        return py::dict(py::arg("pairs") = body_pairs(r),
-                        py::arg("distance") = column(r, 1, [](const Proximity& p, double* o) { o[0] = p.result.distance; }),
-                        py::arg("point_a") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_a); }),
-                        py::arg("point_b") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_b); }));
+        return py::dict(
+            py::arg("pairs") = body_pairs(r),
+            py::arg("distance") = column(r, 1, [](const Proximity& p, double* o) { o[0] = p.result.distance; }),
+            py::arg("point_a") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_a); }),
+            py::arg("point_b") = column(r, 2, [](const Proximity& p, double* o) { put(o, p.result.point_b); }));
       },
       "Pairs apart by less than the proximity margin: pairs (m, 2), distance (m, 1), point_a, point_b.");
   c.def(

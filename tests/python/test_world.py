@@ -93,15 +93,23 @@ def test_contacts_proximity_and_sensors_come_as_arrays():
 
 
 def test_set_poses_checks_its_arrays():
+    """Each array's expected and given shapes are named; a bad row is named and nothing moves."""
     world = collide2d.World()
     ids = np.array([world.add(collide2d.Circle((k, 0), 0.4)) for k in range(3)], dtype=np.uint64)
-    with pytest.raises(ValueError, match=r'^set_poses needs ids \(n,\), centres \(n, 2\) and angles \(n,\); got 3 ids$'):
-        world.set_poses(ids, np.zeros((2, 2)), np.zeros(3))
+    with pytest.raises(ValueError, match=r'^set_poses: centres must be an \(n, 2\) array for the n = 3 ids, '
+                                         r'got shape \(3, 3\)$'):
+        world.set_poses(ids, np.zeros((3, 3)), np.zeros(3))
+    with pytest.raises(ValueError, match=r'^set_poses: angles must be an \(n,\) array for the n = 3 ids, '
+                                         r'got shape \(2,\)$'):
+        world.set_poses(ids, np.zeros((3, 2)), np.zeros(2))
+    with pytest.raises(ValueError, match=r'^set_poses: ids must be an \(n,\) array, got shape \(3, 1\)$'):
+        world.set_poses(ids.reshape(3, 1), np.zeros((3, 2)), np.zeros(3))
     world.remove(int(ids[1]))
-    with pytest.raises(ValueError, match=r'^row 1: stale body 1'):
-        world.set_poses(ids, np.zeros((3, 2)), np.zeros(3))
-    with pytest.raises(ValueError, match=r'^row 0: .*must be finite'):
-        world.set_poses(ids[:1], np.array([[np.nan, 0.0]]), np.zeros(1))
+    with pytest.raises(ValueError, match=r'^set_poses row 1: stale body 1'):
+        world.set_poses(ids, np.full((3, 2), 7.0), np.zeros(3))
+    with pytest.raises(ValueError, match=r'^set_poses row 1: .*must be finite'):
+        world.set_poses(ids[[0, 2]], np.array([[5.0, 5.0], [np.nan, 0.0]]), np.zeros(2))
+    assert world.pose(int(ids[0])) == ((0.0, 0.0), 0.0) and world.pose(int(ids[2])) == ((2.0, 0.0), 0.0)
 
 
 def test_a_bullet_stops_at_its_first_contact_in_the_step():
