@@ -299,14 +299,13 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
   return body_id(index);
 }
 
-BodyId WorldState::add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def) {
+BodyId WorldState::add_chain(std::span<const Vec2> points, bool loop, const ChainDef& def) {
   require_not_querying("add_chain");
   const std::vector<ChainSegment> chain = chain_segments(points, loop);
-  if (!def.is_static) throw std::invalid_argument("add_chain: a chain is level geometry, and its body must be static");
   std::vector<ShapeDef> defs;
   defs.reserve(chain.size());
   for (const ChainSegment& s : chain) defs.push_back({.shape = s.segment});
-  const BodyId id = add({}, defs, def);
+  const BodyId id = add({}, defs, {.user_id = def.user_id, .filter = def.filter, .is_static = true});
   ghosts_.resize(entries_.size());
   auto next = chain.begin();
   each_entry(bodies_[id.index], [&](std::uint32_t k) {

@@ -24,7 +24,7 @@ BodyId World::add(const Shape& shape, const BodyDef& def) {
 BodyId World::add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def) {
   return state_->add(pose, shapes, def);
 }
-BodyId World::add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def) {
+BodyId World::add_chain(std::span<const Vec2> points, bool loop, const ChainDef& def) {
   return state_->add_chain(points, loop, def);
 }
 ShapeId World::add_shape(BodyId body, const ShapeDef& shape) { return state_->add_shape(body, shape); }

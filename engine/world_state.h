@@ -58,7 +58,7 @@ class WorldState {
 
   // bodies.cpp
   BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def);
-  BodyId add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def);
+  BodyId add_chain(std::span<const Vec2> points, bool loop, const ChainDef& def);
   ShapeId add_shape(BodyId id, const ShapeDef& def);
   void remove_shape(ShapeId id);
   void set_pose(BodyId id, const Vec2& position, double angle);

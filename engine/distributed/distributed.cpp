@@ -279,12 +279,10 @@ void DistributedWorld::add(std::uint64_t id, const Shape& shape, const BodyDef& 
   }
 }
 
-void DistributedWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def) {
+void DistributedWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const ChainDef& def) {
   State& s = *state_;
   s.require_unused(id);
-  BodyDef level = def;
-  level.is_static = true;
-  s.region.add_chain(id, points, loop, level);
+  s.region.add_chain(id, points, loop, def);
   s.level.insert(id);
 }
 

@@ -138,8 +138,8 @@ void RegionWorld::sync(std::span<const BodyRecord> owned, std::span<const BodyRe
   });
 }
 
-BodyId RegionWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def) {
-  BodyDef d = def;
+BodyId RegionWorld::add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const ChainDef& def) {
+  ChainDef d = def;
   d.user_id = id;
   const BodyId body = world_.add_chain(points, loop, d);
   level_.push_back(body);

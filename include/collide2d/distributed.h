@@ -76,7 +76,7 @@ class DistributedWorld {
   void add(std::uint64_t id, const Shape& shape, const BodyDef& def = {}, bool continuous = false);
   /// Adds a chain of level geometry (World::add_chain()). Chains are replicated, not exchanged:
   /// every rank adds the same chains, under the same ids, in the same order.
-  void add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def = {});
+  void add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const ChainDef& def = {});
   /// Moves a body this rank owns (a continuous one sweeps there). Throws std::out_of_range for a
   /// body it does not own.
   void move_to(std::uint64_t id, const Vec2& position, double angle);

@@ -84,7 +84,7 @@ class RegionWorld {
   void sync(std::span<const BodyRecord> owned, std::span<const BodyRecord> ghosts);
   /// Adds a chain of level geometry (World::add_chain()) under the caller's id, outside sync():
   /// every region adds the same chains, replicated as static bodies are.
-  BodyId add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const BodyDef& def);
+  BodyId add_chain(std::uint64_t id, std::span<const Vec2> points, bool loop, const ChainDef& def = {});
   /// A shape's place in its chain (0 for a shape of another body), which every region numbers alike.
   std::uint32_t part_of(ShapeId shape) const;
   /// A chain segment's reach box (it never changes), nullopt for a shape of another body.

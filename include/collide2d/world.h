@@ -142,6 +142,13 @@ struct BodyDef {
   bool ghost = false;
 };
 
+/// How World::add_chain() makes a chain's body: always static (a chain is level geometry), never a
+/// sensor.
+struct ChainDef {
+  std::uint64_t user_id = 0;  ///< the caller's, returned by user_id()
+  Filter filter{};
+};
+
 /// One shape of a body: `shape` is placed in the body's frame (its centre and angle are its offset
 /// and angle from the body's origin). The fields left unset take the body's (BodyDef).
 struct ShapeDef {
@@ -302,11 +309,11 @@ class World {
   BodyId add(const Shape& shape, const BodyDef& def = {});
   /// Adds a body at `pose` with the shapes (at least one), each placed in the body's frame.
   BodyId add(const Pose& pose, std::span<const ShapeDef> shapes, const BodyDef& def = {});
-  /// Adds a chain (chain.h) of points in the world as one static body at the origin.
-  /// def.is_static must be set. One segment shape per chain segment in the chain's order (shapes(id)[k] is
-  /// segment k of chain_segments()), each one-sided and smooth as chain.h says. Throws InvalidShape
-  /// for the points as chain_segments() does; std::invalid_argument for a body that is not static.
-  BodyId add_chain(std::span<const Vec2> points, bool loop, const BodyDef& def);
+  /// Adds a chain (chain.h) of points in the world as one static body at the origin: one segment
+  /// shape per chain segment in the chain's order (shapes(id)[k] is segment k of
+  /// chain_segments()), each one-sided and smooth as chain.h says. Throws InvalidShape for the
+  /// points as chain_segments() does.
+  BodyId add_chain(std::span<const Vec2> points, bool loop, const ChainDef& def = {});
   /// Adds a shape to a body, placed in its frame; it pairs from the next update.
   ShapeId add_shape(BodyId body, const ShapeDef& shape);
   /// Removes a shape; its pairs end at the next update, and its handle is stale from now on. A

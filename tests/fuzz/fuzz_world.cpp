@@ -323,7 +323,7 @@ void add_chain(World& world, fuzz::Input& in) {
   const bool loop = in.byte() & 1;
   const Filter filter = filter_from(in);
   try {
-    world.add_chain(points, loop, {.filter = filter, .is_static = true});
+    world.add_chain(points, loop, {.filter = filter});
   } catch (const InvalidShape&) {
     check(snapshot(world) == state, "a refused chain changed nothing");
   }

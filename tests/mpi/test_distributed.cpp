@@ -173,7 +173,7 @@ bool run(int rebalance_every) {
   DistributedWorld d(
       MPI_COMM_WORLD,
       {.world = testing::kSplitOptions, .bounds = bounds_for(ranks), .rebalance_every = rebalance_every});
-  d.add_chain(scene.chain_id, scene.chain, false, {.is_static = true});
+  d.add_chain(scene.chain_id, scene.chain, false);
   std::size_t compared = 0, found = 0, casts = 0, rays = 0;
   for (int frame = 0; frame < 16; ++frame) {
     if (frame > 0) scene.step();

@@ -424,7 +424,7 @@ void worlds() {
       // The built-in scene's bodies are of one shape each but its cave.
       const BodyDef def{.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
       ids.push_back(b.chain.empty() ? world.add(tool::placed_shapes(b).front(), def)
-                                    : world.add_chain(b.chain, b.loop, def));
+                                    : world.add_chain(b.chain, b.loop, {.user_id = b.id, .filter = b.filter}));
       if (b.continuous) world.set_continuous(ids.back());
     }
     Hash& h = at("world", "contacts_scene");

@@ -86,7 +86,7 @@ struct SplitScene {
     add(Segment::between(Vec2(-3, -5), Vec2(4, -4)), {.is_static = true}, Vec2::Zero());
     for (int k = 0; k <= 12; ++k) chain.emplace_back(24.0 - 4.0 * k, k % 2 == 0 ? -10.5 : -11.5);
     chain_id = next_id++;
-    world.add_chain(chain, false, {.user_id = chain_id, .is_static = true});
+    world.add_chain(chain, false, {.user_id = chain_id});
     // An ellipse wider than a region, drifting across the boundaries.
     wide = add(Ellipse{Vec2(-5, 2), 14.0, 1.0, 0.1}, {}, Vec2(0.9, 0.0));
     // Bodies on the boundaries used below, their centres or left ends there.

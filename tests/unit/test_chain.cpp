@@ -53,19 +53,25 @@ TEST(ChainShape, RefusesBadInput) {
   expect_refused<InvalidShape>([&] { contact(floor, Circle{Vec2(0, 1), -1.0}); }, "circle radius must be positive");
 
   World world;
-  expect_refused<std::invalid_argument>([&] { world.add_chain(kFloor, false, {}); },
-                                        "add_chain: a chain is level geometry, and its body must be static");
   expect_refused<InvalidShape>(
       [&] {
-        world.add_chain(std::vector<Vec2>{{0, 0}, {1, 0}}, false, {.is_static = true});
+        world.add_chain(std::vector<Vec2>{{0, 0}, {1, 0}}, false);
       },
       "an open chain needs at least 4 points");
   EXPECT_EQ(world.size(), 0u);
-  const BodyId chain = world.add_chain(kFloor, false, {.is_static = true});
+  const BodyId chain = world.add_chain(kFloor, false);
   const ShapeId first = world.shapes(chain)[0];
   expect_refused<std::invalid_argument>([&] { world.remove_shape(first); }, "is a chain's segment");
   expect_refused<std::invalid_argument>([&] { world.set_local_shape(first, Circle{}); }, "is a chain's segment");
   EXPECT_EQ(world.shapes(chain).size(), 2u);
+  // A chain's body is static whatever its definition holds; its user id and filter are the
+  // definition's.
+  const Filter layer{.category = 4, .mask = 5, .group = -2};
+  const BodyId named = world.add_chain(kFloor, false, {.user_id = 7, .filter = layer});
+  EXPECT_TRUE(world.is_static(chain) && world.is_static(named));
+  EXPECT_FALSE(world.is_sensor(named));
+  EXPECT_EQ(world.user_id(named), 7u);
+  for (const ShapeId s : world.shapes(named)) EXPECT_EQ(world.filter(s), layer);
 }
 
 TEST(ChainShape, SegmentsAndGhosts) {
@@ -85,7 +91,7 @@ TEST(ChainShape, SegmentsAndGhosts) {
 
   // A World's chain keeps the ghosts in each segment's frame as the body turns.
   World world;
-  const BodyId body = world.add_chain(kIsland, true, {.is_static = true});
+  const BodyId body = world.add_chain(kIsland, true);
   world.set_pose(body, Vec2(5, 0), std::acos(-1.0) / 2);
   const auto top = world.chain_segment(world.shapes(body)[2]);
   ASSERT_TRUE(top);
@@ -218,7 +224,7 @@ bool in_arc(const Vec2& from, const Vec2& n, const Vec2& to, double slack) {
 // beyond that arc. A twin behind the chain, sunk as deep from the back, touches nothing.
 void expect_smooth_slide(const std::vector<Vec2>& points, double bend, const Shape& local) {
   World world({.contacts = true, .threads = 1});
-  const BodyId chain = world.add_chain(points, false, {.is_static = true});
+  const BodyId chain = world.add_chain(points, false);
   const std::vector<ShapeId> segments = world.shapes(chain);
   const Filter apart{.group = -1};
   const BodyId body = world.add(local, {.filter = apart});
@@ -278,7 +284,7 @@ TEST(ChainWorld, SlidesOverAHillBendingAtEveryVertex) {
 // time of impact; fired up from below, it passes.
 TEST(ChainWorld, BulletStopsOnlyFromTheFront) {
   World world({.threads = 1});
-  const BodyId floor = world.add_chain(kFloor, false, {.is_static = true});
+  const BodyId floor = world.add_chain(kFloor, false);
   const double radius = 0x1p-6, speed = 1e4 * 2 * radius;
   const BodyId down = world.add(Circle{Vec2(1, 0.5 * speed + radius), radius});
   const BodyId up = world.add(Circle{Vec2(-1, -0.5 * speed - radius), radius});
@@ -299,7 +305,7 @@ TEST(ChainWorld, BulletStopsOnlyFromTheFront) {
 // does not; a ray from above hits it, one from below passes.
 TEST(ChainWorld, BlocksSightFromEitherSide) {
   World world({.threads = 1});
-  const BodyId floor = world.add_chain(kFloor, false, {.is_static = true});
+  const BodyId floor = world.add_chain(kFloor, false);
   EXPECT_EQ(world.overlapping(Shape(Segment::between(Vec2(1, 1), Vec2(1.5, -1)))), std::vector<BodyId>{floor});
   EXPECT_EQ(world.overlapping(Shape(Segment::between(Vec2(-1, -1), Vec2(-1.5, 1)))), std::vector<BodyId>{floor});
   EXPECT_TRUE(world.overlapping(Shape(Segment::between(Vec2(-1, 0.5), Vec2(1, 0.5)))).empty());
@@ -315,7 +321,7 @@ TEST(ChainWorld, BlocksSightFromEitherSide) {
 // gets one, from the segment that owns the corner's half it lies in.
 TEST(ChainWorld, RecordsNameTheSegments) {
   World world({.contacts = true, .threads = 1});
-  const BodyId floor = world.add_chain(kFloor, false, {.is_static = true});
+  const BodyId floor = world.add_chain(kFloor, false);
   const std::vector<ShapeId> segments = world.shapes(floor);
   const BodyId crate = world.add(Rect{Vec2(0.25, 0.5 - 0x1p-6), Vec2(0.5, 0.5), 0.0});
   world.update();
@@ -332,8 +338,7 @@ TEST(ChainWorld, RecordsNameTheSegments) {
     }
   }
   World hill({.contacts = true, .threads = 1});
-  const BodyId top =
-      hill.add_chain(std::vector<Vec2>{{3, -1}, {1, 0}, {0, 0.25}, {-1, 0}, {-3, -1}}, false, {.is_static = true});
+  const BodyId top = hill.add_chain(std::vector<Vec2>{{3, -1}, {1, 0}, {0, 0.25}, {-1, 0}, {-3, -1}}, false);
   hill.add(Circle{Vec2(0.0625, 0.7), 0.5});
   hill.update();
   ASSERT_EQ(hill.contacts().size(), 1u);

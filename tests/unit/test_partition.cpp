@@ -114,7 +114,7 @@ TEST(Partition, RegionsTogetherReportTheWholeWorld) {
     std::vector<RegionWorld> regions;
     for (int k = 0; k < slabs.count(); ++k) {
       regions.emplace_back(kSplitOptions, slabs, k);
-      regions.back().add_chain(scene.chain_id, scene.chain, false, {.is_static = true});
+      regions.back().add_chain(scene.chain_id, scene.chain, false);
     }
     std::size_t pairs = 0, impacts = 0, sensing = 0, ghosts = 0;
     for (int frame = 0; frame < 16; ++frame) {

@@ -224,7 +224,7 @@ TEST(Recorder, WritesWhatTheWorldHeldFrameByFrame) {
   };
   world.add(Rect{{0, -3}, {6, 0.5}, 0.0}, {.is_static = true});
   world.add(Circle{{2.5, 2.5}, 1.0}, {.is_static = true, .sensor = true});
-  world.add_chain(std::vector<Vec2>{{6, -2}, {6, 4}, {-6, 4}, {-6, -2}}, false, {.is_static = true});
+  world.add_chain(std::vector<Vec2>{{6, -2}, {6, 4}, {-6, 4}, {-6, -2}}, false);
   const BodyId bullet = world.add(Circle{{-5, 3}, 0.05});
   world.set_continuous(bullet);
   Recorder recorder;

@@ -106,7 +106,8 @@ TEST(Scene, ExampleFileParses) {
   EXPECT_EQ(scene.bodies[5].id, 5u);
   EXPECT_TRUE(scene.bodies[8].is_static && !scene.bodies[8].sensor);
   EXPECT_TRUE(scene.bodies[10].is_static && scene.bodies[10].sensor);
-  // A hill of 4 segments, its first and last points ghosts.
+  // A hill of 4 segments, its first and last points ghosts; static without saying so.
+  EXPECT_TRUE(scene.bodies[12].is_static);
   EXPECT_EQ(scene.bodies[12].chain.size(), 7u);
   EXPECT_EQ(scene.bodies[12].shapes.size(), 4u);
   EXPECT_FALSE(scene.bodies[12].loop);
@@ -160,8 +161,10 @@ TEST(Scene, BrokenFilesNameTheField) {
        "bodies[0].points: expected two [x, y] points"},
       {with_body(R"({"shape": "segment", "points": [[2, 1], [2, 1]], "static": true})"),
        "bodies[0]: segment length must be positive (its two points are one) (got 0)"},
-      {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0], [0, 0]]})"),
-       "bodies[0]: a chain is level geometry: its body must be static (\"static\": true)"},
+      {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0], [0, 0]], "static": false})"),
+       "bodies[0]: a chain is level geometry, always static: remove \"static\": false"},
+      {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0], [0, 0]], "sensor": true})"),
+       "bodies[0]: a chain is level geometry, not a sensor"},
       {with_body(R"({"shape": "chain", "points": [[3, 0], [2, 0], [1, 0]], "static": true})"),
        "bodies[0]: an open chain needs at least 4 points, its first and last ghosts only (got 3)"},
       {with_body(R"({"shape": "chain", "points": [[0, 0], [1, 0], [1, 1]], "loop": 1, "static": true})"),

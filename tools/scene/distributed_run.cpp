@@ -16,11 +16,11 @@ namespace {
 void add_bodies(const Scene& scene, DistributedWorld& world) {
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const SceneBody& b = scene.bodies[k];
-    const BodyDef def{.filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
     if (!b.chain.empty()) {
-      world.add_chain(k, b.chain, b.loop, def);
+      world.add_chain(k, b.chain, b.loop, {.filter = b.filter});
     } else if (k % static_cast<std::size_t>(world.ranks()) == static_cast<std::size_t>(world.rank())) {
-      world.add(k, placed_shapes(b).front(), def, b.continuous);
+      world.add(k, placed_shapes(b).front(), {.filter = b.filter, .is_static = b.is_static, .sensor = b.sensor},
+                b.continuous);
     }
   }
 }

@@ -280,15 +280,17 @@ SceneBody parse_body(const json& b, std::size_t index) {
     body.id = it->get<std::uint64_t>();
   }
   body.continuous = flag(b, "continuous", field);
-  body.is_static = flag(b, "static", field);
+  // A chain is level geometry: static unless it says otherwise, which is refused below.
+  body.is_static = b.contains("static") ? flag(b, "static", field) : !body.chain.empty();
   body.sensor = flag(b, "sensor", field);
+  if (!body.chain.empty() && body.sensor) fail(field, "a chain is level geometry, not a sensor");
   if (body.is_static && (body.velocity != Vec2::Zero() || body.angular_velocity != 0.0)) {
     fail(field, "a static body does not move: remove its velocity and angular_velocity");
   }
   if (body.is_static && body.continuous) fail(field, "a static body cannot be continuous");
   if (!body.is_static && std::any_of(body.shapes.begin(), body.shapes.end(), detail::is_level_geometry)) {
-    fail(field, std::string("a ") + (body.chain.empty() ? "segment" : "chain") +
-                    " is level geometry: its body must be static (\"static\": true)");
+    fail(field, body.chain.empty() ? "a segment is level geometry: its body must be static (\"static\": true)"
+                                   : "a chain is level geometry, always static: remove \"static\": false");
   }
   body.filter.category = bits(b, "category", field, body.filter.category);
   body.filter.mask = bits(b, "mask", field, body.filter.mask);

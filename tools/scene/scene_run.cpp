@@ -61,11 +61,11 @@ SceneRun::SceneRun(Scene scene, unsigned threads)
   check_motion(scene_);
   std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
-    const BodyDef def{.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
     if (!b.chain.empty()) {
-      ids_.push_back(world_.add_chain(b.chain, b.loop, def));
+      ids_.push_back(world_.add_chain(b.chain, b.loop, {.user_id = b.id, .filter = b.filter}));
       continue;
     }
+    const BodyDef def{.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
     shapes.clear();
     for (const Shape& s : b.shapes) shapes.push_back({.shape = s});
     ids_.push_back(world_.add(b.pose, shapes, def));
