@@ -7,6 +7,8 @@ the line above it, and the test fails on a block without one:
   <!-- test: form -->       the same, where the placeholders <number>, <ms> and <text> in the shown
                             output stand for what varies from run to run (timings);
   <!-- test: file NAME -->  the block is written to NAME, for the commands that follow to read;
+  <!-- test: copy PATH -->  the block is the source tree's file PATH, exactly (so that a page and an
+                            example share one source), written to PATH for the commands that follow;
   <!-- test: compile -->    a C++ program, compiled against the installed package with -Wall -Wextra
                             -Werror and run; an `output` block right after it holds what it prints;
   <!-- test: compile collide2d-replay --> the same, linked with a module's pkg-config package too;
@@ -28,7 +30,7 @@ import sys
 import tempfile
 
 FENCE = re.compile(r'^```([\w+-]*)\s*$')
-MARKER = re.compile(r'^<!-- test: (run|form|file \S+|compile(?: \S+)*|output|not run \(.+\)) -->\s*$')
+MARKER = re.compile(r'^<!-- test: (run|form|file \S+|copy \S+|compile(?: \S+)*|output|not run \(.+\)) -->\s*$')
 PLACEHOLDERS = {'<number>': r'-?[0-9][0-9.,e+-]*', '<ms>': r'[0-9.]+', '<text>': r'.*'}
 
 
@@ -108,6 +110,13 @@ def run_page(page, args, failures):
                                     '\n'.join(shown) + (f'\n(stderr: {result.stderr.strip()})' if result.stderr else ''))
         elif marker.startswith('file '):
             (work / marker[5:]).write_text('\n'.join(lines) + '\n')
+        elif marker.startswith('copy '):
+            text = '\n'.join(lines) + '\n'
+            source = pathlib.Path(args.source) / marker[5:]
+            if not source.is_file() or source.read_text() != text:
+                failures.append(f'{where}: the block is not {marker[5:]} as the source tree holds it')
+            (work / marker[5:]).parent.mkdir(parents=True, exist_ok=True)
+            (work / marker[5:]).write_text(text)
         elif marker.split()[0] == 'compile':
             source = work / f'snippet_{number}.cpp'
             source.write_text('\n'.join(lines) + '\n')
