@@ -343,6 +343,19 @@ TEST(SceneRun, PictureShowsWhatTheCaptionCounts) {
   EXPECT_GT(occurrences(text, "class=\"body layer1"), 200u);
   EXPECT_NE(text.find("moving bodies by filter category: 1 blue, 2 violet, 2 continuous (magenta rings)"),
             std::string::npos);
+  // A static body that a moving one touches keeps its slate fill and is outlined in red, which the
+  // caption says, so that it is not taken for an overlapping moving body (filled red).
+  std::size_t touched = 0;
+  for (const BodyId id : world.bodies()) {
+    const bool hit = std::any_of(world.overlapping().begin(), world.overlapping().end(),
+                                 [id](const ShapePair& p) { return p.a == id || p.b == id; });
+    if (world.is_static(id) && !world.is_sensor(id) && hit) touched += world.shapes(id).size();
+  }
+  EXPECT_GT(touched, 0u);
+  EXPECT_EQ(occurrences(text, "class=\"static hit\""), touched);
+  EXPECT_NE(text.find(".static.hit{stroke:#e74c3c;"), std::string::npos);
+  EXPECT_NE(text.find("static, slate, outlined red where touched"), std::string::npos);
+  EXPECT_EQ(text.find(".static.hit{fill"), std::string::npos);
   std::size_t rotations = 0;
   for (std::size_t at = text.find("rotate("); at != std::string::npos; at = text.find("rotate(", at + 1)) {
     const double degrees = std::stod(text.substr(at + 7));

@@ -223,8 +223,8 @@ void write_svg(const SceneRun& run, std::ostream& out) {
   };
   const RunSummary totals = scene_totals(run.scene());
   std::ostringstream line1, line2;
-  line1 << world.size() << " bodies (" << totals.statics << " static, dark; " << totals.sensors
-        << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "
+  line1 << world.size() << " bodies (" << totals.statics << " static, slate, outlined red where touched; "
+        << totals.sensors << " sensors, dashed): " << world.overlapping().size() << " overlapping pairs (red), "
         << world.proximity().size() << " pairs within " << run.scene().proximity_margin << " (green, ringed)";
   line2 << "moving bodies by filter category:";
   for (const std::uint64_t c : categories) line2 << ' ' << c << ' ' << kLayerColours[layer(c)].second << ',';
@@ -237,7 +237,7 @@ void write_svg(const SceneRun& run, std::ostream& out) {
     out << ".layer" << k << "{fill:" << kLayerColours[k].first << '}';
   out << ".body.hit{fill:#e74c3c;stroke:#7b241c}"
          ".static{fill:#5d6d7e;stroke:#1c2833;vector-effect:non-scaling-stroke;stroke-width:0.5}"
-         ".static.hit{fill:#943126}"
+         ".static.hit{stroke:#e74c3c;stroke-width:2.5}"
          "line.static{stroke-width:1.5}"
          ".sensor{fill:none;stroke:#b9770e;vector-effect:non-scaling-stroke;stroke-width:1.5;stroke-dasharray:6 4}"
          ".sensor.sensing{fill:#f8c471;fill-opacity:0.35}"

@@ -87,9 +87,9 @@ void draw_progress(std::ostream& out, int done, int total);
 
 void print_summary(const RunSummary& s, std::ostream& out);
 
-// An SVG picture of the current frame: every body, overlapping ones highlighted, static bodies in a
-// darker fill, sensors as dashed outlines (filled while they sense a body), and a segment between the
-// closest points of each proximity pair.
+// An SVG picture of the current frame: every body, overlapping moving ones in red, static bodies in
+// slate (outlined in red where touched), sensors as dashed outlines (filled while they sense a body), and a segment
+// between the closest points of each proximity pair.
 void write_svg(const SceneRun& run, std::ostream& out);
 
 }  // namespace collide2d::tool
