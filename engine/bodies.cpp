@@ -458,4 +458,11 @@ bool should_pair(const Filter& a, const Filter& b) {
   return (a.mask & b.category) != 0 && (a.category & b.mask) != 0;
 }
 
+Vec2 normal_from(const BodyContact& c, BodyId body) {
+  if (body == c.a) return c.contact.normal;
+  if (body == c.b) return -c.contact.normal;
+  throw std::invalid_argument("normal_from: body " + std::to_string(body.index) + " (generation " +
+                              std::to_string(body.generation) + ") is neither body of the contact");
+}
+
 }  // namespace collide2d

@@ -26,6 +26,14 @@ void WorldState::update_sensing(std::size_t chunks) {
     sensed_.insert(sensed_.end(), chunks_[k].sensing.begin(), chunks_[k].sensing.end());
   std::sort(sensed_.begin(), sensed_.end());
   replace_pairs(sensing_, sensed_, sensor_began_, sensor_ended_);
+  // By visiting bodies: the shape pairs are sorted by bodies, then the sensor shape, so that each
+  // visit's pairs are together and the visits come in their own order.
+  frame_visits_.clear();
+  for (const SensorPair& p : sensing_) {
+    const SensorVisit visit{p.sensor, p.visitor, p.sensor_shape, p.user_sensor, p.user_visitor, p.shape_user_sensor};
+    if (frame_visits_.empty() || frame_visits_.back() != visit) frame_visits_.push_back(visit);
+  }
+  replace_pairs(body_sensing_, frame_visits_, body_sensor_began_, body_sensor_ended_);
 }
 
 }  // namespace collide2d::detail

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -219,6 +220,7 @@ void WorldState::narrow_phase() {
   keep_earliest_impacts();
   replace_pairs(overlapping_, frame_pairs_, began_, ended_);
   update_body_pairs();
+  index_contacts();
   update_sensing(chunks);
   mark_removed();
 }
@@ -242,12 +244,42 @@ void WorldState::update_body_pairs() {
   replace_pairs(body_overlapping_, frame_body_pairs_, body_began_, body_ended_);
 }
 
+// Each body's contacts in contacts()' order, by a counting sort on the body slots: the counts go
+// one slot up, their running sum gives each slot's start, filling moves each start to the next
+// slot's, and one shift puts them back.
+void WorldState::index_contacts() {
+  contact_start_.assign(contacts_.empty() ? 0 : bodies_.size() + 1, 0);
+  contact_list_.resize(2 * contacts_.size());
+  if (contacts_.empty()) return;
+  for (const BodyContact& c : contacts_) ++contact_start_[c.a.index + 1], ++contact_start_[c.b.index + 1];
+  std::partial_sum(contact_start_.begin(), contact_start_.end(), contact_start_.begin());
+  for (std::uint32_t k = 0; k < contacts_.size(); ++k) {
+    contact_list_[contact_start_[contacts_[k].a.index]++] = k;
+    contact_list_[contact_start_[contacts_[k].b.index]++] = k;
+  }
+  std::copy_backward(contact_start_.begin(), contact_start_.end() - 1, contact_start_.end());
+  contact_start_[0] = 0;
+}
+
+std::span<const std::uint32_t> WorldState::contacts_of(BodyId id) const {
+  (void)body(id);
+  if (std::size_t{id.index} + 1 >= contact_start_.size()) return {};
+  const std::span<const std::uint32_t> list(contact_list_.data() + contact_start_[id.index],
+                                            contact_list_.data() + contact_start_[id.index + 1]);
+  // The slot may hold another body than at the update (removed, and its slot taken since).
+  if (list.empty() || (contacts_[list[0]].a != id && contacts_[list[0]].b != id)) return {};
+  return list;
+}
+
 void WorldState::mark_removed() {
   for (ShapePair& p : ended_)
     p.removed = !contains(p.a) || !contains(p.b) || !contains(p.shape_a) || !contains(p.shape_b);
   for (BodyPair& p : body_ended_) p.removed = !contains(p.a) || !contains(p.b);
   for (SensorPair& p : sensor_ended_) {
     p.removed = !contains(p.sensor) || !contains(p.visitor) || !contains(p.sensor_shape) || !contains(p.visitor_shape);
+  }
+  for (SensorVisit& p : body_sensor_ended_) {
+    p.removed = !contains(p.sensor) || !contains(p.visitor) || !contains(p.sensor_shape);
   }
 }
 

@@ -79,6 +79,10 @@ const std::vector<Impact>& World::impacts() const { return state_->impacts_; }
 const std::vector<SensorPair>& World::sensing() const { return state_->sensing_; }
 const std::vector<SensorPair>& World::sensor_began() const { return state_->sensor_began_; }
 const std::vector<SensorPair>& World::sensor_ended() const { return state_->sensor_ended_; }
+const std::vector<SensorVisit>& World::body_sensing() const { return state_->body_sensing_; }
+const std::vector<SensorVisit>& World::body_sensor_began() const { return state_->body_sensor_began_; }
+const std::vector<SensorVisit>& World::body_sensor_ended() const { return state_->body_sensor_ended_; }
+std::span<const std::uint32_t> World::contacts_of(BodyId id) const { return state_->contacts_of(id); }
 const FrameStats& World::last_frame() const { return state_->stats_; }
 std::vector<ShapePair> World::candidates() const { return state_->candidates(); }
 Aabb World::broad_box(ShapeId id) const { return state_->broad_box(id); }

@@ -134,7 +134,13 @@ class WorldState {
   std::vector<SensorPair> sensing_;
   std::vector<SensorPair> sensor_began_;
   std::vector<SensorPair> sensor_ended_;
+  std::vector<SensorVisit> body_sensing_;
+  std::vector<SensorVisit> body_sensor_began_;
+  std::vector<SensorVisit> body_sensor_ended_;
   FrameStats stats_;
+
+  // update.cpp
+  std::span<const std::uint32_t> contacts_of(BodyId id) const;
 
  private:
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
@@ -244,6 +250,10 @@ class WorldState {
   std::vector<ShapePair> frame_pairs_;  // the narrow phase's pairs joined: storage kept between frames
   std::vector<BodyPair> frame_body_pairs_;
   std::vector<SensorPair> sensed_;
+  std::vector<SensorVisit> frame_visits_;
+  // contacts_of(): body slot i's contacts are contact_list_[contact_start_[i], contact_start_[i + 1]).
+  std::vector<std::uint32_t> contact_start_;
+  std::vector<std::uint32_t> contact_list_;
   std::vector<std::uint32_t> continuous_;  // the continuous bodies' shapes
   std::function<bool(BodyId, BodyId)> pair_predicate_;
   std::vector<ChunkResults> chunks_;  // kept from frame to frame, so that steady state allocates nothing
@@ -294,6 +304,7 @@ class WorldState {
   Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out) const;
   void narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const;
   void update_body_pairs();
+  void index_contacts();
 
   // sensors.cpp
   void sense(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const;

@@ -270,19 +270,19 @@ void add_world_pairs(Bodies& c) {
       "began", [](PyWorld& w) { return body_pairs(w.world().body_began()); }, "Pairs that began at the update.");
   c.def(
       "ended", [](PyWorld& w) { return body_pairs(w.world().body_ended()); }, "Pairs that ended at the update.");
-  const auto sensor_pairs = [](const std::vector<SensorPair>& pairs) {
+  const auto visits = [](const std::vector<SensorVisit>& pairs) {
     return id_pairs(
-        pairs, [](const SensorPair& p) { return p.sensor; }, [](const SensorPair& p) { return p.visitor; });
+        pairs, [](const SensorVisit& p) { return p.sensor; }, [](const SensorVisit& p) { return p.visitor; });
   };
   c.def(
-      "sensing", [=](PyWorld& w) { return sensor_pairs(w.world().sensing()); },
-      "(sensor, visitor) pairs of bodies: a sensor and a solid body that overlaps it.");
+      "sensing", [=](PyWorld& w) { return visits(w.world().body_sensing()); },
+      "(sensor, visitor) pairs of bodies: a sensor and a body with a solid shape inside it, a row per sensor shape.");
   c.def(
-      "sensor_began", [=](PyWorld& w) { return sensor_pairs(w.world().sensor_began()); },
-      "(sensor, visitor) pairs that began at the update.");
+      "sensor_began", [=](PyWorld& w) { return visits(w.world().body_sensor_began()); },
+      "(sensor, visitor) pairs that began at the update: the visitor's first shape entered.");
   c.def(
-      "sensor_ended", [=](PyWorld& w) { return sensor_pairs(w.world().sensor_ended()); },
-      "(sensor, visitor) pairs that ended at the update.");
+      "sensor_ended", [=](PyWorld& w) { return visits(w.world().body_sensor_ended()); },
+      "(sensor, visitor) pairs that ended at the update: the visitor's last shape left.");
   c.def(
       "proximity",
       [](PyWorld& w) {
@@ -306,6 +306,26 @@ void add_world_pairs(Bodies& c) {
             py::arg("point_b") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_b); }));
       },
       "With contacts on: pairs (m, 2), separation (m, 1), normal, point_a, point_b (m, 2).");
+  c.def(
+      "contacts_of",
+      [](PyWorld& w, std::uint64_t body) {
+        const BodyId id = body_of(body);
+        const std::span<const std::uint32_t> found = w.world().contacts_of(id);
+        const auto& all = w.world().contacts();
+        py::array_t<std::int64_t> index(static_cast<py::ssize_t>(found.size()));
+        py::array_t<std::uint64_t> other(static_cast<py::ssize_t>(found.size()));
+        py::array_t<double> normal({static_cast<py::ssize_t>(found.size()), py::ssize_t{2}});
+        for (std::size_t k = 0; k < found.size(); ++k) {
+          const BodyContact& c = all[found[k]];
+          index.mutable_data()[k] = found[k];
+          other.mutable_data()[k] = id_of(c.a == id ? c.b : c.a);
+          put(normal.mutable_data() + 2 * k, normal_from(c, id));
+        }
+        return py::dict(py::arg("index") = index, py::arg("other") = other, py::arg("normal") = normal);
+      },
+      py::arg("body"),
+      "With contacts on: the body's contacts, found without a scan: index (k,), their rows of contacts();\n"
+      "other (k,), the other bodies; normal (k, 2), pointing away from this body.");
   c.def(
       "impacts",
       [](PyWorld& w) {

@@ -184,6 +184,29 @@ struct SensorPair {
   }
 };
 
+/// A sensor shape and a body at least one of whose solid shapes overlaps it, as of an update: the
+/// visit begins with the body's first shape in and ends with its last one out, so that a body of
+/// several shapes enters and leaves once. Whole on its own as SensorPair is, ordered by bodies then
+/// the sensor shape, and compared by its handles alone.
+struct SensorVisit {
+  BodyId sensor;   ///< the sensor shape's body
+  BodyId visitor;  ///< the visiting body
+  ShapeId sensor_shape;
+  std::uint64_t user_sensor = 0;        ///< the sensor body's user id
+  std::uint64_t user_visitor = 0;       ///< the visitor body's user id
+  std::uint64_t shape_user_sensor = 0;  ///< the sensor shape's user id
+  /// In body_sensor_ended() only: the visit ended because the sensor shape or either body was
+  /// removed since the previous update.
+  bool removed = false;
+  friend bool operator==(const SensorVisit& p, const SensorVisit& q) {
+    return p.sensor == q.sensor && p.visitor == q.visitor && p.sensor_shape == q.sensor_shape;
+  }
+  friend std::strong_ordering operator<=>(const SensorVisit& p, const SensorVisit& q) {
+    if (p.sensor != q.sensor) return p.sensor <=> q.sensor;
+    return p.visitor != q.visitor ? p.visitor <=> q.visitor : p.sensor_shape <=> q.sensor_shape;
+  }
+};
+
 /// How a World works.
 struct WorldOptions {
   double fat_margin = 0.0;        ///< broad-phase boxes grow by this, so that small motions cost nothing
@@ -210,6 +233,10 @@ struct BodyContact : PairIds {
   bool touching = true;
   Contact contact{};  ///< of shape_a with shape_b: the normal points from a to b
 };
+
+/// The contact's normal pointing away from `body`, towards the pair's other body: as stored for body
+/// a, reversed for body b. Throws std::invalid_argument for a body of neither side.
+Vec2 normal_from(const BodyContact& c, BodyId body);
 
 /// A continuous body's first contact with another body within the step: one per pair of bodies, the
 /// earliest over their shapes' pairs, naming the two shapes that meet.
@@ -415,6 +442,15 @@ class World {
   const std::vector<SensorPair>& sensing() const;
   const std::vector<SensorPair>& sensor_began() const;
   const std::vector<SensorPair>& sensor_ended() const;
+  /// The same by visiting bodies (SensorVisit): each sensor shape and each body with a solid shape
+  /// inside it, once, sorted; and the visits that began and ended then.
+  const std::vector<SensorVisit>& body_sensing() const;
+  const std::vector<SensorVisit>& body_sensor_began() const;
+  const std::vector<SensorVisit>& body_sensor_ended() const;
+  /// With contacts on: the body's contacts at the last update, as indices into contacts() in its
+  /// order, indexed by the update so that a lookup scans nothing. Empty for a body without contacts
+  /// or added since. Throws std::out_of_range for an unknown body or a stale handle.
+  std::span<const std::uint32_t> contacts_of(BodyId id) const;
   /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
   /// The last update's candidate pairs from the broad phase, in no order, a's body the lower slot.

@@ -92,6 +92,49 @@ def test_contacts_proximity_and_sensors_come_as_arrays():
     assert world.pose(b) == ((0.0, 1.75), 0.0) and len(world) == 4
 
 
+def test_contacts_of_a_body_against_a_scan():
+    """contacts_of(body) gives the rows of contacts() that name the body, the other bodies, and the
+    normals turned away from the body: each the normal of the contact query with its shape first."""
+    rng = np.random.default_rng(5)
+    world = collide2d.World(contacts=True)
+    shapes = {}
+    for x, y, r in zip(rng.uniform(0, 8, 60), rng.uniform(0, 8, 60), rng.uniform(0.3, 1.0, 60)):
+        shape = collide2d.Circle((float(x), float(y)), float(r))
+        shapes[world.add(shape)] = shape
+    world.update()
+    pairs = world.contacts()['pairs']
+    assert len(pairs) > 20
+    for body, shape in shapes.items():
+        mine = world.contacts_of(body)
+        rows = [k for k, (a, b) in enumerate(pairs.tolist()) if body in (a, b)]
+        assert mine['index'].tolist() == rows
+        others = [b if a == body else a for a, b in pairs[rows].tolist()]
+        assert mine['other'].tolist() == others
+        for other, normal in zip(others, mine['normal'].tolist()):
+            assert normal == list(collide2d.contact(shape, shapes[other]).normal)
+
+
+def test_a_body_of_three_shapes_enters_and_leaves_a_sensor_once():
+    """Its shapes cross the sensor's edge on different frames; the body enters with its first and
+    leaves with its last."""
+    world = collide2d.World()
+    sensor = world.add(collide2d.Rect((0, 0), (1, 5)), static=True, sensor=True)
+    train = world.add([collide2d.Circle((-2, 0), 0.4), collide2d.Circle((0, 0), 0.4), collide2d.Circle((2, 0), 0.4)],
+                      center=(-4.05, 0))
+    entered, left, inside = [], [], []
+    for frame in range(40):
+        world.move_to(train, (-4.05 + 0.25 * frame, 0), 0)
+        world.update()
+        entered += [frame for _ in world.sensor_began()]
+        left += [frame for _ in world.sensor_ended()]
+        inside.append(as_set(world.sensing()))
+    # The sensor spans x in [-1, 1]. The body at x = -4.05 + 0.25 f: its front circle (offset 2,
+    # radius 0.4) reaches x = -1 when -1.65 + 0.25 f >= -1, first at f = 3 (the middle one at 11,
+    # the rear at 19); its rear circle's left edge, -6.45 + 0.25 f, passes x = 1 first at f = 30.
+    assert entered == [3] and left == [30]
+    assert inside[2] == set() and inside[3:30] == [{(sensor, train)}] * 27 and inside[30] == set()
+
+
 def test_set_poses_checks_its_arrays():
     """Each array's expected and given shapes are named; a bad row is named and nothing moves."""
     world = collide2d.World()

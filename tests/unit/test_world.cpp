@@ -12,6 +12,8 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,28 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
     }
     EXPECT_GT(world.overlapping().size(), 0u);
     if (margin > 0) EXPECT_GT(world.proximity().size(), 0u);
+  }
+}
+
+// contacts_of() against a scan of contacts(): each body's contacts, in their order. normal_from()
+// turns each normal away from the body asked about: the normal of the contact query with that
+// body's shape first.
+void expect_contacts_of_match_a_scan(const World& world, double margin, const std::string& what) {
+  const std::vector<BodyContact>& all = world.contacts();
+  for (const BodyId id : world.bodies()) {
+    std::vector<std::uint32_t> scan;
+    for (std::uint32_t k = 0; k < all.size(); ++k) {
+      if (all[k].a == id || all[k].b == id) scan.push_back(k);
+    }
+    const std::span<const std::uint32_t> got = world.contacts_of(id);
+    ASSERT_EQ(std::vector<std::uint32_t>(got.begin(), got.end()), scan) << what;
+    for (const std::uint32_t k : got) {
+      const BodyContact& c = all[k];
+      const bool first = c.a == id;
+      const Contact from_id = contact(world.shape(first ? c.shape_a : c.shape_b),
+                                      world.shape(first ? c.shape_b : c.shape_a), {.margin = margin});
+      ASSERT_EQ(normal_from(c, id), from_id.normal) << what;
+    }
   }
 }
 
@@ -110,7 +134,18 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
       }
       EXPECT_EQ(world.last_frame().contacts, expected.size());
       EXPECT_EQ(plain.overlapping(), world.overlapping());
+      expect_contacts_of_match_a_scan(world, margin, "frame " + std::to_string(frame));
+      if (HasFatalFailure()) return;
+      EXPECT_TRUE(plain.contacts_of(ids[0]).empty());
     }
+    // A body removed since the update is refused; one that took its slot has no contacts yet.
+    const BodyContact first = world.contacts().at(0);
+    world.remove(first.a);
+    const BodyId successor = world.add(Circle{Vec2(0, 0), 1.0});
+    ASSERT_EQ(successor.index, first.a.index);
+    EXPECT_THROW((void)world.contacts_of(first.a), std::out_of_range);
+    EXPECT_TRUE(world.contacts_of(successor).empty());
+    EXPECT_THROW((void)normal_from(first, successor), std::invalid_argument);
     EXPECT_GT(world.contacts().size(), world.overlapping().size() * (margin > 0 ? 1 : 0));
   }
   EXPECT_GT(circle_ellipse, 100);

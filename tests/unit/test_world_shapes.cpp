@@ -15,7 +15,9 @@
 #include <iterator>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace collide2d {
@@ -72,6 +74,18 @@ std::vector<BodyPair> bodies_of(const std::vector<ShapePair>& pairs) {
   return out;
 }
 
+// The visits of an all-pairs scan's sensor pairs: each (sensor shape, visiting body) once, in a set
+// ordered as SensorVisit orders, with the user ids the World holds now.
+std::vector<SensorVisit> visits_of(const World& world, const std::vector<SensorPair>& pairs) {
+  std::set<std::tuple<BodyId, BodyId, ShapeId>> seen;
+  for (const SensorPair& p : pairs) seen.insert({p.sensor, p.visitor, p.sensor_shape});
+  std::vector<SensorVisit> out;
+  for (const auto& [sensor, visitor, shape] : seen) {
+    out.push_back({sensor, visitor, shape, world.user_id(sensor), world.user_id(visitor), world.user_id(shape)});
+  }
+  return out;
+}
+
 // Each record names both bodies and shapes, with the user ids of the update.
 void expect_whole(const World& world, const ShapePair& p, const std::string& what) {
   ASSERT_LT(p.a.index, p.b.index) << what;
@@ -121,7 +135,9 @@ TEST(WorldShapes, PairsMatchAllShapePairsThroughChurn) {
     for (int k = 0; k < 90; ++k) add_body(world, rng, next_user++);
     std::vector<ShapePair> previous;
     std::vector<SensorPair> sensed;
+    std::vector<SensorVisit> visits;
     std::size_t compound_pairs = 0, body_pairs_kept = 0;
+    std::ptrdiff_t compound_visits = 0;
     for (int frame = 0; frame < 30; ++frame) {
       const std::string what = "margin " + std::to_string(margin) + " frame " + std::to_string(frame);
       for (const BodyId id : world.bodies()) {
@@ -139,6 +155,23 @@ TEST(WorldShapes, PairsMatchAllShapePairsThroughChurn) {
       expect_changes(bodies_of(previous), bodies_of(world.overlapping()), world.body_began(), world.body_ended(), what);
       expect_changes(sensed, world.sensing(), world.sensor_began(), world.sensor_ended(), what);
       ASSERT_EQ(world.body_overlapping(), bodies_of(world.overlapping())) << what;
+      // Body-level sensor events: a body enters with its first shape and leaves with its last.
+      const std::vector<SensorVisit> now = visits_of(world, expected.sensing);
+      ASSERT_EQ(world.body_sensing(), now) << what;
+      for (std::size_t k = 0; k < now.size(); ++k) {
+        ASSERT_EQ(world.body_sensing()[k].user_visitor, now[k].user_visitor) << what;
+        ASSERT_EQ(world.body_sensing()[k].shape_user_sensor, now[k].shape_user_sensor) << what;
+      }
+      expect_changes(visits, now, world.body_sensor_began(), world.body_sensor_ended(), what);
+      for (const SensorVisit& v : world.body_sensor_ended()) {
+        ASSERT_EQ(v.removed, !world.contains(v.sensor) || !world.contains(v.visitor) || !world.contains(v.sensor_shape))
+            << what;
+      }
+      compound_visits += std::count_if(now.begin(), now.end(), [&](const SensorVisit& v) {
+        return std::count_if(expected.sensing.begin(), expected.sensing.end(), [&](const SensorPair& p) {
+                 return p.sensor_shape == v.sensor_shape && p.visitor == v.visitor;
+               }) > 1;
+      });
       if (HasFatalFailure()) return;
       for (const ShapePair& p : world.overlapping()) {
         expect_whole(world, p, what);
@@ -150,8 +183,10 @@ TEST(WorldShapes, PairsMatchAllShapePairsThroughChurn) {
       body_pairs_kept += world.overlapping().size() - world.body_overlapping().size();
       previous = world.overlapping();
       sensed = world.sensing();
+      visits = now;
     }
     EXPECT_GT(compound_pairs, 500u);
+    EXPECT_GT(compound_visits, 5);    // visits of more than one shape of a body
     EXPECT_GT(body_pairs_kept, 50u);  // pairs of bodies touching by more than one pair of shapes
   }
 }

@@ -125,15 +125,15 @@ RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
     s.began += world_.began().size();
     s.ended += world_.ended().size();
     s.impacts += world_.impacts().size();
-    s.sensing_per_frame += static_cast<double>(f.sensing);
-    s.sensor_began += world_.sensor_began().size();
-    s.sensor_ended += world_.sensor_ended().size();
+    s.sensing_per_frame += static_cast<double>(world_.body_sensing().size());
+    s.sensor_began += world_.body_sensor_began().size();
+    s.sensor_ended += world_.body_sensor_ended().size();
     if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames))
       draw_progress(*progress, frame + 1, scene_.frames);
   }
   if (progress) *progress << '\n';
   std::vector<std::pair<std::uint64_t, std::uint64_t>> sensing;
-  for (const SensorPair& p : world_.sensing()) sensing.emplace_back(p.user_sensor, p.user_visitor);
+  for (const SensorVisit& p : world_.body_sensing()) sensing.emplace_back(p.user_sensor, p.user_visitor);
   s.sensor_contents = sensor_contents(scene_, sensing);
   finish(s, std::move(broad), std::move(narrow));
   return s;
