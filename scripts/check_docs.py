@@ -17,7 +17,8 @@ the line above it, and the test fails on a block without one:
                             packages; WHY says which.
 
 Each page runs in a scratch folder of its own, in order, with the build's programs on PATH; in
-commands, /opt/collide2d stands for the folder the test installed the package in.
+commands, /opt/collide2d stands for the folder the test installed the package in, and
+~/src/collide2d for the source tree.
 
   check_docs.py --bin DIR [--bin DIR...] --prefix INSTALLED_PREFIX --source ROOT FILE.md...
 """
@@ -89,8 +90,6 @@ def run_page(page, args, failures):
     env = dict(os.environ)
     env['PATH'] = os.pathsep.join(args.bin + [env.get('PATH', '')])
     env['COLLIDE2D_SOURCE'] = args.source
-    if args.pythonpath:
-        env['PYTHONPATH'] = args.pythonpath
     # The pages show mpirun as a user runs it; the tests run as root, which Open MPI refuses unless told.
     env['OMPI_ALLOW_RUN_AS_ROOT'] = env['OMPI_ALLOW_RUN_AS_ROOT_CONFIRM'] = '1'
     found = blocks(page)
@@ -100,7 +99,8 @@ def run_page(page, args, failures):
             failures.append(f'{where}: a fenced block without a <!-- test: ... --> marker')
         elif marker in ('run', 'form'):
             for command, shown in session(lines):
-                result = subprocess.run(['bash', '-o', 'pipefail', '-c', command.replace('/opt/collide2d', args.prefix)],
+                command = command.replace('/opt/collide2d', args.prefix).replace('~/src/collide2d', args.source)
+                result = subprocess.run(['bash', '-o', 'pipefail', '-c', command],
                                         cwd=work, env=env,
                                         capture_output=True, text=True)
                 got = result.stdout.rstrip('\n').split('\n') if result.stdout.strip() else []
@@ -152,7 +152,6 @@ def main():
     parser.add_argument('--prefix', required=True)
     parser.add_argument('--source', required=True)
     parser.add_argument('--cxx', default='c++')
-    parser.add_argument('--pythonpath', help='where the Python module is, for the pages that import it')
     parser.add_argument('pages', nargs='+')
     args = parser.parse_args()
     args.bin = [str(pathlib.Path(b).resolve()) for b in args.bin]
