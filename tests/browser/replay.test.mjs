@@ -3,8 +3,9 @@
 // runs a small scene whose events are known by construction (a bullet meeting a wall, two circles
 // meeting, a box entering a sensor) with `collide2d run --html`, and checks that the page reports
 // the run's frames, bodies and per-frame pair counts, draws the bullet's impact where the geometry
-// puts it, and names a clicked body. Then it loads the built-in scene's page (600 frames), checks
-// its size, and prints the median time to draw a frame at 1280 x 800. Exits 77 (ctest: skipped),
+// puts it, names a clicked body, lists events by the bodies' user ids, and fits its layout to a
+// window of 1280 x 800 and of 1920 x 1080. Then it loads the built-in scene's page (600 frames), checks
+// its size, and prints the median time to draw a frame in a 1920 x 1080 window. Exits 77 (ctest: skipped),
 // saying why, where no browser or no puppeteer-core is installed (scripts/deps.sh --test installs both).
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, statSync, writeFileSync } from 'node:fs';
@@ -105,6 +106,34 @@ try {
   const hidden = await page.$eval('#details', (d) => d.textContent);
   check(hidden === 'No body there.', `with rects hidden, a click on the wall finds nothing: ${JSON.stringify(hidden)}`);
 
+  // Events name bodies by their user ids: the bullet (7) meets the wall (9) at frame 1.
+  const rows = await page.$$eval('#events div', (divs) => divs.map((d) => d.textContent));
+  check(rows.some((r) => r.startsWith('frame 1: impact body 7 · body 9')),
+        `the events list names the bodies by user id: ${JSON.stringify(rows.slice(0, 3))}`);
+
+  // The layout fits the window: every control, the side panel and both plots lie within it, nothing
+  // scrolls, and the view takes the room they leave.
+  for (const [width, height] of [[1280, 800], [1920, 1080]]) {
+    await page.setViewport({ width, height });
+    const layout = await page.evaluate(([w, h]) => {
+      const shown = (el) => {
+        const r = el.getBoundingClientRect();
+        return r.left >= 0 && r.top >= 0 && r.right <= w && r.bottom <= h && r.width > 0 && r.height > 0;
+      };
+      const parts = [...document.querySelectorAll('header, aside, #controls > *, #plots canvas')];
+      const view = document.getElementById('view');
+      return {
+        outside: parts.filter((el) => !shown(el)).map((el) => el.id || el.tagName),
+        scroll: [document.documentElement.scrollWidth, document.documentElement.scrollHeight],
+        view: [view.width, view.height],
+      };
+    }, [width, height]);
+    check(layout.outside.length === 0 && layout.scroll[0] <= width && layout.scroll[1] <= height,
+          `at ${width} x ${height} everything shows without scrolling (outside: ${layout.outside}; page ${layout.scroll})`);
+    check(layout.view[0] >= width - 400 && layout.view[1] >= height - 400,
+          `at ${width} x ${height} the view takes the room left: ${layout.view}`);
+  }
+
   // The built-in scene's page: its size, and the time to draw a frame.
   const builtin = path.join(work, 'builtin.html');
   execFileSync(collide2d, ['run', '--html', builtin], quiet);
@@ -122,7 +151,8 @@ try {
     }
     return out.sort((a, b) => a - b);
   });
-  console.log(`median time to draw a frame of the built-in scene at 1280 x 800: ${times[times.length >> 1].toFixed(1)} ms`);
+  const size = await page.evaluate(() => `${canvas.width} x ${canvas.height}`);
+  console.log(`median time to draw a frame of the built-in scene at ${size}: ${times[times.length >> 1].toFixed(1)} ms`);
 } finally {
   await browser.close();
 }

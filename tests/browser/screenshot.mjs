@@ -7,7 +7,7 @@ const [page_path, out] = process.argv.slice(2);
 const browser = await launch();
 try {
   const page = await browser.newPage();
-  await page.setViewport({ width: 1680, height: 1150 });
+  await page.setViewport({ width: 1280, height: 800 });
   await page.goto(new URL(page_path, `file://${process.cwd()}/`).href);
   await page.waitForFunction('window.replayReady === true', { timeout: 180000 });
   const error = await page.evaluate('window.replayError');
@@ -17,7 +17,7 @@ try {
     replayPage.view.scale *= 2.5;
     replayApi.draw();
   });
-  await page.screenshot({ path: out, clip: { x: 0, y: 0, width: 1680, height: 1150 } });
+  await page.screenshot({ path: out, clip: { x: 0, y: 0, width: 1280, height: 800 } });
 } finally {
   await browser.close();
 }
