@@ -227,6 +227,7 @@ void overlap_lists(List<A> a, Turns a_orientations, List<B> b, Turns b_orientati
 template <class A, class B>
 void detail::overlap_batch(std::span<const A> a, std::span<const Orientation> a_orientations, std::span<const B> b,
                            std::span<const Orientation> b_orientations, std::span<std::uint8_t> overlapping) {
+  static_assert(detail::Pair<A, B>::batched, "the table of pairs (pairs.h) gives this pair no batch");
   constexpr bool a_turns = !std::is_same_v<A, Circle>, b_turns = !std::is_same_v<B, Circle>;
   std::array<std::size_t, 4> lengths{};
   std::size_t n = 0;
