@@ -260,6 +260,9 @@ void add_world_reads(Bodies& c) {
                         py::arg("narrow_seconds") = f.narrow_seconds);
       },
       "What the last update did: pair counts and the seconds of each phase.");
+  c.def(
+      "state_hash", [](PyWorld& w) { return w.world().state_hash(); },
+      "A 64-bit digest of the bodies and the last update's results, the same on every machine (docs/world.md).");
 }
 
 void add_world_pairs(Bodies& c) {

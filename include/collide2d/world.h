@@ -453,6 +453,12 @@ class World {
   std::span<const std::uint32_t> contacts_of(BodyId id) const;
   /// What the last update did and how long it took.
   const FrameStats& last_frame() const;
+  /// A 64-bit digest of the bodies and of the last update's results, defined in docs/world.md.
+  /// It reads the bodies as they are (ids, user ids, poses) and the pairs, proximity, contacts,
+  /// impacts and sensor pairs, every number by its bits, and no timing: Worlds that hold the same
+  /// state give the same value on any machine and thread count, so that lockstep peers compare it to
+  /// find a desync. It may change between versions of collide2d (CHANGELOG.md says when).
+  std::uint64_t state_hash() const;
   /// The last update's candidate pairs from the broad phase, in no order, a's body the lower slot.
   /// FrameStats::candidates of them, those the filters dropped among them. Built on each call, for
   /// debugging and replays (Recorder): read it before any shape is removed.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iterator>
 #include <numbers>
 #include <ostream>
@@ -135,6 +136,7 @@ RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
   std::vector<std::pair<std::uint64_t, std::uint64_t>> sensing;
   for (const SensorVisit& p : world_.body_sensing()) sensing.emplace_back(p.user_sensor, p.user_visitor);
   s.sensor_contents = sensor_contents(scene_, sensing);
+  s.state_hash = world_.state_hash();
   finish(s, std::move(broad), std::move(narrow));
   return s;
 }
@@ -170,6 +172,10 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "threads                     " << s.threads << (s.ranks > 1 ? " on each rank\n" : "\n")
       << "broad phase per frame       " << s.broad << '\n'
       << "narrow phase per frame      " << s.narrow << '\n';
+  if (s.state_hash) {
+    out << "state hash                  " << std::hex << std::setw(16) << std::setfill('0') << *s.state_hash << std::dec
+        << std::setfill(' ') << " (World::state_hash() after the last frame)\n";
+  }
   for (const RunSummary::Sensor& sensor : s.sensor_contents) {
     out << "sensor " << sensor.id << " at the last frame: " << sensor.visitors.size() << " bodies";
     constexpr std::size_t kListed = 12;

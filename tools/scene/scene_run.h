@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,7 @@ struct RunSummary {
   std::vector<Sensor> sensor_contents;
   PhaseTimes broad;
   PhaseTimes narrow;
+  std::optional<std::uint64_t> state_hash;  // World::state_hash() after the last frame (one process)
 };
 
 class SceneRun {
