@@ -1,4 +1,5 @@
 #include "tools/scene/scene.h"
+#include "tools/random.h"
 
 #include "shapes/kinds.h"
 
@@ -569,8 +570,9 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
                           .chain = walls,
                           .loop = true});
   for (int k = 0; k < count / 200; ++k) {
-    const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8),
-                  uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8));
+    // One draw a statement, so that every compiler draws in this order (y, then x).
+    const double y = uniform(scene.arena.min.y() + 8, scene.arena.max.y() - 8);
+    const Vec2 at(uniform(scene.arena.min.x() + 8, scene.arena.max.x() - 8), y);
     if (k % 2 == 0) {
       add(Rect{at, Vec2(uniform(6, 14), 0.8), uniform(-0.6, 0.6)}, false);
     } else {
@@ -586,7 +588,7 @@ void add_level(Scene& scene, int count, Uniform& uniform) {
 
 Scene default_scene(int count, int frames, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto uniform = [&rng](double lo, double hi) { return tool::uniform(rng, lo, hi); };
   // Mean body area about 2.2 (sizes 0.3 to 2): an arena of 28 count units^2 is about 8% covered.
   const double side = std::sqrt(28.0 * count);
   Scene scene;
@@ -594,7 +596,9 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
   scene.frames = frames;
   scene.proximity_margin = 0.5;
   for (int k = 0; k < count; ++k) {
-    const Vec2 c(uniform(2, side - 2), uniform(2, side - 2));
+    // One draw a statement, so that every compiler draws in this order (y, then x).
+    const double y = uniform(2, side - 2);
+    const Vec2 c(uniform(2, side - 2), y);
     const double size = uniform(0.3, 2.0);
     const double angle = uniform(0, 2 * std::numbers::pi);
     const auto shape = [&]() -> Shape {
@@ -613,7 +617,8 @@ Scene default_scene(int count, int frames, std::uint64_t seed) {
   }
   for (int k = 0; k < count / 500; ++k) {
     const double heading = uniform(0, 2 * std::numbers::pi);
-    const Shape bullet = Circle{Vec2(uniform(2, side - 2), uniform(2, side - 2)), 0.1};
+    const double y = uniform(2, side - 2);
+    const Shape bullet = Circle{Vec2(uniform(2, side - 2), y), 0.1};
     scene.bodies.push_back({.pose = pose_of(bullet),
                             .shapes = at_origin(bullet),
                             .velocity = 300 * Vec2(std::cos(heading), std::sin(heading)),
