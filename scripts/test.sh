@@ -16,15 +16,17 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_TESTS=
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 
-# One clang build serves the sanitizers and the fuzzers: the suite with AddressSanitizer and
-# UndefinedBehaviorSanitizer (no benchmarks; the packaging tests build uninstrumented consumers
-# against the instrumented library, which cannot link, and the browser tests drive a page the normal
-# build wrote the same way, so they run in the normal build only), and the libFuzzer programs.
+# One clang build serves the sanitizers, the fuzzers and clang itself: it builds everything the
+# first build does but the WebAssembly testbed, and runs the suite with AddressSanitizer and
+# UndefinedBehaviorSanitizer. The packaging tests build uninstrumented consumers against the
+# instrumented library, which cannot link; the browser tests drive a page the first build wrote the
+# same way; Debian's python3 cannot load an instrumented module: these run in the first build only.
 sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
 CXX=clang++ CC=clang cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_FUZZ=ON \
-  -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=OFF
+  -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_PYTHON=ON \
+  -DCOLLIDE2D_BOX2D_SOURCE="$build/box2d-source"
 cmake --build "$sanitize" -j "$(nproc)"
-ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -LE "package|browser"
+ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -LE "package|browser|python"
 
 # A short fuzz run: a minute and a half in all.
 FUZZ_BUILD_DIR=$sanitize FUZZ_SECONDS=${FUZZ_SECONDS:-10} bash "$root/scripts/fuzz.sh"
