@@ -70,8 +70,9 @@ std::uint64_t World::state_hash() const {
   d.list(bodies(), [&](const BodyId& b) {
     d.id(b);
     d.word(user_id(b));
-    d.point(pose(b).position);
-    d.real(pose(b).angle);
+    const Pose p = pose(b);
+    d.point(p.position);
+    d.real(p.angle);
   });
   d.list(overlapping(), [&](const ShapePair& p) { d.ids(p); });
   d.list(proximity(), [&](const Proximity& p) {

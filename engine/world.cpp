@@ -49,6 +49,7 @@ void World::update() { state_->update(); }
 bool World::contains(BodyId id) const { return state_->contains(id); }
 bool World::contains(ShapeId id) const { return state_->contains(id); }
 std::size_t World::size() const { return state_->size(); }
+unsigned World::threads() const { return state_->threads(); }
 Pose World::pose(BodyId id) const { return state_->pose(id); }
 const Shape& World::shape(BodyId id) const { return state_->shape(id); }
 std::uint64_t World::user_id(BodyId id) const { return state_->user_id(id); }

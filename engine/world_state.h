@@ -75,6 +75,7 @@ class WorldState {
   bool contains(BodyId id) const;
   bool contains(ShapeId id) const;
   std::size_t size() const { return live_; }
+  unsigned threads() const { return pool_->threads(); }
   Pose pose(BodyId id) const { return body(id).pose; }
   const Shape& shape(BodyId id) const { return entries_[body(id).first].shape; }
   std::uint64_t user_id(BodyId id) const { return body(id).user_id; }

@@ -394,6 +394,8 @@ class World {
   bool contains(ShapeId id) const;
   /// Bodies in the World.
   std::size_t size() const;
+  /// The threads each update() runs on: WorldOptions::threads, or the hardware's count where that is 0.
+  unsigned threads() const;
   /// A body's pose, user id, filter, kind, first shape and shapes. Each throws std::out_of_range for an
   /// unknown or stale handle. The first shape is where it is (the only one of a body added with
   /// one); the shapes come in the order added.

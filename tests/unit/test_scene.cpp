@@ -325,8 +325,9 @@ TEST(Scene, UniformIsLibstdcxxsDistributionWrittenOut) {
 // phase's slowest frame is the frame of its largest time: the percentiles lie between the frames'
 // fastest and that one.
 TEST(SceneRun, SummaryNamesThreadsAndSlowestFrames) {
-  EXPECT_EQ(thread_count(3), 3u);
-  EXPECT_EQ(thread_count(0), std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_EQ(SceneRun(default_scene(20, 1, 3), 3).run(nullptr).threads, 3u);
+  EXPECT_EQ(SceneRun(default_scene(20, 1, 3), 0).run(nullptr).threads,
+            std::max(1u, std::thread::hardware_concurrency()));
   SceneRun run(default_scene(200, 12, 3), 1);
   const RunSummary s = run.run(nullptr);
   EXPECT_EQ(s.threads, 1u);

@@ -13,6 +13,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace collide2d {
@@ -84,6 +85,13 @@ TEST(WorldThreads, EveryThreadCountReportsTheSame) {
 }
 
 // The pool calls every task exactly once per run, over many runs, with 1 to 4 threads.
+// threads() is the count asked for, or the hardware's where none is.
+TEST(WorldThreads, SaysHowManyThreadsItRunsOn) {
+  EXPECT_EQ(World({.threads = 3}).threads(), 3u);
+  EXPECT_EQ(World({.threads = 1}).threads(), 1u);
+  EXPECT_EQ(World().threads(), std::max(1u, std::thread::hardware_concurrency()));
+}
+
 TEST(WorldThreads, ThePoolRunsEveryTaskOnce) {
   for (const unsigned threads : {1u, 2u, 4u}) {
     detail::ThreadPool pool(threads);

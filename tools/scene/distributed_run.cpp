@@ -59,12 +59,12 @@ RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::os
   DistributedWorld world(comm, {.world = {.fat_margin = scene.fat_margin,
                                           .proximity_margin = scene.proximity_margin,
                                           .contacts = scene.contacts,
-                                          .threads = thread_count(threads)},
+                                          .threads = threads},
                                 .bounds = starting_bounds(scene, ranks),
                                 .rebalance_every = 30});
   add_bodies(scene, world);
   RunSummary s = scene_totals(scene);
-  s.threads = thread_count(threads);
+  s.threads = world.world().threads();
   s.ranks = ranks;
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene.frames / 50);

@@ -11,7 +11,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 
 namespace collide2d::tool {
@@ -48,17 +47,12 @@ void draw_progress(std::ostream& out, int done, int total) {
       << "% (" << done << '/' << total << " frames)" << std::flush;
 }
 
-unsigned thread_count(unsigned requested) {
-  return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
-}
-
 SceneRun::SceneRun(Scene scene, unsigned threads)
     : scene_(std::move(scene)),
-      threads_(thread_count(threads)),
       world_({.fat_margin = scene_.fat_margin,
               .proximity_margin = scene_.proximity_margin,
               .contacts = scene_.contacts,
-              .threads = threads_}) {
+              .threads = threads}) {
   check_motion(scene_);
   std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
@@ -110,7 +104,7 @@ void SceneRun::frame() {
 
 RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
   RunSummary s = scene_totals(scene_);
-  s.threads = threads_;
+  s.threads = world_.threads();
   std::vector<double> broad, narrow;
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {

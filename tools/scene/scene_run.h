@@ -67,13 +67,9 @@ class SceneRun {
 
  private:
   Scene scene_;
-  unsigned threads_;
   World world_;
   std::vector<BodyId> ids_;  // World id of each scene body
 };
-
-// The thread count a World runs on when asked for `requested` (0: every hardware thread).
-unsigned thread_count(unsigned requested);
 
 // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
 RunSummary scene_totals(const Scene& scene);
