@@ -155,12 +155,6 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
 }
 
-template <class X, class Y>
-bool is_pair(const QueryLine& q) {
-  return (std::holds_alternative<X>(q.a) && std::holds_alternative<Y>(q.b)) ||
-         (std::holds_alternative<Y>(q.a) && std::holds_alternative<X>(q.b));
-}
-
 // A named method answers its own pairs only; any other line is refused, naming both.
 void check_method_covers(const QueryLine& q, const QueryOptions& options) {
   const auto refuse = [&q](std::string_view word, const char* covers) {
@@ -168,11 +162,11 @@ void check_method_covers(const QueryLine& q, const QueryOptions& options) {
     throw ParseError("--method " + std::string(word) + " " + covers + "; this line is " + kinds + " ; " +
                      shape_name(q.b));
   };
-  if (options.rect_ellipse && !is_pair<Rect, Ellipse>(q)) {
+  if (options.rect_ellipse && !baselines::rect_ellipse_covers(q.a, q.b)) {
     refuse(options.rect_ellipse->word, "tests a rect and an ellipse");
   }
   const bool boundary = options.answer == Answer::boundary;
-  if (options.ellipse && !is_pair<Ellipse, Ellipse>(q) && !(boundary && is_pair<Circle, Ellipse>(q))) {
+  if (options.ellipse && !baselines::ellipse_solver_covers(q.a, q.b, boundary)) {
     refuse(options.ellipse->word,
            boundary ? "measures two ellipses, or a circle and an ellipse" : "measures two ellipses");
   }

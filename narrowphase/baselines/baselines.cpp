@@ -45,6 +45,13 @@ bool all_features_overlap(const RectEllipseFrame<double>& f) {
 
 Ellipse as_ellipse(const Circle& c) { return {c.center, c.radius, c.radius, 0.0}; }
 
+// Whether a and b are an X and a Y, in either order.
+template <class X, class Y>
+bool is_pair(const Shape& a, const Shape& b) {
+  return (std::holds_alternative<X>(a) && std::holds_alternative<Y>(b)) ||
+         (std::holds_alternative<Y>(a) && std::holds_alternative<X>(b));
+}
+
 // kernel(x, y) on two shapes of kinds X and Y in kernel order (by key within one kind), the result
 // swapped back; nullopt for other kinds.
 template <class X, class Y, class Kernel>
@@ -82,32 +89,31 @@ detail::SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b
   return curve_distance(a, b, solver);
 }
 
+bool rect_ellipse_covers(const Shape& a, const Shape& b) { return is_pair<Rect, Ellipse>(a, b); }
+
+bool ellipse_solver_covers(const Shape& a, const Shape& b, bool boundary) {
+  return is_pair<Ellipse, Ellipse>(a, b) || (boundary && is_pair<Circle, Ellipse>(a, b));
+}
+
 bool overlaps(const Shape& a, const Shape& b, RectEllipseTest test) {
   validate(a);
   validate(b);
-  if (const auto* r = std::get_if<Rect>(&a); r && std::holds_alternative<Ellipse>(b)) {
-    return overlap_rect_ellipse(*r, std::get<Ellipse>(b), test);
-  }
-  if (const auto* r = std::get_if<Rect>(&b); r && std::holds_alternative<Ellipse>(a)) {
-    return overlap_rect_ellipse(*r, std::get<Ellipse>(a), test);
-  }
-  return collide2d::overlaps(a, b);
+  if (!rect_ellipse_covers(a, b)) return collide2d::overlaps(a, b);
+  const bool rect_first = std::holds_alternative<Rect>(a);
+  return overlap_rect_ellipse(std::get<Rect>(rect_first ? a : b), std::get<Ellipse>(rect_first ? b : a), test);
 }
 
 DistanceResult distance(const Shape& a, const Shape& b, EllipseSolver solver) {
-  const auto ellipses = in_order<Ellipse, Ellipse>(
+  if (!ellipse_solver_covers(a, b, false)) return collide2d::distance(a, b);
+  return *in_order<Ellipse, Ellipse>(
       a, b, [solver](const Ellipse& x, const Ellipse& y) { return distance_ellipse_ellipse(x, y, solver).result; });
-  return ellipses ? *ellipses : collide2d::distance(a, b);
 }
 
 DistanceResult boundary_distance(const Shape& a, const Shape& b, EllipseSolver solver) {
+  if (!ellipse_solver_covers(a, b, true)) return collide2d::boundary_distance(a, b);
   const auto curves = [solver](const Ellipse& x, const Ellipse& y) { return curve_distance(x, y, solver).result; };
   if (const auto r = in_order<Ellipse, Ellipse>(a, b, curves)) return *r;
-  if (const auto r = in_order<Circle, Ellipse>(
-          a, b, [&](const Circle& x, const Ellipse& y) { return curves(as_ellipse(x), y); })) {
-    return *r;
-  }
-  return collide2d::boundary_distance(a, b);
+  return *in_order<Circle, Ellipse>(a, b, [&](const Circle& x, const Ellipse& y) { return curves(as_ellipse(x), y); });
 }
 
 }  // namespace collide2d::baselines

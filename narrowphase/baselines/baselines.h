@@ -34,9 +34,14 @@ detail::SolverReport curve_distance(const Ellipse& a, const Ellipse& b, EllipseS
 // else the solver's curve distance.
 detail::SolverReport distance_ellipse_ellipse(const Ellipse& a, const Ellipse& b, EllipseSolver solver);
 
-// Any pair, either order, validated as query.h validates: the baseline where the pair has one (a
-// rectangle and an ellipse; two ellipses, and for the boundary a circle and an ellipse, the circle
-// as an ellipse with a = b), else query.h's query.
+// The pairs the methods cover, in either order: the rectangle–ellipse tests a rectangle and an
+// ellipse; the ellipse solvers two ellipses, and for the boundary also a circle and an ellipse (the
+// circle as an ellipse with a = b).
+bool rect_ellipse_covers(const Shape& a, const Shape& b);
+bool ellipse_solver_covers(const Shape& a, const Shape& b, bool boundary);
+
+// Any pair, either order, validated as query.h validates: the method where it covers the pair,
+// else query.h's query.
 bool overlaps(const Shape& a, const Shape& b, RectEllipseTest test);
 DistanceResult distance(const Shape& a, const Shape& b, EllipseSolver solver);
 DistanceResult boundary_distance(const Shape& a, const Shape& b, EllipseSolver solver);
