@@ -11,7 +11,7 @@ namespace collide2d::detail {
 
 // The extreme x of the rotated ellipse is the support half-width sqrt((a c)^2 + (b s)^2).
 inline Aabb oriented_box(const Ellipse& e, const Orientation& o) {
-  return around(e.center, Vec2(std::hypot(e.a * o.c, e.b * o.s), std::hypot(e.a * o.s, e.b * o.c)));
+  return around(e.center, Vec2(hypotenuse(e.a * o.c, e.b * o.s), hypotenuse(e.a * o.s, e.b * o.c)));
 }
 
 // Support of {K + V diag(a,b) u : |u| <= 1} in direction d is K + V diag(a,b)^2 w / |diag(a,b) w|

@@ -97,8 +97,8 @@ void set_mass(PolygonOutline& o) {
     const Vec2& next = v[(i + 1) % count];
     add((next - v[i]).norm() * r, (v[i] + next) / 2 + (r / 2) * n[i]);
     const Vec2& before = n[(i + count - 1) % count];
-    const double half = std::atan2(cross(before, n[i]), before.dot(n[i])) / 2;
-    add(r * r * half, v[i] + (2 * r * std::sin(half) / (3 * half)) * (before + n[i]).normalized());
+    const double half = detail::arc_tangent(cross(before, n[i]), before.dot(n[i])) / 2;
+    add(r * r * half, v[i] + (2 * r * detail::cos_sin(half).s / (3 * half)) * (before + n[i]).normalized());
   }
   o.area = area;
   o.centroid = moment / area;
@@ -200,7 +200,8 @@ ConvexPolygon ConvexPolygon::regular(int count, double circumradius, double radi
   std::array<Vec2, kMaxPolygonVertices> v;
   for (int k = 0; k < count; ++k) {
     const double t = 2 * std::numbers::pi * k / count;
-    v[k] = circumradius * Vec2(std::cos(t), std::sin(t));
+    const detail::CosSin turn = detail::cos_sin(t);
+    v[k] = circumradius * Vec2(turn.c, turn.s);
   }
   return of(std::span<const Vec2>(v.data(), static_cast<std::size_t>(count)), radius);
 }

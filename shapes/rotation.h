@@ -5,7 +5,10 @@
 
 #include <collide2d/shapes.h>
 
+#include "shapes/elementary.h"
+
 #include <cmath>
+#include <type_traits>
 
 namespace collide2d::detail {
 
@@ -15,9 +18,14 @@ struct Rotation {
   Real s = 0;
 
   static Rotation of(double angle) {
-    using std::cos;
-    using std::sin;
-    return {cos(static_cast<Real>(angle)), sin(static_cast<Real>(angle))};
+    if constexpr (std::is_same_v<Real, double>) {
+      const CosSin r = cos_sin(angle);
+      return {r.c, r.s};
+    } else {
+      using std::cos;
+      using std::sin;
+      return {cos(static_cast<Real>(angle)), sin(static_cast<Real>(angle))};
+    }
   }
   static Rotation of(const Orientation& o) { return {static_cast<Real>(o.c), static_cast<Real>(o.s)}; }
   // Rotates (x, y) by this rotation.

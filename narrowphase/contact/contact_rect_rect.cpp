@@ -99,7 +99,7 @@ Feature nearest_corners(const View& v) {
       }
     }
   }
-  best.separation = std::hypot(best.on_inc.x() - best.on_ref.x(), best.on_inc.y() - best.on_ref.y());
+  best.separation = detail::hypotenuse(best.on_inc.x() - best.on_ref.x(), best.on_inc.y() - best.on_ref.y());
   return best;
 }
 

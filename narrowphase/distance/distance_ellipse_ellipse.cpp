@@ -81,7 +81,8 @@ struct Containment {
 };
 
 Containment containment(const EllipsePair<double>& p, double angle) {
-  const V2 n(std::cos(angle), std::sin(angle));
+  const detail::CosSin turn = detail::cos_sin(angle);
+  const V2 n(turn.c, turn.s);
   const auto sa = p.A.at(n);
   const auto sb = p.B.at(n);
   const double g = n.dot(p.delta) + sb.h - sa.h;
@@ -117,7 +118,7 @@ Congruence congruence_of(const EllipsePair<double>& p) {
     double a, b, theta;
   };
   const auto canonical = [](const detail::EllipseSupport<double>& e) {
-    const double theta = std::atan2(e.rot.s, e.rot.c);
+    const double theta = detail::arc_tangent(e.rot.s, e.rot.c);
     return e.a >= e.b ? Axes{e.a, e.b, theta} : Axes{e.b, e.a, theta + std::numbers::pi / 2};
   };
   const Axes x = canonical(p.A), y = canonical(p.B);
@@ -167,7 +168,7 @@ Bend bend_between(const Containment& x, const Containment& y, const Congruence& 
 Extremes containment_extremes(const EllipsePair<double>& p, int& iterations) {
   std::vector<double> axes;
   for (const auto* e : {&p.A, &p.B}) {
-    const double angle = std::atan2(e->rot.s, e->rot.c);
+    const double angle = detail::arc_tangent(e->rot.s, e->rot.c);
     for (int k = 0; k < 4; ++k) axes.push_back(std::remainder(angle + k * std::numbers::pi / 2, 2 * std::numbers::pi));
   }
   std::sort(axes.begin(), axes.end());
@@ -224,7 +225,7 @@ struct Level {
   detail::Rotation<double> rot;
   double operator()(const Vec2& x) const {
     const Vec2 l = rot.apply_inverse(Vec2(x - e.center));
-    return std::hypot(l.x() / e.a, l.y() / e.b) - 1.0;
+    return detail::hypotenuse(l.x() / e.a, l.y() / e.b) - 1.0;
   }
 };
 
@@ -250,10 +251,11 @@ Vec2 crossing_point(const Ellipse& a, const Ellipse& b, const Vec2& w, const Vec
   const double s = bisect([&](double t) { return level_a(w + t * (out_b - w)); }, 0.0, 1.0);
   const auto param = [&](const Vec2& x) {
     const Vec2 l = level_a.rot.apply_inverse(Vec2(x - a.center));
-    return std::atan2(l.y() / a.b, l.x() / a.a);
+    return detail::arc_tangent(l.y() / a.b, l.x() / a.a);
   };
   const auto on_a = [&](double t) -> Vec2 {
-    return a.center + level_a.rot.apply(Vec2(a.a * std::cos(t), a.b * std::sin(t)));
+    const detail::CosSin turn = detail::cos_sin(t);
+    return a.center + level_a.rot.apply(Vec2(a.a * turn.c, a.b * turn.s));
   };
   const double t_in = param(w + s * (out_b - w));
   double t_out = param(out_a);

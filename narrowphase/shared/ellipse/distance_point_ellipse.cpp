@@ -40,7 +40,7 @@ PointEllipseResult axis_case(const detail::Quadrant<double, bool>& q, const Vec2
   };
   PointEllipseResult result;
   result.inside = q.inside;
-  result.distance = std::hypot(c.x() - q.y0, c.y() - q.y1);
+  result.distance = detail::hypotenuse(c.x() - q.y0, c.y() - q.y1);
   result.closest = unswap(c);
   result.normal = unswap(g);
   return result;

@@ -156,11 +156,13 @@ Direction<Real> best_direction(const EllipsePair<Real>& p, const V2<Real>& n0, i
   };
   if (converged(first)) return last;
   const std::pair<Real, Real> at_start(turn * first.slope, -first.bend * 2 * halley(first, Real(0)));
-  // Bisect the angle, not tau: halving tau from 1e9 would take thirty steps to reach the arc.
+  // Bisect the angle, not tau: halving tau from 1e9 would take thirty steps to reach the arc. The
+  // tangent of the mean of two angles is the sum of their sines over the sum of their cosines, which
+  // square roots give from the tangents, exactly rounded on every platform.
   const auto mid = [](Real lo, Real hi) {
-    using std::atan;
-    using std::tan;
-    return tan((atan(lo) + atan(hi)) / 2);
+    using std::sqrt;
+    const Real secant_lo = sqrt(1 + lo * lo), secant_hi = sqrt(1 + hi * hi);
+    return (lo * secant_hi + hi * secant_lo) / (secant_lo + secant_hi);
   };
   const Real tau = newton_in_bracket(f, Real(0), Real(1e9), at_start, iterations, mid, true);
   Direction<Real> end = last;

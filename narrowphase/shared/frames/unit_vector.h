@@ -4,6 +4,8 @@
 
 #include <collide2d/shapes.h>
 
+#include "shapes/internal.h"
+
 #include <cmath>
 
 namespace collide2d::detail {
@@ -27,7 +29,7 @@ inline LengthAndDirection length_and_direction(const Vec2& v) {
     const double length = std::sqrt(squared);
     return {length, v / length};
   }
-  const double length = std::hypot(v.x(), v.y());
+  const double length = hypotenuse(v.x(), v.y());
   if (!(length > 0)) return {};
   return {length, Vec2(v / v.cwiseAbs().maxCoeff()).normalized()};
 }

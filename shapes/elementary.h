@@ -1,0 +1,26 @@
+// Private: the elementary functions the library calls, its own so that every platform computes the
+// same bits (the C libraries' sin, cos, atan2 and hypot differ in their last bits). Plain double
+// operations with double-double intermediates: each result is within one ulp of the exact value
+// (one of the two doubles around it), for every double argument. docs/determinism.md gives the
+// conditions; tests/unit/test_elementary.cpp measures the error against 50-digit values.
+#pragma once
+
+namespace collide2d::detail {
+
+struct CosSin {
+  double c = 1;
+  double s = 0;
+};
+
+// cos(angle) and sin(angle), reduced by the exact multiple of pi/2 (Payne and Hanek, "Radian
+// reduction for trigonometric functions", 1983), so that a large angle loses no digits. NaN for an
+// infinite or NaN angle.
+CosSin cos_sin(double angle);
+
+// The angle of (x, y) in [-pi, pi], with the signs of zero and the infinities as C's atan2.
+double arc_tangent(double y, double x);
+
+// sqrt(x^2 + y^2) without overflow or underflow in between; +inf when either is infinite.
+double hypotenuse(double x, double y);
+
+}  // namespace collide2d::detail
