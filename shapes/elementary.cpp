@@ -4,6 +4,7 @@
 
 #include <array>
 #include <bit>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -117,7 +118,9 @@ Reduced reduce_near(double angle) {
 // mod 4 from the product of the angle's 53-bit significand with 192 bits of 2/pi, exact to 2^-137.
 // The bits of 2/pi before those add multiples of 4; the bits after, less than 2^-137.
 Reduced reduce_far(double angle) {
-  const u64 bits = std::bit_cast<u64>(std::abs(angle));
+  const double magnitude = std::abs(angle);
+  u64 bits;
+  std::memcpy(&bits, &magnitude, sizeof bits);  // std::bit_cast, which Emscripten's C++ library lacks
   const int exponent = static_cast<int>(bits >> 52) - 1075;  // magnitude = significand 2^exponent
   const u64 significand = (bits & ((u64{1} << 52) - 1)) | (u64{1} << 52);
   const int skipped = std::max(0, exponent - 2);
