@@ -4,9 +4,9 @@
 
 #include <array>
 #include <bit>
-#include <cstring>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -104,12 +104,13 @@ struct Reduced {
 // 2^-62 (Muller, "Elementary Functions", chapter 11). Either sign, and no branch: game angles fall
 // on both sides of every threshold at random.
 Reduced reduce_near(double angle) {
-  const double k = (angle * kTwoOverPiNearest + 0x1.8p52) - 0x1.8p52;             // rounds to an integer
-  DoubleDouble r = two_sum(angle - k * kHalfPiParts[0], -(k * kHalfPiParts[1]));  // Sterbenz: exact
+  const double k = (angle * kTwoOverPiNearest + 0x1.8p52) - 0x1.8p52;                   // rounds to an integer
+  const DoubleDouble r = two_sum(angle - k * kHalfPiParts[0], -(k * kHalfPiParts[1]));  // Sterbenz: exact
   const DoubleDouble s = two_sum(r.hi, -(k * kHalfPiParts[2]));
-  r = fast_two_sum(s.hi, s.lo + r.lo - k * kHalfPiParts[3]);
+  // Not renormalized: the kernel needs lo only as a first-order correction, and the high part is
+  // ready sooner.
   Reduced out;
-  out.r = r;
+  out.r = {s.hi, s.lo + r.lo - k * kHalfPiParts[3]};
   out.quadrant = static_cast<unsigned>(static_cast<std::int64_t>(k) & 3);
   return out;
 }
@@ -120,7 +121,7 @@ Reduced reduce_near(double angle) {
 Reduced reduce_far(double angle) {
   const double magnitude = std::abs(angle);
   u64 bits;
-  std::memcpy(&bits, &magnitude, sizeof bits);  // std::bit_cast, which Emscripten's C++ library lacks
+  std::memcpy(&bits, &magnitude, sizeof bits);               // std::bit_cast, which Emscripten's C++ library lacks
   const int exponent = static_cast<int>(bits >> 52) - 1075;  // magnitude = significand 2^exponent
   const u64 significand = (bits & ((u64{1} << 52) - 1)) | (u64{1} << 52);
   const int skipped = std::max(0, exponent - 2);
