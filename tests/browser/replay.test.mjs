@@ -115,6 +115,11 @@ try {
   // scrolls, and the view takes the room they leave.
   for (const [width, height] of [[1280, 800], [1920, 1080]]) {
     await page.setViewport({ width, height });
+    // The page fits its canvases in its resize handler, which may run after setViewport returns.
+    await page.waitForFunction(([w, h]) => {
+      const view = document.getElementById('view');
+      return view.width >= w - 400 && view.height >= h - 400;
+    }, { timeout: 10000 }, [width, height]).catch(() => {});
     const layout = await page.evaluate(([w, h]) => {
       const shown = (el) => {
         const r = el.getBoundingClientRect();
