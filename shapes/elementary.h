@@ -5,6 +5,8 @@
 // conditions; tests/unit/test_elementary.cpp measures the error against 50-digit values.
 #pragma once
 
+#include "shapes/double_double.h"
+
 namespace collide2d::detail {
 
 struct CosSin {
@@ -12,10 +14,19 @@ struct CosSin {
   double s = 0;
 };
 
+struct ExtendedCosSin {
+  DoubleDouble c = 1;
+  DoubleDouble s = 0;
+};
+
 // cos(angle) and sin(angle), reduced by the exact multiple of pi/2 (Payne and Hanek, "Radian
 // reduction for trigonometric functions", 1983), so that a large angle loses no digits. NaN for an
 // infinite or NaN angle.
 CosSin cos_sin(double angle);
+
+// cos(angle) and sin(angle) as double-doubles, each within 2^-102 of the exact value: the rotations
+// of the extended-precision fallbacks.
+ExtendedCosSin cos_sin_extended(double angle);
 
 // The angle of (x, y) in [-pi, pi], with the signs of zero and the infinities as C's atan2.
 double arc_tangent(double y, double x);

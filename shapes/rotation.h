@@ -18,13 +18,13 @@ struct Rotation {
   Real s = 0;
 
   static Rotation of(double angle) {
+    static_assert(std::is_same_v<Real, double> || std::is_same_v<Real, DoubleDouble>);
     if constexpr (std::is_same_v<Real, double>) {
       const CosSin r = cos_sin(angle);
       return {r.c, r.s};
     } else {
-      using std::cos;
-      using std::sin;
-      return {cos(static_cast<Real>(angle)), sin(static_cast<Real>(angle))};
+      const ExtendedCosSin r = cos_sin_extended(angle);
+      return {r.c, r.s};
     }
   }
   static Rotation of(const Orientation& o) { return {static_cast<Real>(o.c), static_cast<Real>(o.s)}; }

@@ -18,7 +18,7 @@
 namespace collide2d {
 
 /// overlaps(a, b) with each shape's kept orientation: the same verdict bit for bit, with no
-/// validation and no sines and cosines (but in the ellipse pair's long-double fallback, for a pair
+/// validation and no sines and cosines (but in the ellipse pair's double-double fallback, for a pair
 /// within about 1e-14 of touching).
 bool overlaps(const Shape& a, const Orientation& a_orientation, const Shape& b, const Orientation& b_orientation);
 /// contact(a, b, options) with each shape's kept orientation: the same contact bit for bit, with no
@@ -34,7 +34,7 @@ bool overlap_rect_rect(const Rect& a, const Orientation& a_orientation, const Re
 bool overlap_rect_circle(const Rect& r, const Circle& c);
 bool overlap_rect_circle(const Rect& r, const Orientation& r_orientation, const Circle& c);
 /// Overlap of a rectangle and an ellipse: the ellipse centre against the Minkowski sum, decided in
-/// double where its margins clear their rounding bounds, else in long double.
+/// double where its margins clear their rounding bounds, else in double-double.
 bool overlap_rect_ellipse(const Rect& r, const Ellipse& e);
 bool overlap_rect_ellipse(const Rect& r, const Orientation& r_orientation, const Ellipse& e,
                           const Orientation& e_orientation);
@@ -44,7 +44,7 @@ bool overlap_circle_circle(const Circle& a, const Circle& b);
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e);
 bool overlap_circle_ellipse(const Circle& c, const Ellipse& e, const Orientation& e_orientation);
 /// Overlap of two ellipses: the pencil's characteristic cubic where its signs clear their error
-/// bounds, else GJK on the exact support functions, in long double near touching.
+/// bounds, else GJK on the exact support functions, in double-double near touching.
 bool overlap_ellipse_ellipse(const Ellipse& a, const Ellipse& b);
 bool overlap_ellipse_ellipse(const Ellipse& a, const Orientation& a_orientation, const Ellipse& b,
                              const Orientation& b_orientation);

@@ -20,19 +20,19 @@ using detail::EllipsePair;
 using detail::SolverReport;
 using V2 = detail::V2<double>;
 
-// A pair found apart only in long double (double puts s at 0 or below): s at the long-double maximum,
+// A pair found apart only in double-double (double puts s at 0 or below): s at the double-double maximum,
 // the certified distance between the support lines (kept positive by DistanceResult::apart), with
 // A's support point and that point moved by s along n.
 SolverReport separated_by_rounding(const Ellipse& a, const Ellipse& b, const detail::EllipseContact& contact,
                                    int iterations) {
-  const auto pair = EllipsePair<long double>::of(a, b);
-  const detail::V2<long double> n0 = pair.from_world({contact.direction.x(), contact.direction.y()});
+  const auto pair = EllipsePair<detail::DoubleDouble>::of(a, b);
+  const detail::V2<detail::DoubleDouble> n0 = pair.from_world({contact.direction.x(), contact.direction.y()});
   const auto best = detail::best_direction(pair, n0, iterations);
-  const long double s = std::max(best.at.s, 0.0L);
-  const detail::V2<long double> pa = best.at.offset_a;
-  const detail::V2<long double> pb = pa + s * best.n;
-  const auto world = [&pair](const Vec2& c, const detail::V2<long double>& p) {
-    const detail::V2<long double> w = pair.to_world(p);
+  const detail::DoubleDouble s = std::max(best.at.s, detail::DoubleDouble(0));
+  const detail::V2<detail::DoubleDouble> pa = best.at.offset_a;
+  const detail::V2<detail::DoubleDouble> pb = pa + s * best.n;
+  const auto world = [&pair](const Vec2& c, const detail::V2<detail::DoubleDouble>& p) {
+    const detail::V2<detail::DoubleDouble> w = pair.to_world(p);
     return Vec2(c.x() + static_cast<double>(w[0]), c.y() + static_cast<double>(w[1]));
   };
   return {DistanceResult::apart(static_cast<double>(s), world(a.center, pa), world(a.center, pb)), iterations, true};

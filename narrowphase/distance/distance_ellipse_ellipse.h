@@ -4,7 +4,7 @@
 // closest points.
 //
 // Method. Solid distance: the overlap decision of overlap_ellipse_ellipse.h (GJK on
-//   the exact support functions, long double when double cannot decide) yields either a common
+//   the exact support functions, double-double when double cannot decide) yields either a common
 //   point or a direction n0 that separates. From n0, safeguarded Newton maximises the separation
 //   s(n) = n.(c_B - c_A) - h_A(n) - h_B(n) over the angle of n: on the arc of separating
 //   directions s is concave (s'' = -(s + rho_A + rho_B), rho the radii of curvature at the support

@@ -44,7 +44,7 @@ bool clearly_inside(const EllipseSupport<double>& e, const Vec2& p) {
 // where its cosine and sine carry dc and ds, a few u of their magnitudes (EllipsePair::turn). An
 // allowance of (a + b) u, whatever the turn, would be far too wide for two needles turned by a tiny
 // angle from each other: for needles 2.4e24 and 5.1e25 long turned by 1e-297 and 0.56 apart across
-// their axes it is 1e9 times the gap, and the pair would go to GJK, whose long double pass cannot
+// their axes it is 1e9 times the gap, and the pair would go to GJK, whose double-double pass cannot
 // decide it (NeedlesTurnedByTinyAnglesApartAcrossAxes).
 bool boxes_apart(const EllipsePair<double>& p, const Vec2& d, Vec2& axis) {
   const bool a_frame = std::max(p.A.a, p.A.b) >= std::max(p.B.a, p.B.b);
@@ -133,10 +133,10 @@ EllipseContact ellipse_contact(const Ellipse& a, const Ellipse& b, std::optional
   }
   if (double_verdict) *double_verdict = verdict;
   if (verdict != FilterVerdict::uncertain || double_verdict) return out;
-  const auto wide = EllipsePair<long double>::of(a, b);
+  const auto wide = EllipsePair<DoubleDouble>::of(a, b);
   const auto g = decide(wide);
   EllipseContact last = from_gjk(g, wide, a, out.iterations + g.iterations);
-  // Within long double rounding of touching: the sign of s at the maximum is the best evidence.
+  // Within double-double rounding of touching: the sign of s at the maximum is the best evidence.
   if (g.verdict == FilterVerdict::uncertain) last.overlap = !(g.separation > 0);
   return last;
 }

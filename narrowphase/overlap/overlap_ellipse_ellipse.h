@@ -20,10 +20,10 @@
 // (overlap_batch.cpp) on vectors of pairs.
 //
 // Filter and fallback. The double pass answers `uncertain` only when the pair is within
-// 64 u (|c_B - c_A| + a_max + b_max) of touching; the same iteration then runs in long double
-// (64-bit significand on x86-64); a pair still within its bound (about 1e-17 of the scale) is
-// decided by the sign of s at the best direction found in long double, and s = 0 counts as
-// touching, so as overlap.
+// 64 u (|c_B - c_A| + a_max + b_max) of touching; the same iteration then runs in double-double
+// (104-bit significand); a pair still within its bound (about 3e-30 of the scale) is decided by the
+// sign of s at the best direction found in double-double, and s = 0 counts as touching, so as
+// overlap.
 #pragma once
 
 #include "narrowphase/overlap/overlap_rect_ellipse.h"  // FilterVerdict

@@ -34,7 +34,7 @@ bool detail::minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r,
 }
 
 bool detail::minkowski_fallback(const Rect& r, const Ellipse& e) {
-  return detail::closest_features_overlap(detail::rect_ellipse_frame<long double>(r, e));
+  return detail::closest_features_overlap(detail::rect_ellipse_frame<DoubleDouble>(r, e));
 }
 
 detail::FilterVerdict detail::overlap_rect_ellipse_filter(const Rect& r, const Ellipse& e) {

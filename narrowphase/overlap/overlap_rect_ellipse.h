@@ -19,8 +19,8 @@
 //   Filter: every decision quantity carries a forward error bound (16 u L for lengths, where
 //   u = 2^-53 and L = |x0| + |x1| + e0 + e1 + a + b in the rectangle frame, propagated to Q and to
 //   the cone coordinates, then doubled). When a margin lies inside its bound the pair goes to the
-//   fallback: the closest-features test evaluated in long double (64-bit significand on x86-64,
-//   113-bit on AArch64), recomputing the frame from the raw shapes with cosl/sinl.
+//   fallback: the closest-features test evaluated in double-double (104-bit significand, the same
+//   on every platform), recomputing the frame from the raw shapes with cos_sin_extended.
 //   The fallback, closest features: the minimum of the ellipse quadratic over the one or two
 //   rectangle edges facing the ellipse centre, in closed form (Lagrange and a clamp).
 //

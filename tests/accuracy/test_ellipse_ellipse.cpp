@@ -69,7 +69,7 @@ TEST_P(EllipseFamilies, MeetTargets) { run_family(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Standard, EllipseFamilies, ::testing::ValuesIn(ellipse_families()),
                          [](const auto& info) { return test_name(info.param); });
 
-// Gaps at the rounding level: the long-double fallback decides them, and run_family asserts that
+// Gaps at the rounding level: the double-double fallback decides them, and run_family asserts that
 // the verdict agrees with the exact verdict of the rounded input.
 TEST(EllipseRounding, FallbackDecidesRoundingLevelContacts) {
   for (const double aspect : {1.0, 1e3}) {

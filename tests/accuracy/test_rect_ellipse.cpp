@@ -30,7 +30,7 @@ INSTANTIATE_TEST_SUITE_P(Standard, RectEllipseFamilies,
                          [](const auto& info) { return test_name(info.param); });
 
 // Gaps at the rounding level: the filter must defer, and run_family asserts that the default
-// verdict (the long-double fallback) matches the exact verdict of the rounded input.
+// verdict (the double-double fallback) matches the exact verdict of the rounded input.
 TEST(RectEllipseRounding, FallbackDecidesRoundingLevelContacts) {
   for (const double aspect : {1.0, 1e3, 1e6}) {
     char name[64];

@@ -3,16 +3,20 @@
 // under one ulp), on random arguments over the whole range of doubles and on the hard cases: angles
 // nearest multiples of pi/2 (where the reduction cancels most digits), ratios at the arc tangent's
 // breakpoints, squares that would overflow or underflow. The special values follow C's functions.
+// The double-double cosine and sine must be within 2^-102 of the exact values on the same angles,
+// and the double-double operators (shapes/double_double.h) within 2^-103 relative.
 #include "shapes/elementary.h"
 
 #include <gtest/gtest.h>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
@@ -44,31 +48,45 @@ double random_double(std::mt19937_64& rng, int low, int high) {
   return (rng() & 1 ? -1.0 : 1.0) * std::ldexp(significand, exponent);
 }
 
+// The largest errors seen: of the doubles in ulps, of the double-doubles in units of 2^-102.
+struct Worst {
+  double ulps = 0;
+  double extended = 0;
+};
+
 template <class Real>
-void expect_cos_sin(double angle, double& worst) {
+void expect_cos_sin(double angle, Worst& worst) {
   const detail::CosSin got = detail::cos_sin(angle);
-  const Real x(angle);
-  ASSERT_TRUE(faithful(got.c, Real(cos(x)), worst)) << "cos " << std::hexfloat << angle << " gave " << got.c;
-  ASSERT_TRUE(faithful(got.s, Real(sin(x)), worst)) << "sin " << std::hexfloat << angle << " gave " << got.s;
+  const Real x(angle), c = cos(x), s = sin(x);
+  ASSERT_TRUE(faithful(got.c, c, worst.ulps)) << "cos " << std::hexfloat << angle << " gave " << got.c;
+  ASSERT_TRUE(faithful(got.s, s, worst.ulps)) << "sin " << std::hexfloat << angle << " gave " << got.s;
+  const detail::ExtendedCosSin wide = detail::cos_sin_extended(angle);
+  for (const auto& [value, exact] : {std::pair{wide.c, c}, std::pair{wide.s, s}}) {
+    const Real error = abs(Real(value.hi) + Real(value.lo) - exact) * Real(0x1p102);
+    worst.extended = std::max(worst.extended, static_cast<double>(error));
+  }
 }
 
 TEST(Elementary, CosSinAreFaithfulOnAnglesOfGames) {
   std::mt19937_64 rng(1);
-  double worst = 0;
+  Worst worst;
   for (int k = 0; k < 20000; ++k) expect_cos_sin<Real50>(random_double(rng, -30, 5), worst);
-  EXPECT_LT(worst, 1.0);
-  std::printf("cos and sin, |angle| below 64: largest error %.3f ulp\n", worst);
+  EXPECT_LT(worst.ulps, 1.0);
+  EXPECT_LT(worst.extended, 1.0);
+  std::printf("cos and sin, |angle| below 64: largest error %.3f ulp, double-double %.3g x 2^-102\n", worst.ulps,
+              worst.extended);
 }
 
 // Every exponent up to the largest double reads another stretch of the table of 2/pi.
 TEST(Elementary, CosSinAreFaithfulOverTheWholeRange) {
   std::mt19937_64 rng(2);
-  double worst = 0;
+  Worst worst;
   for (int exponent = 6; exponent <= 1023; exponent += 3) {
     expect_cos_sin<Real1300>(random_double(rng, exponent, exponent), worst);
   }
   expect_cos_sin<Real1300>(std::numeric_limits<double>::max(), worst);
-  EXPECT_LT(worst, 1.0);
+  EXPECT_LT(worst.ulps, 1.0);
+  EXPECT_LT(worst.extended, 1.0);
 }
 
 // The doubles nearest k pi/2 leave the smallest reduced angles: there the reduction must keep its
@@ -76,7 +94,7 @@ TEST(Elementary, CosSinAreFaithfulOverTheWholeRange) {
 // chapter 11: 6381956970095103 2^797).
 TEST(Elementary, CosSinKeepTheirDigitsNearMultiplesOfHalfPi) {
   const Real50 half_pi = boost::math::constants::half_pi<Real50>();
-  double worst = 0;
+  Worst worst;
   // Small multiples, and those either side of 2^20, where the reduction changes method.
   std::vector<int> multiples;
   for (int k = 1; k <= 3000; ++k) multiples.push_back(k);
@@ -89,7 +107,8 @@ TEST(Elementary, CosSinKeepTheirDigitsNearMultiplesOfHalfPi) {
     }
   }
   expect_cos_sin<Real1300>(std::ldexp(6381956970095103.0, 797), worst);
-  EXPECT_LT(worst, 1.0);
+  EXPECT_LT(worst.ulps, 1.0);
+  EXPECT_LT(worst.extended, 1.0);
 }
 
 TEST(Elementary, CosSinOfSpecialValues) {
@@ -99,6 +118,8 @@ TEST(Elementary, CosSinOfSpecialValues) {
   for (const double bad : {kInf, -kInf, std::numeric_limits<double>::quiet_NaN()}) {
     EXPECT_TRUE(std::isnan(detail::cos_sin(bad).c));
     EXPECT_TRUE(std::isnan(detail::cos_sin(bad).s));
+    EXPECT_TRUE(std::isnan(detail::cos_sin_extended(bad).c.hi));
+    EXPECT_TRUE(std::isnan(detail::cos_sin_extended(bad).s.hi));
   }
 }
 
@@ -202,6 +223,74 @@ TEST(Elementary, HypotenuseIsFaithfulWithoutOverflowOrUnderflow) {
   EXPECT_EQ(detail::hypotenuse(std::nan(""), -kInf), kInf);
   EXPECT_TRUE(std::isnan(detail::hypotenuse(std::nan(""), 1.0)));
   EXPECT_EQ(detail::hypotenuse(-0.0, 0.0), 0.0);
+}
+
+// A normalized double-double of either sign with its high part's exponent in [low, high] and a
+// random low part.
+detail::DoubleDouble random_double_double(std::mt19937_64& rng, int low, int high) {
+  const double hi = random_double(rng, low, high);
+  const double lo = hi * 0x1p-53 * (static_cast<double>(rng() >> 11) * 0x1p-53 - 0.5);
+  return detail::fast_two_sum(hi, lo);
+}
+
+Real50 exact(const detail::DoubleDouble& x) { return Real50(x.hi) + Real50(x.lo); }
+
+// The largest relative error of each operator over random operands, cancelling sums among them.
+TEST(DoubleDouble, OperatorsAreWithinTwoToTheMinus103) {
+  std::mt19937_64 rng(5);
+  double worst[5] = {};
+  const auto check = [&](int op, const detail::DoubleDouble& got, const Real50& want) {
+    ASSERT_EQ(got.hi, got.hi + got.lo) << "not normalized, operator " << op;
+    if (want == 0) return;
+    worst[op] = std::max(worst[op], static_cast<double>(abs((exact(got) - want) / want)) * 0x1p104);
+  };
+  for (int k = 0; k < 100000; ++k) {
+    const detail::DoubleDouble a = random_double_double(rng, -40, 40), b = random_double_double(rng, -40, 40);
+    // b's high part near a's: the sum cancels most of a's digits.
+    const detail::DoubleDouble near =
+        detail::fast_two_sum(-a.hi * (1 + static_cast<double>(rng() >> 40) * 0x1p-50), b.lo * 0x1p-40);
+    check(0, a + b, exact(a) + exact(b));
+    check(0, a + near, exact(a) + exact(near));
+    check(1, a - b, exact(a) - exact(b));
+    check(2, a * b, exact(a) * exact(b));
+    check(3, a / b, exact(a) / exact(b));
+    check(4, sqrt(abs(a)), sqrt(abs(exact(a))));
+  }
+  for (const double w : worst) EXPECT_LT(w, 2.0);
+  std::printf("double-double + - * / sqrt: largest relative errors %.3f %.3f %.3f %.3f %.3f x 2^-104\n", worst[0],
+              worst[1], worst[2], worst[3], worst[4]);
+}
+
+TEST(DoubleDouble, ComparisonsOrderAsTheExactValues) {
+  std::mt19937_64 rng(6);
+  for (int k = 0; k < 100000; ++k) {
+    const detail::DoubleDouble a = random_double_double(rng, -3, 3);
+    // Half the pairs share the high part, so the low parts decide.
+    const detail::DoubleDouble b =
+        k % 2 == 0 ? random_double_double(rng, -3, 3) : detail::fast_two_sum(a.hi, random_double_double(rng, -3, 3).lo);
+    const Real50 x = exact(a), y = exact(b);
+    ASSERT_EQ(a < b, x < y);
+    ASSERT_EQ(a <= b, x <= y);
+    ASSERT_EQ(a > b, x > y);
+    ASSERT_EQ(a >= b, x >= y);
+    ASSERT_EQ(a == b, x == y);
+  }
+}
+
+// Infinities stay in the high part, as they would in a long double.
+TEST(DoubleDouble, InfinitiesAndNaNs) {
+  const detail::DoubleDouble inf = std::numeric_limits<detail::DoubleDouble>::infinity();
+  EXPECT_EQ((inf / 2).hi, kInf);
+  EXPECT_EQ((inf * 3).hi, kInf);
+  EXPECT_EQ((inf + 1).hi, kInf);
+  EXPECT_EQ((detail::DoubleDouble(1) / inf).hi, 0.0);
+  EXPECT_TRUE(detail::DoubleDouble(1e300) < inf);
+  EXPECT_TRUE(-inf < detail::DoubleDouble(-1e300));
+  EXPECT_TRUE(std::isnan((inf - inf).hi));
+  EXPECT_TRUE(std::isnan((detail::DoubleDouble(0) / 0).hi));
+  EXPECT_TRUE(std::isnan(sqrt(detail::DoubleDouble(-1)).hi));
+  const detail::DoubleDouble nan = std::numeric_limits<detail::DoubleDouble>::quiet_NaN();
+  EXPECT_FALSE(nan < 1 || nan > 1 || nan == nan || nan <= 1 || nan >= 1);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Private: two solid ellipses seen through their exact support functions, generic over the scalar
-// so that the overlap test can repeat itself in long double when double cannot decide.
+// so that the overlap test can repeat itself in double-double when double cannot decide.
 //
 // For an ellipse centred at the origin and a unit direction n, the support function is
 // h(n) = |(a n_u, b n_v)| (n_u, n_v the components of n on the ellipse axes), the support point is
@@ -245,7 +245,8 @@ struct GjkSimplex {
       const Real l2 = cross(v[0].w, v[1].w) / area;
       if (l0 >= 0 && l1 >= 0 && l2 >= 0) {
         weight[0] = l0, weight[1] = l1, weight[2] = l2;
-        depth = std::abs(area) *
+        using std::abs;
+        depth = abs(area) *
                 std::min({l0 / (v[2].w - v[1].w).norm(), l1 / (v[0].w - v[2].w).norm(), l2 / (v[1].w - v[0].w).norm()});
         return true;
       }

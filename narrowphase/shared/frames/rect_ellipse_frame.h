@@ -1,5 +1,5 @@
 // Private: the rectangle–ellipse pair expressed in the rectangle's frame, generic over the scalar
-// so that one implementation of each test serves double precision and the long-double fallback.
+// so that one implementation of each test serves double precision and the double-double fallback.
 //
 // In that frame the rectangle is [-e0, e0] x [-e1, e1], the ellipse centre is x = (x0, x1), and the
 // ellipse's a-axis has direction (c, s). For a point p the ellipse quadratic is evaluated from the
@@ -130,8 +130,8 @@ inline RectEllipseLanes<double> rect_ellipse_lanes(const RectEllipseFrame<double
   return {f.x[0], f.x[1], f.e[0], f.e[1], f.c, f.s, f.a, f.b};
 }
 
-// The default rect–ellipse overlap test (filter, then long-double fallback) on a frame the caller has
-// already built from r and e; the fallback rebuilds it in long double from the raw shapes.
+// The default rect–ellipse overlap test (filter, then double-double fallback) on a frame the caller
+// has already built from r and e; the fallback rebuilds it in double-double from the raw shapes.
 bool minkowski_overlap(const RectEllipseFrame<double>& f, const Rect& r, const Ellipse& e);
 // The fallback alone: the verdict for a pair the filter left uncertain.
 bool minkowski_fallback(const Rect& r, const Ellipse& e);
