@@ -1,7 +1,8 @@
 #include <collide2d/aabb_tree.h>
 
+#include "shapes/internal.h"
+
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -16,8 +17,8 @@ constexpr float kMax = std::numeric_limits<float>::max();
 // update, and a library call each would be a noticeable part of a frame.
 float step(float f, bool up) {
   if (f == 0.0f) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>((f > 0.0f) == up ? bits + 1 : bits - 1);
+  const auto bits = detail::bit_copy<std::uint32_t>(f);
+  return detail::bit_copy<float>((f > 0.0f) == up ? bits + 1 : bits - 1);
 }
 
 // A float at or below x (at or above, for up), one more step out: see the header.

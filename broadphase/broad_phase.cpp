@@ -19,7 +19,6 @@
 #include "shapes/internal.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -52,7 +51,7 @@ bool before(double ka, std::uint32_t ta, double kb, std::uint32_t tb) {
 
 // An unsigned key with the order of the doubles (-0.0 is folded into +0.0 by the caller).
 std::uint64_t ordered_bits(double x) {
-  const auto u = std::bit_cast<std::uint64_t>(x);
+  const auto u = detail::bit_copy<std::uint64_t>(x);
   return (u >> 63) != 0 ? ~u : u | (std::uint64_t{1} << 63);
 }
 

@@ -4,8 +4,8 @@
 #include <collide2d/world.h>
 
 #include "engine/world_state.h"
+#include "shapes/internal.h"
 
-#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -20,7 +20,7 @@ class Digest {
     h_ = (h_ ^ w) * 0x100000001b3u;
     h_ ^= h_ >> 32;
   }
-  void real(double x) { word(std::bit_cast<std::uint64_t>(x)); }
+  void real(double x) { word(detail::bit_copy<std::uint64_t>(x)); }
   void point(const Vec2& p) {
     real(p.x());
     real(p.y());

@@ -3,16 +3,16 @@
 namespace collide2d::detail {
 
 ThreadPool::ThreadPool(unsigned threads) {
-  for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this](std::stop_token stop) { work(stop); });
+  for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this] { work(); });
 }
 
 ThreadPool::~ThreadPool() {
-  for (std::jthread& w : workers_) w.request_stop();
   {
-    const std::lock_guard lock(mutex_);  // no worker between its check of stop and its wait
+    const std::lock_guard lock(mutex_);  // no worker between its check of stopping_ and its wait
+    stopping_ = true;
   }
   wake_.notify_all();
-  workers_.clear();  // joined here, while the mutex and condition variables they use still exist
+  for (std::thread& w : workers_) w.join();  // here, while the mutex and condition variables they use still exist
 }
 
 // Takes tasks until none is left.
@@ -40,13 +40,13 @@ void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& 
   task_ = nullptr;
 }
 
-void ThreadPool::work(std::stop_token stop) {
+void ThreadPool::work() {
   std::uint64_t seen = 0;
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop.stop_requested() || generation_ != seen; });
-      if (stop.stop_requested()) return;
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
       seen = generation_;
     }
     drain();

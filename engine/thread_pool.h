@@ -1,9 +1,10 @@
-// A small pool of std::jthread workers for the World's per-frame work: run(count, task) calls
+// A small pool of std::thread workers for the World's per-frame work: run(count, task) calls
 // task(k) for every k in [0, count), spread over the workers and the calling thread, and returns when
 // all calls are done. Tasks are taken in order from an atomic counter, so a slow one does not hold
-// the others back. The workers sleep on a condition variable between runs. std::jthread rather than
-// oneTBB: the World needs one parallel loop per phase and nothing of TBB's scheduler, and the
-// library keeps linking only Eigen (and the standard library's threads).
+// the others back. The workers sleep on a condition variable between runs. Standard threads rather
+// than oneTBB: the World needs one parallel loop per phase and nothing of TBB's scheduler, and the
+// library keeps linking only Eigen (and the standard library's threads). std::thread rather than
+// std::jthread, which the C++ library of Emscripten 3.1 lacks.
 #pragma once
 
 #include <atomic>
@@ -29,7 +30,7 @@ class ThreadPool {
   void run(std::size_t count, const std::function<void(std::size_t)>& task);
 
  private:
-  std::vector<std::jthread> workers_;
+  std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable done_;
@@ -38,8 +39,9 @@ class ThreadPool {
   std::atomic<std::size_t> next_{0};
   std::size_t busy_ = 0;          // workers still in the current run
   std::uint64_t generation_ = 0;  // one per run, so that a worker joins each run once
+  bool stopping_ = false;         // set under the mutex when the pool closes
 
-  void work(std::stop_token stop);
+  void work();
   void drain();
 };
 

@@ -1,12 +1,12 @@
 #include "shapes/elementary.h"
 
+#include "shapes/bits.h"
 #include "shapes/double_double.h"
 
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -148,8 +148,7 @@ Reduced reduce_near(double angle) {
 // The bits of 2/pi before those add multiples of 4; the bits after, less than 2^-137.
 Reduced reduce_far(double angle) {
   const double magnitude = std::abs(angle);
-  u64 bits;
-  std::memcpy(&bits, &magnitude, sizeof bits);               // std::bit_cast, which Emscripten's C++ library lacks
+  const u64 bits = bit_copy<u64>(magnitude);
   const int exponent = static_cast<int>(bits >> 52) - 1075;  // magnitude = significand 2^exponent
   const u64 significand = (bits & ((u64{1} << 52) - 1)) | (u64{1} << 52);
   const int skipped = std::max(0, exponent - 2);

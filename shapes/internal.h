@@ -1,9 +1,10 @@
 // The shapes module's interface to the rest of the library (not installed): rotations generic over
-// the scalar, and the form of every validation message.
+// the scalar, a value's bits, and the form of every validation message.
 #pragma once
 
 #include <collide2d/shapes.h>
 
+#include "shapes/bits.h"
 #include "shapes/rotation.h"
 
 #include <Eigen/Core>

@@ -8,11 +8,11 @@
 // its high bytes zero.
 #include <collide2d/replay.h>
 
+#include "shapes/internal.h"
 #include "shapes/kinds.h"
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -51,7 +51,7 @@ void put(Bytes& out, std::uint64_t v) {
   put(out, static_cast<std::uint32_t>(v));
   put(out, static_cast<std::uint32_t>(v >> 32));
 }
-void put(Bytes& out, float v) { put(out, std::bit_cast<std::uint32_t>(v)); }
+void put(Bytes& out, float v) { put(out, detail::bit_copy<std::uint32_t>(v)); }
 void put(Bytes& out, double v) { put(out, static_cast<float>(v)); }
 void put(Bytes& out, const Vec2& v) {
   put(out, v.x());
@@ -106,15 +106,15 @@ Bytes form_of(const World& world, BodyId body, ShapeId id) {
 // A shape's pose words: its centre (a segment's first point) and angle.
 std::array<std::uint32_t, 3> pose_words(const Shape& s) {
   const Vec2 c = center_of(s);
-  return {std::bit_cast<std::uint32_t>(static_cast<float>(c.x())),
-          std::bit_cast<std::uint32_t>(static_cast<float>(c.y())),
-          std::bit_cast<std::uint32_t>(static_cast<float>(angle_of(s)))};
+  return {detail::bit_copy<std::uint32_t>(static_cast<float>(c.x())),
+          detail::bit_copy<std::uint32_t>(static_cast<float>(c.y())),
+          detail::bit_copy<std::uint32_t>(static_cast<float>(angle_of(s)))};
 }
 std::array<std::uint32_t, 4> box_words(const Aabb& b) {
-  return {std::bit_cast<std::uint32_t>(static_cast<float>(b.min.x())),
-          std::bit_cast<std::uint32_t>(static_cast<float>(b.min.y())),
-          std::bit_cast<std::uint32_t>(static_cast<float>(b.max.x())),
-          std::bit_cast<std::uint32_t>(static_cast<float>(b.max.y()))};
+  return {detail::bit_copy<std::uint32_t>(static_cast<float>(b.min.x())),
+          detail::bit_copy<std::uint32_t>(static_cast<float>(b.min.y())),
+          detail::bit_copy<std::uint32_t>(static_cast<float>(b.max.x())),
+          detail::bit_copy<std::uint32_t>(static_cast<float>(b.max.y()))};
 }
 
 // A word's difference from its prediction as an integer (wrapping), zigzagged so that a small
