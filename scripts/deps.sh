@@ -22,7 +22,7 @@ for p in "${packages[@]}"; do
 done
 if ((test_tools)); then
   # The browser tests (tests/browser): Debian's chromium, and Node.js for puppeteer-core; the
-  # testbed page (tools/testbed): Emscripten.
+  # WebAssembly testbed page and golden scene (scripts/wasm.sh): Emscripten.
   command -v chromium > /dev/null || missing+=(chromium)
   command -v node > /dev/null || missing+=(nodejs)
   command -v emcc > /dev/null || missing+=(emscripten)

@@ -17,7 +17,7 @@ cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 
 # One clang build serves the sanitizers, the fuzzers and clang itself: it builds everything the
-# first build does but the WebAssembly testbed, and runs the suite with AddressSanitizer and
+# first build does but the WebAssembly programs (scripts/wasm.sh), and runs the suite with AddressSanitizer and
 # UndefinedBehaviorSanitizer. The packaging tests build uninstrumented consumers against the
 # instrumented library, which cannot link; the browser tests drive a page the first build wrote the
 # same way; Debian's python3 cannot load an instrumented module: these run in the first build only.

@@ -1,4 +1,4 @@
-// The testbed's WebAssembly module (built by scripts/testbed.sh with Emscripten): a query line of the
+// The testbed's WebAssembly module (built by scripts/wasm.sh with Emscripten): a query line of the
 // command line's grammar in (tools/query_command.h), the answers out, for tools/testbed/testbed.html.
 // The page shows `collide2d query`'s own lines, so that what it shows is what the command prints
 // (to the last bits of the sine and cosine, which WebAssembly's libm may round differently).
