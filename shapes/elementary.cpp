@@ -102,11 +102,18 @@ constexpr std::array<DoubleDouble, 14> extended_series(int first) {
 }
 constexpr std::array<DoubleDouble, 14> kSinTailExtended = extended_series(3), kCosTailExtended = extended_series(4);
 
-// cos r and sin r as double-doubles for a normalized r, |r| <= pi/4: the series by Horner's rule.
+// cos r and sin r as double-doubles for a normalized r, |r| <= pi/4: the series by Horner's rule,
+// its terms from r^17 on in double arithmetic (each below 2^-53 of the result, so that double
+// rounding there costs under 2^-106), the rest in double-double.
 ExtendedCosSin extended_kernel(const DoubleDouble& r) {
   const DoubleDouble z = r * r;
-  DoubleDouble sin_tail = kSinTailExtended.back(), cos_tail = kCosTailExtended.back();
-  for (int k = 12; k >= 0; --k) {
+  double sin_small = kSinTailExtended.back().hi, cos_small = kCosTailExtended.back().hi;
+  for (int k = 12; k >= 7; --k) {
+    sin_small = sin_small * z.hi + kSinTailExtended[k].hi;
+    cos_small = cos_small * z.hi + kCosTailExtended[k].hi;
+  }
+  DoubleDouble sin_tail = sin_small, cos_tail = cos_small;
+  for (int k = 6; k >= 0; --k) {
     sin_tail = sin_tail * z + kSinTailExtended[k];
     cos_tail = cos_tail * z + kCosTailExtended[k];
   }
