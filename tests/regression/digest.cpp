@@ -12,6 +12,7 @@
 #include "narrowphase/baselines/baselines.h"
 #include "narrowphase/internal.h"
 #include "tools/query_command.h"
+#include "tools/random.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_run.h"
 
@@ -375,10 +376,15 @@ void add(Hash& h, const World& world) {
 
 void world_queries(Hash& h, const World& world, const Aabb& arena) {
   std::mt19937_64 rng(7);
-  const auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto u = [&](double lo, double hi) { return tool::uniform(rng, lo, hi); };
   for (int k = 0; k < 200; ++k) {
-    const Vec2 p(u(arena.min.x(), arena.max.x()), u(arena.min.y(), arena.max.y()));
-    const Vec2 d(u(-1, 1), u(-1, 1));
+    // One draw a statement: a call's arguments are evaluated in an order the compiler picks.
+    const double py = u(arena.min.y(), arena.max.y());
+    const double px = u(arena.min.x(), arena.max.x());
+    const Vec2 p(px, py);
+    const double dy = u(-1, 1);
+    const double dx = u(-1, 1);
+    const Vec2 d(dx, dy);
     for (const BodyId id : world.overlapping(Aabb{p, p + Vec2(3, 2)})) h.add(std::uint64_t(id.index));
     for (const BodyId id : world.overlapping(Shape(Ellipse{p, 3, 1, 0.3}))) h.add(std::uint64_t(id.index));
     for (const BodyId id : world.within(p, 2.0)) h.add(std::uint64_t(id.index));

@@ -6,6 +6,7 @@
 
 #include "narrowphase/baselines/baselines.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -33,7 +34,7 @@ constexpr double kDistanceBound = 8 * kU;
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+double uniform(Rng& rng, double lo, double hi) { return tool::uniform(rng, lo, hi); }
 double log_uniform(Rng& rng, double lo, double hi) { return std::exp(uniform(rng, std::log(lo), std::log(hi))); }
 Vec2 unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
