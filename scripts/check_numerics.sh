@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The link audit (ctest link_audit): the library's object files call none of the C library's
-# transcendental functions, whose last bits differ between platforms, and hold no x87 instruction,
-# whose 80-bit registers round differently from doubles (docs/determinism.md). The library computes
-# its own functions, and its extended precision in double-double.
+# The link audit (ctest link_audit): the library's object files, every Highway target's code among
+# them, call none of the C library's transcendental functions, whose last bits differ between
+# platforms; hold no x87 instruction, whose 80-bit registers round differently from doubles; and no
+# fused multiply-add or approximate reciprocal or square root, whose results differ between CPUs
+# that have them and CPUs that do not (docs/determinism.md). The library computes its own
+# functions, and its extended precision in double-double.
 #
 #   bash scripts/check_numerics.sh path/to/libcollide2d.a
 set -euo pipefail
@@ -14,12 +16,19 @@ if [[ -n $calls ]]; then
   echo "$calls"
   exit 1
 fi
-# Every x87 mnemonic begins with f; no SSE or AVX one does.
-x87=$(objdump -d --no-show-raw-insn "$library" |
-  awk '/^[0-9a-f]+ <.*>:$/ { name = $2 } $1 ~ /^[0-9a-f]+:$/ && $2 ~ /^f/ { print name, $2 }' | sort | uniq -c)
-if [[ -n $x87 ]]; then
-  echo "the library holds x87 instructions (count, function, mnemonic):"
-  echo "$x87"
-  exit 1
-fi
-echo "no transcendental function of the C library and no x87 instruction in $(basename "$library")"
+# The functions and mnemonics matching an extended regular expression, counted.
+instructions() {
+  objdump -d --no-show-raw-insn "$library" |
+    awk -v pattern="$1" '/^[0-9a-f]+ <.*>:$/ { name = $2 } $1 ~ /^[0-9a-f]+:$/ && $2 ~ pattern { print name, $2 }' |
+    sort | uniq -c
+}
+# Every x87 mnemonic begins with f, and no SSE or AVX one does.
+for check in 'x87:^f' 'fused multiply-add:^vf(n)?m(add|sub)' 'approximate reciprocal or square root:^v?(rcp|rsqrt)'; do
+  found=$(instructions "${check#*:}")
+  if [[ -n $found ]]; then
+    echo "the library holds ${check%%:*} instructions (count, function, mnemonic):"
+    echo "$found"
+    exit 1
+  fi
+done
+echo "no transcendental function of the C library, no x87, fused multiply-add or approximate instruction in $(basename "$library")"
