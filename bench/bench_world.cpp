@@ -21,6 +21,7 @@
 // overlapping pairs, heap allocations per frame after 20 frames of warm-up (this binary counts every
 // operator new) and the heap in use per body by the World once built (malloc's count, mallinfo2).
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_run.h"
 
@@ -42,16 +43,26 @@
 namespace collide2d {
 namespace {
 
+// A number in [0, 1), the same with every standard library (tools/random.h).
+double unit(std::mt19937_64& rng) { return tool::uniform(rng, 0.0, 1.0); }
+
+// A point of the square [0, side)^2 from `corner`, y drawn before x (one draw a statement: a call's
+// arguments are evaluated in an order the compiler picks).
+Vec2 point_in(std::mt19937_64& rng, const Vec2& corner, double side) {
+  const double y = unit(rng) * side;
+  const double x = unit(rng) * side;
+  return corner + Vec2(x, y);
+}
+
 Shape random_shape(std::mt19937_64& rng, const Vec2& c) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double half = 0.3 + 1.7 * u(rng), angle = 2 * M_PI * u(rng);
+  const double half = 0.3 + 1.7 * unit(rng), angle = 2 * M_PI * unit(rng);
   switch (rng() % 3) {
     case 0:
       return Circle{c, half};
     case 1:
-      return Ellipse{c, half, half * (0.2 + 0.8 * u(rng)), angle};
+      return Ellipse{c, half, half * (0.2 + 0.8 * unit(rng)), angle};
     default:
-      return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), angle};
+      return Rect{c, Vec2(half, half * (0.2 + 0.8 * unit(rng))), angle};
   }
 }
 
@@ -66,23 +77,21 @@ struct Movers {
   Vec2 corner;
 
   Movers(int n, const Vec2& from, std::mt19937_64& rng) : side(std::sqrt(28.0 * n)), corner(from) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < n; ++k) {
-      shapes.push_back(random_shape(rng, corner + Vec2(u(rng) * side, u(rng) * side)));
+      shapes.push_back(random_shape(rng, point_in(rng, corner, side)));
       centre.push_back(center_of(shapes.back()));
       angle.push_back(angle_of(shapes.back()));
-      velocity.emplace_back(0.2 * (u(rng) - 0.5), 0.2 * (u(rng) - 0.5));
+      velocity.push_back(0.2 * (point_in(rng, Vec2::Zero(), 1.0) - Vec2::Constant(0.5)));
     }
   }
   void step(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-0.025, 0.025);
     for (std::size_t k = 0; k < centre.size(); ++k) {
       const Vec2 at = centre[k] - corner;
       for (int a = 0; a < 2; ++a) {
         if ((at[a] < 0 && velocity[k][a] < 0) || (at[a] > side && velocity[k][a] > 0)) velocity[k][a] *= -1;
       }
       centre[k] += velocity[k];
-      angle[k] += u(rng);
+      angle[k] += tool::uniform(rng, -0.025, 0.025);
     }
   }
   std::size_t heap() const {
@@ -123,7 +132,6 @@ void frame(benchmark::State& state) {
   const int moving = level == Level::none ? static_cast<int>(state.range(0)) : 1000;
   const int statics = level == Level::none ? 0 : static_cast<int>(state.range(0));
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t heap_before = heap_in_use();
   World world({.fat_margin = 0.1, .contacts = contacts, .threads = static_cast<unsigned>(state.range(1))});
   const double level_side = std::sqrt(28.0 * statics), side = std::sqrt(28.0 * moving);  // Movers' side
@@ -131,7 +139,7 @@ void frame(benchmark::State& state) {
   BodyDef def;
   def.is_static = level != Level::moving_bodies;
   for (int added = 0; added < statics;) {
-    const Vec2 at(u(rng) * level_side, u(rng) * level_side);
+    const Vec2 at = point_in(rng, Vec2::Zero(), level_side);
     const bool clear = level == Level::static_apart && ((at - corner).array() > -3.0).all() &&
                        ((at - corner).array() < side + 3.0).all();
     if (clear) continue;

@@ -6,6 +6,7 @@
 #include "mp_reference.h"
 
 #include "narrowphase/baselines/baselines.h"
+#include "tools/random.h"
 
 #include <algorithm>
 #include <chrono>
@@ -40,7 +41,7 @@ struct Workload {
 // The random generator's shapes: centres in a 4 x 4 square, sizes 0.05 to 1, aspect up to 10.
 struct Generator {
   std::mt19937_64 rng;
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  double uniform(double lo, double hi) { return tool::uniform(rng, lo, hi); }
   double size() { return 0.05 * std::pow(20.0, uniform(0, 1)); }
   Vec2 centre() { return {uniform(-2, 2), uniform(-2, 2)}; }
   void make(Ellipse& e) {

@@ -11,6 +11,8 @@
 
 #include <mpi.h>
 
+#include "tools/random.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,13 +35,18 @@ struct Body {
 // `height`, sizes 0.2 to 0.6, 8% of the area covered.
 std::vector<Body> field(int rank, std::size_t count, double width, double height) {
   std::mt19937_64 rng(1234 + static_cast<std::uint64_t>(rank));
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto unit = [&rng] { return tool::uniform(rng, 0.0, 1.0); };
   std::vector<Body> out;
   for (std::size_t k = 0; k < count; ++k) {
-    const Vec2 c((rank + unit(rng)) * width, unit(rng) * height);
-    const double size = 0.2 + 0.4 * unit(rng);
-    const Shape s = k % 2 == 0 ? Shape(Circle{c, size}) : Shape(Ellipse{c, size, 0.5 * size, 6.3 * unit(rng)});
-    out.push_back({s, Vec2(0.2 * (unit(rng) - 0.5), 0.2 * (unit(rng) - 0.5))});
+    // One draw a statement, y before x: a call's arguments are evaluated in an order the compiler picks.
+    const double y = unit() * height;
+    const double x = (rank + unit()) * width;
+    const Vec2 c(x, y);
+    const double size = 0.2 + 0.4 * unit();
+    const Shape s = k % 2 == 0 ? Shape(Circle{c, size}) : Shape(Ellipse{c, size, 0.5 * size, 6.3 * unit()});
+    const double vy = 0.2 * (unit() - 0.5);
+    const double vx = 0.2 * (unit() - 0.5);
+    out.push_back({s, Vec2(vx, vy)});
   }
   return out;
 }
