@@ -2,6 +2,7 @@
 
 #include "narrowphase/distance/distance_ellipse_ellipse.h"
 
+#include "narrowphase/shared/ellipse/distance_point_ellipse.h"
 #include "narrowphase/shared/ellipse/ellipse_contact.h"
 #include "narrowphase/shared/ellipse/ellipse_pair.h"
 
@@ -279,7 +280,13 @@ SolverReport robust_boundary(const Ellipse& a, const Ellipse& b) {
   }
   const Containment& c = a_in_b ? ex.min : ex.max;
   const Vec2 pa = a.center + pair.to_world(c.offset_a);
-  const Vec2 pb = b.center + pair.to_world(c.offset_b);
+  // The search settles the gap to rounding but not always its direction: for a thin ring (two curves
+  // of nearly one shape) the gap hardly changes over a wide arc, and the two support points can sit
+  // side by side along the curves rather than across the gap. B's point is therefore the point of
+  // B's curve nearest A's, so that the two lie the gap apart.
+  const PointEllipseResult foot =
+      distance_point_ellipse(pair.B.a, pair.B.b, pair.B.rot.apply_inverse(Vec2(c.offset_a - pair.delta)));
+  const Vec2 pb = a.center + pair.to_world(Vec2(pair.delta + pair.B.rot.apply(foot.closest)));
   // The gap is the distance between the two support lines, as for separated pairs; within the
   // margin of 0 its sign is rounding, and a negative one means curves that touch or cross by less
   // than the margin (the points' distance would report the margin itself: 1.2e-14 for a ring

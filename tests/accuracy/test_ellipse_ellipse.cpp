@@ -225,9 +225,9 @@ TEST(EllipseDistance, CirclePathMatchesEllipsePath) {
 
 // Nearly congruent pairs (a ring between an ellipse and its copy scaled by 1 - e, moved across by up
 // to e of the minor axis, or turned by 2 e) and concentric circles: the boundary distance against
-// the reference, and the number of support evaluations its search spends, which the bounds of
-// congruence_of keep small: at most 1,000 asserted (halving down to the arcs' own curvature
-// variation instead would take far more).
+// the reference, its points as the families' (64 u), and the number of support evaluations its
+// search spends, which the bounds of congruence_of keep small: at most 1,000 asserted (halving down
+// to the arcs' own curvature variation instead would take far more).
 TEST(EllipseBoundary, NearlyCongruentPairsCostBoundedWork) {
   int worst = 0;
   for (const double aspect : {1.0, 1 + 1e-12, 1.5, 4.0, 20.0}) {
@@ -239,12 +239,31 @@ TEST(EllipseBoundary, NearlyCongruentPairsCostBoundedWork) {
         const detail::SolverReport r = detail::robust_boundary_distance_ellipse_ellipse(a, b);
         const double ref = static_cast<double>(reference::ellipse_pair(a, b).boundary);
         EXPECT_LE(std::abs(r.result.distance - ref), 8 * kU) << aspect << " " << e << " " << mode;
+        EXPECT_LE(boundary_point_error(a, b, r.result), 64 * kU) << aspect << " " << e << " " << mode;
         EXPECT_LE(r.iterations, 1000) << aspect << " " << e << " " << mode;
         worst = std::max(worst, r.iterations);
       }
     }
   }
   std::printf("[measure] nearly congruent pairs: at most %d support evaluations\n", worst);
+}
+
+// A ring 4e-14 wide between an ellipse and its near copy (a random case of the congruent-ring family
+// drawn in another order): the gap hardly changes along the curves, and the search's support points
+// sat 2.7e-14 apart along them, |b - a| 71 u beyond the distance. Both orders, as the families.
+TEST(EllipseBoundary, ThinRingPointsLieAcrossTheGap) {
+  const Ellipse a{Vec2(0.76334234736321838, -0.42485807266647779), 1, 0.14193140418663705, 5.4540895384259009};
+  const Ellipse b{Vec2(0.76334234736321804, -0.42485807266647746), 0.99999999999900002, 0.14193140418649511,
+                  5.4540895384256727};
+  const double ref = static_cast<double>(reference::ellipse_pair(a, b).boundary);
+  const double scale = 1 + (b.center - a.center).norm();
+  for (const bool swap : {false, true}) {
+    const Ellipse& x = swap ? b : a;
+    const Ellipse& y = swap ? a : b;
+    const DistanceResult d = boundary_distance(x, y);
+    EXPECT_LE(std::abs(d.distance - ref), 8 * kU * scale) << swap;
+    EXPECT_LE(boundary_point_error(x, y, d), 64 * kU * scale) << swap;
+  }
 }
 
 TEST(EllipseDistance, RectanglesHaveNoBoundaryDistance) {

@@ -107,6 +107,10 @@ Shape moved(const Shape& s, double turn, const Vec2& shift);
 double half_size(const Shape& s);
 std::string describe(const Shape& s);
 
+// How far the boundary distance's points lie off their curves (circles or ellipses), and how far
+// |point_b - point_a| is from the distance, beyond the rounding of the points' coordinates: the worst.
+double boundary_point_error(const Shape& a, const Shape& b, const DistanceResult& d);
+
 // Runs every case through overlaps() with each rect–ellipse method and distance(), in both orders,
 // records gtest failures for missed targets, prints one summary line and returns the statistics.
 FamilyStats run_family(const Family& family);
