@@ -68,12 +68,6 @@ double series_at(const std::array<double, 8>& c, double z) {
   return low + high * (z2 * z2);
 }
 
-DoubleDouble divide(const DoubleDouble& n, const DoubleDouble& d) {
-  const double q = n.hi / d.hi;
-  const DoubleDouble p = two_product(q, d.hi);
-  return fast_two_sum(q, ((n.hi - p.hi) - p.lo + n.lo - q * d.lo) / d.hi);
-}
-
 // cos r and sin r for r = hi + lo, |r| <= pi/4. The terms past the first are under a tenth of the
 // result, so that their rounding costs a fraction of an ulp.
 CosSin kernel(const DoubleDouble& r) {
@@ -203,7 +197,7 @@ DoubleDouble atan_ratio(double small, double big) {
   if (quotient < 0x1p-27) return {quotient, 0.0};  // atan z = z (1 - z^2/3 ...) rounds to z
   // Both within 2^27 of each other: scaled by one power of 2 so that no product below underflows.
   const double scale = big > 0x1p990 ? 0x1p-30 : big < 0x1p-900 ? 0x1p1000 : 1.0;
-  const DoubleDouble z = divide({small * scale, 0.0}, {big * scale, 0.0});
+  const DoubleDouble z = DoubleDouble(small * scale) / DoubleDouble(big * scale);
   const int i = static_cast<int>(z.hi * 8 + 0.5);
   const double c = i / 8.0;
   DoubleDouble u = z;
@@ -211,7 +205,7 @@ DoubleDouble atan_ratio(double small, double big) {
     const DoubleDouble zc = two_product(z.hi, c);
     DoubleDouble denominator = fast_two_sum(1.0, zc.hi);
     denominator.lo += zc.lo + z.lo * c;
-    u = divide(two_sum(z.hi - c, z.lo), denominator);  // z.hi - c is exact (Sterbenz)
+    u = two_sum(z.hi - c, z.lo) / denominator;  // z.hi - c is exact (Sterbenz)
   }
   const double w = u.hi * u.hi;
   const DoubleDouble sum = fast_two_sum(kAtanEighths[i].hi, u.hi);
