@@ -1,6 +1,7 @@
 #include "examples/settle/settle.h"
 
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "tools/scene/svg_shape.h"
 
 #include <algorithm>
@@ -59,7 +60,7 @@ double smallest_half_size(const Shape& s) {
 }
 
 Shape random_shape(std::mt19937_64& rng, int kind, const Vec2& center) {
-  const auto uniform = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto uniform = [&rng](double lo, double hi) { return tool::uniform(rng, lo, hi); };
   const double size = uniform(kLargest / 2, kLargest), aspect = uniform(1.0, 2.0),
                angle = uniform(0.0, 2 * std::numbers::pi);
   switch (kind % 3) {
@@ -92,7 +93,7 @@ class Pile {
     smallest_ = kLargest;
     for (int k = 0; k < options.bodies; ++k) {
       const Vec2 cell(kCell * (k % columns + 0.5), kCell * (k / columns + 0.5));
-      const Vec2 jitter(std::uniform_real_distribution<double>(-0.02, 0.02)(rng), 0.0);
+      const Vec2 jitter(tool::uniform(rng, -0.02, 0.02), 0.0);
       const Shape shape = random_shape(rng, k, Vec2(cell + jitter));
       Body& b = bodies_.emplace_back();
       b.mass = area(shape);

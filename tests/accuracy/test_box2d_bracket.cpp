@@ -8,6 +8,7 @@
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 #include "bench/box2d_baseline.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -38,9 +39,9 @@ std::string describe_pair(const Shape& a, const Shape& b) {
 
 std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto ellipse = [&] {
-    return Ellipse{Vec2(4 * u(rng), 4 * u(rng)), 0.2 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
+    return Ellipse{tool::uniform_point(rng, 0, 4), 0.2 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
   };
   std::vector<std::pair<Shape, Shape>> out;
   for (int k = 0; k < n; ++k) {
@@ -49,11 +50,14 @@ std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
       case 0:
         out.emplace_back(ellipse(), b);
         break;
-      case 1:
-        out.emplace_back(Rect{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.1 + u(rng), 0.1 + u(rng)), 7 * u(rng)}, b);
+      case 1: {
+        const Vec2 c = tool::uniform_point(rng, 0, 4);
+        const double height = 0.1 + u(rng);
+        out.emplace_back(Rect{c, Vec2(0.1 + u(rng), height), 7 * u(rng)}, b);
         break;
+      }
       default:
-        out.emplace_back(Circle{Vec2(4 * u(rng), 4 * u(rng)), 0.1 + u(rng)}, b);
+        out.emplace_back(Circle{tool::uniform_point(rng, 0, 4), 0.1 + u(rng)}, b);
         break;
     }
   }
@@ -207,7 +211,7 @@ TEST(Box2dBracket, ContactDepthLiesBetweenCircumscribedAndInscribed) {
 // Box2D's root finder "may miss some intermediate, non-tunneling collisions" when shapes turn.
 TEST(Box2dBracket, TimeOfImpactLiesBetweenCircumscribedAndInscribed) {
   std::mt19937_64 rng(41);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   std::vector<double> widths[2];  // N = 8 and 32
   int checked = 0;
   for (const auto& [a, b] : random_pairs(600, 42)) {
@@ -227,7 +231,8 @@ TEST(Box2dBracket, TimeOfImpactLiesBetweenCircumscribedAndInscribed) {
     const Vec2 dir(std::cos(heading), std::sin(heading));
     const Shape sa = scaled(a, Vec2::Zero()), sb = scaled(b, (2 + 2 * u(rng)) * scale * dir);
     if (overlaps(sa, sb)) continue;
-    const Motion mb{-(4 + 4 * u(rng)) * scale * dir + (u(rng) - 0.5) * scale * Vec2(-dir.y(), dir.x()), 0.0};
+    const double across = u(rng) - 0.5, along = 4 + 4 * u(rng);
+    const Motion mb{-along * scale * dir + across * scale * Vec2(-dir.y(), dir.x()), 0.0};
     const TimeOfImpact ours = time_of_impact(sa, {}, sb, mb);
     if (ours.status != ToiStatus::hit) continue;
     const double closing = std::abs(ours.normal.dot(mb.velocity));
@@ -263,7 +268,7 @@ TEST(Box2dBracket, TimeOfImpactLiesBetweenCircumscribedAndInscribed) {
 // 0.0025), against polygons and circles.
 std::vector<std::pair<Shape, Shape>> polygon_pairs(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto polygon = [&] {
     const int count = 3 + static_cast<int>(u(rng) * 6);
     const double a = 0.5 + u(rng), b = a / (1 + u(rng));
@@ -272,12 +277,13 @@ std::vector<std::pair<Shape, Shape>> polygon_pairs(int n, std::uint64_t seed) {
       const double t = 2 * std::numbers::pi * (k + 0.6 * u(rng)) / count;
       v.emplace_back(a * std::cos(t), b * std::sin(t));
     }
-    return ConvexPolygon::of(v).at(Vec2(3 * u(rng), 3 * u(rng)), 7 * u(rng));
+    const double angle = 7 * u(rng);
+    return ConvexPolygon::of(v).at(tool::uniform_point(rng, 0, 3), angle);
   };
   std::vector<std::pair<Shape, Shape>> out;
   for (int k = 0; k < n; ++k) {
     const Shape a = polygon();
-    out.emplace_back(a, k % 2 == 0 ? Shape(polygon()) : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.2 + u(rng)}));
+    out.emplace_back(a, k % 2 == 0 ? Shape(polygon()) : Shape(Circle{tool::uniform_point(rng, 0, 3), 0.2 + u(rng)}));
   }
   return out;
 }
@@ -328,9 +334,9 @@ TEST(Box2dBracket, PolygonsMatchBox2dWithinFloatError) {
 // (b2CollidePolygonAndCircle).
 TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
   std::mt19937_64 rng(53);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto capsule = [&] {
-    return Capsule{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
+    return Capsule{tool::uniform_point(rng, 0, 3), 0.1 + u(rng), 0.05 + 0.5 * u(rng), 7 * u(rng)};
   };
   const auto others = polygon_pairs(3000, 55);
   constexpr double kBoxReach = 0.42 * baseline::kCapsuleBoxHalfWidth;
@@ -339,7 +345,7 @@ TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
     const Shape a = capsule();
     const Shape placed = k % 3 == 0   ? Shape(capsule())
                          : k % 3 == 1 ? others[k].first
-                                      : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + 0.5 * u(rng)});
+                                      : Shape(Circle{tool::uniform_point(rng, 0, 3), 0.1 + 0.5 * u(rng)});
     const double slack = kBoxReach * (std::holds_alternative<Capsule>(placed) ? 2 : 1);
     const auto [pa, pb] = box2d_pair(a, placed, 8, Fit::inscribed);
     const Contact c = contact(a, placed);
@@ -368,13 +374,14 @@ TEST(Box2dBracket, CapsulesLieWithinBox2dsRoundedBoxes) {
 // deeper way out, and it may clip the deepest point away).
 TEST(Box2dBracket, SegmentsMatchBox2dsEdgesWithinFloatError) {
   std::mt19937_64 rng(57);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto others = polygon_pairs(3000, 59);
   int apart = 0, overlapping = 0, polygons_overlapping = 0, deepest_kept = 0;
   for (int k = 0; k < 3000; ++k) {
-    const Vec2 p(3 * u(rng), 3 * u(rng));
-    const Shape a = Segment::between(p, p + Vec2(4 * u(rng) - 2, 4 * u(rng) - 2));
-    const Shape placed = k % 2 == 0 ? others[k].first : Shape(Circle{Vec2(3 * u(rng), 3 * u(rng)), 0.1 + 0.5 * u(rng)});
+    const Vec2 p = tool::uniform_point(rng, 0, 3);
+    const Shape a = Segment::between(p, p + tool::uniform_point(rng, -2, 2));
+    const Shape placed =
+        k % 2 == 0 ? others[k].first : Shape(Circle{tool::uniform_point(rng, 0, 3), 0.1 + 0.5 * u(rng)});
     const auto [pa, pb] = box2d_pair(a, placed, 8, Fit::inscribed);
     const Contact c = contact(a, placed);
     if (c.separation > 0) {

@@ -8,6 +8,7 @@
 // two segments gives it.
 #include "core_families.h"
 #include "mp_reference.h"
+#include "tools/random.h"
 
 #include <collide2d/chain.h>
 #include <collide2d/world.h>
@@ -57,7 +58,7 @@ Hill hill(const Vec2& at) {
 
 TEST(ChainFamilies, GrazingAConvexVertex) {
   std::mt19937_64 rng(71);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const tool::Uniform u01(0.0, 1.0);
   const auto random_kind = [&](int kind) -> Shape {
     switch (kind) {
       case 0:

@@ -9,6 +9,7 @@
 #include "narrowphase/baselines/baselines.h"
 #include "narrowphase/distance/distance_ellipse_ellipse.h"
 #include "narrowphase/overlap/overlap_ellipse_ellipse.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -148,8 +149,9 @@ TEST(ArticleSamples, AllMethodsAgreeWithTheReference) {
 std::mt19937_64 rng(21);
 
 Ellipse random_ellipse(double spread) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  return {Vec2(spread * u(rng), spread * u(rng)), 0.05 + std::abs(u(rng)), 0.05 + std::abs(u(rng)), 4 * u(rng)};
+  const tool::Uniform u(-1.0, 1.0);
+  const double y = spread * u(rng);
+  return {Vec2(spread * u(rng), y), 0.05 + std::abs(u(rng)), 0.05 + std::abs(u(rng)), 4 * u(rng)};
 }
 
 Vec2 normal_of(const Ellipse& e, const Vec2& p) {
@@ -180,12 +182,13 @@ TEST(EllipseDistance, ClosestPointsSatisfyOptimality) {
 // result exactly. Moving rounds the centres to u of the shift (up to 100) and the angles to u of
 // the turn, which moves the distance by up to about 4 u x 150: asserted within 16 u x 150.
 TEST(EllipseDistance, FrameInvariantAndSymmetric) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const tool::Uniform u(-1.0, 1.0);
   double worst = 0;
   for (int k = 0; k < 3000; ++k) {
     const Ellipse a = random_ellipse(2.0), b = random_ellipse(2.0);
     const double turn = 3 * u(rng);
-    const Vec2 shift(100 * u(rng), 100 * u(rng));
+    const double shift_y = 100 * u(rng);
+    const Vec2 shift(100 * u(rng), shift_y);
     const auto moved = [&](const Ellipse& e) {
       const Vec2 c(std::cos(turn) * e.center.x() - std::sin(turn) * e.center.y(),
                    std::sin(turn) * e.center.x() + std::cos(turn) * e.center.y());
@@ -208,10 +211,11 @@ TEST(EllipseDistance, FrameInvariantAndSymmetric) {
 // A circle is an ellipse with a = b: the circle kernels and the ellipse kernels agree, to 8 u of
 // the coordinates' scale (4).
 TEST(EllipseDistance, CirclePathMatchesEllipsePath) {
-  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  const tool::Uniform u(-2.0, 2.0);
   const double tol = 8 * kU * 4;
   for (int k = 0; k < 20000; ++k) {
-    const Circle c{Vec2(u(rng), u(rng)), 0.1 + std::abs(u(rng))};
+    const double y = u(rng);
+    const Circle c{Vec2(u(rng), y), 0.1 + std::abs(u(rng))};
     const Ellipse e = random_ellipse(2.0);
     const Ellipse ce{c.center, c.radius, c.radius, u(rng)};
     ASSERT_EQ(overlaps(c, e), overlaps(ce, e)) << k;
@@ -276,14 +280,16 @@ TEST(EllipseDistance, RectanglesHaveNoBoundaryDistance) {
 // Asserted as the families are: the distance within 8 u of the scale, the points within 64 u.
 TEST(EllipseDistance, UltraThinNeedles) {
   std::mt19937_64 rng(29);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   int checked = 0;
   double worst_distance = 0, worst_point = 0;
   for (int k = 0; k < 300; ++k) {
     const double aspect = std::pow(10.0, 9 + 26 * u(rng));
-    const Ellipse a{Vec2(8 * u(rng) - 4, 8 * u(rng) - 4), 1 + 4 * u(rng), 0, 7 * u(rng)};
+    const double ay = 8 * u(rng) - 4;
+    const Ellipse a{Vec2(8 * u(rng) - 4, ay), 1 + 4 * u(rng), 0, 7 * u(rng)};
     const Ellipse needle{a.center, a.a, a.a / aspect, a.angle};
-    const Ellipse b{Vec2(8 * u(rng) - 4, 8 * u(rng) - 4), 0.5 + 3 * u(rng), 0.5 + 3 * u(rng), 7 * u(rng)};
+    const double by = 8 * u(rng) - 4;
+    const Ellipse b{Vec2(8 * u(rng) - 4, by), 0.5 + 3 * u(rng), 0.5 + 3 * u(rng), 7 * u(rng)};
     for (const auto& [p, q] : {std::pair{needle, b}, std::pair{b, needle}}) {
       const auto ref = reference::ellipse_pair(p, q);
       const DistanceResult d = distance(p, q);

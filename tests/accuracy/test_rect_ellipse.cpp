@@ -8,6 +8,7 @@
 
 #include "narrowphase/baselines/baselines.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -63,13 +64,15 @@ TEST(RectEllipseOverlap, QuadrantCornerChoiceCounterexample) {
 // Random pairs at random gaps: the three tests must agree, and the filter rarely defers.
 TEST(RectEllipseOverlap, MethodsAgreeOnRandomPairs) {
   std::mt19937_64 rng(42);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto log_u = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
   const int n = 200000;
   int disagreements = 0, fallbacks = 0, overlapping = 0;
   for (int k = 0; k < n; ++k) {
-    const Rect r{Vec2(2 * u(rng) - 1, 2 * u(rng) - 1), Vec2(log_u(0.01, 2), log_u(0.01, 2)), 7 * u(rng)};
-    const Ellipse e{Vec2(2 * u(rng) - 1, 2 * u(rng) - 1), log_u(0.001, 2), log_u(0.001, 2), 7 * u(rng)};
+    const Vec2 rc = tool::uniform_point(rng, -1, 1);
+    const double height = log_u(0.01, 2);
+    const Rect r{rc, Vec2(log_u(0.01, 2), height), 7 * u(rng)};
+    const Ellipse e{tool::uniform_point(rng, -1, 1), log_u(0.001, 2), log_u(0.001, 2), 7 * u(rng)};
     const bool m = overlap_rect_ellipse(r, e);
     const bool c = baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::closest_features);
     const bool a = baselines::overlap_rect_ellipse(r, e, baselines::RectEllipseTest::all_features);
@@ -98,14 +101,17 @@ namespace {
 // cosines: the same verdict on every pair, near-tangent ones included.
 TEST(RectEllipseOverlap, OrientedOverloadGivesTheSameVerdicts) {
   std::mt19937_64 rng(17);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   int overlapping = 0;
   for (int k = 0; k < 200000; ++k) {
     const double aspect = std::pow(10.0, 6 * u(rng));
-    const Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.05 + u(rng), 0.05 + u(rng)), 7 * u(rng)};
+    const Vec2 rc = tool::uniform_point(rng, 0, 4);
+    const double height = 0.05 + u(rng);
+    const Rect r{rc, Vec2(0.05 + u(rng), height), 7 * u(rng)};
     Ellipse e{Vec2::Zero(), 0.05 + u(rng), 0, 7 * u(rng)};
     e.b = e.a / aspect;
-    const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
+    const double sine = std::sin(7 * u(rng));
+    const Vec2 n(std::cos(7 * u(rng)), sine);
     const double gaps[] = {0.0, 1e-12, -1e-12, 1e-6, -1e-6, 0.3};
     e.center = support(r, n) + gaps[k % 6] * n - support(e, Vec2(-n));
     const bool plain = overlap_rect_ellipse(r, e);

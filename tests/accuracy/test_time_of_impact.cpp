@@ -5,6 +5,7 @@
 
 #include <collide2d/query.h>
 #include "mp_reference.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -117,9 +118,10 @@ TEST(TimeOfImpact, MovingApartMisses) {
 // the pair is apart at 200 times over the step and at its end.
 TEST(TimeOfImpact, NeverAfterTheFirstContact) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
+  const tool::Uniform u(-1, 1);
   const auto shape = [&](int kind) -> Shape {
-    const Vec2 c(3 * u(rng), 3 * u(rng));
+    const double y = 3 * u(rng);
+    const Vec2 c(3 * u(rng), y);
     const double s = 0.1 + 0.45 * (u(rng) + 1);
     if (kind == 0) return Circle{c, s};
     if (kind == 1) return Ellipse{c, s, s * (0.05 + 0.475 * (u(rng) + 1)), 3 * u(rng)};
@@ -182,7 +184,7 @@ reference::Real separation_at(const Shape& a, const Motion& ma, const Shape& b, 
 // at 2.3 tolerances.
 TEST(TimeOfImpact, FarFromTheOriginKeepsItsBound) {
   std::mt19937_64 rng(19);
-  std::uniform_real_distribution<double> u(-1, 1);
+  const tool::Uniform u(-1, 1);
   struct Pair {
     Shape a, b;
     Motion ma, mb;
@@ -193,7 +195,10 @@ TEST(TimeOfImpact, FarFromTheOriginKeepsItsBound) {
                               {{2.634324061738085, -2.183742880388848}, 0.0}}};
   for (const double offset : {1e6, 1e9}) {
     for (int k = 0; k < 300; ++k) {
-      const Vec2 at(offset * u(rng), offset * u(rng)), gap(3 * u(rng), 3 * u(rng));
+      const double at_y = offset * u(rng);
+      const Vec2 at(offset * u(rng), at_y);
+      const double gap_y = 3 * u(rng);
+      const Vec2 gap(3 * u(rng), gap_y);
       const Motion ma{{2 * u(rng), 2 * u(rng)}, 0.0}, mb{Vec2(-gap * (1.2 + u(rng) * 0.1) + ma.velocity), 0.0};
       if (k % 2 == 0) {
         pairs.push_back({Circle{at, 0.1 + 0.5 * (u(rng) + 1)}, Circle{at + gap, 0.1 + 0.5 * (u(rng) + 1)}, ma, mb});
@@ -302,7 +307,7 @@ struct ToiFamily {
 
 std::vector<ToiFamily> toi_families() {
   std::mt19937_64 rng(31);
-  std::uniform_real_distribution<double> u(0, 1);
+  const tool::Uniform u(0, 1);
   const auto turn = [&] { return 6.283185307179586 * u(rng); };
   const auto unit = [](double angle) { return Vec2(std::cos(angle), std::sin(angle)); };
   std::vector<ToiFamily> out;
@@ -365,7 +370,8 @@ std::vector<ToiFamily> toi_families() {
   // Both moving: a circle and an ellipse, then a box and a circle, on random courses that mostly meet.
   ToiFamily both{"both moving", {}};
   for (int k = 0; k < 8; ++k) {
-    const Vec2 ca(u(rng), u(rng)), cb = ca + 3 * unit(turn());
+    const double y = u(rng);
+    const Vec2 ca(u(rng), y), cb = ca + 3 * unit(turn());
     const Vec2 va = 2 * unit(turn()), vb = (ca - cb) * (2 + u(rng)) + va;
     const Shape a = k % 2 ? Shape(Ellipse{ca, 0.6, 0.2, turn()}) : Shape(Rect{ca, {0.6, 0.2}, turn()});
     both.cases.push_back({a, {va, 0}, Circle{cb, 0.3}, {vb, 0}, 1e-12, false});

@@ -12,6 +12,7 @@
 // ctest runs a short one (soak_short); docs/testing.md gives the long one.
 #include <collide2d/world.h>
 #include "mp_reference.h"
+#include "tools/random.h"
 #include "world_reference.h"
 
 #include <malloc.h>
@@ -74,7 +75,7 @@ int reference_disagreements(const World& world, const BruteForce& all, std::mt19
   for (int k = 0; k < samples; ++k) {
     const auto& from = k % 2 == 0 && !all.overlapping.empty() ? all.overlapping : all.boxes_meet;
     if (from.empty()) continue;
-    const ShapePair p = from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
+    const ShapePair p = from[tool::uniform_index(rng, from.size())];
     const bool reported = std::binary_search(world.overlapping().begin(), world.overlapping().end(), p);
     if (reported != reference::overlap(world.shape(p.shape_a), world.shape(p.shape_b))) {
       std::printf("pair %u-%u: the World says %d, the 50-digit reference %d\n", p.a.index, p.b.index, reported,
@@ -95,10 +96,10 @@ int main(int argc, char** argv) {
   const int bodies = std::atoi(argv[1]), frames = std::atoi(argv[2]), every = std::max(1, std::atoi(argv[3]));
   std::mt19937_64 rng(99), sample_rng(7);
   constexpr int kReferenceSamples = 100;
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const double side = std::sqrt(28.0 * bodies);
   const auto fresh_shape = [&]() -> Shape {
-    const Vec2 c(side * u(rng), side * u(rng));
+    const Vec2 c = tool::uniform_point(rng, 0, side);
     const double size = 0.3 + 1.7 * u(rng);
     switch (static_cast<int>(3 * u(rng))) {
       case 0:
@@ -118,7 +119,8 @@ int main(int argc, char** argv) {
     if (is_static) {
       statics.push_back(id);
     } else {
-      movers.push_back({id, Vec2(0.1 * (u(rng) - 0.5), 0.1 * (u(rng) - 0.5))});
+      const double vy = 0.1 * (u(rng) - 0.5);
+      movers.push_back({id, Vec2(0.1 * (u(rng) - 0.5), vy)});
     }
   };
   for (int k = 0; k < bodies; ++k) add(k % 4 == 3);

@@ -1,5 +1,7 @@
 #include "core_families.h"
 
+#include "tools/random.h"
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -36,7 +38,7 @@ namespace {
 // n vertices on the ellipse of half axes size and thin, one to each of n equal arcs at a random
 // place within its first 0.6.
 std::vector<Vec2> polygon_around(int n, double size, double thin, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const tool::Uniform unit(0.0, 1.0);
   std::vector<Vec2> v;
   for (int k = 0; k < n; ++k) {
     const double t = 2 * kPi * (k + 0.6 * unit(rng)) / n;
@@ -47,7 +49,7 @@ std::vector<Vec2> polygon_around(int n, double size, double thin, std::mt19937_6
 
 // A vertex added 1e-12 of the size outside the middle of a random edge.
 std::vector<Vec2> kinked(std::vector<Vec2> v, double size, std::mt19937_64& rng) {
-  const std::size_t k = std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(rng);
+  const std::size_t k = tool::uniform_index(rng, v.size());
   const Vec2 from = v[k], to = v[(k + 1) % v.size()];
   const Vec2 edge = to - from;
   const Vec2 out = Vec2(edge.y(), -edge.x()).normalized();
@@ -58,7 +60,7 @@ std::vector<Vec2> kinked(std::vector<Vec2> v, double size, std::mt19937_64& rng)
 }  // namespace
 
 Shape random_shape(Form kind, double size, double aspect, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const tool::Uniform unit(0.0, 1.0);
   const double angle = 2 * kPi * unit(rng);
   const double thin = size / std::exp(std::log(aspect) * unit(rng));
   const auto polygon = [&](const std::vector<Vec2>& v, double radius) -> Shape {
@@ -205,13 +207,14 @@ double direction_of(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 }  // namespace
 
 std::vector<CoreCase> cases_of(const CoreFamily& f) {
-  std::mt19937_64 rng(std::hash<std::string>{}(f.name));
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::mt19937_64 rng(tool::seed_of(f.name));
+  const tool::Uniform unit(0.0, 1.0);
   std::vector<CoreCase> out;
   for (int k = 0; k < f.cases; ++k) {
     const double delta = f.deltas[k % f.deltas.size()] * f.size;
     const double ratio = std::exp(std::log(3.0) * (2 * unit(rng) - 1));
-    const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+    const double y = unit(rng) - 0.5;
+    const Vec2 at = f.offset * Vec2(unit(rng) - 0.5, y);
     const Shape a = shifted_by(random_shape(f.a, f.size, f.aspect, rng), at);
     Shape b0 = random_shape(f.b, f.size * ratio, f.aspect, rng);
     const double t = 2 * kPi * unit(rng);

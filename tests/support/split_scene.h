@@ -7,6 +7,8 @@
 
 #include <collide2d/world.h>
 
+#include "tools/random.h"
+
 #include <cmath>
 #include <iterator>
 #include <map>
@@ -17,8 +19,8 @@ namespace collide2d::testing {
 
 using Rng = std::mt19937_64;
 
-inline double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-inline int pick(Rng& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
+using tool::uniform;
+inline int pick(Rng& rng, int n) { return static_cast<int>(tool::uniform_index(rng, static_cast<std::size_t>(n))); }
 
 inline const WorldOptions kSplitOptions{
     .fat_margin = 0.2, .proximity_margin = 0.3, .contacts = true, .speculative_margin = 0.1};
@@ -70,12 +72,16 @@ struct SplitScene {
     return id;
   }
   void add_random() {
-    const Vec2 c(uniform(rng, -22, 22), uniform(rng, -12, 12));
+    const double y = uniform(rng, -12, 12);
+    const double x = uniform(rng, -22, 22);
+    const Vec2 c(x, y);
     const BodyDef def{.filter = {.category = std::uint64_t{1} << pick(rng, 3),
                                  .mask = 3 + 4 * std::uint64_t(pick(rng, 2)),
                                  .group = pick(rng, 9) == 0 ? -1 : 0},
                       .sensor = pick(rng, 25) == 0};
-    add(random_shape(rng, c), def, Vec2(uniform(rng, -0.8, 0.8), uniform(rng, -0.4, 0.4)));
+    const double vy = uniform(rng, -0.4, 0.4);
+    const double vx = uniform(rng, -0.8, 0.8);
+    add(random_shape(rng, c), def, Vec2(vx, vy));
   }
 
   SplitScene() {

@@ -6,6 +6,7 @@
 #include <collide2d/world.h>
 
 #include "mp_reference.h"
+#include "tools/random.h"
 #include "world_reference.h"
 
 #include <gtest/gtest.h>
@@ -39,10 +40,13 @@ void expect_changes(const std::vector<Pair>& previous, const std::vector<Pair>& 
   ASSERT_EQ(ended, lost) << what;
 }
 
-inline double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using tool::uniform;
+using tool::uniform_point;
 
 inline Shape random_shape(Rng& rng, double spread) {
-  const Vec2 c(uniform(rng, 0, spread), uniform(rng, 0, spread));
+  const double y = uniform(rng, 0, spread);
+  const double x = uniform(rng, 0, spread);
+  const Vec2 c(x, y);
   const double size = uniform(rng, 0.1, 1.0);
   switch (static_cast<int>(uniform(rng, 0, 3))) {
     case 0:
@@ -86,9 +90,7 @@ inline void expect_sample_matches_reference(const World& world, double margin, R
   for (const ShapePair& p : world.overlapping()) ASSERT_TRUE(has(near, p)) << what << ": exact boxes apart";
   for (const Proximity& p : world.proximity())
     ASSERT_TRUE(has(near, {p.a, p.b, p.shape_a, p.shape_b})) << what << ": exact boxes apart";
-  const auto pick = [&rng](const std::vector<ShapePair>& from) {
-    return from[std::uniform_int_distribution<std::size_t>(0, from.size() - 1)(rng)];
-  };
+  const auto pick = [&rng](const std::vector<ShapePair>& from) { return from[tool::uniform_index(rng, from.size())]; };
   for (int k = 0; k < 12; ++k) {
     const ShapePair p = k % 2 == 0 && !world.overlapping().empty() ? pick(world.overlapping()) : pick(near);
     const Shape& a = world.shape(p.shape_a);

@@ -3,6 +3,8 @@
 // inserts, moves, removals and rebuilds; the height stays within the AVL bound.
 #include <collide2d/aabb_tree.h>
 
+#include "tools/random.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,11 +19,12 @@ namespace {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using tool::uniform;
+using tool::uniform_point;
 
 Aabb random_box(Rng& rng, double side) {
-  const Vec2 c(uniform(rng, 0, side), uniform(rng, 0, side));
-  const Vec2 half(uniform(rng, 0.0, 2.0), uniform(rng, 0.0, 2.0));
+  const Vec2 c = uniform_point(rng, 0, side);
+  const Vec2 half = uniform_point(rng, 0.0, 2.0);
   return {c - half, c + half};
 }
 
@@ -118,7 +121,7 @@ TEST(AabbTree, QueriesMatchAScanThroughChurn) {
     std::vector<std::pair<AabbTree::Leaf, Aabb>> moved;
     for (auto& [value, entry] : m.boxes) {
       if (rng() % (round % 2 == 0 ? 40 : 2) != 0) continue;
-      const Vec2 shift(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5));
+      const Vec2 shift = uniform_point(rng, -0.5, 0.5);
       entry.second = {entry.second.min + shift, entry.second.max + shift};
       moved.emplace_back(entry.first, entry.second);
     }
@@ -126,7 +129,7 @@ TEST(AabbTree, QueriesMatchAScanThroughChurn) {
     if (round % 15 == 14) m.tree.rebuild();
     ASSERT_EQ(m.tree.size(), m.boxes.size());
     for (int q = 0; q < 10; ++q) m.check_query(random_box(rng, side), 1e-4);
-    const Vec2 o(uniform(rng, -5, side + 5), uniform(rng, -5, side + 5));
+    const Vec2 o = uniform_point(rng, -5, side + 5);
     const double a = uniform(rng, 0, 6.3);
     m.check_ray(o, Vec2(std::cos(a), std::sin(a)), uniform(rng, 0, side));
     m.check_ray(o, Vec2(0.0, 1.0), side);  // parallel to the x slabs

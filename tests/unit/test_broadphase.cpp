@@ -2,6 +2,7 @@
 // on random, clustered, collinear, identical, zero-size and churning scenes.
 #include <collide2d/broad_phase.h>
 #include "engine/thread_pool.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,8 @@ namespace {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using tool::uniform;
+using tool::uniform_point;
 
 Aabb box_at(const Vec2& c, const Vec2& half) { return {c - half, c + half}; }
 
@@ -78,16 +80,16 @@ TEST(SweepAndPrune, RandomMotionMatchesBruteForce) {
     std::vector<Vec2> centre, half, velocity;
     std::vector<Aabb> boxes;
     for (int k = 0; k < 400; ++k) {
-      centre.emplace_back(uniform(rng, 0, 20), uniform(rng, 0, 20));
-      half.emplace_back(uniform(rng, 0.05, 0.6), uniform(rng, 0.05, 0.6));
-      velocity.emplace_back(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+      centre.push_back(uniform_point(rng, 0, 20));
+      half.push_back(uniform_point(rng, 0.05, 0.6));
+      velocity.push_back(uniform_point(rng, -0.1, 0.1));
       boxes.push_back(box_at(centre.back(), half.back()));
     }
     t.insert_batch(boxes);
     for (int frame = 0; frame < 100; ++frame) {
       for (std::size_t k = 0; k < t.ids.size(); ++k) {
         centre[k] += velocity[k];
-        if (frame % 25 == 24 && k % 7 == 0) centre[k] = Vec2(uniform(rng, 0, 20), uniform(rng, 0, 20));  // jumps
+        if (frame % 25 == 24 && k % 7 == 0) centre[k] = uniform_point(rng, 0, 20);  // jumps
         t.move(k, box_at(centre[k], half[k]));
       }
       t.update_and_compare("random margin " + std::to_string(margin));
@@ -103,7 +105,7 @@ TEST(SweepAndPrune, TeleportingSceneTakesTheRadixSortAndStaysExact) {
   Rng rng(2);
   Twin t(0.0);
   std::vector<Vec2> centre;
-  for (int k = 0; k < 2000; ++k) centre.emplace_back(uniform(rng, 0, 50), uniform(rng, 0, 50));
+  for (int k = 0; k < 2000; ++k) centre.push_back(uniform_point(rng, 0, 50));
   std::vector<Aabb> boxes;
   for (const Vec2& c : centre) boxes.push_back(box_at(c, Vec2(0.4, 0.4)));
   t.insert_batch(boxes);
@@ -134,12 +136,12 @@ TEST(SweepAndPrune, ClusteredScene) {
   std::vector<Vec2> centre;
   for (int k = 0; k < 600; ++k) {
     const Vec2 cluster(5.0 * (k % 4), 7.0 * (k % 3));
-    centre.push_back(cluster + Vec2(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5)));
+    centre.push_back(cluster + uniform_point(rng, -0.5, 0.5));
     t.insert(box_at(centre.back(), Vec2(0.1, 0.1)));
   }
   for (int frame = 0; frame < 30; ++frame) {
     for (std::size_t k = 0; k < t.ids.size(); ++k) {
-      centre[k] += Vec2(uniform(rng, -0.02, 0.02), uniform(rng, -0.02, 0.02));
+      centre[k] += uniform_point(rng, -0.02, 0.02);
       t.move(k, box_at(centre[k], Vec2(0.1, 0.1)));
     }
     t.update_and_compare("clustered");
@@ -183,7 +185,7 @@ TEST(SweepAndPrune, HugeAndFarBoxes) {
   Twin t(0.0);
   std::vector<Vec2> centre;
   for (int k = 0; k < 200; ++k) {
-    centre.emplace_back(uniform(rng, 0, 30), uniform(rng, 0, 30));
+    centre.push_back(uniform_point(rng, 0, 30));
     t.insert(box_at(centre.back(), Vec2(0.5, 0.5)));
   }
   t.insert({Vec2(-1, -1), Vec2(31, 31)});
@@ -192,7 +194,7 @@ TEST(SweepAndPrune, HugeAndFarBoxes) {
   t.insert({Vec2(1e300, 1e300), Vec2(1e300, 1e300)});
   for (int frame = 0; frame < 20; ++frame) {
     for (std::size_t k = 0; k < 200; ++k) {
-      centre[k] += Vec2(uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3));
+      centre[k] += uniform_point(rng, -0.3, 0.3);
       t.move(k, box_at(centre[k], Vec2(0.5, 0.5)));
     }
     t.update_and_compare("huge and far");
@@ -205,7 +207,7 @@ TEST(SweepAndPrune, HeavyChurnMatchesBruteForce) {
   Rng rng(4);
   Twin t(0.02);
   std::vector<Vec2> centre;
-  const auto fresh = [&] { return box_at(Vec2(uniform(rng, 0, 10), uniform(rng, 0, 10)), Vec2(0.2, 0.2)); };
+  const auto fresh = [&] { return box_at(uniform_point(rng, 0, 10), Vec2(0.2, 0.2)); };
   for (int k = 0; k < 300; ++k) t.insert(fresh());
   for (int frame = 0; frame < 60; ++frame) {
     for (int k = 0; k < 30 && !t.ids.empty(); ++k)

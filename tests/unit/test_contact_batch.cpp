@@ -5,6 +5,7 @@
 // lengths; and lists of different lengths refused.
 #include "batch_testing.h"
 #include "hard_cases.h"
+#include "tools/random.h"
 
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
@@ -110,15 +111,19 @@ TEST(ContactBatch, HardCasesAndAxisCasesMatchTheOneOffKernel) {
 // ellipses to aspect 1e6, in batches of 1 to 600 pairs so that chunks end everywhere in a vector.
 TEST(ContactBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   std::mt19937_64 rng(31);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   Pairs<Circle, Ellipse> p;
   while (p.size() < 500'000) {
-    Ellipse e{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng), 0, 7 * u(rng)};
+    const double ey = 4 * u(rng);
+    Ellipse e{Vec2(4 * u(rng), ey), 0.05 + u(rng), 0, 7 * u(rng)};
     e.b = e.a / std::pow(10.0, 6 * u(rng));
-    Circle c{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng)};
+    const double cy = 4 * u(rng);
+    Circle c{Vec2(4 * u(rng), cy), 0.05 + u(rng)};
     if (p.size() % 2 == 1) {
-      const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
-      const double gap = (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng));
+      const double sine = std::sin(7 * u(rng));
+      const Vec2 n(std::cos(7 * u(rng)), sine);
+      const double side = u(rng) - 0.5;
+      const double gap = side * std::pow(10.0, -16 * u(rng));
       c.center = support(e, n) + (gap + c.radius) * n;
     }
     if (intersects(aabb(c), aabb(e))) p.add(c, e);
@@ -160,15 +165,19 @@ TEST(ContactBatch, RectCircleCasesMatchTheOneOffKernel) {
 // centre near the rectangle's boundary (corners included), in batches of ragged lengths.
 TEST(ContactBatch, RandomRectCirclePairsMatchTheOneOffKernel) {
   std::mt19937_64 rng(37);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   Pairs<Rect, Circle> p;
   while (p.size() < 500'000) {
     const double w = 0.05 + u(rng);
-    Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(w, w / std::pow(10.0, 6 * u(rng))), 7 * u(rng)};
-    Circle c{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng)};
+    const double ry = 4 * u(rng);
+    const Vec2 rc(4 * u(rng), ry);
+    Rect r{rc, Vec2(w, w / std::pow(10.0, 6 * u(rng))), 7 * u(rng)};
+    const double cy = 4 * u(rng);
+    Circle c{Vec2(4 * u(rng), cy), 0.05 + u(rng)};
     if (p.size() % 2 == 1) {
       const Orientation o = Orientation::of(r.angle);
-      const double x = r.half_extents.x() * (2 * std::round(u(rng)) - 1) * (1 + (u(rng) - 0.5) * 1e-12);
+      const double sign = 2 * std::round(u(rng)) - 1;
+      const double x = r.half_extents.x() * sign * (1 + (u(rng) - 0.5) * 1e-12);
       const double y = r.half_extents.y() * (2 * u(rng) - 1);
       const Vec2 local = p.size() % 4 == 1 ? Vec2(x, y) : Vec2(x, r.half_extents.y() + (u(rng) - 0.5) * 1e-12);
       c.center = r.center + Vec2(o.c * local.x() - o.s * local.y(), o.s * local.x() + o.c * local.y());

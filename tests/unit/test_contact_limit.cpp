@@ -4,6 +4,7 @@
 // pairs whose boxes overlap (as a broad phase hands them over), at limits from deep overlap to far
 // apart, and at each pair's own separation.
 #include "hard_cases.h"
+#include "tools/random.h"
 
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
@@ -78,11 +79,15 @@ TEST(ContactLimit, HardCaseFamiliesOfEveryPair) {
 }
 
 Shape random_shape(std::mt19937_64& rng, int kind) {
-  std::uniform_real_distribution<double> unit(0, 1);
+  const tool::Uniform unit(0, 1);
   const auto size = [&] { return 0.05 * std::pow(20.0, unit(rng)); };
-  const Vec2 centre(4 * unit(rng) - 2, 4 * unit(rng) - 2);
+  const double y = 4 * unit(rng) - 2;
+  const Vec2 centre(4 * unit(rng) - 2, y);
   const double angle = 6.3 * unit(rng);
-  if (kind == 0) return Rect{centre, Vec2(size(), size()), angle};
+  if (kind == 0) {
+    const double height = size();
+    return Rect{centre, Vec2(size(), height), angle};
+  }
   if (kind == 1) return Circle{centre, size()};
   const double a = size();
   return Ellipse{centre, a, a / std::pow(100.0, unit(rng)), angle};

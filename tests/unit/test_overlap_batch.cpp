@@ -14,6 +14,7 @@
 #include "narrowphase/batch/overlap_pairs.h"
 #include "narrowphase/overlap/overlap_rect_ellipse.h"
 #include "narrowphase/shared/lanes.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -181,7 +182,7 @@ TEST(OverlapBatch, HardCaseEllipsePairsMatchTheOneOffKernel) {
 // sign) along a random direction, needles to aspect 1e6, in batches of ragged lengths.
 TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   std::mt19937_64 rng(29);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   Pairs<Rect, Ellipse> with_ellipses;
   Pairs<Rect, Rect> rects;
   Pairs<Circle, Circle> circles;
@@ -190,16 +191,22 @@ TEST(OverlapBatch, RandomCandidatePairsMatchTheOneOffKernel) {
   Pairs<Ellipse, Ellipse> ellipses;
   while (with_ellipses.size() < 2'000'000) {
     const double aspect = std::pow(10.0, 6 * u(rng));
-    const Rect r{Vec2(4 * u(rng), 4 * u(rng)), Vec2(0.05 + u(rng), 0.05 + u(rng)), 7 * u(rng)};
-    Ellipse e{Vec2(4 * u(rng), 4 * u(rng)), 0.05 + u(rng), 0, 7 * u(rng)};
+    const double ry = 4 * u(rng);
+    const Vec2 rc(4 * u(rng), ry);
+    const double height = 0.05 + u(rng);
+    const Rect r{rc, Vec2(0.05 + u(rng), height), 7 * u(rng)};
+    const double ey = 4 * u(rng);
+    Ellipse e{Vec2(4 * u(rng), ey), 0.05 + u(rng), 0, 7 * u(rng)};
     e.b = e.a / aspect;
     Rect s{e.center, Vec2(e.a, e.b), e.angle};
     Circle c{e.center, e.a}, d{r.center, 0.05 + u(rng)};
     Ellipse f{r.center, 0.05 + u(rng), 0, 7 * u(rng)};
     f.b = f.a / std::pow(10.0, 3 * u(rng));
     if (with_ellipses.size() % 2 == 1) {
-      const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
-      const double gap = (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng));
+      const double sine = std::sin(7 * u(rng));
+      const Vec2 n(std::cos(7 * u(rng)), sine);
+      const double side = u(rng) - 0.5;
+      const double gap = side * std::pow(10.0, -16 * u(rng));
       e.center = support(r, n) + gap * n - support(e, Vec2(-n));
       s.center = support(r, n) + gap * n - support(s, Vec2(-n));
       c.center = support(r, n) + gap * n - support(c, Vec2(-n));
@@ -251,15 +258,18 @@ void check_cores(std::span<const Form> as, std::span<const Form> bs) {
   }
   const std::size_t family_pairs = p.size();
   std::mt19937_64 rng(37);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   for (std::size_t k = 0; p.size() < family_pairs + 300'000; ++k) {
     const auto random = [&](std::span<const Form> kinds) {
-      return random_shape(*(kinds.begin() + k % kinds.size()), 0.05 + u(rng), std::pow(10.0, 3 * u(rng)), rng);
+      const double aspect = std::pow(10.0, 3 * u(rng));
+      return random_shape(*(kinds.begin() + k % kinds.size()), 0.05 + u(rng), aspect, rng);
     };
     const Shape a = random(as);
     Shape b = random(bs);
-    const Vec2 n(std::cos(7 * u(rng)), std::sin(7 * u(rng)));
-    const double gap = k % 2 == 0 ? (u(rng) - 0.5) * std::pow(10.0, -16 * u(rng)) : 4 * (u(rng) - 0.5);
+    const double sine = std::sin(7 * u(rng));
+    const Vec2 n(std::cos(7 * u(rng)), sine);
+    const double side = u(rng) - 0.5;
+    const double gap = k % 2 == 0 ? side * std::pow(10.0, -16 * u(rng)) : 4 * side;
     std::get<B>(b).center = support(a, n) + gap * n - support(b, Vec2(-n));
     if (intersects(aabb(a), aabb(b))) p.add(std::get<A>(a), std::get<B>(b));
   }

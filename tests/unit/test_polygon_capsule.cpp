@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 #include "refusals.h"
+#include "tools/random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -158,11 +159,12 @@ TEST(CapsuleShape, RefusesBadFields) {
 // away: the polygon's own vertices, counter-clockwise, whatever the order.
 TEST(PolygonShape, HullFindsTheVerticesOfAKnownPolygon) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const tool::Uniform unit(0.0, 1.0);
   for (int trial = 0; trial < 500; ++trial) {
     const int n = 3 + trial % 6;
     const double scale = std::pow(10.0, -6 + 12 * unit(rng));
-    const Vec2 offset = scale * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+    const double y = unit(rng) - 0.5;
+    const Vec2 offset = scale * Vec2(unit(rng) - 0.5, y);
     // Vertices on an ellipse at angles at least 2 pi / (2 n) apart: strictly convex by construction.
     std::vector<double> angles;
     for (int k = 0; k < n; ++k) angles.push_back(2 * kPi * (k + 0.5 * unit(rng)) / n);
@@ -391,22 +393,27 @@ TYPED_TEST(CurvedOutline, AabbIsTight) {
 // they overlap, the contact's separation the distance when apart.
 TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const tool::Uniform unit(0.0, 1.0);
   const std::vector<Vec2> kite = {{-1, -0.5}, {3, -0.25}, {2.5, 1.5}, {0.25, 2}, {-0.75, 1}};
   const auto random_shape = [&](int kind) -> Shape {
-    const Vec2 c(4 * unit(rng) - 2, 4 * unit(rng) - 2);
+    const double y = 4 * unit(rng) - 2;
+    const Vec2 c(4 * unit(rng) - 2, y);
     const double angle = 7 * unit(rng);
     switch (kind) {
-      case 0:
-        return Rect{c, Vec2(0.5 + unit(rng), 0.2 + unit(rng)), angle};
+      case 0: {
+        const double height = 0.2 + unit(rng);
+        return Rect{c, Vec2(0.5 + unit(rng), height), angle};
+      }
       case 1:
         return Circle{c, 0.3 + unit(rng)};
       case 2:
         return Ellipse{c, 0.3 + 2 * unit(rng), 0.2 + unit(rng), angle};
       case 3:
         return Capsule{c, 0.2 + unit(rng), 0.1 + unit(rng), angle};
-      case 6:
-        return Segment::between(c, c + Vec2(4 * unit(rng) - 2, 4 * unit(rng) - 2));
+      case 6: {
+        const double dy = 4 * unit(rng) - 2;
+        return Segment::between(c, c + Vec2(4 * unit(rng) - 2, dy));
+      }
       default:
         return ConvexPolygon::of(kite, kind == 4 ? 0.0 : 0.2).at(c, angle);
     }

@@ -5,6 +5,7 @@
 #include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include "tools/query_command.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -26,16 +27,19 @@ using testing::moved;
 
 std::vector<std::pair<Shape, Shape>> random_pairs(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.05, 1.5), pos(-2, 2), angle(-7, 7);
+  const tool::Uniform u(0.05, 1.5), pos(-2, 2), angle(-7, 7);
   const auto shape = [&](int kind) -> Shape {
-    const Vec2 c(pos(rng), pos(rng));
+    const double y = pos(rng);
+    const Vec2 c(pos(rng), y);
     if (kind == 0) return Circle{c, u(rng)};
     if (kind == 1) return Ellipse{c, u(rng), u(rng) / 20, angle(rng)};
-    return Rect{c, Vec2(u(rng), u(rng)), angle(rng)};
+    const double height = u(rng);
+    return Rect{c, Vec2(u(rng), height), angle(rng)};
   };
   std::vector<std::pair<Shape, Shape>> out;
   for (int k = 0; k < n; ++k) {
-    out.emplace_back(shape(k % 3), shape((k / 3) % 3));
+    const Shape b = shape((k / 3) % 3);
+    out.emplace_back(shape(k % 3), b);
   }
   return out;
 }
@@ -49,10 +53,11 @@ TEST(Dispatch, InvariantUnderRigidMotionOfBoth) {
   double worst_distance = 0, worst_point = 0;
   const auto what = [](const Shape& a, const Shape& b) { return std::string(shape_name(a)) + "-" + shape_name(b); };
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi), shift(-50, 50);
+  const tool::Uniform angle(-std::numbers::pi, std::numbers::pi), shift(-50, 50);
   for (const auto& [a, b] : random_pairs(3000, 4)) {
     const double phi = angle(rng);
-    const Vec2 t(shift(rng), shift(rng));
+    const double ty = shift(rng);
+    const Vec2 t(shift(rng), ty);
     const DistanceResult d0 = distance(a, b);
     const DistanceResult d1 = distance(moved(a, phi, t), moved(b, phi, t));
     ASSERT_LE(std::abs(d0.distance - d1.distance), kDistanceBound) << what(a, b);
@@ -112,14 +117,19 @@ TEST(Dispatch, RejectsAbsurdMagnitudes) {
 // and B, with distance 0 exactly for overlapping solids.
 TEST(Dispatch, ExtremeAcceptedMagnitudesGiveFiniteAnswers) {
   std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tool::Uniform u(0.0, 1.0);
   const auto magnitude = [&] { return std::pow(10.0, -50 + 100 * u(rng)); };
-  const auto coordinate = [&] { return (u(rng) < 0.5 ? -1 : 1) * (u(rng) < 0.2 ? 0.0 : magnitude()); };
+  const auto coordinate = [&] {
+    const double sign = u(rng) < 0.5 ? -1 : 1;
+    return sign * (u(rng) < 0.2 ? 0.0 : magnitude());
+  };
   const auto shape = [&](int kind) -> Shape {
-    const Vec2 c(coordinate(), coordinate());
+    const double y = coordinate();
+    const Vec2 c(coordinate(), y);
     if (kind == 0) return Circle{c, magnitude()};
     if (kind == 1) return Ellipse{c, magnitude(), magnitude(), 7 * u(rng)};
-    return Rect{c, Vec2(magnitude(), magnitude()), 7 * u(rng)};
+    const double height = magnitude();
+    return Rect{c, Vec2(magnitude(), height), 7 * u(rng)};
   };
   for (int k = 0; k < 20000; ++k) {
     const Shape a = shape(k % 3), b = shape((k / 3) % 3);

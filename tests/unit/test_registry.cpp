@@ -7,6 +7,7 @@
 
 #include "narrowphase/pairs.h"
 #include "shapes/kinds.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -135,22 +136,22 @@ TEST(Registry, NumbersAreTheFormatsOwn) {
 // The list with the half-plane dispatches the library's pairs as the library does, to the bit.
 TEST(Registry, AnotherListDispatchesTheLibrarysPairsAlike) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> at(-3, 3), size(0.2, 2), turn(-3, 3);
+  const tool::Uniform size(0.2, 2), turn(-3, 3);
   const auto random_shape = [&](int kind) -> Shape {
-    const Vec2 c(at(rng), at(rng));
+    const Vec2 c = tool::uniform_point(rng, -3, 3);
     switch (kind) {
       case 0:
         return Circle{c, size(rng)};
       case 1:
         return Ellipse{c, size(rng), size(rng), turn(rng)};
       case 2:
-        return Rect{c, Vec2(size(rng), size(rng)), turn(rng)};
+        return Rect{c, tool::uniform_point(rng, 0.2, 2), turn(rng)};
       case 3:
         return Capsule{c, size(rng), size(rng), turn(rng)};
       case 4:
         return ConvexPolygon::regular(5, size(rng), 0.1).at(c, turn(rng));
       default:
-        return Segment{c, Vec2(size(rng), size(rng)), turn(rng)};
+        return Segment{c, tool::uniform_point(rng, 0.2, 2), turn(rng)};
     }
   };
   int compared = 0;

@@ -1,6 +1,5 @@
 // Scene files for `collide2d run`: round trip, every kind of broken file named by its field, and a
 // run whose last frame agrees with an all-pairs check.
-#include "tools/random.h"
 #include "tools/scene/scene.h"
 #include "tools/scene/scene_run.h"
 #include "world_reference.h"
@@ -10,7 +9,6 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <thread>
 
@@ -298,27 +296,6 @@ TEST(SceneRun, LastFrameAgreesWithAllPairs) {
   EXPECT_GT(occurrences(text, "class=\"sensor"), 0u);
   EXPECT_GT(occurrences(text, "class=\"static"), 0u);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
-}
-
-// tool::uniform maps the generator's numbers as libstdc++'s distribution does (where the tests are
-// built with it), and stays in [lo, hi) at the generator's extremes.
-TEST(Scene, UniformIsLibstdcxxsDistributionWrittenOut) {
-#ifdef __GLIBCXX__
-  std::mt19937_64 ours(42), theirs(42);
-  for (int k = 0; k < 100000; ++k) {
-    const double lo = k % 7 - 3.0, hi = lo + 0.5 + k % 5;
-    ASSERT_EQ(uniform(ours, lo, hi), std::uniform_real_distribution<double>(lo, hi)(theirs)) << k;
-  }
-#endif
-  // The largest numbers round to 2^64, a u of 1, which is kept below 1; the smallest give lo.
-  struct Fixed {
-    std::uint64_t value;
-    std::uint64_t operator()() const { return value; }
-  };
-  Fixed top{~std::uint64_t{0}}, bottom{0};
-  EXPECT_EQ(uniform(top, 0.0, 1.0), std::nextafter(1.0, 0.0));
-  EXPECT_LT(uniform(top, -2.0, 3.0), 3.0);
-  EXPECT_EQ(uniform(bottom, -2.0, 3.0), -2.0);
 }
 
 // The summary names the threads asked for (every hardware thread when none is named), and each

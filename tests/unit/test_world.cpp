@@ -31,7 +31,7 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
     for (int frame = 0; frame < 40; ++frame) {
       for (const BodyId id : world.bodies()) {
         if (id.index >= velocity.size()) velocity.resize(id.index + 1);
-        if (frame == 0) velocity[id.index] = Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+        if (frame == 0) velocity[id.index] = uniform_point(rng, -0.1, 0.1);
         world.move_by(id, velocity[id.index], 0.02);
       }
       if (frame % 10 == 5) {  // churn
@@ -91,7 +91,7 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
     }
     for (int frame = 0; frame < 20; ++frame) {
       for (const BodyId id : world.bodies()) {
-        const Vec2 shift(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1));
+        const Vec2 shift = uniform_point(rng, -0.1, 0.1);
         world.move_by(id, shift, 0.03);
         plain.move_by(id, shift, 0.03);
       }

@@ -4,6 +4,7 @@
 #include <collide2d/world.h>
 
 #include "tests/support/allocation_counter.h"
+#include "tools/random.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +31,7 @@ struct Scene {
 
   explicit Scene(const WorldOptions& options) : world(options) {
     std::mt19937_64 rng{5};
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const tool::Uniform u(0.0, 1.0);
     const double side = std::sqrt(28.0 * 1000);
     const auto shape = [&](const Vec2& c) -> Shape {
       const double half = 0.3 + 1.7 * u(rng);
@@ -43,13 +44,19 @@ struct Scene {
           return Rect{c, Vec2(half, half * (0.2 + 0.8 * u(rng))), 6.0 * u(rng)};
       }
     };
-    for (int k = 0; k < 200; ++k) world.add(shape(Vec2(u(rng) * side, u(rng) * side)), {.is_static = true});
+    for (int k = 0; k < 200; ++k) {
+      const double y = u(rng) * side;
+      world.add(shape(Vec2(u(rng) * side, y)), {.is_static = true});
+    }
     for (int k = 0; k < 4; ++k) {
-      world.add(Rect{Vec2(u(rng) * side, u(rng) * side), Vec2(8, 8), 0.0}, {.is_static = true, .sensor = true});
+      const double y = u(rng) * side;
+      world.add(Rect{Vec2(u(rng) * side, y), Vec2(8, 8), 0.0}, {.is_static = true, .sensor = true});
     }
     for (int k = 0; k < 1000; ++k) {
-      ids.push_back(world.add(shape(Vec2(u(rng) * side, u(rng) * side))));
-      velocity.emplace_back(0.4 * (u(rng) - 0.5), 0.4 * (u(rng) - 0.5));
+      const double y = u(rng) * side;
+      ids.push_back(world.add(shape(Vec2(u(rng) * side, y))));
+      const double vy = 0.4 * (u(rng) - 0.5);
+      velocity.emplace_back(0.4 * (u(rng) - 0.5), vy);
       spin.push_back(0.1 * (u(rng) - 0.5));
     }
   }
@@ -97,9 +104,12 @@ TEST(WorldAllocations, CallbackQueriesAllocateNothing) {
   Scene scene({.fat_margin = 0.1, .threads = 1});
   for (int k = 0; k < 400; ++k) scene.frame();
   std::mt19937_64 rng{8};
-  std::uniform_real_distribution<double> u(0.0, 170.0);
+  const tool::Uniform u(0.0, 170.0);
   std::vector<Vec2> points;
-  for (int k = 0; k < 100; ++k) points.emplace_back(u(rng), u(rng));
+  for (int k = 0; k < 100; ++k) {
+    const double y = u(rng);
+    points.emplace_back(u(rng), y);
+  }
   // Callbacks that hold more than std::function keeps without allocating (two pointers in
   // libstdc++), as a game's do.
   std::size_t found = 0, index_sum = 0;

@@ -2,6 +2,7 @@
 // every pair.
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "world_testing.h"
 
 #include <gtest/gtest.h>
@@ -95,7 +96,8 @@ TEST(World, ImpactsMatchAllPairs) {
     for (std::size_t k = 0; k < ids.size(); ++k) {
       if (!world.contains(ids[k])) continue;
       const double speed = k % 3 == 0 ? 3.0 : 0.3;
-      world.move_by(ids[k], Vec2(uniform(rng, -speed, speed), uniform(rng, -speed, speed)), uniform(rng, -1, 1));
+      const double turn = uniform(rng, -1, 1);
+      world.move_by(ids[k], uniform_point(rng, -speed, speed), turn);
     }
     if (frame == 5) world.set_continuous(ids[3], false);
     if (frame == 7) world.remove(ids[6]);

@@ -2,6 +2,7 @@
 #include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "world_testing.h"
 
 #include <gtest/gtest.h>
@@ -45,8 +46,10 @@ TEST(WorldFilter, FollowsBox2DsRules) {
 TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
   Rng rng(21);
   World world({.fat_margin = 0.05});
-  for (int k = 0; k < 200; ++k)
-    world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = random_filter(rng)});
+  for (int k = 0; k < 200; ++k) {
+    const Filter filter = random_filter(rng);
+    world.add(random_shape(rng, 12.0), {.user_id = static_cast<std::uint64_t>(k), .filter = filter});
+  }
   world.set_pair_predicate([&world](BodyId a, BodyId b) { return (world.user_id(a) + world.user_id(b)) % 5 != 0; });
   std::vector<ShapePair> previous;
   std::size_t refused = 0, ended_by_filters = 0;
@@ -57,8 +60,7 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
         if (id.index % 3 == 0) world.set_filter(id, random_filter(rng));
       }
     } else {
-      for (const BodyId id : world.bodies())
-        world.move_by(id, Vec2(uniform(rng, -0.1, 0.1), uniform(rng, -0.1, 0.1)), 0.03);
+      for (const BodyId id : world.bodies()) world.move_by(id, uniform_point(rng, -0.1, 0.1), 0.03);
     }
     world.update();
     const std::vector<BodyId> ids = world.bodies();
@@ -93,7 +95,10 @@ TEST(WorldFilter, PairsMatchAllPairsWithTheSameFilters) {
 TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
   Rng rng(22);
   World world;
-  for (int k = 0; k < 200; ++k) world.add(random_shape(rng, 10.0), {.filter = random_filter(rng)});
+  for (int k = 0; k < 200; ++k) {
+    const Filter filter = random_filter(rng);
+    world.add(random_shape(rng, 10.0), {.filter = filter});
+  }
   const auto through = [](const QueryFilter& q, const Filter& f) {
     return (f.category & q.mask) && (f.mask & q.category);
   };
@@ -101,7 +106,7 @@ TEST(WorldFilter, QueriesSkipWhatTheFilterRefuses) {
     const QueryFilter q{.category = std::uint64_t{1} << static_cast<int>(uniform(rng, 0, 3)),
                         .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
     const Shape probe = random_shape(rng, 10.0);
-    const Vec2 origin(uniform(rng, -1, 11), uniform(rng, -1, 11));
+    const Vec2 origin = uniform_point(rng, -1, 11);
     const double angle = uniform(rng, 0, 6.3);
     const Vec2 dir(std::cos(angle), std::sin(angle));
     std::vector<BodyId> hit, near;

@@ -3,6 +3,7 @@
 #include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "world_testing.h"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ TEST(World, QueriesMatchBruteForce) {
   const World world = random_world(rng, 300);
   for (int k = 0; k < 100; ++k) {
     const Shape probe = random_shape(rng, 10.0);
-    const Vec2 point(uniform(rng, 0, 10), uniform(rng, 0, 10));
+    const Vec2 point = uniform_point(rng, 0, 10);
     const double d = uniform(rng, 0.0, 1.0);
     // Every third box has no width, no height, or neither (a segment or a point).
     const double w = k % 3 == 0 && k % 2 == 0 ? 0.0 : uniform(rng, 0, 2);
@@ -56,7 +57,7 @@ TEST(World, RayCastFindsTheFirstExactHit) {
   const World world = random_world(rng, 150);
   int hits = 0, inside = 0;
   for (int k = 0; k < 600; ++k) {
-    const Vec2 origin(uniform(rng, -2, 12), uniform(rng, -2, 12));
+    const Vec2 origin = uniform_point(rng, -2, 12);
     const double angle = uniform(rng, 0, 6.3);
     const Vec2 dir(std::cos(angle), std::sin(angle));
     const RayOptions options{.from_inside = k % 2 == 1};
@@ -109,9 +110,9 @@ TEST(RayCast, NeedlesAndRoundEllipsesMatchTheQuadraticIn50Digits) {
   for (int k = 0; k < 4000; ++k) {
     const double thin = std::pow(10.0, -uniform(rng, 0, 20));
     const double a = k % 4 == 0 ? uniform(rng, 0.5, 4) : thin, b = uniform(rng, 0.5, 4);
-    const Ellipse e{Vec2(uniform(rng, -2, 2), uniform(rng, -2, 2)), a, b, 0.0};
+    const Ellipse e{uniform_point(rng, -2, 2), a, b, 0.0};
     const double far = k % 2 == 0 ? 10.0 : 1e4;
-    const Vec2 origin(uniform(rng, -far, far), uniform(rng, -far, far));
+    const Vec2 origin = uniform_point(rng, -far, far);
     // Aimed near the needle: at a point of its long axis, or just past its end.
     const Vec2 aim = e.center + Vec2(0.0, uniform(rng, -1.3, 1.3) * b);
     const Vec2 unit = (aim - origin).normalized();
@@ -157,11 +158,12 @@ TEST(RayCast, TinyShapesFarAwayHaveAUnitNormal) {
   for (int k = 0; k < 20000; ++k) {
     const double size = std::pow(10.0, -uniform(rng, 0, 50));
     const double angle = uniform(rng, -3.2, 3.2);
-    const Vec2 c(uniform(rng, -2, 2), uniform(rng, -2, 2));
+    const Vec2 c = uniform_point(rng, -2, 2);
     const Shape shapes[] = {Circle{c, size}, Ellipse{c, size, size * uniform(rng, 0.01, 100), angle},
                             Rect{c, Vec2(size, size * uniform(rng, 0.01, 100)), angle}};
     const Shape& s = shapes[k % 3];
-    const Vec2 origin = c + std::pow(10.0, uniform(rng, 0, 8)) * Vec2(uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const Vec2 direction = uniform_point(rng, -1, 1);
+    const Vec2 origin = c + std::pow(10.0, uniform(rng, 0, 8)) * direction;
     const Vec2 unit = Vec2(c - origin).normalized();
     const auto hit = ray_cast(s, origin, unit, 1e9);
     if (!hit || contains(s, origin)) continue;
@@ -180,7 +182,7 @@ TEST(World, CastFindsTheFirstBody) {
   int skipped = 0;
   for (int k = 0; k < 400; ++k) {
     const Shape probe = random_shape(rng, 10.0);
-    const Vec2 translation(uniform(rng, -4, 4), uniform(rng, -4, 4));
+    const Vec2 translation = uniform_point(rng, -4, 4);
     const CastOptions options{.skip_initial_overlap = k % 2 == 1};
     std::optional<BodyCastHit> best;
     for (const BodyId id : world.bodies()) {
@@ -247,8 +249,8 @@ TEST(World, CallbackQueriesStopWhenTold) {
   int stopped = 0;
   for (int k = 0; k < 100; ++k) {
     const Shape probe = random_shape(rng, 10.0);
-    const Vec2 origin(uniform(rng, -1, 11), uniform(rng, -1, 11));
-    const Vec2 direction(uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const Vec2 origin = uniform_point(rng, -1, 11);
+    const Vec2 direction = uniform_point(rng, -1, 1);
     std::vector<BodyId> seen;
     world.within(probe, 0.5, [&seen](const BodyShape& found) {
       seen.push_back(found.body);

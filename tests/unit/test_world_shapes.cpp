@@ -4,6 +4,7 @@
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
 #include "mp_reference.h"
+#include "tools/random.h"
 #include "world_reference.h"
 #include "world_testing.h"
 
@@ -25,12 +26,13 @@ namespace {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-int pick(Rng& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
+using tool::uniform;
+using tool::uniform_point;
+int pick(Rng& rng, int n) { return static_cast<int>(tool::uniform_index(rng, static_cast<std::size_t>(n))); }
 
 // A shape in a body's frame: about its origin, half the time with an angle of its own.
 Shape local_shape(Rng& rng) {
-  const Vec2 offset(uniform(rng, -1.5, 1.5), uniform(rng, -1.5, 1.5));
+  const Vec2 offset = uniform_point(rng, -1.5, 1.5);
   const double size = uniform(rng, 0.2, 0.8), angle = pick(rng, 2) == 0 ? 0.0 : uniform(rng, -3, 3);
   switch (pick(rng, 3)) {
     case 0:
@@ -60,7 +62,7 @@ ShapeDef shape_def(Rng& rng, std::uint64_t user) {
 BodyId add_body(World& world, Rng& rng, std::uint64_t user) {
   std::vector<ShapeDef> defs;
   for (int k = 1 + pick(rng, 4); k > 0; --k) defs.push_back(shape_def(rng, 1000 * user + k));
-  const Pose pose{Vec2(uniform(rng, 0, 20), uniform(rng, 0, 20)), uniform(rng, -3, 3)};
+  const Pose pose{uniform_point(rng, 0, 20), uniform(rng, -3, 3)};
   return world.add(pose, defs, {.user_id = user, .is_static = pick(rng, 6) == 0, .sensor = pick(rng, 10) == 0});
 }
 
@@ -141,7 +143,7 @@ TEST(WorldShapes, PairsMatchAllShapePairsThroughChurn) {
     for (int frame = 0; frame < 30; ++frame) {
       const std::string what = "margin " + std::to_string(margin) + " frame " + std::to_string(frame);
       for (const BodyId id : world.bodies()) {
-        if (!world.is_static(id)) world.move_by(id, Vec2(uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2)), 0.05);
+        if (!world.is_static(id)) world.move_by(id, uniform_point(rng, -0.2, 0.2), 0.05);
       }
       if (frame % 5 == 2) churn(world, rng, next_user);
       world.update();
@@ -201,8 +203,8 @@ TEST(WorldShapes, ShapesArePlacedInTheirBodysFrame) {
   double worst = 0.0;
   for (int k = 0; k < 500; ++k) {
     const std::vector<ShapeDef> defs = {{.shape = local_shape(rng)}, {.shape = Rect{Vec2::Zero(), Vec2(1, 2), 0.0}}};
-    const BodyId id = world.add(Pose{Vec2(uniform(rng, -50, 50), uniform(rng, -50, 50)), 0.0}, defs);
-    const Vec2 position(uniform(rng, -1e3, 1e3), uniform(rng, -1e3, 1e3));
+    const BodyId id = world.add(Pose{uniform_point(rng, -50, 50), 0.0}, defs);
+    const Vec2 position = uniform_point(rng, -1e3, 1e3);
     const double angle = uniform(rng, -10, 10);
     world.move_to(id, position, angle);
     const std::vector<ShapeId> shapes = world.shapes(id);
@@ -237,7 +239,7 @@ TEST(WorldShapes, ABodyOfSeveralShapesPairsAsItsShapesPosedByHand) {
   std::vector<Pose> poses;
   std::vector<BodyId> bodies, parts;
   for (int k = 0; k < 300; ++k) {
-    poses.push_back({Vec2(uniform(rng, 0, 25), uniform(rng, 0, 25)), uniform(rng, -3, 3)});
+    poses.push_back({uniform_point(rng, 0, 25), uniform(rng, -3, 3)});
     bodies.push_back(compound.add(poses.back(), defs));
     for (const Shape& s : ship)
       parts.push_back(
@@ -246,7 +248,7 @@ TEST(WorldShapes, ABodyOfSeveralShapesPairsAsItsShapesPosedByHand) {
   std::size_t pairs = 0;
   for (int frame = 0; frame < 30; ++frame) {
     for (std::size_t k = 0; k < poses.size(); ++k) {
-      poses[k].position += Vec2(uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2));
+      poses[k].position += uniform_point(rng, -0.2, 0.2);
       poses[k].angle += uniform(rng, -0.1, 0.1);
       compound.move_to(bodies[k], poses[k].position, poses[k].angle);
       const Orientation turn = Orientation::of(poses[k].angle);

@@ -2,6 +2,7 @@
 #include <collide2d/ray_cast.h>
 #include <collide2d/time_of_impact.h>
 #include <collide2d/world.h>
+#include "tools/random.h"
 #include "world_testing.h"
 
 #include <gtest/gtest.h>
@@ -42,7 +43,7 @@ TEST(WorldStatic, PairsMatchAllPairsWithStaticsAndSensors) {
       const std::vector<BodyId> ids = world.bodies();
       if (frame != 29) {
         for (const BodyId id : ids) {
-          if (!world.is_static(id)) world.move_by(id, Vec2(uniform(rng, -0.15, 0.15), uniform(rng, -0.15, 0.15)), 0.05);
+          if (!world.is_static(id)) world.move_by(id, uniform_point(rng, -0.15, 0.15), 0.05);
         }
       }
       if (frame == 7) {
@@ -103,8 +104,9 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
   Rng rng(32);
   World world({.fat_margin = 0.1});
   for (int k = 0; k < 450; ++k) {
+    const Filter filter = random_filter(rng);
     world.add(random_shape(rng, 12.0),
-              {.user_id = 0, .filter = random_filter(rng), .is_static = k % 3 != 0, .sensor = k % 10 == 0});
+              {.user_id = 0, .filter = filter, .is_static = k % 3 != 0, .sensor = k % 10 == 0});
   }
   world.update();
   const auto through = [](const QueryFilter& q, const Filter& f) {
@@ -112,19 +114,18 @@ TEST(WorldStatic, QueriesSeeSolidBodiesOfBothKinds) {
   };
   for (int k = 0; k < 80; ++k) {
     if (k == 40) {
-      for (const BodyId id : world.bodies())
-        world.move_by(id, Vec2(uniform(rng, -0.5, 0.5), uniform(rng, -0.5, 0.5)), 0.2);
+      for (const BodyId id : world.bodies()) world.move_by(id, uniform_point(rng, -0.5, 0.5), 0.2);
     }
     const QueryFilter q =
         k % 2 == 0 ? QueryFilter{} : QueryFilter{.category = 1, .mask = static_cast<std::uint64_t>(uniform(rng, 1, 8))};
     const Shape probe = random_shape(rng, 12.0);
-    const Vec2 point(uniform(rng, 0, 12), uniform(rng, 0, 12));
-    const Aabb box{point, point + Vec2(uniform(rng, 0, 3), uniform(rng, 0, 3))};
-    const Vec2 origin(uniform(rng, -1, 13), uniform(rng, -1, 13));
+    const Vec2 point = uniform_point(rng, 0, 12);
+    const Aabb box{point, point + uniform_point(rng, 0, 3)};
+    const Vec2 origin = uniform_point(rng, -1, 13);
     const double angle = uniform(rng, 0, 6.3);
     const Vec2 dir(2.0 * std::cos(angle), 2.0 * std::sin(angle));
     const Vec2 unit = dir / dir.norm();
-    const Vec2 shift(uniform(rng, -4, 4), uniform(rng, -4, 4));
+    const Vec2 shift = uniform_point(rng, -4, 4);
     std::vector<BodyId> hit, near, in_box;
     std::vector<RayHit> all;
     std::optional<BodyCastHit> cast;

@@ -41,8 +41,7 @@ TEST(WorldThreads, EveryThreadCountReportsTheSame) {
   std::size_t candidates = 0;
   for (int frame = 0; frame < 10; ++frame) {
     std::vector<std::pair<Vec2, double>> moves;
-    for (const BodyId id : worlds[0].bodies())
-      moves.emplace_back(Vec2(uniform(rng, -0.3, 0.3), uniform(rng, -0.3, 0.3)), 0.05);
+    for (const BodyId id : worlds[0].bodies()) moves.emplace_back(uniform_point(rng, -0.3, 0.3), 0.05);
     for (World& w : worlds) {
       std::size_t m = 0;
       for (const BodyId id : w.bodies()) {
