@@ -1,11 +1,11 @@
-// Contact kernels against Box2D 2.4.1's manifold functions on the five workloads of bench/workload.h
+// Contact kernels against Box2D 2.4.1's manifold functions on the five workloads of bench/shape_pairs.h
 // (candidates:0 random pairs, most far apart; 1 the generator's candidate pairs, whose boxes
 // overlap; 2 the built-in scene's broad-phase pairs; 3 and 4 the overlapping pairs among 1 and 2):
 // b2CollidePolygons on the rectangles' 4-gons and on the ellipses' inscribed 8- and 16-gons,
 // b2CollidePolygonAndCircle, b2CollideCircles. Box2D is built here with polygons of up to 16
 // vertices (its default cap is 8). Its shapes are built beforehand (not timed), with radius 0, so
 // its manifold is empty for pairs apart; ours carries their exact distance, and the `_limited`
-// runs (max_separation 0) are empty there too. Convex 8-gons (bench/workload.h's) against 8-gons,
+// runs (max_separation 0) are empty there too. Convex 8-gons (bench/shape_pairs.h's) against 8-gons,
 // circles and ellipses' 8-gons, on workloads 0, 1 and 3 (the scene has no polygons).
 #include <collide2d/batch.h>
 #include <collide2d/chain.h>

@@ -2,7 +2,7 @@
 // register). Each benchmark runs twice, named by its first argument: candidates:0 on random pairs
 // (centres in a 4 x 4 square, most of them far apart: the kernels' first early-out answers them),
 // candidates:1 on candidate pairs (the same generator, only the pairs whose boxes overlap: what a
-// broad phase hands over, and where a World spends its narrow phase; bench/workload.h).
+// broad phase hands over, and where a World spends its narrow phase; bench/shape_pairs.h).
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>

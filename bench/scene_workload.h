@@ -7,7 +7,7 @@
 
 #include <collide2d/broad_phase.h>
 #include <collide2d/world.h>
-#include "bench/workload.h"
+#include "bench/shape_pairs.h"
 #include "tools/scene/scene.h"
 
 #include <stdexcept>

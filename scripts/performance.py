@@ -459,7 +459,7 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 - **Statistics**: each benchmark repeated {method['repetitions']} times, repetitions of all
   benchmarks of a program interleaved at random, and the median kept; ratios compare medians of one
   run. The ratio is collide2d's time over Box2D's: below 1, collide2d is faster.
-- **Workloads** for pairs (bench/workload.h): *random* pairs (centres in a 4 × 4 square, sizes 0.05
+- **Workloads** for pairs (bench/shape_pairs.h): *random* pairs (centres in a 4 × 4 square, sizes 0.05
   to 1, ellipse aspect up to 10; most far apart), *candidate* pairs (the same generator, only pairs
   whose boxes overlap, as a broad phase hands them over), and *scene* pairs (those the built-in
   scene's broad phase hands over, frame after frame). Both libraries' shapes are made in pair
@@ -480,7 +480,7 @@ This page is generated: `bash scripts/bench.sh` runs the benchmark suite and wri
 ## Overlap tests
 
 Box2D: `b2TestOverlap` on a rectangle's 4-gon and an ellipse's inscribed 8-gon (a circle is a
-`b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/workload.h).
+`b2CircleShape`). The polygons are convex 8-gons, the same in both libraries (bench/shape_pairs.h).
 Box2D 2.4.1 has no capsule: its nearest equivalent is a box rounded by a radius
 (`b2PolygonShape::m_radius`), of half extents (h + 0.003, 0.003) and radius r - 0.003, within
 0.0013 of the capsule (bench/box2d_baseline.h). A segment is a two-sided `b2EdgeShape`. The scene

@@ -24,15 +24,21 @@ namespace {
 constexpr double kTolerance = 1e-8;
 constexpr int kMaxIterations = 10000;
 constexpr double kLearningRate = 0.04;
-constexpr double kDecayRate = 0.002;
+constexpr double kDecay = 0x1.fefa1e333cd77p-1;  // exp(-0.002): the rate shrinks by it at each step
 
 // One curve in the article's terms: point and derivative at parameter t, relative to the centre.
 struct Curve {
   Rotation<double> rot;
   double a;
   double b;
-  Vec2 point(double t) const { return rot.apply(Vec2(a * std::cos(t), b * std::sin(t))); }
-  Vec2 tangent(double t) const { return rot.apply(Vec2(-a * std::sin(t), b * std::cos(t))); }
+  Vec2 point(double t) const {
+    const CosSin u = cos_sin(t);
+    return rot.apply(Vec2(a * u.c, b * u.s));
+  }
+  Vec2 tangent(double t) const {
+    const CosSin u = cos_sin(t);
+    return rot.apply(Vec2(-a * u.s, b * u.c));
+  }
 };
 
 Curve curve_of(const Ellipse& e) { return {Rotation<double>::of(e.angle), e.a, e.b}; }
@@ -59,11 +65,11 @@ SolverReport gradient_descent_curves(const Ellipse& self, const Ellipse& other) 
   const Curve c1 = curve_of(self);
   const Curve c2 = curve_of(other);
   const Vec2 dx0 = self.center - other.center;
-  Vec2 t(std::atan2(-dx0.y(), -dx0.x()) - self.angle, std::atan2(dx0.y(), dx0.x()) - other.angle);
+  Vec2 t(arc_tangent(-dx0.y(), -dx0.x()) - self.angle, arc_tangent(dx0.y(), dx0.x()) - other.angle);
   if (contains(self, other.center) || contains(other, self.center)) t = vertex_start(c1, c2, dx0);
 
   int iterations = 0;
-  double error = kTolerance;
+  double error = kTolerance, rate = kLearningRate;
   Vec2 x1 = c1.point(t[0]);
   Vec2 x2 = c2.point(t[1]);
   while (error >= kTolerance && iterations < kMaxIterations) {
@@ -71,7 +77,8 @@ SolverReport gradient_descent_curves(const Ellipse& self, const Ellipse& other) 
     x2 = c2.point(t[1]);
     const Vec2 delta = x1 - x2 + dx0;
     const Vec2 dp(2 * c1.tangent(t[0]).dot(delta), -2 * c2.tangent(t[1]).dot(delta));
-    t -= kLearningRate * std::exp(-kDecayRate * iterations) * dp;
+    t -= rate * dp;
+    rate *= kDecay;
     error = dp.cwiseAbs().maxCoeff();
     ++iterations;
   }

@@ -161,9 +161,11 @@ SolverReport general(const Ellipse& e0, const Ellipse& e1) {
 
   Best best;
   const auto eval = [](const Poly2& p, double u0, double u1) {
+    std::array<double, 7> power0{1.0}, power1{1.0};  // by products, the same bits on every platform
+    for (int i = 1; i < 7; ++i) power0[i] = power0[i - 1] * u0, power1[i] = power1[i - 1] * u1;
     double s = 0.0;
     for (int i = 0; i < 7; ++i)
-      for (int j = 0; i + j < 7; ++j) s += p.c[i][j] * std::pow(u0, i) * std::pow(u1, j);
+      for (int j = 0; i + j < 7; ++j) s += p.c[i][j] * power0[i] * power1[j];
     return s;
   };
   for (const double root : real_roots(S, kImaginaryTolerance)) {
@@ -197,7 +199,7 @@ SolverReport circle_path(const Ellipse& c, const Ellipse& e, bool circle_first) 
   Best best;
   for (const double t : real_roots(F, kImaginaryTolerance * (a2 + b2))) {
     Vec2 q(a2 * p.x() / (t + a2), b2 * p.y() / (t + b2));
-    const double level = std::hypot(q.x() / e.a, q.y() / e.b);
+    const double level = hypotenuse(q.x() / e.a, q.y() / e.b);
     if (!(level > 0) || !std::isfinite(level)) continue;
     q /= level;
     const Vec2 on_e = e.center + rot.apply(q);

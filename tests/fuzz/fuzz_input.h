@@ -7,12 +7,12 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <span>
 
 namespace collide2d::fuzz {
@@ -34,7 +34,9 @@ class Input {
     if (byte() & 1) {
       std::uint64_t bits = 0;  // little-endian, as the corpora were written
       for (int k = 0; k < 8; ++k) bits |= std::uint64_t{byte()} << (8 * k);
-      return std::bit_cast<double>(bits);
+      double value;
+      std::memcpy(&value, &bits, sizeof value);  // std::bit_cast, which Emscripten 3.1's library lacks
+      return value;
     }
     return (static_cast<int>(byte()) - 128) / 16.0;
   }
@@ -85,7 +87,8 @@ class Input {
     std::array<Vec2, kMaxPolygonVertices> v;
     for (int k = 0; k < n; ++k) {
       const double t = (k + (static_cast<int>(byte()) - 128) / 512.0) * 6.283185307179586 / n;
-      v[k] = Vec2(a * std::cos(t), b * std::sin(t));
+      const Orientation o = Orientation::of(t);  // the library's cosine and sine, the same everywhere
+      v[k] = Vec2(a * o.c, b * o.s);
     }
     const double radius = byte() & 1 ? size() : 0.0;
     try {

@@ -6,7 +6,7 @@
 #include <collide2d/collide2d.h>
 
 #include "bench/scene_workload.h"
-#include "bench/workload.h"
+#include "bench/shape_pairs.h"
 #include "fuzz/fuzz_input.h"
 #include "hard_cases.h"
 #include "narrowphase/baselines/baselines.h"
