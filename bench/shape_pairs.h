@@ -62,8 +62,7 @@ struct Generator {
     const double h = size();
     const Vec2 c = center();
     const double t = uniform(0, 6.3);
-    const Orientation o = Orientation::of(t);
-    const Vec2 d(o.c, o.s);
+    const Vec2 d = tool::direction(t);
     s = Segment::between(c - h * d, c + h * d);
   }
   // A convex 8-gon: vertices on an ellipse of aspect up to 2, each within a sixteenth of a turn of

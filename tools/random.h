@@ -32,13 +32,22 @@ Vec2 uniform_point(Generator& rng, double lo, double hi) {
   return Vec2(uniform(rng, lo, hi), y);
 }
 
+// The unit vector at `angle`, from collide2d's own cosine and sine (Orientation::of), not the C
+// library's: the same bits everywhere.
+inline Vec2 direction(double angle) {
+  const Orientation o = Orientation::of(angle);
+  return {o.c, o.s};
+}
+
+// ln 2 in two parts, the first with its low bits zero so that k ln 2 is exact for the exponents the
+// functions below meet (Cody and Waite, "Software Manual for the Elementary Functions").
+inline constexpr double kLn2High = 0x1.62e42fee00000p-1, kLn2Low = 0x1.a39ef35793c76p-33;
+
 // e^x and ln x for the generators, in plain double operations, so that what they make is the same
 // with every C library (whose exp, log and pow differ in the last bit). Within a few ulps; not for
 // the library's results, which use none.
 inline double exponential(double x) {
-  // x = k ln 2 + r with |r| <= ln 2 / 2, ln 2 in two parts so that k ln 2 is exact (Cody and Waite,
-  // "Software Manual for the Elementary Functions"); e^r by its Taylor series to r^20 / 20!.
-  constexpr double kLn2High = 0x1.62e42fee00000p-1, kLn2Low = 0x1.a39ef35793c76p-33;
+  // x = k ln 2 + r with |r| <= ln 2 / 2; e^r by its Taylor series to r^20 / 20!.
   const double k = std::round(x / 0x1.62e42fefa39efp-1);
   const double r = (x - k * kLn2High) - k * kLn2Low;
   double sum = 1.0;
@@ -58,7 +67,6 @@ inline double logarithm(double x) {  // x > 0
   const double s = (m - 1) / (m + 1), s2 = s * s;
   double sum = 0.0;
   for (int n = 41; n >= 3; n -= 2) sum = (sum + 1.0 / n) * s2;
-  constexpr double kLn2High = 0x1.62e42fee00000p-1, kLn2Low = 0x1.a39ef35793c76p-33;
   return e * kLn2High + (e * kLn2Low + 2 * s * (1 + sum));
 }
 

@@ -28,12 +28,9 @@ using Rng = std::mt19937_64;
 using tool::log_uniform;
 using tool::uniform;
 
-// The library's cosine and sine, and below its arc tangent and hypotenuse, not the C library's:
-// the cases are the same with every C library.
-Vec2 unit(double angle) {
-  const Orientation o = Orientation::of(angle);
-  return {o.c, o.s};
-}
+// Directions come from tool::direction, and below the arc tangent and hypotenuse from the library,
+// not the C library: the cases are the same with every C library.
+using tool::direction;
 
 Shape random_shape(Rng& rng, Kind kind, double size, const Family& f, const Vec2& center) {
   const double aspect = log_uniform(rng, f.aspect_min, f.aspect_max);
@@ -82,13 +79,13 @@ BoundaryPoint contact_on(Rng& rng, const Shape& a) {
     local[i] = side * r->half_extents[i];
     local[1 - i] = uniform(rng, -0.9, 0.9) * r->half_extents[1 - i];
     normal[i] = side;
-    const Vec2 c = unit(r->angle);
+    const Vec2 c = direction(r->angle);
     const auto rotate = [&c](const Vec2& v) {
       return Vec2(c.x() * v.x() - c.y() * v.y(), c.y() * v.x() + c.x() * v.y());
     };
     return {r->center + rotate(local), rotate(normal)};
   }
-  const Vec2 n = unit(uniform(rng, 0.0, 2 * std::numbers::pi));
+  const Vec2 n = direction(uniform(rng, 0.0, 2 * std::numbers::pi));
   return {support(a, n), n};
 }
 
@@ -109,7 +106,7 @@ Shape shrunk_inside(Rng& rng, const Shape& a, Kind kind, const Family& f) {
   // One draw per statement (here and below): the order of two draws within one expression is
   // unspecified, and GCC and clang differ; this is GCC's.
   const double angle = uniform(rng, 0.0, 6.3);
-  const Vec2 center = center_of(a) + uniform(rng, 0.0, 0.4 * inner) * unit(angle);
+  const Vec2 center = center_of(a) + uniform(rng, 0.0, 0.4 * inner) * direction(angle);
   return random_shape(rng, kind, 0.25 * inner, Family{.aspect_min = 1.0, .aspect_max = 2.0}, center);
 }
 
@@ -124,7 +121,7 @@ double least_curvature_radius(const Shape& s) {
 // B inside A with gap delta at a random boundary point of A: B's major axis points along the
 // normal there, so B lies in its circumscribed disc, which lies in A's rolling disc.
 Shape inner_tangent(Rng& rng, const Shape& a, Kind kind, double delta) {
-  const Vec2 n = unit(uniform(rng, 0.0, 2 * std::numbers::pi));
+  const Vec2 n = direction(uniform(rng, 0.0, 2 * std::numbers::pi));
   const Vec2 p = support(a, n);
   const double size = 0.5 * least_curvature_radius(a);
   Shape b = kind == Kind::circle
@@ -163,7 +160,7 @@ Vec2 axis_direction(Rng& rng, const Shape& a, bool axis_aligned) {
     const Vec2 exact[] = {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)};
     return exact[quarter];
   }
-  return unit(angle_of(a) + quarter * std::numbers::pi / 2);
+  return direction(angle_of(a) + quarter * std::numbers::pi / 2);
 }
 
 // B with its axes parallel to A's, against A at gap delta along the axis direction n, its centre on
@@ -200,7 +197,7 @@ Case cusp_case(Rng& rng, const Family& f, int k, const Vec2& origin) {
   const Ellipse e = std::get<Ellipse>(random_shape(rng, Kind::ellipse, f.size, f, origin));
   const Kind other = ellipse_first ? f.b : f.a;
   const double major = std::max(e.a, e.b), minor = std::min(e.a, e.b);
-  const Vec2 u = f.axis_aligned ? Vec2(1, 0) : unit(e.angle), v(-u.y(), u.x());
+  const Vec2 u = f.axis_aligned ? Vec2(1, 0) : direction(e.angle), v(-u.y(), u.x());
   const Vec2 along = e.a >= e.b ? u : v, beside = e.a >= e.b ? v : u;
   const double side = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
   const double eta_sign = uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
@@ -229,7 +226,7 @@ Case cusp_case(Rng& rng, const Family& f, int k, const Vec2& origin) {
 
 Shape congruent_copy(Rng& rng, const Ellipse& e, double by) {
   const double move = uniform(rng, 0.0, 2.0) * by * std::min(e.a, e.b);
-  return Ellipse{e.center + move * unit(uniform(rng, 0.0, 2 * std::numbers::pi)), e.a * (1 - by), e.b * (1 - by),
+  return Ellipse{e.center + move * direction(uniform(rng, 0.0, 2 * std::numbers::pi)), e.a * (1 - by), e.b * (1 - by),
                  e.angle + uniform(rng, -by, by)};
 }
 

@@ -533,12 +533,6 @@ namespace {
 constexpr Filter kFirstLayer{.category = 1, .mask = 1};
 constexpr Filter kSecondLayer{.category = 2, .mask = 2};
 
-// The unit vector at `heading`, from collide2d's own cosine and sine: the same bits everywhere.
-Vec2 direction(double heading) {
-  const Orientation o = Orientation::of(heading);
-  return {o.c, o.s};
-}
-
 // The built-in scene's cave: a clockwise loop half a unit inside the arena's sides, the floor (run
 // from right to left) rolling in hills 3 high and 48 long, a point every unit or so.
 std::vector<Vec2> cave(const Aabb& arena) {
