@@ -26,18 +26,20 @@ constexpr int kMaxIterations = 10000;
 constexpr double kLearningRate = 0.04;
 constexpr double kDecay = 0x1.fefa1e333cd77p-1;  // exp(-0.002): the rate shrinks by it at each step
 
-// One curve in the article's terms: point and derivative at parameter t, relative to the centre.
+// A point of a curve relative to its centre, and the derivative there.
+struct CurvePoint {
+  Vec2 point;
+  Vec2 tangent;
+};
+
+// One curve in the article's terms, parametrised by t.
 struct Curve {
   Rotation<double> rot;
   double a;
   double b;
-  Vec2 point(double t) const {
+  CurvePoint at(double t) const {
     const CosSin u = cos_sin(t);
-    return rot.apply(Vec2(a * u.c, b * u.s));
-  }
-  Vec2 tangent(double t) const {
-    const CosSin u = cos_sin(t);
-    return rot.apply(Vec2(-a * u.s, b * u.c));
+    return {rot.apply(Vec2(a * u.c, b * u.s)), rot.apply(Vec2(-a * u.s, b * u.c))};
   }
 };
 
@@ -52,7 +54,7 @@ Vec2 vertex_start(const Curve& c1, const Curve& c2, const Vec2& dx0) {
     const double t1 = 2 * std::numbers::pi * i / kVertices;
     for (int j = 0; j < kVertices; ++j) {
       const double t2 = 2 * std::numbers::pi * j / kVertices;
-      const double d = (c1.point(t1) - c2.point(t2) + dx0).norm();
+      const double d = (c1.at(t1).point - c2.at(t2).point + dx0).norm();
       if (d < best_distance) best_distance = d, best = Vec2(t1, t2);
     }
   }
@@ -70,22 +72,22 @@ SolverReport gradient_descent_curves(const Ellipse& self, const Ellipse& other) 
 
   int iterations = 0;
   double error = kTolerance, rate = kLearningRate;
-  Vec2 x1 = c1.point(t[0]);
-  Vec2 x2 = c2.point(t[1]);
+  CurvePoint x1 = c1.at(t[0]);
+  CurvePoint x2 = c2.at(t[1]);
   while (error >= kTolerance && iterations < kMaxIterations) {
-    x1 = c1.point(t[0]);
-    x2 = c2.point(t[1]);
-    const Vec2 delta = x1 - x2 + dx0;
-    const Vec2 dp(2 * c1.tangent(t[0]).dot(delta), -2 * c2.tangent(t[1]).dot(delta));
+    x1 = c1.at(t[0]);
+    x2 = c2.at(t[1]);
+    const Vec2 delta = x1.point - x2.point + dx0;
+    const Vec2 dp(2 * x1.tangent.dot(delta), -2 * x2.tangent.dot(delta));
     t -= rate * dp;
     rate *= kDecay;
     error = dp.cwiseAbs().maxCoeff();
     ++iterations;
   }
-  const double y = (x1 - x2 + dx0).norm();
+  const double y = (x1.point - x2.point + dx0).norm();
   const bool success = error < kTolerance && iterations < kMaxIterations;
-  const Vec2 pa = self.center + x1;
-  const Vec2 pb = other.center + x2;
+  const Vec2 pa = self.center + x1.point;
+  const Vec2 pb = other.center + x2.point;
   const DistanceResult r = y > 0 ? DistanceResult::apart(y, pa, pb) : DistanceResult::touching(pa);
   return {r, iterations, success};
 }
