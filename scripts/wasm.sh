@@ -4,8 +4,8 @@
 # in one HTML file that needs no server); golden.js, the golden scene (tests/regression/golden.cpp)
 # for node, which ctest golden_hashes_wasm runs against the committed hashes; and digest.js, the query
 # digest (tests/regression/digest.cpp), which ctest query_digest_wasm compares with the committed
-# one. The build runs it (the
-# `wasm` target, with COLLIDE2D_BUILD_TESTBED), with the library's and the baselines' sources:
+# one. The build runs it (the `wasm` target, with COLLIDE2D_BUILD_TESTBED), with the library's and
+# the baselines' sources:
 #   bash scripts/wasm.sh WORK_DIR SOURCE.cpp...
 # Highway keeps to its one static target (its WebAssembly vectors have no doubles in Debian's
 # version, and the static target needs no run-time dispatch), and the World to one thread. The
@@ -36,12 +36,16 @@ emar rcs "$work/libcollide2d.a" "${library[@]}"
 emcc -O1 -fexceptions "$(object tools/query_command.cpp)" "$(object tools/testbed/testbed.cpp)" "$work/libcollide2d.a" \
   -o "$work/testbed.js" -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=Collide2dModule \
   -sEXPORTED_FUNCTIONS=_testbed_answer -sEXPORTED_RUNTIME_METHODS=cwrap -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web
-emcc -O1 -fexceptions "$(object tests/regression/golden.cpp)" "$work/libcollide2d.a" -o "$work/golden.js" \
-  -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=node -sNODERAWFS=1 -sEXIT_RUNTIME=1
-digest_objects=("$(object tools/query_command.cpp)")
-for s in "${digest[@]}"; do digest_objects+=("$(object "$s")"); done
-emcc -O1 -fexceptions "${digest_objects[@]}" "$work/libcollide2d.a" -o "$work/digest.js" \
-  -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=node -sNODERAWFS=1 -sEXIT_RUNTIME=1
+# A program for node, reading and writing the host's files: node_program NAME.js SOURCE.cpp...
+node_program() {
+  local out=$1 objects=()
+  shift
+  for s in "$@"; do objects+=("$(object "$s")"); done
+  emcc -O1 -fexceptions "${objects[@]}" "$work/libcollide2d.a" -o "$work/$out" \
+    -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=node -sNODERAWFS=1 -sEXIT_RUNTIME=1
+}
+node_program golden.js tests/regression/golden.cpp
+node_program digest.js tools/query_command.cpp "${digest[@]}"
 python3 - "$root/tools/testbed/testbed.html" "$work/testbed.js" "$work/testbed.html" <<'PY'
 import sys
 page, module, out = (open(p).read() if i < 2 else p for i, p in enumerate(sys.argv[1:]))
