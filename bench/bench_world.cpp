@@ -345,7 +345,7 @@ void box2d_scene_frame(benchmark::State& state) {
   // the cave's index and the others follow every body, each a proxy of its own, as b2ChainShape's
   // children are (never posed: static).
   for (const tool::SceneBody& b : scene.bodies) {
-    shapes.push_back(tool::placed_shapes(b).front());
+    shapes.push_back(tool::placed_first(b));
     filters.push_back(b.filter);
   }
   for (const tool::SceneBody& b : scene.bodies) {

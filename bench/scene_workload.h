@@ -23,7 +23,6 @@ const Workload<A, B>& scene_workload() {
     std::vector<ProxyId> ids;
     // The built-in scene's bodies are of one shape each but its cave, a chain whose segments pair
     // with no kind here.
-    const auto shape_of = [](const tool::SceneBody& body) { return tool::placed_shapes(body).front(); };
     for (const tool::SceneBody& body : scene.bodies) ids.push_back(broad.insert(tool::box_of(body)));
     Workload<A, B> out;
     const auto take = [&](const Shape& x, const Shape& y) {
@@ -40,7 +39,7 @@ const Workload<A, B>& scene_workload() {
       for (const ProxyPair& p : broad.pairs()) {
         const tool::SceneBody &x = scene.bodies[p.a], &y = scene.bodies[p.b];
         if ((x.is_static && y.is_static) || x.sensor || y.sensor || !should_pair(x.filter, y.filter)) continue;
-        if (out.a.size() < kPairs) take(shape_of(x), shape_of(y));
+        if (out.a.size() < kPairs) take(tool::placed_first(x), tool::placed_first(y));
       }
       tool::step(scene);
       for (std::size_t k = 0; k < ids.size(); ++k) broad.move(ids[k], tool::box_of(scene.bodies[k]));

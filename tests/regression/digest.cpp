@@ -429,7 +429,7 @@ void worlds() {
     for (const tool::SceneBody& b : scene.bodies) {
       // The built-in scene's bodies are of one shape each but its cave.
       const BodyDef def{.user_id = b.id, .filter = b.filter, .is_static = b.is_static, .sensor = b.sensor};
-      ids.push_back(b.chain.empty() ? world.add(tool::placed_shapes(b).front(), def)
+      ids.push_back(b.chain.empty() ? world.add(tool::placed_first(b), def)
                                     : world.add_chain(b.chain, b.loop, {.user_id = b.id, .filter = b.filter}));
       if (b.continuous) world.set_continuous(ids.back());
     }

@@ -19,8 +19,7 @@ void add_bodies(const Scene& scene, DistributedWorld& world) {
     if (!b.chain.empty()) {
       world.add_chain(k, b.chain, b.loop, {.filter = b.filter});
     } else if (k % static_cast<std::size_t>(world.ranks()) == static_cast<std::size_t>(world.rank())) {
-      world.add(k, placed_shapes(b).front(), {.filter = b.filter, .is_static = b.is_static, .sensor = b.sensor},
-                b.continuous);
+      world.add(k, placed_first(b), {.filter = b.filter, .is_static = b.is_static, .sensor = b.sensor}, b.continuous);
     }
   }
 }

@@ -384,6 +384,10 @@ std::vector<Shape> placed_shapes(const SceneBody& body) {
   return out;
 }
 
+Shape placed_first(const SceneBody& body) {
+  return placed(body.shapes.front(), body.pose, Orientation::of(body.pose.angle));
+}
+
 // Without a list of the placed shapes, and with one sine and cosine for the shapes with no angle of
 // their own: step() takes every body's box every frame.
 Aabb box_of(const SceneBody& body) {
@@ -493,7 +497,7 @@ std::string write_scene(const Scene& scene) {
       j = {{"shape", "chain"}, {"points", json::array()}, {"loop", b.loop}};
       for (const Vec2& p : b.chain) j["points"].push_back({p.x(), p.y()});
     } else if (b.shapes.size() == 1 && center_of(b.shapes[0]) == Vec2::Zero() && angle_of(b.shapes[0]) == 0.0) {
-      j = shape_json(placed_shapes(b).front());
+      j = shape_json(placed_first(b));
     } else {
       j["center"] = {b.pose.position.x(), b.pose.position.y()};
       j["angle"] = b.pose.angle;

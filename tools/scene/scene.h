@@ -63,6 +63,9 @@ std::vector<Shape> at_origin(const Shape& shape);
 // Each of the body's shapes where its pose puts it, and the box around them all.
 std::vector<Shape> placed_shapes(const SceneBody& body);
 Aabb box_of(const SceneBody& body);
+// The body's first shape where its pose puts it: the shape of a body of one shape, without placing
+// every segment of a chain body.
+Shape placed_first(const SceneBody& body);
 
 // Throws SceneError for a broken scene, before any frame is run: a field the format lacks or a
 // shape kind does not take, a duplicate id, a value out of range, or a motion that would carry a
