@@ -16,14 +16,16 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_TESTS=
 cmake --build "$build" -j "$(nproc)"
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 
-# One clang build serves the sanitizers, the fuzzers and clang itself: it builds everything the
-# first build does but the WebAssembly programs (scripts/wasm.sh), and runs the suite with AddressSanitizer and
-# UndefinedBehaviorSanitizer. The packaging tests build uninstrumented consumers against the
-# instrumented library, which cannot link; the browser tests drive a page the first build wrote the
-# same way; Debian's python3 cannot load an instrumented module: these run in the first build only.
+# One clang build serves the sanitizers, the fuzzers and clang itself: it builds the library, the
+# tests, the tools and the fuzz targets, and runs the suite with AddressSanitizer and
+# UndefinedBehaviorSanitizer. It leaves out what its tests cannot use: the WebAssembly programs
+# (scripts/wasm.sh), the benchmark programs (an instrumented build's times mean nothing) and the
+# Python module (Debian's python3 cannot load an instrumented one). The packaging tests build
+# uninstrumented consumers against the instrumented library, which cannot link, and the browser
+# tests drive a page the first build wrote: these run in the first build only.
 sanitize=${SANITIZE_BUILD_DIR:-$root/build-sanitize}
 CXX=clang++ CC=clang cmake -S "$root" -B "$sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOLLIDE2D_FUZZ=ON \
-  -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_PYTHON=ON \
+  -DCOLLIDE2D_BUILD_TESTS=ON -DCOLLIDE2D_BUILD_BENCHMARKS=ON \
   -DCOLLIDE2D_BOX2D_SOURCE="$build/box2d-source"
 cmake --build "$sanitize" -j "$(nproc)"
 ctest --test-dir "$sanitize" --output-on-failure -j "$(nproc)" -LE "package|browser|python"
