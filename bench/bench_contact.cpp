@@ -227,26 +227,12 @@ BENCHMARK(box2d<Segment, Ellipse>)
     ->Name("box2d_collide_edge_and_polygon/segment_ellipse_8gon")
     ->Apply(bench::polygon_workloads);
 
-// The workload's segments as chain segments, each end's neighbour turned 0.3 rad one way or the
-// other by the pair's index (convex and concave vertices alike).
-std::vector<ChainSegment> chain_segments_of(const std::vector<Segment>& segments) {
-  std::vector<ChainSegment> out;
-  for (std::size_t k = 0; k < segments.size(); ++k) {
-    const Segment& s = segments[k];
-    const auto turned = [&](double t) {
-      return Vec2(std::cos(t) * s.end.x() - std::sin(t) * s.end.y(), std::sin(t) * s.end.x() + std::cos(t) * s.end.y());
-    };
-    out.push_back({s, -turned(k % 2 == 0 ? 0.3 : -0.3), s.end + turned(k % 4 < 2 ? 0.3 : -0.3)});
-  }
-  return out;
-}
-
 // A chain segment against B, no contact beyond separation 0 (as Box2D's), through chain.h's contact
 // with kept orientations (the World's call).
 template <class B>
 void ours_chain(benchmark::State& state) {
   const auto& w = bench::pairs<Segment, B>(state);
-  const std::vector<ChainSegment> chain = chain_segments_of(w.a);
+  const std::vector<ChainSegment> chain = bench::chain_segments_of(w.a);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   const std::vector<Shape> sb(w.b.begin(), w.b.end());
   const ContactOptions options{.max_separation = 0.0};
@@ -257,7 +243,7 @@ void ours_chain(benchmark::State& state) {
 template <class B>
 void box2d_chain(benchmark::State& state) {
   const auto& w = bench::pairs<Segment, B>(state);
-  const std::vector<ChainSegment> chain = chain_segments_of(w.a);
+  const std::vector<ChainSegment> chain = bench::chain_segments_of(w.a);
   std::vector<baseline::ShapePair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
     const Segment& s = chain[k].segment;

@@ -2,6 +2,7 @@
 // each kind, generated once, cycled so that no input stays in a register.
 #pragma once
 
+#include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
 
@@ -155,6 +156,20 @@ Workload<A, B> overlapping(const Workload<A, B>& w) {
     out.b.push_back(out.b[k]);
   }
   return in_pair_order(out);
+}
+
+// The workload's segments as chain segments, each end's neighbour turned 0.3 rad one way or the
+// other by the pair's index (convex and concave vertices alike).
+inline std::vector<ChainSegment> chain_segments_of(const std::vector<Segment>& segments) {
+  std::vector<ChainSegment> out;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const Segment& s = segments[k];
+    const auto turned = [&](double t) {
+      return Vec2(std::cos(t) * s.end.x() - std::sin(t) * s.end.y(), std::sin(t) * s.end.x() + std::cos(t) * s.end.y());
+    };
+    out.push_back({s, -turned(k % 2 == 0 ? 0.3 : -0.3), s.end + turned(k % 4 < 2 ? 0.3 : -0.3)});
+  }
+  return out;
 }
 
 }  // namespace collide2d::bench

@@ -7,8 +7,10 @@
 # machine (CPU model, cores, compiler, flags); then the Python module against the same work in C++
 # (bench/python/bench_python.py) into bench/results/python/<date>-<cpu>.json. Then regenerates
 # docs/performance.md and its plots from bench/results alone (scripts/performance.py).
+# BOX2D_V3_DIR names a copy of Box2D v3's source: the suite then races v3 too (bench/box2d_v3/).
 #
 #   bash scripts/bench.sh                          # about 25 minutes on 2 cores
+#   BOX2D_V3_DIR=path/to/box2d-v3 bash scripts/bench.sh
 #   BENCH_REPETITIONS=3 BENCH_MIN_TIME=0.05 bash scripts/bench.sh   # quicker, noisier
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -17,8 +19,10 @@ build=${BENCH_BUILD_DIR:-$root/build-bench}
 repetitions=${BENCH_REPETITIONS:-5}
 min_time=${BENCH_MIN_TIME:-0.1}
 source_dir=$(bash "$root/scripts/box2d_source.sh" "$build/box2d-source")
+v3_dir=${BOX2D_V3_DIR:+$(cd "$BOX2D_V3_DIR" && pwd)}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_TESTS=OFF \
-  -DCOLLIDE2D_BUILD_PYTHON=ON -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" > /dev/null
+  -DCOLLIDE2D_BUILD_PYTHON=ON -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" \
+  -DCOLLIDE2D_BOX2D_V3_SOURCE="$v3_dir" > /dev/null
 programs=(bench_narrowphase bench_contact bench_toi bench_broadphase bench_world bench_queries)
 cmake --build "$build" -j "$(nproc)" --target "${programs[@]}" collide2d_report collide2d_python python_rival
 

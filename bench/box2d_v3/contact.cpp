@@ -1,0 +1,204 @@
+// Contacts against Box2D v3's manifold functions, one pair at a time, on the workloads of
+// bench/shape_pairs.h (linked into bench_contact when a Box2D v3 source is given). Equal outputs:
+// v3's timed call forms B's transform relative to A's, calls the manifold function of the pair
+// (b2CollideCapsules, b2CollidePolygons, ...; the shapes in the order it takes them, as its World
+// orders a contact's shapes) and maps the manifold's normal and points to world coordinates;
+// collide2d's is contact() on the shapes with their orientations kept (the World's call), asked
+// for no contact beyond v3's speculative distance, beyond which v3 returns no manifold. A chain
+// segment's simplex cache starts empty on every call, as for a new contact. An ellipse is v3's
+// polygon inscribed in it (bench/box2d_v3/shapes.h), so v3's answers carry that polygon's error.
+#include <collide2d/chain.h>
+#include <collide2d/kernels.h>
+
+#include "bench/box2d_v3/shapes.h"
+#include "bench/scene_workload.h"
+#include "bench/workload.h"
+
+#include <box2d/constants.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using box2d_v3::Posed;
+using box2d_v3::posed;
+
+// v3's manifold function of each order of shapes it takes (none where it takes the other order).
+template <class A, class B>
+constexpr std::nullptr_t kManifold = nullptr;
+template <>
+constexpr auto kManifold<b2Circle, b2Circle> = b2CollideCircles;
+template <>
+constexpr auto kManifold<b2Capsule, b2Circle> = b2CollideCapsuleAndCircle;
+template <>
+constexpr auto kManifold<b2Segment, b2Circle> = b2CollideSegmentAndCircle;
+template <>
+constexpr auto kManifold<b2Polygon, b2Circle> = b2CollidePolygonAndCircle;
+template <>
+constexpr auto kManifold<b2Capsule, b2Capsule> = b2CollideCapsules;
+template <>
+constexpr auto kManifold<b2Segment, b2Capsule> = b2CollideSegmentAndCapsule;
+template <>
+constexpr auto kManifold<b2Polygon, b2Capsule> = b2CollidePolygonAndCapsule;
+template <>
+constexpr auto kManifold<b2Polygon, b2Polygon> = b2CollidePolygons;
+template <>
+constexpr auto kManifold<b2Segment, b2Polygon> = b2CollideSegmentAndPolygon;
+template <>
+constexpr auto kManifold<b2ChainSegment, b2Circle> = b2CollideChainSegmentAndCircle;
+template <>
+constexpr auto kManifold<b2ChainSegment, b2Capsule> = b2CollideChainSegmentAndCapsule;
+template <>
+constexpr auto kManifold<b2ChainSegment, b2Polygon> = b2CollideChainSegmentAndPolygon;
+
+template <class A, class B>
+constexpr bool kTakesInOrder = !std::is_null_pointer_v<std::remove_const_t<decltype(kManifold<A, B>)>>;
+
+// The manifold of a pair v3 takes in this order; a chain segment's simplex cache starts empty.
+template <class A, class B>
+b2LocalManifold collide(const A& a, const B& b, b2Transform xf) {
+  if constexpr (std::is_invocable_v<decltype(kManifold<A, B>), const A*, const B*, b2Transform, b2SimplexCache*>) {
+    b2SimplexCache cache{};
+    return kManifold<A, B>(&a, &b, xf, &cache);
+  } else {
+    return kManifold<A, B>(&a, &b, xf);
+  }
+}
+
+// What collide2d's contact returns, in v3's float: the normal, the manifold's points in world
+// coordinates and their separations.
+struct WorldManifold {
+  b2Vec2 normal;
+  b2Vec2 points[2];
+  float separations[2];
+  int count;
+};
+
+template <class A, class B>
+WorldManifold world_manifold(const Posed<A>& a, const Posed<B>& b) {
+  const b2LocalManifold local = collide(a.shape, b.shape, b2InvMulTransforms(a.transform, b.transform));
+  WorldManifold out;
+  out.normal = b2RotateVector(a.transform.q, local.normal);
+  out.count = local.pointCount;
+  for (int i = 0; i < local.pointCount; ++i) {
+    out.points[i] = b2TransformPoint(a.transform, local.points[i].point);
+    out.separations[i] = local.points[i].separation;
+  }
+  return out;
+}
+
+template <class S>
+auto posed_shapes(const std::vector<S>& shapes) {
+  std::vector<decltype(posed(shapes[0]))> out;
+  for (const S& s : shapes) out.push_back(posed(s));
+  return out;
+}
+
+// The pair's A side: chain segments stand in for the workload's segments (bench/shape_pairs.h).
+template <class A, bool chain>
+auto side_a(const std::vector<A>& a) {
+  if constexpr (chain) {
+    return bench::chain_segments_of(a);
+  } else {
+    return a;
+  }
+}
+
+// The share of the workload's pairs whose manifold has points, as the counter `manifolds`: both
+// libraries' figures side by side show that they answer the same question.
+template <class HasPoints>
+void count_manifolds(benchmark::State& state, HasPoints has_points) {
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < bench::kPairs; ++k) count += has_points(k);
+  state.counters["manifolds"] = static_cast<double>(count) / bench::kPairs;
+}
+
+template <class A, class B, bool chain = false>
+void box2d_v3(benchmark::State& state) {
+  const auto& w = bench::pairs<A, B>(state);
+  const auto a = posed_shapes(side_a<A, chain>(w.a));
+  const auto b = posed_shapes(w.b);
+  const auto query = [&](std::size_t k) {
+    if constexpr (kTakesInOrder<decltype(a[k].shape), decltype(b[k].shape)>) {
+      return world_manifold(a[k], b[k]);
+    } else {
+      return world_manifold(b[k], a[k]);
+    }
+  };
+  bench::time_queries(state, query);
+  count_manifolds(state, [&](std::size_t k) { return query(k).count > 0; });
+}
+
+template <class A, class B, bool chain = false>
+void ours(benchmark::State& state) {
+  const auto& w = bench::pairs<A, B>(state);
+  const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
+  const auto a = side_a<A, chain>(w.a);
+  const std::vector<Shape> b(w.b.begin(), w.b.end());
+  const ContactOptions options{.max_separation = B2_SPECULATIVE_DISTANCE};
+  const auto time = [&](const auto& sa) {
+    const auto query = [&](std::size_t k) { return contact(sa[k], oa[k], b[k], ob[k], options); };
+    bench::time_queries(state, query);
+    count_manifolds(state, [&](std::size_t k) { return !query(k).empty(); });
+  };
+  if constexpr (chain) {
+    time(a);
+  } else {
+    time(std::vector<Shape>(a.begin(), a.end()));
+  }
+}
+
+// Pairs of the kinds the built-in scene has (rectangles, circles, ellipses) run on its pairs too.
+template <class S>
+constexpr bool kInScene = std::is_same_v<S, Rect> || std::is_same_v<S, Circle> || std::is_same_v<S, Ellipse>;
+
+// Registers collide2d's and v3's benchmarks of the pair under `name` (v3's with the polygons it
+// stands an ellipse by).
+template <class A, class B, bool chain = false>
+void race(const std::string& name) {
+  const auto apply = kInScene<A> && kInScene<B> ? bench::contact_workloads : bench::polygon_workloads;
+  const int ellipses = std::is_same_v<A, Ellipse> + std::is_same_v<B, Ellipse>;
+  const std::string rival = name + (ellipses == 2 ? "_8gons" : ellipses == 1 ? "_8gon" : "");
+  benchmark::RegisterBenchmark(("ours/" + name + "_speculative").c_str(), ours<A, B, chain>)->Apply(apply);
+  benchmark::RegisterBenchmark(("box2d_v3/" + rival).c_str(), box2d_v3<A, B, chain>)->Apply(apply);
+}
+
+// Segments and chain segments against each kind.
+template <class B>
+void race_level(const std::string& kind) {
+  race<Segment, B>("segment_" + kind);
+  race<Segment, B, true>("chain_" + kind);
+}
+
+[[maybe_unused]] const bool registered = [] {
+  race<Circle, Circle>("circle_circle");
+  race<Capsule, Circle>("capsule_circle");
+  race<Rect, Circle>("rect_circle");
+  race<ConvexPolygon, Circle>("polygon_circle");
+  race<Capsule, Capsule>("capsule_capsule");
+  race<Rect, Capsule>("rect_capsule");
+  race<ConvexPolygon, Capsule>("polygon_capsule");
+  race<Rect, Rect>("rect_rect");
+  race<Rect, ConvexPolygon>("rect_polygon");
+  race<ConvexPolygon, ConvexPolygon>("polygon_polygon");
+  race_level<Circle>("circle");
+  race_level<Capsule>("capsule");
+  race_level<Rect>("rect");
+  race_level<ConvexPolygon>("polygon");
+  race_level<Ellipse>("ellipse");
+  race<Circle, Ellipse>("circle_ellipse");
+  race<Capsule, Ellipse>("capsule_ellipse");
+  race<Rect, Ellipse>("rect_ellipse");
+  race<ConvexPolygon, Ellipse>("polygon_ellipse");
+  race<Ellipse, Ellipse>("ellipse_ellipse");
+  return true;
+}();
+
+}  // namespace
+}  // namespace collide2d

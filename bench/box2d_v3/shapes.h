@@ -1,0 +1,79 @@
+// collide2d's shapes as Box2D v3's, as a game's bodies hold them: each shape in its own frame, placed
+// by a float transform. A circle about its centre; a capsule along its x axis; a rectangle as
+// b2MakeBox; a convex polygon through b2ComputeHull and b2MakePolygon with its radius; an ellipse as
+// the polygon inscribed in it, vertices at 8 evenly spaced parameters (v3's polygons have at most 8);
+// a segment and a chain segment from their first point.
+//
+// Box2D 2.4.1's headers share v3's type names (b2Vec2, b2Manifold): a file that includes this one
+// includes no header of 2.4.1's (bench/box2d_baseline.h).
+#pragma once
+
+#include <collide2d/chain.h>
+#include <collide2d/shapes.h>
+
+#include <box2d/collision.h>
+#include <box2d/math_functions.h>
+
+#include <array>
+#include <numbers>
+
+namespace collide2d::box2d_v3 {
+
+template <class T>
+struct Posed {
+  T shape;
+  b2Transform transform;
+};
+
+inline b2Vec2 to_float(const Vec2& p) { return {static_cast<float>(p.x()), static_cast<float>(p.y())}; }
+
+inline b2Transform transform_of(const Vec2& position, double angle) {
+  const Orientation o = Orientation::of(angle);
+  return {to_float(position), {static_cast<float>(o.c), static_cast<float>(o.s)}};
+}
+
+inline Posed<b2Circle> posed(const Circle& c) {
+  return {{{0.0f, 0.0f}, static_cast<float>(c.radius)}, transform_of(c.center, 0.0)};
+}
+
+inline Posed<b2Capsule> posed(const Capsule& c) {
+  const auto h = static_cast<float>(c.half_length);
+  return {{{-h, 0.0f}, {h, 0.0f}, static_cast<float>(c.radius)}, transform_of(c.center, c.angle)};
+}
+
+inline Posed<b2Polygon> posed(const Rect& r) {
+  return {b2MakeBox(static_cast<float>(r.half_extents.x()), static_cast<float>(r.half_extents.y())),
+          transform_of(r.center, r.angle)};
+}
+
+inline b2Polygon polygon_of(std::span<const b2Vec2> points, double radius) {
+  const b2Hull hull = b2ComputeHull(points.data(), static_cast<int>(points.size()));
+  return b2MakePolygon(&hull, static_cast<float>(radius));
+}
+
+inline Posed<b2Polygon> posed(const ConvexPolygon& p) {
+  std::array<b2Vec2, kMaxPolygonVertices> points;
+  const std::span<const Vec2> vertices = p.vertices();
+  for (std::size_t k = 0; k < vertices.size(); ++k) points[k] = to_float(vertices[k]);
+  return {polygon_of(std::span(points).first(vertices.size()), p.radius()), transform_of(p.center, p.angle)};
+}
+
+inline Posed<b2Polygon> posed(const Ellipse& e) {
+  std::array<b2Vec2, 8> points;
+  for (int k = 0; k < 8; ++k) {
+    const Orientation o = Orientation::of(k * std::numbers::pi / 4);
+    points[k] = to_float(Vec2(e.a * o.c, e.b * o.s));
+  }
+  return {polygon_of(points, 0.0), transform_of(e.center, e.angle)};
+}
+
+inline Posed<b2Segment> posed(const Segment& s) {
+  return {{{0.0f, 0.0f}, to_float(s.end)}, transform_of(s.center, s.angle)};
+}
+
+inline Posed<b2ChainSegment> posed(const ChainSegment& c) {
+  return {{to_float(c.ghost1), {{0.0f, 0.0f}, to_float(c.segment.end)}, to_float(c.ghost2), 0},
+          transform_of(c.segment.center, c.segment.angle)};
+}
+
+}  // namespace collide2d::box2d_v3
