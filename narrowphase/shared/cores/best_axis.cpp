@@ -25,7 +25,8 @@ detail::BestAxis best_axis(const detail::Core& x, const detail::Core& y, double 
     const auto ax = hn::LoadU(d, x.ax.data() + k), ay = hn::LoadU(d, x.ay.data() + k);
     auto least = hn::Add(hn::Mul(ax, hn::Set(d, y.x[0])), hn::Mul(ay, hn::Set(d, y.y[0])));
     auto vertex = hn::Zero(d);
-    for (std::size_t j = 1; j < kMaxPolygonVertices; ++j) {
+    // y's slots past its count repeat its first vertex, which never lowers the minimum.
+    for (std::size_t j = 1; j < static_cast<std::size_t>(y.count); ++j) {
       const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y.x[j])), hn::Mul(ay, hn::Set(d, y.y[j])));
       vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
       least = hn::Min(least, p);

@@ -164,10 +164,13 @@ void set_axes(Core& c) {
     c.ax[i] = face ? nx : 0.0, c.ay[i] = face ? ny : 0.0;
     c.ad[i] = face ? nx * c.x[i] + ny * c.y[i] : kInf;  // n.v, as plane_of's
   }
-  for (int i = faces; i < axes; ++i) {
-    const Plane plane = plane_of(c, Axis{-kInf, -1, i - faces});
-    c.ax[i] = plane.normal.x(), c.ay[i] = plane.normal.y(), c.ad[i] = plane.normal.dot(plane.origin);
-  }
+  if (axes == faces) return;
+  // A segment's two ends, as plane_of() gives them: slot 2 the first end, facing back along the
+  // segment, slot 3 the second, facing on; their offsets written out rather than through a Plane,
+  // which the compiler builds in memory.
+  const Vec2 e = perp(c.n[0]);
+  c.ax[2] = -e.x(), c.ay[2] = -e.y(), c.ad[2] = -e.x() * c.x[0] + -e.y() * c.y[0];
+  c.ax[3] = e.x(), c.ay[3] = e.y(), c.ad[3] = e.x() * c.x[1] + e.y() * c.y[1];
 }
 
 Core core_of(const Rect& r, const Placement& at) {
