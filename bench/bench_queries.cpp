@@ -14,6 +14,7 @@
 #include <collide2d/aabb_tree.h>
 #include <collide2d/world.h>
 #include "bench/box2d_baseline.h"
+#include "bench/query_scene.h"
 #include "tools/random.h"
 
 #include <benchmark/benchmark.h>
@@ -29,59 +30,12 @@
 namespace collide2d {
 namespace {
 
-constexpr int kQueries = 1024;
-constexpr double kRayLength = 30.0;
-
-struct Scene {
-  std::vector<Shape> shapes;
-  std::vector<Aabb> boxes;  // grown by 0.1
-  std::vector<Aabb> queries;
-  std::vector<std::pair<Vec2, Vec2>> rays;  // origin, unit direction
-
-  explicit Scene(int n) {
-    std::mt19937_64 rng(7);
-    const auto u = [&rng] { return tool::uniform(rng, 0.0, 1.0); };
-    const double side = std::sqrt(28.0 * n);
-    for (int k = 0; k < n; ++k) {
-      // One draw a statement, y before x: a call's arguments are evaluated in an order the compiler picks.
-      const double y = u() * side;
-      const double x = u() * side;
-      const Vec2 c(x, y);
-      const double half = 0.3 + 1.7 * u(), angle = 2 * M_PI * u();
-      switch (k % 3) {
-        case 0:
-          shapes.push_back(Circle{c, half});
-          break;
-        case 1:
-          shapes.push_back(Ellipse{c, half, half * (0.2 + 0.8 * u()), angle});
-          break;
-        default:
-          shapes.push_back(Rect{c, Vec2(half, half * (0.2 + 0.8 * u())), angle});
-      }
-      const Aabb box = aabb(shapes.back());
-      boxes.push_back({box.min.array() - 0.1, box.max.array() + 0.1});
-    }
-    for (int k = 0; k < kQueries; ++k) {
-      const double y = u() * side;
-      const double x = u() * side;
-      queries.push_back({Vec2(x, y).array() - 4.0, Vec2(x, y).array() + 4.0});
-      const double a = 2 * M_PI * u();
-      const double oy = u() * side;
-      const double ox = u() * side;
-      rays.emplace_back(Vec2(ox, oy), Vec2(std::cos(a), std::sin(a)));
-    }
-  }
-};
-
-const Scene& scene(int n) {
-  static std::map<int, std::unique_ptr<Scene>> cache;
-  auto& s = cache[n];
-  if (!s) s = std::make_unique<Scene>(n);
-  return *s;
-}
+using bench::kRayLength;
+using bench::Query;
+using bench::run;
+using bench::Scene;
 
 enum class Kind { tree, tree_rebuilt, box2d, static_world, moving_world };
-enum class Query { box, ray_all, ray_first };
 
 struct Ours {
   AabbTree tree;
@@ -166,40 +120,18 @@ struct Bodies {
   }
 };
 
-template <class Target>
-const Target& target(int n, Kind kind) {
-  static std::map<std::pair<int, Kind>, std::unique_ptr<Target>> cache;
-  auto& t = cache[{n, kind}];
-  if (!t) t = std::make_unique<Target>(scene(n), kind);
-  return *t;
-}
-
-template <class Target, Kind kind, Query query>
-void run(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  const Scene& s = scene(n);
-  const Target& t = target<Target>(n, kind);
-  std::size_t k = 0, hits = 0;
-  for (auto _ : state) {
-    const std::size_t q = k++ % kQueries;
-    hits += query == Query::box ? t.run(s.queries[q]) : t.run(s.rays[q].first, s.rays[q].second, query);
-  }
-  state.counters["hits"] = static_cast<double>(hits) / static_cast<double>(state.iterations());
-}
-
-#define SIZES ->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)
-BENCHMARK(run<Ours, Kind::tree, Query::box>)->Name("box/tree") SIZES;
-BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::box>)->Name("box/tree_rebuilt") SIZES;
-BENCHMARK(run<Box2d, Kind::box2d, Query::box>)->Name("box/box2d") SIZES;
-BENCHMARK(run<Bodies, Kind::static_world, Query::box>)->Name("box/world_static") SIZES;
-BENCHMARK(run<Bodies, Kind::moving_world, Query::box>)->Name("box/world_moving") SIZES;
-BENCHMARK(run<Ours, Kind::tree, Query::ray_all>)->Name("ray/tree") SIZES;
-BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::ray_all>)->Name("ray/tree_rebuilt") SIZES;
-BENCHMARK(run<Box2d, Kind::box2d, Query::ray_all>)->Name("ray/box2d") SIZES;
-BENCHMARK(run<Bodies, Kind::static_world, Query::ray_all>)->Name("ray/world_static_all") SIZES;
-BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_all>)->Name("ray/world_moving_all") SIZES;
-BENCHMARK(run<Bodies, Kind::static_world, Query::ray_first>)->Name("ray/world_static_first") SIZES;
-BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_first>)->Name("ray/world_moving_first") SIZES;
+BENCHMARK(run<Ours, Kind::tree, Query::box>)->Name("box/tree")->Apply(bench::sizes);
+BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::box>)->Name("box/tree_rebuilt")->Apply(bench::sizes);
+BENCHMARK(run<Box2d, Kind::box2d, Query::box>)->Name("box/box2d")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::static_world, Query::box>)->Name("box/world_static")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::moving_world, Query::box>)->Name("box/world_moving")->Apply(bench::sizes);
+BENCHMARK(run<Ours, Kind::tree, Query::ray_all>)->Name("ray/tree")->Apply(bench::sizes);
+BENCHMARK(run<Ours, Kind::tree_rebuilt, Query::ray_all>)->Name("ray/tree_rebuilt")->Apply(bench::sizes);
+BENCHMARK(run<Box2d, Kind::box2d, Query::ray_all>)->Name("ray/box2d")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::static_world, Query::ray_all>)->Name("ray/world_static_all")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_all>)->Name("ray/world_moving_all")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::static_world, Query::ray_first>)->Name("ray/world_static_first")->Apply(bench::sizes);
+BENCHMARK(run<Bodies, Kind::moving_world, Query::ray_first>)->Name("ray/world_moving_first")->Apply(bench::sizes);
 
 }  // namespace
 }  // namespace collide2d
