@@ -1,6 +1,4 @@
-// Queries over n bodies in a uniform scene (the broad-phase benchmark's density: 8% of the arena
-// covered; circles, ellipses and rectangles at any angle, 0.3 to 2 across half): the bodies within
-// a query box (half side 4) and along a ray (from anywhere in the arena, any direction, 30 long).
+// Queries over the scene of bench/query_scene.h: the bodies within a query box and along a ray.
 //
 // The box part, against Box2D 2.4.1's b2DynamicTree::Query and RayCast on the same boxes: each
 // shape's box grown by 0.1 (Box2D's CreateProxy grows by b2_aabbMargin = 0.1, so ours are given
@@ -21,9 +19,6 @@
 #include <box2d/b2_dynamic_tree.h>
 
 #include <algorithm>
-#include <cmath>
-#include <map>
-#include <memory>
 #include <random>
 #include <vector>
 

@@ -130,10 +130,16 @@ SIZES = (1000, 10000, 100000, 1000000)
 TREES = (('tree', 'box2d_v3', 'trees built by insertion'), ('tree_rebuilt', 'box2d_v3_rebuilt', 'trees rebuilt'))
 BROAD = [(f'{n:,} boxes', f'moving_boxes<SweepAndPrune>/{n}{it}', f'moving_boxes<Box2dBroadPhase>/{n}{it}')
          for n, it in ((1000, ''), (10000, ''), (100000, ''), (1000000, '/iterations:3'))]
-QUERIES_V3 = ([(f'box, {n:,} boxes, {how}', f'box/{ours}/{n}', f'box/{rival}/{n}') for ours, rival, how in TREES for n in SIZES] +
-              [(f'ray, {n:,} boxes, {how}', f'ray/{ours}/{n}', f'ray/{rival}/{n}') for ours, rival, how in TREES for n in SIZES])
-QUERIES = ([(f'box, {n:,} boxes (tree as built by insertion)', f'box/tree/{n}', f'box/box2d/{n}') for n in SIZES] +
-           [(f'ray, {n:,} boxes (tree as built by insertion)', f'ray/tree/{n}', f'ray/box2d/{n}') for n in SIZES])
+
+
+def tree_rows(trees):
+    """Box and ray query rows, each (collide2d's tree, the rival's, how both were built) at every size."""
+    return [(f'{query}, {n:,} boxes, {how}', f'{query}/{ours}/{n}', f'{query}/{rival}/{n}')
+            for query in ('box', 'ray') for ours, rival, how in trees for n in SIZES]
+
+
+QUERIES_V3 = tree_rows(TREES)
+QUERIES = tree_rows((('tree', 'box2d', 'trees built by insertion'),))
 WORLD = [
     ('1,000 moving bodies', 'frame/alone/1000/1', 'box2d_frame/alone/1000'),
     ('100,000 moving bodies', 'frame/crowd/100000/1', 'box2d_frame/crowd/100000'),

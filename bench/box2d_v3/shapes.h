@@ -15,7 +15,9 @@
 #include <box2d/math_functions.h>
 
 #include <array>
+#include <cstddef>
 #include <numbers>
+#include <span>
 
 namespace collide2d::box2d_v3 {
 
