@@ -80,7 +80,7 @@ struct OnCores : NoBoundary {
     if constexpr (std::is_same_v<Y, Ellipse>) {
       return run(CoreEllipse::of(a, oa, b, ob));
     } else {
-      return run(CorePair::of(a, oa, b, ob));
+      return run(core_pair(a, oa, b, ob));
     }
   }
   // The discs about the two centres first: they settle most pairs before any core is built.

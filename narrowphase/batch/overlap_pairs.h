@@ -111,9 +111,9 @@ bool exact(const PairRef<A, Ellipse>& p) {
 template <class A, class B>
 requires(on_cores<A, B> && !std::is_same_v<B, Ellipse>) bool exact(const PairRef<A, B>& p) {
   if constexpr (std::is_same_v<A, B>) {
-    if (precedes(p.b, p.a)) return core_overlap(CorePair::of(p.b, p.b_orientation, p.a, p.a_orientation));
+    if (precedes(p.b, p.a)) return core_overlap(core_pair(p.b, p.b_orientation, p.a, p.a_orientation));
   }
-  return core_overlap(CorePair::of(p.a, p.a_orientation, p.b, p.b_orientation));
+  return core_overlap(core_pair(p.a, p.a_orientation, p.b, p.b_orientation));
 }
 template <class A, class B>
 bool exact(const PairRef<A, B>&) {

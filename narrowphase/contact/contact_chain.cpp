@@ -132,7 +132,7 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
         if constexpr (std::is_same_v<X, Circle> || std::is_same_v<X, Ellipse>) {
           return held_at(f, support(b, bo, Vec2(-f.n)), options);
         } else {
-          return detail::core_face_contact(detail::CorePair::of(a.segment, ao, x, bo), 0, options);
+          return detail::core_face_contact(detail::core_pair(a.segment, ao, x, bo), 0, options);
         }
       },
       b);

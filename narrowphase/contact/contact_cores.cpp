@@ -20,7 +20,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // or where an edge of y crosses a side plane; b infinite where y has none. Where the incident face
 // lies wholly beyond a side plane, as one of two faces of y nearly in line may, it stands in for
 // its deeper end, which lies off the face.
-Clipped deepest_over_face(const Core& x, int i, const Core& y) {
+template <class X, class Y>
+Clipped deepest_over_face(const X& x, int i, const Y& y) {
   const Vec2 &n = x.n[i], &v0 = x.v[i];
   const Vec2 t = perp(n);
   const double length = t.dot(x.v[x.next(i)] - v0);
@@ -40,8 +41,9 @@ Clipped deepest_over_face(const Core& x, int i, const Core& y) {
 }
 
 // Builds contacts in the world from points in A's frame.
+template <class P>
 struct Writer {
-  const CorePair& p;
+  const P& p;
 
   // A point of y's core and its foot on x's, the normal from x to y.
   ContactPoint point(bool x_is_a, const Vec2& on_x, const Vec2& on_y, const Vec2& normal, double separation,
@@ -59,17 +61,19 @@ struct Writer {
 };
 
 // Apart, nearest at two vertices, or at a vertex over an edge found by the vertex–edge search.
-Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOptions& options);
+template <class P>
+Contact nearest_contact(const P& p, const Closest& c, const ContactOptions& options);
 
 // The contact on face i of x (A's if x_is_a): the cores' separation s, its main point `main` (a
 // point of y's core and its height over the face), and the manifold from the face's clip `c`.
-Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& main, const FaceClip& c,
+template <class P>
+Contact on_face(const P& p, bool x_is_a, int i, double s, const Clipped& main, const FaceClip& c,
                 const ContactOptions& options) {
-  const Vec2& n = (x_is_a ? p.a : p.b).n[i];
+  const Vec2& n = x_is_a ? p.a.n[i] : p.b.n[i];
   const auto point = [&](const Clipped& k) {
     // As if x were A: Writer renames the features for B.
-    return Writer{p}.point(x_is_a, Vec2(k.on_y - k.b * n), k.on_y, n, k.b - radii(p),
-                           feature_id(FeatureKind::face_of_a, i, k.id));
+    return Writer<P>{p}.point(x_is_a, Vec2(k.on_y - k.b * n), k.on_y, n, k.b - radii(p),
+                              feature_id(FeatureKind::face_of_a, i, k.id));
   };
   const ContactPoint first = point(main);
   const Vec2 world = p.world_direction(n);
@@ -93,8 +97,8 @@ Contact on_face(const CorePair& p, bool x_is_a, int i, double s, const Clipped& 
 // the face's ends, the deepest clipped point stands in for it as the main point, or where the clip
 // keeps none, the deepest point of y over the face, so that both points lie on their shapes (the
 // separation stays s).
-Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
-  const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+template <class P, class X, class Y>
+Contact face_contact(const P& p, const X& x, const Y& y, bool x_is_a, const Axis& axis, const ContactOptions& options) {
   const int i = axis.face;
   const double s = axis.s;
   const FaceClip c = clip_face(x, i, y);
@@ -117,31 +121,41 @@ Contact face_contact(const CorePair& p, bool x_is_a, const Axis& axis, const Con
   return on_face(p, x_is_a, i, s, deep_kept ? c.deep : c.kept[0], c, options);
 }
 
-Contact nearest_contact(const CorePair& p, const Closest& c, const ContactOptions& options) {
+template <class P>
+Contact face_contact(const P& p, bool x_is_a, const Axis& axis, const ContactOptions& options) {
+  return x_is_a ? face_contact(p, p.a, p.b, true, axis, options) : face_contact(p, p.b, p.a, false, axis, options);
+}
+
+template <class P>
+Contact nearest_contact(const P& p, const Closest& c, const ContactOptions& options) {
   const double distance = std::sqrt(c.squared);
   // A vertex over an edge: that edge is the reference face (a segment's, the side facing the vertex).
-  const auto over_edge = [&](bool x_is_a, int edge, const Vec2& on_x, const Vec2& on_y, int vertex) {
-    const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
+  const auto over = [&](const auto& x, const auto& y, bool x_is_a, int edge, const Vec2& on_x, const Vec2& on_y,
+                        int vertex) {
     const int face = x.count == 2 && x.n[edge].dot(on_y - on_x) < 0 ? 1 - edge : edge;
     return on_face(p, x_is_a, face, distance, Clipped{on_y, distance, vertex}, clip_face(x, face, y), options);
   };
-  if (c.a_edge >= 0) return over_edge(true, c.a_edge, c.on_a, c.on_b, c.b_vertex);
-  if (c.b_edge >= 0) return over_edge(false, c.b_edge, c.on_b, c.on_a, c.a_vertex);
+  if (c.a_edge >= 0) return over(p.a, p.b, true, c.a_edge, c.on_a, c.on_b, c.b_vertex);
+  if (c.b_edge >= 0) return over(p.b, p.a, false, c.b_edge, c.on_b, c.on_a, c.a_vertex);
   const LengthAndDirection d = length_and_direction(Vec2(c.on_b - c.on_a));
-  return Writer{p}.one(true, c.on_a, c.on_b, d.direction, d.length - radii(p),
-                       feature_id(FeatureKind::corner_corner, c.a_vertex, c.b_vertex));
+  return Writer<P>{p}.one(true, c.on_a, c.on_b, d.direction, d.length - radii(p),
+                          feature_id(FeatureKind::corner_corner, c.a_vertex, c.b_vertex));
 }
 
 // A segment's end axis at the best: the segment x and a point or a parallel segment y in line.
-Contact end_contact(const CorePair& p, bool x_is_a, const Axis& axis) {
-  const Core &x = x_is_a ? p.a : p.b, &y = x_is_a ? p.b : p.a;
-  return Writer{p}.one(x_is_a, x.v[axis.end], y.v[axis.vertex], plane_of(x, axis).normal, axis.s - radii(p),
-                       feature_id(FeatureKind::corner_corner, axis.end, axis.vertex));
+template <class P>
+Contact end_contact(const P& p, bool x_is_a, const Axis& axis) {
+  const auto on = [&](const auto& x, const auto& y) {
+    return Writer<P>{p}.one(x_is_a, x.v[axis.end], y.v[axis.vertex], plane_of(x, axis).normal, axis.s - radii(p),
+                            feature_id(FeatureKind::corner_corner, axis.end, axis.vertex));
+  };
+  return x_is_a ? on(p.a, p.b) : on(p.b, p.a);
 }
 
 // The contact on the axis of greatest separation; where the two cores' best faces tie to 1e-9 of
 // the sum of their reaches, the manifold is A's (as contact_rect_rect keeps it, so that ids hold).
-Contact contact_of(const CorePair& p, const Axes& axes, const ContactOptions& options) {
+template <class P>
+Contact contact_of(const P& p, const Axes& axes, const ContactOptions& options) {
   const bool b_best = axes.b_best();
   const Axis& best = axes.best();
   if (best.face < 0) {
@@ -161,7 +175,8 @@ Contact contact_of(const CorePair& p, const Axes& axes, const ContactOptions& op
 
 }  // namespace
 
-Contact core_face_contact(const CorePair& p, int i, const ContactOptions& options) {
+template <class X, class Y>
+Contact core_face_contact(const CorePairOf<X, Y>& p, int i, const ContactOptions& options) {
   const Clipped over = deepest_over_face(p.a, i, p.b);
   if (!(over.b < kInf)) return Contact::beyond(kInf);
   if (over.b - radii(p) > options.max_separation) return Contact::beyond(over.b - radii(p));
@@ -169,7 +184,8 @@ Contact core_face_contact(const CorePair& p, int i, const ContactOptions& option
 }
 
 // With a limit, the axes stop at the first that shows the pair beyond it.
-Contact core_contact(const CorePair& p, const ContactOptions& options) {
+template <class X, class Y>
+Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options) {
   if (has_limit(options)) {
     if (const auto gap = discs_beyond(p.b.center, p.a.discs.reach + p.b.discs.reach, options)) {
       return Contact::beyond(*gap);
@@ -181,5 +197,14 @@ Contact core_contact(const CorePair& p, const ContactOptions& options) {
   if (axes.s() > stop) return Contact::beyond(axes.s() - radii(p));
   return limited(options, [&] { return contact_of(p, axes, options); });
 }
+
+template Contact core_contact(const CorePairOf<Core, Core>&, const ContactOptions&);
+template Contact core_contact(const CorePairOf<Core, SegmentCore>&, const ContactOptions&);
+template Contact core_contact(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
+template Contact core_contact(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
+template Contact core_face_contact(const CorePairOf<Core, Core>&, int, const ContactOptions&);
+template Contact core_face_contact(const CorePairOf<Core, SegmentCore>&, int, const ContactOptions&);
+template Contact core_face_contact(const CorePairOf<SegmentCore, Core>&, int, const ContactOptions&);
+template Contact core_face_contact(const CorePairOf<SegmentCore, SegmentCore>&, int, const ContactOptions&);
 
 }  // namespace collide2d::detail

@@ -14,7 +14,8 @@ namespace {
 
 // A point of two overlapping segments: where their lines cross, or, in line, the middle of their
 // common part.
-Vec2 segments_common_point(const Core& x, const Core& y) {
+template <class X, class Y>
+Vec2 segments_common_point(const X& x, const Y& y) {
   const Vec2 ex = x.v[1] - x.v[0], ey = y.v[1] - y.v[0];
   const double turn = cross(ey, ex);
   if (turn != 0.0) return y.v[0] + (cross(x.v[0] - y.v[0], ex) / turn) * ey;
@@ -25,7 +26,8 @@ Vec2 segments_common_point(const Core& x, const Core& y) {
 }
 
 // Whether p lies in the (sharp) core c, which has faces all round (3 vertices or more).
-bool in_core(const Core& c, const Vec2& p) {
+template <class C>
+bool in_core(const C& c, const Vec2& p) {
   for (int i = 0; i < c.count; ++i) {
     if (c.n[i].dot(p - c.v[i]) > 0.0) return false;
   }
@@ -37,7 +39,8 @@ bool in_core(const Core& c, const Vec2& p) {
 // of y's core clipped to x's faces (Sutherland–Hodgman), whose points are edges' crossings (left
 // for last: two nearly parallel edges cross at a point that rounding slides along them); a point
 // core is its own witness. None where rounding clips all of y away (the cores touch).
-std::optional<Vec2> common_point(const Core& x, const Core& y) {
+template <class X, class Y>
+std::optional<Vec2> common_point(const X& x, const Y& y) {
   if (y.count == 1) return y.v[0];
   if (x.count == 2) return segments_common_point(x, y);
   Vec2 sum = Vec2::Zero();
@@ -70,18 +73,22 @@ std::optional<Vec2> common_point(const Core& x, const Core& y) {
 
 // A point of both cores where they touch to rounding: midway between y's deepest point over the
 // best face and its foot on the face, or between a segment's end and y's vertex beyond it.
-Vec2 touching_point(const CorePair& p, const Axes& axes) {
+template <class P>
+Vec2 touching_point(const P& p, const Axes& axes) {
   const Axis& best = axes.best();
-  const Core &x = axes.b_best() ? p.b : p.a, &y = axes.b_best() ? p.a : p.b;
-  if (best.face < 0) return (x.v[best.end] + y.v[best.vertex]) / 2;
-  const FaceClip c = clip_face(x, best.face, y);
-  const Clipped& k = c.count > 0 ? c.kept[0] : c.deep;
-  return k.on_y - (k.b / 2) * x.n[best.face];
+  const auto on = [&](const auto& x, const auto& y) -> Vec2 {
+    if (best.face < 0) return (x.v[best.end] + y.v[best.vertex]) / 2;
+    const FaceClip c = clip_face(x, best.face, y);
+    const Clipped& k = c.count > 0 ? c.kept[0] : c.deep;
+    return k.on_y - (k.b / 2) * x.n[best.face];
+  };
+  return axes.b_best() ? on(p.b, p.a) : on(p.a, p.b);
 }
 
 }  // namespace
 
-DistanceResult core_distance(const CorePair& p) {
+template <class X, class Y>
+DistanceResult core_distance(const CorePairOf<X, Y>& p) {
   const Axes axes = axes_of(p);
   CoreVerdict v = verdict(p, axes);
   Closest& c = v.gap;
@@ -98,5 +105,10 @@ DistanceResult core_distance(const CorePair& p) {
   return DistanceResult::apart(d.length - radii(p), p.world_point(Vec2(c.on_a + p.a.radius * d.direction)),
                                p.world_point(Vec2(c.on_b - p.b.radius * d.direction)));
 }
+
+template DistanceResult core_distance(const CorePairOf<Core, Core>&);
+template DistanceResult core_distance(const CorePairOf<Core, SegmentCore>&);
+template DistanceResult core_distance(const CorePairOf<SegmentCore, Core>&);
+template DistanceResult core_distance(const CorePairOf<SegmentCore, SegmentCore>&);
 
 }  // namespace collide2d::detail

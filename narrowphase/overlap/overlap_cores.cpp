@@ -5,6 +5,13 @@
 
 namespace collide2d::detail {
 
-bool core_overlap(const CorePair& p) { return verdict(p, axes_of(p, radii(p))).overlapping; }
+template <class X, class Y>
+bool core_overlap(const CorePairOf<X, Y>& p) {
+  return verdict(p, axes_of(p, radii(p))).overlapping;
+}
+template bool core_overlap(const CorePairOf<Core, Core>&);
+template bool core_overlap(const CorePairOf<Core, SegmentCore>&);
+template bool core_overlap(const CorePairOf<SegmentCore, Core>&);
+template bool core_overlap(const CorePairOf<SegmentCore, SegmentCore>&);
 
 }  // namespace collide2d::detail

@@ -43,14 +43,37 @@ struct Kernels {
   std::function<bool()> overlap;
 };
 
-detail::CorePair pair_of(const Shape& a, const Shape& b) {
+// A shape's core in the core type C.
+template <class C, class S>
+C core_as(const S& shape, const detail::Placement& at) {
+  if constexpr (std::is_same_v<C, detail::SegmentCore>) {
+    return detail::core_of<C>(shape, at);
+  } else {
+    return detail::core_of(shape, at);
+  }
+}
+template <class>
+using EightSlots = detail::Core;
+
+// The cores' methods on a pair of core shapes, each core in the slots `Cores` gives its kind:
+// detail::PairCore's, as the queries take them, or eight for every kind.
+template <template <class> class Cores = detail::PairCore>
+Kernels core_kernels(const Shape& a, const Shape& b) {
   return std::visit(
-      [](const auto& x, const auto& y) -> detail::CorePair {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Ellipse> ||
-                      std::is_same_v<std::decay_t<decltype(y)>, Ellipse>) {
+      [](const auto& x, const auto& y) -> Kernels {
+        using X = std::decay_t<decltype(x)>;
+        using Y = std::decay_t<decltype(y)>;
+        if constexpr (std::is_same_v<X, Ellipse> || std::is_same_v<Y, Ellipse>) {
           throw std::logic_error("not a pair of core shapes");
         } else {
-          return detail::CorePair::of(x, orientation_of(x), y, orientation_of(y));
+          detail::CorePairOf<Cores<X>, Cores<Y>> p{
+              core_as<Cores<X>>(x, {}),
+              core_as<Cores<Y>>(y, detail::Placement::of(y.center, orientation_of(y), x.center, orientation_of(x))),
+              detail::Rotation<double>::of(orientation_of(x)), x.center};
+          detail::set_axes(p.a);
+          detail::set_axes(p.b);
+          return {[p](const ContactOptions& o) { return detail::core_contact(p, o); },
+                  [p] { return detail::core_distance(p); }, [p] { return detail::core_overlap(p); }};
         }
       },
       a, b);
@@ -70,9 +93,7 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
     return {[p](const ContactOptions& o) { return detail::core_ellipse_contact(p, o); },
             [p] { return detail::core_ellipse_distance(p); }, [p] { return detail::core_ellipse_overlap(p); }};
   }
-  const detail::CorePair p = pair_of(a, b);
-  Kernels out{[p](const ContactOptions& o) { return detail::core_contact(p, o); },
-              [p] { return detail::core_distance(p); }, [p] { return detail::core_overlap(p); }};
+  Kernels out = core_kernels(a, b);
   const auto* polygon = std::get_if<ConvexPolygon>(&a);
   const auto* circle = std::get_if<Circle>(&b);
   if (polygon && circle) {
@@ -187,7 +208,7 @@ TEST_P(CoreFamilies, MatchReference) {
 }
 
 Contact contact_of(const Shape& a, const Shape& b, const ContactOptions& options = {}) {
-  return detail::core_contact(pair_of(a, b), options);
+  return core_kernels(a, b).contact(options);
 }
 
 // Two capsules on one line: their cores' only separating directions are the line itself (an end of
@@ -199,8 +220,8 @@ TEST(CorePairs, CapsulesInLine) {
     const Contact c = contact_of(a, b);
     EXPECT_NEAR(c.separation, gap, 4 * kU * 4) << gap;
     EXPECT_EQ(c.normal, Vec2(1, 0)) << gap;
-    EXPECT_EQ(detail::core_overlap(pair_of(a, b)), gap <= 0) << gap;
-    const DistanceResult d = detail::core_distance(pair_of(a, b));
+    EXPECT_EQ(core_kernels(a, b).overlap(), gap <= 0) << gap;
+    const DistanceResult d = core_kernels(a, b).distance();
     EXPECT_NEAR(d.distance, std::max(gap, 0.0), 4 * kU * 4) << gap;
   }
   // Cores overlapping along the line: the way out is sideways, by the two radii.
@@ -281,11 +302,11 @@ TEST(CorePairs, KnownSeparations) {
   const std::vector<Vec2> wedge = {{0, 0}, {1, 2}, {-1, 2}};
   const ConvexPolygon tip = ConvexPolygon::of(wedge).at(Vec2(0.25, 1));
   EXPECT_EQ(contact_of(floor, tip).separation, 0.0);
-  EXPECT_TRUE(detail::core_overlap(pair_of(floor, tip)));
-  EXPECT_TRUE(detail::core_distance(pair_of(floor, tip)).overlapping);
+  EXPECT_TRUE(core_kernels(floor, tip).overlap());
+  EXPECT_TRUE(core_kernels(floor, tip).distance().overlapping);
   const ConvexPolygon lifted = ConvexPolygon::of(wedge).at(Vec2(0.25, 1 + 1e-12));
   EXPECT_NEAR(contact_of(floor, lifted).separation, 1e-12, 4 * kU * 2);
-  EXPECT_FALSE(detail::core_overlap(pair_of(floor, lifted)));
+  EXPECT_FALSE(core_kernels(floor, lifted).overlap());
 
   const Capsule needle{Vec2(0.5, 1 + 1e-9 + 1e-3), 1.0, 1e-9, 0.0};
   const Contact lying = contact_of(floor, needle);
@@ -324,10 +345,10 @@ TEST(CorePairs, CircleKernelsAreTheCoresContact) {
               throw std::logic_error("not a polygon, a capsule or a segment");
             },
             c.a);
-        const Contact want = detail::core_contact(pair_of(c.a, c.b), o);
+        const Contact want = core_kernels(c.a, c.b).contact(o);
         ASSERT_EQ(got.manifold_size, want.manifold_size) << f.name;
         if (want.empty()) {
-          const double separation = detail::core_contact(pair_of(c.a, c.b), {}).separation;
+          const double separation = core_kernels(c.a, c.b).contact({}).separation;
           const double rounding = 64 * kU * (reach_of(c.a) + reach_of(c.b) + (center_of(c.b) - center_of(c.a)).norm());
           for (const double bound : {got.separation, want.separation}) {
             EXPECT_GT(bound, limit) << f.name;
@@ -345,6 +366,48 @@ TEST(CorePairs, CircleKernelsAreTheCoresContact) {
     }
   }
   EXPECT_GT(compared, 200);
+}
+
+// The same contact to the bit: every field and every manifold point.
+void expect_same(const Contact& got, const Contact& want, const std::string& what) {
+  EXPECT_EQ(got.separation, want.separation) << what;
+  EXPECT_EQ(got.normal, want.normal) << what;
+  EXPECT_EQ(got.point_a, want.point_a) << what;
+  EXPECT_EQ(got.point_b, want.point_b) << what;
+  ASSERT_EQ(got.manifold_size, want.manifold_size) << what;
+  for (int k = 0; k < got.manifold_size; ++k) {
+    EXPECT_EQ(got.manifold[k].point_a, want.manifold[k].point_a) << what << " point " << k;
+    EXPECT_EQ(got.manifold[k].point_b, want.manifold[k].point_b) << what << " point " << k;
+    EXPECT_EQ(got.manifold[k].separation, want.manifold[k].separation) << what << " point " << k;
+    EXPECT_EQ(got.manifold[k].id, want.manifold[k].id) << what << " point " << k;
+  }
+}
+
+// A capsule's or a segment's core in two slots (as the queries take it) against the same core in
+// eight, the slots every other core shape takes: the same contact (with and without a limit),
+// distance and verdict on every family with a capsule or a segment.
+TEST(CorePairs, TwoSlotCoresAreTheEightSlotCores) {
+  const auto segment_like = [](Form k) { return k == Form::segment || is_one_of(testing::kCapsuleKinds, k); };
+  int compared = 0;
+  for (const CoreFamily& f : core_families()) {
+    if (f.a == Form::ellipse || f.b == Form::ellipse || !(segment_like(f.a) || segment_like(f.b))) continue;
+    int k = 0;
+    for (const CoreCase& c : cases_of(f)) {
+      const std::string what = f.name + " case " + std::to_string(k++);
+      const Kernels two = core_kernels(c.a, c.b), eight = core_kernels<EightSlots>(c.a, c.b);
+      for (const double limit : {HUGE_VAL, 0.0}) {
+        expect_same(two.contact({.max_separation = limit}), eight.contact({.max_separation = limit}), what);
+      }
+      const DistanceResult d2 = two.distance(), d8 = eight.distance();
+      EXPECT_EQ(d2.overlapping, d8.overlapping) << what;
+      EXPECT_EQ(d2.distance, d8.distance) << what;
+      EXPECT_EQ(d2.point_a, d8.point_a) << what;
+      EXPECT_EQ(d2.point_b, d8.point_b) << what;
+      EXPECT_EQ(two.overlap(), eight.overlap()) << what;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 500);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, CoreFamilies, ::testing::ValuesIn(testing::core_families()),

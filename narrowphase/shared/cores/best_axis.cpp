@@ -18,16 +18,15 @@ namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-detail::BestAxis best_axis(const detail::Core& x, const detail::Core& y, double stop) {
+detail::BestAxis best_axis(const detail::Core& x, const double* y_x, const double* y_y, int y_count, double stop) {
   const hn::CappedTag<double, kMaxPolygonVertices> d;
   detail::BestAxis best;
   for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
     const auto ax = hn::LoadU(d, x.ax.data() + k), ay = hn::LoadU(d, x.ay.data() + k);
-    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y.x[0])), hn::Mul(ay, hn::Set(d, y.y[0])));
+    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y_x[0])), hn::Mul(ay, hn::Set(d, y_y[0])));
     auto vertex = hn::Zero(d);
-    // y's slots past its count repeat its first vertex, which never lowers the minimum.
-    for (std::size_t j = 1; j < static_cast<std::size_t>(y.count); ++j) {
-      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y.x[j])), hn::Mul(ay, hn::Set(d, y.y[j])));
+    for (std::size_t j = 1; j < static_cast<std::size_t>(y_count); ++j) {
+      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y_x[j])), hn::Mul(ay, hn::Set(d, y_y[j])));
       vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
       least = hn::Min(least, p);
     }
@@ -55,7 +54,9 @@ namespace collide2d::detail {
 
 HWY_EXPORT(best_axis);
 
-BestAxis best_axis(const Core& x, const Core& y, double stop) { return HWY_DYNAMIC_DISPATCH(best_axis)(x, y, stop); }
+BestAxis best_axis(const Core& x, const double* y_x, const double* y_y, int y_count, double stop) {
+  return HWY_DYNAMIC_DISPATCH(best_axis)(x, y_x, y_y, y_count, stop);
+}
 
 }  // namespace collide2d::detail
 #endif

@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 namespace collide2d::detail {
 
@@ -54,41 +55,6 @@ inline Discs discs_of(const Capsule& c) { return {c.half_length + c.radius, c.ra
 inline Discs discs_of(const Circle& c) { return {c.radius, c.radius}; }
 inline Discs discs_of(const Segment& s) { return {s.end.norm(), -1.0}; }
 
-// A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
-// count repeating the first), each face's outward unit normal (face i from vertex i to vertex
-// i + 1), and the radius around it. A segment has two faces, one each way, and in the normals'
-// slots 2 and 3 its directions from its first end to its second and back (each end's half turn of
-// directions is two quarter turns about them); a point has none. The normals' slots past those
-// hold a polygon's first face's normal again, other shapes' zero.
-struct Core {
-  // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
-  std::array<Vec2, kMaxPolygonVertices> v;
-  std::array<double, kMaxPolygonVertices> x, y;  // v's coordinates apart, for the separating axes
-  std::array<Vec2, kMaxPolygonVertices> n;
-  // The separating axes (the faces, then a segment's two ends, away from the other): directions
-  // and offsets (the direction's dot product with the axis' point of the core) apart, for their
-  // vector kernel; past axes(), no direction and an infinite offset, so that no other core is
-  // ever found separated along them. Set by set_axes() for a pair of cores.
-  std::array<double, kMaxPolygonVertices> ax, ay, ad;
-  int count = 0;
-  double radius = 0.0;
-  Discs discs{0.0, -1.0};      // about its own centre
-  Vec2 center = Vec2::Zero();  // its own centre, in the frame
-
-  int faces() const { return count == 1 ? 0 : count; }
-  int axes() const { return faces() + (count == 2 ? 2 : 0); }
-  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
-  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
-};
-
-// Where the point w lies along the face from v0 to v1 of outward normal n: over it (0, between its
-// side planes), before v0 (-1) or beyond v1 (1).
-inline int along_face(const Vec2& n, const Vec2& v0, const Vec2& v1, const Vec2& w) {
-  const Vec2 t = perp(n);
-  const double at = t.dot(w - v0);
-  return at >= 0.0 ? (at <= t.dot(v1 - v0) ? 0 : 1) : -1;
-}
-
 // Every slot folded into one by `pick`, neighbours paired off as a tree: a tree keeps the chain of
 // dependent picks short, and as the left of each pair holds the earlier slots, a pick that keeps
 // the left on ties keeps the first of equals.
@@ -99,6 +65,65 @@ T tree_fold(std::array<T, N> slots, Pick pick) {
     for (std::size_t i = 0; i < width / 2; ++i) slots[i] = pick(slots[2 * i], slots[2 * i + 1]);
   }
   return slots[0];
+}
+
+// A core in the frame of the pair's shape A: its vertices counter-clockwise (the slots past the
+// count repeating the first), each face's outward unit normal (face i from vertex i to vertex
+// i + 1), and the radius around it. A segment has two faces, one each way; in a core of eight slots,
+// the normals' slots 2 and 3 hold its directions from its first end to its second and back (each
+// end's half turn of directions is two quarter turns about them), which the methods on an ellipse
+// read; a point has none. The normals' slots past those hold a polygon's first face's normal again,
+// other shapes' zero.
+//
+// A core of two slots (SegmentCore) is a segment's alone, its count known when compiled: a pair of
+// cores takes it for a capsule or a segment (core_pair()), a quarter of the slots to build and read.
+template <int Slots>
+struct CoreCount {
+  int count = 0;
+};
+template <>
+struct CoreCount<2> {
+  static constexpr int count = 2;
+};
+
+template <int Slots>
+struct BasicCore : CoreCount<Slots> {
+  static constexpr int kSlots = Slots;
+  static constexpr int kAxes = Slots == 2 ? 4 : Slots;  // a segment's two faces and two ends
+
+  // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
+  std::array<Vec2, Slots> v;
+  std::array<double, Slots> x, y;  // v's coordinates apart, for the separating axes
+  std::array<Vec2, Slots> n;
+  // The separating axes (the faces, then a segment's two ends, away from the other): directions
+  // and offsets (the direction's dot product with the axis' point of the core) apart, for their
+  // vector kernel; past axes(), no direction and an infinite offset, so that no other core is
+  // ever found separated along them. Set by set_axes() for a pair of cores.
+  std::array<double, kAxes> ax, ay, ad;
+  double radius = 0.0;
+  Discs discs{0.0, -1.0};      // about its own centre
+  Vec2 center = Vec2::Zero();  // its own centre, in the frame
+
+  int faces() const { return this->count == 1 ? 0 : this->count; }
+  int axes() const { return faces() + (this->count == 2 ? 2 : 0); }
+  int next(int i) const { return i + 1 == this->count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? this->count - 1 : i - 1; }
+  // The largest coordinate of a vertex, by magnitude.
+  double extent() const {
+    std::array<double, Slots> reach;
+    for (int i = 0; i < Slots; ++i) reach[i] = std::max(std::abs(x[i]), std::abs(y[i]));
+    return tree_fold(reach, [](double l, double r) { return std::max(l, r); });
+  }
+};
+using Core = BasicCore<kMaxPolygonVertices>;
+using SegmentCore = BasicCore<2>;
+
+// Where the point w lies along the face from v0 to v1 of outward normal n: over it (0, between its
+// side planes), before v0 (-1) or beyond v1 (1).
+inline int along_face(const Vec2& n, const Vec2& v0, const Vec2& v1, const Vec2& w) {
+  const Vec2 t = perp(n);
+  const double at = t.dot(w - v0);
+  return at >= 0.0 ? (at <= t.dot(v1 - v0) ? 0 : 1) : -1;
 }
 
 // Whether a convex outline lies farthest along d at its vertex v, between `before` and `after`
@@ -163,45 +188,66 @@ inline double radius_of(const Capsule& c) { return c.radius; }
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
-// vertex there. Every axis at once in SIMD lanes (best_axis.cpp); x has an axis.
+// vertex there. Every axis of an eight-slot core at once in SIMD lanes (best_axis.cpp), y's vertices
+// given by their coordinates; x has an axis.
 struct BestAxis {
   double s = -std::numeric_limits<double>::infinity();
   int axis = 0;
   int vertex = 0;
 };
-BestAxis best_axis(const Core& x, const Core& y, double stop);
+BestAxis best_axis(const Core& x, const double* y_x, const double* y_y, int y_count, double stop);
 
-Core core_of(const Rect& r, const Placement& at);
 // Sets the core's axes (Core::ax, ay, ad), which a pair of cores needs and a core against an
 // ellipse does not.
-void set_axes(Core& c);
+template <class C>
+void set_axes(C& c);
+
+Core core_of(const Rect& r, const Placement& at);
 Core core_of(const ConvexPolygon& p, const Placement& at);
-Core core_of(const Capsule& c, const Placement& at);
-Core core_of(const Segment& s, const Placement& at);
+template <class C = Core>
+C core_of(const Capsule& c, const Placement& at);
+template <class C = Core>
+C core_of(const Segment& s, const Placement& at);
 Core core_of(const Circle& c, const Placement& at);
 
+// The core a pair of cores takes for a shape: a capsule's and a segment's in two slots.
+template <class A>
+using PairCore = std::conditional_t<std::is_same_v<A, Capsule> || std::is_same_v<A, Segment>, SegmentCore, Core>;
+template <class A>
+PairCore<A> pair_core_of(const A& shape, const Placement& at) {
+  if constexpr (std::is_same_v<PairCore<A>, SegmentCore>) {
+    return core_of<SegmentCore>(shape, at);
+  } else {
+    return core_of(shape, at);
+  }
+}
+
 // A pair of core shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.
-struct CorePair {
-  Core a, b;
+template <class X, class Y>
+struct CorePairOf {
+  X a;
+  Y b;
   Rotation<double> a_rot;
   Vec2 a_center = Vec2::Zero();
 
-  template <class A, class B>
-  static CorePair of(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-    CorePair p{core_of(a, Placement{}), core_of(b, Placement::of(b.center, bo, a.center, ao)), Rotation<double>::of(ao),
-               a.center};
-    set_axes(p.a);
-    set_axes(p.b);
-    return p;
-  }
   Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }
   // The pair's scale: the offset of B and both cores' sizes, what their rounding is a few u of.
-  double scale() const;
+  double scale() const { return 2 * std::max(a.extent(), b.extent()) + a.radius + b.radius; }
 };
 
+template <class A, class B>
+CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+  CorePairOf<PairCore<A>, PairCore<B>> p{pair_core_of(a, Placement{}),
+                                         pair_core_of(b, Placement::of(b.center, bo, a.center, ao)),
+                                         Rotation<double>::of(ao), a.center};
+  set_axes(p.a);
+  set_axes(p.b);
+  return p;
+}
+
 // The disc test (disc_filter-inl.h) on one pair, before any core is built: the fields from the two
-// shapes (B's centre in A's frame, as CorePair::of and CoreEllipse::of place it, and each shape's
+// shapes (B's centre in A's frame, as core_pair() and CoreEllipse::of place it, and each shape's
 // discs), and the verdict where the discs settle it. The overlap tests below take the pairs it
 // leaves.
 template <class A, class B>
@@ -220,14 +266,18 @@ std::optional<bool> disc_verdict(const DiscPairLanes<double>& discs);
 std::optional<bool> disc_verdict(const DiscEllipseLanes<double>& discs);
 
 // The methods on a pair of cores (core_pair.h holds what they share): overlap/overlap_cores.cpp,
-// distance/distance_cores.cpp, contact/contact_cores.cpp.
-bool core_overlap(const CorePair& p);
-DistanceResult core_distance(const CorePair& p);
-Contact core_contact(const CorePair& p, const ContactOptions& options);
+// distance/distance_cores.cpp, contact/contact_cores.cpp; each for every pair of core types.
+template <class X, class Y>
+bool core_overlap(const CorePairOf<X, Y>& p);
+template <class X, class Y>
+DistanceResult core_distance(const CorePairOf<X, Y>& p);
+template <class X, class Y>
+Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options);
 // The contact on A's face i with its normal held there: B's deepest point over the face (between
 // its side planes) and B's incident face clipped to it; empty, its separation infinite, where no
 // point of B's core lies over the face.
-Contact core_face_contact(const CorePair& p, int i, const ContactOptions& options);
+template <class X, class Y>
+Contact core_face_contact(const CorePairOf<X, Y>& p, int i, const ContactOptions& options);
 
 // A core shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
 // ellipse is centred at the origin with semi-axis a along x and b along y.
