@@ -110,17 +110,25 @@ struct OnCores : NoBoundary {
     });
   }
   // A tie of two polygons' faces keeps the kernel's A's (the pair in rank order), whichever the
-  // caller gave first.
+  // caller gave first. Two cores' discs come first, as the cores' contact takes them: beyond the
+  // limit, no core is built.
   template <class X, class Y>
   static Contact contact(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const ContactOptions& o,
                          bool) {
-    return on_core_pair(a, oa, b, ob, [&o](const auto& p) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(p)>, CoreEllipse>) {
-        return core_ellipse_contact(p, o);
-      } else {
-        return core_contact(p, o);
+    if constexpr (std::is_same_v<Y, Ellipse>) {
+      return core_ellipse_contact(CoreEllipse::of(a, oa, b, ob), o);
+    } else {
+      // B's offset alone first: far pairs need no more.
+      const Rotation<double> frame = Rotation<double>::of(oa);
+      const Vec2 offset = frame.apply_inverse(Vec2(b.center - a.center));  // as Placement::of's
+      if (has_limit(o)) {
+        if (const auto gap = discs_beyond(offset, discs_of(a).reach + discs_of(b).reach, o)) {
+          return Contact::beyond(*gap);
+        }
       }
-    });
+      return core_contact_within_discs(
+          core_pair(a, oa, b, Placement{Rotation<double>::of(ob).relative_to(frame), offset}), o);
+    }
   }
 };
 

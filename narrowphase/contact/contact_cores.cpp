@@ -191,6 +191,11 @@ Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options) {
       return Contact::beyond(*gap);
     }
   }
+  return core_contact_within_discs(p, options);
+}
+
+template <class X, class Y>
+Contact core_contact_within_discs(const CorePairOf<X, Y>& p, const ContactOptions& options) {
   const double stop = has_limit(options) ? separation_limit(p.scale(), options) + radii(p) : kInf;
   const Axes axes = axes_of(p, stop);
   // The cores' separation along an axis is at most their distance.
@@ -202,6 +207,10 @@ template Contact core_contact(const CorePairOf<Core, Core>&, const ContactOption
 template Contact core_contact(const CorePairOf<Core, SegmentCore>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
+template Contact core_contact_within_discs(const CorePairOf<Core, Core>&, const ContactOptions&);
+template Contact core_contact_within_discs(const CorePairOf<Core, SegmentCore>&, const ContactOptions&);
+template Contact core_contact_within_discs(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
+template Contact core_contact_within_discs(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<Core, Core>&, int, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<Core, SegmentCore>&, int, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<SegmentCore, Core>&, int, const ContactOptions&);

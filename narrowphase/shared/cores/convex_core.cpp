@@ -22,17 +22,16 @@ C make(int count, std::span<const Vec2> vertices, std::span<const Vec2> normals,
   c.discs = discs;
   c.center = at.offset;
   normals = normals.first(std::min(normals.size(), c.n.size()));
-  if (at.moves()) {
-    for (std::size_t i = 0; i < vertices.size(); ++i) c.v[i] = at.point(vertices[i]);
-    for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = at.direction(normals[i]);
-  } else {
-    std::copy(vertices.begin(), vertices.end(), c.v.begin());
-    std::copy(normals.begin(), normals.end(), c.n.begin());
-  }
-  // The axes' kernel reads all the slots.
-  std::fill(c.v.begin() + static_cast<std::ptrdiff_t>(vertices.size()), c.v.end(), c.v[0]);
+  const bool moves = at.moves();
+  // The axes' kernel reads all the slots. The coordinates apart are written from the vertex as
+  // computed, not read back from the vertex's slot, which would stall on the store.
+  const auto put = [&c](std::size_t i, const Vec2& v) { c.v[i] = v, c.x[i] = v.x(), c.y[i] = v.y(); };
+  const Vec2 first = moves ? at.point(vertices[0]) : vertices[0];
+  put(0, first);
+  for (std::size_t i = 1; i < vertices.size(); ++i) put(i, moves ? at.point(vertices[i]) : vertices[i]);
+  for (std::size_t i = vertices.size(); i < c.v.size(); ++i) put(i, first);
+  for (std::size_t i = 0; i < normals.size(); ++i) c.n[i] = moves ? at.direction(normals[i]) : normals[i];
   std::fill(c.n.begin() + static_cast<std::ptrdiff_t>(normals.size()), c.n.end(), Vec2::Zero());
-  for (int i = 0; i < C::kSlots; ++i) c.x[i] = c.v[i].x(), c.y[i] = c.v[i].y();
   return c;
 }
 

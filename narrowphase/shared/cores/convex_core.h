@@ -236,14 +236,18 @@ struct CorePairOf {
   double scale() const { return 2 * std::max(a.extent(), b.extent()) + a.radius + b.radius; }
 };
 
+// The pair, B placed in A's frame by `at`.
 template <class A, class B>
-CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
-  CorePairOf<PairCore<A>, PairCore<B>> p{pair_core_of(a, Placement{}),
-                                         pair_core_of(b, Placement::of(b.center, bo, a.center, ao)),
-                                         Rotation<double>::of(ao), a.center};
+CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at) {
+  CorePairOf<PairCore<A>, PairCore<B>> p{pair_core_of(a, Placement{}), pair_core_of(b, at), Rotation<double>::of(ao),
+                                         a.center};
   set_axes(p.a);
   set_axes(p.b);
   return p;
+}
+template <class A, class B>
+CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+  return core_pair(a, ao, b, Placement::of(b.center, bo, a.center, ao));
 }
 
 // The disc test (disc_filter-inl.h) on one pair, before any core is built: the fields from the two
@@ -273,6 +277,9 @@ template <class X, class Y>
 DistanceResult core_distance(const CorePairOf<X, Y>& p);
 template <class X, class Y>
 Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options);
+// The same where the caller has found the discs not beyond the limit.
+template <class X, class Y>
+Contact core_contact_within_discs(const CorePairOf<X, Y>& p, const ContactOptions& options);
 // The contact on A's face i with its normal held there: B's deepest point over the face (between
 // its side planes) and B's incident face clipped to it; empty, its separation infinite, where no
 // point of B's core lies over the face.
