@@ -156,27 +156,56 @@ void AabbTree::replace_child(std::int32_t parent, std::int32_t from, std::int32_
 // growth every ancestor inherits. On a tie (the leaf inside both children's boxes, common near the
 // root) it takes child[1], as Box2D does: taking child[0], or the shorter child, leaves the inner
 // nodes' total perimeter larger on uniform boxes.
+std::int32_t AabbTree::best_sibling(const Node& l) const {
+  const float leaf_area = perimeter(l.lo, l.hi);
+  std::int32_t at = root_;
+  float direct = joined_perimeter(nodes_[at], l);
+  float base = perimeter(nodes_[at].lo, nodes_[at].hi);
+  float inherited = 0.0f;
+  std::int32_t best = at;
+  float best_cost = direct;
+  while (!nodes_[at].leaf()) {
+    const Node& n = nodes_[at];
+    if (direct + inherited < best_cost) best = at, best_cost = direct + inherited;
+    inherited += direct - base;
+    float lower[2], directs[2], areas[2] = {0.0f, 0.0f};
+    bool leaf[2];
+    for (int k = 0; k < 2; ++k) {
+      const Node& c = nodes_[n.child[k]];
+      directs[k] = joined_perimeter(c, l);
+      leaf[k] = c.leaf();
+      if (leaf[k]) {
+        lower[k] = kMax;
+        if (directs[k] + inherited < best_cost) best = n.child[k], best_cost = directs[k] + inherited;
+      } else {
+        areas[k] = perimeter(c.lo, c.hi);
+        lower[k] = inherited + directs[k] + std::min(leaf_area - areas[k], 0.0f);
+      }
+    }
+    if (leaf[0] && leaf[1]) break;
+    if (best_cost <= lower[0] && best_cost <= lower[1]) break;
+    if (lower[0] == lower[1] && !leaf[0]) {
+      for (int k = 0; k < 2; ++k) {
+        const Node& c = nodes_[n.child[k]];
+        const float dx = (c.lo[0] + c.hi[0]) - (l.lo[0] + l.hi[0]), dy = (c.lo[1] + c.hi[1]) - (l.lo[1] + l.hi[1]);
+        lower[k] = dx * dx + dy * dy;
+      }
+    }
+    const int k = lower[0] < lower[1] && !leaf[0] ? 0 : 1;
+    at = n.child[k];
+    base = areas[k];
+    direct = directs[k];
+  }
+  return best;
+}
+
 void AabbTree::insert_leaf(std::int32_t leaf) {
   if (root_ < 0) {
     root_ = leaf;
     nodes_[leaf].parent = -1;
     return;
   }
-  const Node& l = nodes_[leaf];
-  std::int32_t at = root_;
-  while (!nodes_[at].leaf()) {
-    const Node& n = nodes_[at];
-    const float joined = joined_perimeter(n, l);
-    const float here = 2.0f * joined;
-    const float inherited = 2.0f * (joined - perimeter(n.lo, n.hi));
-    float down[2];
-    for (int k = 0; k < 2; ++k) {
-      const Node& c = nodes_[n.child[k]];
-      down[k] = joined_perimeter(c, l) + inherited - (c.leaf() ? 0.0f : perimeter(c.lo, c.hi));
-    }
-    if (here < down[0] && here < down[1]) break;
-    at = n.child[down[0] < down[1] ? 0 : 1];
-  }
+  const std::int32_t at = best_sibling(nodes_[leaf]);
   const std::int32_t parent = allocate();
   Node& p = nodes_[parent];
   p.child[0] = at;
@@ -185,6 +214,9 @@ void AabbTree::insert_leaf(std::int32_t leaf) {
   nodes_[at].parent = parent;
   nodes_[leaf].parent = parent;
   refit_up(parent);
+  // The rotations lower the perimeter, not the height: a tree grown past the traversals' stack is
+  // built again top-down, which halves it at every level.
+  if (nodes_[root_].height > kMaxHeight) rebuild();
 }
 
 void AabbTree::remove_leaf(std::int32_t leaf) {
@@ -203,33 +235,34 @@ void AabbTree::remove_leaf(std::int32_t leaf) {
 
 void AabbTree::refit_up(std::int32_t node) {
   for (std::int32_t at = node; at >= 0; at = nodes_[at].parent) {
-    at = balance(at);
     refit(at);
+    rotate(at);
   }
 }
 
-// An AVL rotation at `node` when one child is taller by 2 or more: that child takes its place, with
-// `node` and its own taller child below it, and its shorter child moved under `node`. Returns the
-// subtree's root, refitted.
-std::int32_t AabbTree::balance(std::int32_t node) {
-  Node& a = nodes_[node];
-  if (a.leaf()) return node;
-  const int tall = nodes_[a.child[1]].height > nodes_[a.child[0]].height ? 1 : 0;
-  const std::int32_t up = a.child[tall];
-  if (nodes_[up].height - nodes_[a.child[1 - tall]].height < 2) return node;
-  Node& u = nodes_[up];
-  const int u_tall = nodes_[u.child[0]].height > nodes_[u.child[1]].height ? 0 : 1;
-  const std::int32_t keep = u.child[u_tall];
-  const std::int32_t give = u.child[1 - u_tall];
-  replace_child(a.parent, node, up);
-  u.child[0] = node;
-  u.child[1] = keep;
-  a.parent = up;
-  a.child[tall] = give;
-  nodes_[give].parent = node;
+void AabbTree::rotate(std::int32_t node) {
+  const Node& a = nodes_[node];
+  if (a.height < 2) return;
+  float best = 0.0f;
+  int best_k = -1, best_j = -1;
+  for (int k = 0; k < 2; ++k) {
+    const Node& small = nodes_[a.child[k]];
+    const Node& big = nodes_[a.child[1 - k]];
+    if (big.leaf()) continue;
+    const float base = perimeter(big.lo, big.hi);
+    for (int j = 0; j < 2; ++j) {
+      const float delta = joined_perimeter(small, nodes_[big.child[1 - j]]) - base;
+      if (delta < best) best = delta, best_k = k, best_j = j;
+    }
+  }
+  if (best_k < 0) return;
+  const std::int32_t small = a.child[best_k], big = a.child[1 - best_k], up = nodes_[big].child[best_j];
+  nodes_[node].child[best_k] = up;
+  nodes_[up].parent = node;
+  nodes_[big].child[best_j] = small;
+  nodes_[small].parent = big;
+  refit(big);
   refit(node);
-  refit(up);
-  return up;
 }
 
 void AabbTree::rebuild() {

@@ -16,12 +16,15 @@
 /// grazes in double precision inside the stored one). A query therefore reports a superset of the
 /// boxes that meet it in double precision: callers test their exact shapes next.
 ///
-/// insert() descends to the sibling that least grows the tree's total perimeter (Box2D's
-/// b2DynamicTree, after Goldsmith and Salmon) and AVL rotations on the way back up keep the height
-/// within 1.44 log2(n) + 2. rebuild() builds the inner nodes again top-down, splitting the boxes at the
-/// median of their centres along the longer side of the centres' bounds: O(n log n), a height of
-/// ceil(log2 n), and boxes grouped by place rather than by the order they came in. Leaves keep their
-/// handles across rebuild().
+/// insert() takes the sibling that least grows the tree's total perimeter: one descent that keeps
+/// the cheapest node seen and stops where a lower bound shows no node below can beat it (Bittner,
+/// Hapala and Havran, "Fast Insertion-Based Optimization of Bounding Volume Hierarchies", as Box2D
+/// v3's b2DynamicTree). On the way back up, each ancestor swaps a child with a grandchild where that
+/// lowers the perimeter of the inner node between them (Kopta et al., "Fast, Effective BVH Updates
+/// for Animated Scenes"); a tree grown taller than 48 is rebuilt. rebuild() builds the inner nodes again top-down,
+/// splitting the boxes at the median of their centres along the longer side of the centres' bounds: O(n log n), a
+/// height of ceil(log2 n), and boxes grouped by place rather than by the order they came in. Leaves keep their handles
+/// across rebuild().
 ///
 /// Boxes must be valid (finite, min <= max): the tree does not check; its callers do.
 #pragma once
@@ -97,9 +100,10 @@ class AabbTree {
     std::uint32_t value;
     bool leaf() const { return child[0] < 0; }
   };
-  // The stack of a traversal never holds more than the height plus one nodes, and the AVL bound
-  // keeps the height under 1.44 log2(2^32) + 2 < 48; the top-down build's is at most 32.
-  static constexpr std::size_t kStack = 64;
+  // The stack of a traversal never holds more than the height plus one nodes: insert() rebuilds a
+  // tree taller than kMaxHeight, and the top-down build's height is at most 32.
+  static constexpr int kMaxHeight = 48;
+  static constexpr std::size_t kStack = kMaxHeight + 2;
 
   std::vector<Node> nodes_;
   std::vector<std::int32_t> free_;
@@ -112,10 +116,11 @@ class AabbTree {
   std::int32_t allocate();
   void release(std::int32_t node);
   void insert_leaf(std::int32_t leaf);
+  std::int32_t best_sibling(const Node& leaf) const;
+  void rotate(std::int32_t node);
   void remove_leaf(std::int32_t leaf);
   void replace_child(std::int32_t parent, std::int32_t from, std::int32_t to);
   void refit(std::int32_t node);
-  std::int32_t balance(std::int32_t node);
   void refit_up(std::int32_t node);
   std::int32_t build(std::int32_t* first, std::int32_t* last);
   void refit_below(std::int32_t node);
