@@ -110,24 +110,14 @@ struct OnCores : NoBoundary {
     });
   }
   // A tie of two polygons' faces keeps the kernel's A's (the pair in rank order), whichever the
-  // caller gave first. Two cores' discs come first, as the cores' contact takes them: beyond the
-  // limit, no core is built.
+  // caller gave first.
   template <class X, class Y>
   static Contact contact(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const ContactOptions& o,
                          bool) {
     if constexpr (std::is_same_v<Y, Ellipse>) {
       return core_ellipse_contact(CoreEllipse::of(a, oa, b, ob), o);
     } else {
-      // B's offset alone first: far pairs need no more.
-      const Rotation<double> frame = Rotation<double>::of(oa);
-      const Vec2 offset = frame.apply_inverse(Vec2(b.center - a.center));  // as Placement::of's
-      if (has_limit(o)) {
-        if (const auto gap = discs_beyond(offset, discs_of(a).reach + discs_of(b).reach, o)) {
-          return Contact::beyond(*gap);
-        }
-      }
-      return core_contact_within_discs(
-          core_pair(a, oa, b, Placement{Rotation<double>::of(ob).relative_to(frame), offset}), o);
+      return core_contact(a, oa, b, ob, o);
     }
   }
 };

@@ -186,16 +186,6 @@ Contact core_face_contact(const CorePairOf<X, Y>& p, int i, const ContactOptions
 // With a limit, the axes stop at the first that shows the pair beyond it.
 template <class X, class Y>
 Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options) {
-  if (has_limit(options)) {
-    if (const auto gap = discs_beyond(p.b.center, p.a.discs.reach + p.b.discs.reach, options)) {
-      return Contact::beyond(*gap);
-    }
-  }
-  return core_contact_within_discs(p, options);
-}
-
-template <class X, class Y>
-Contact core_contact_within_discs(const CorePairOf<X, Y>& p, const ContactOptions& options) {
   const double stop = has_limit(options) ? separation_limit(p.scale(), options) + radii(p) : kInf;
   const Axes axes = axes_of(p, stop);
   // The cores' separation along an axis is at most their distance.
@@ -207,10 +197,6 @@ template Contact core_contact(const CorePairOf<Core, Core>&, const ContactOption
 template Contact core_contact(const CorePairOf<Core, SegmentCore>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
-template Contact core_contact_within_discs(const CorePairOf<Core, Core>&, const ContactOptions&);
-template Contact core_contact_within_discs(const CorePairOf<Core, SegmentCore>&, const ContactOptions&);
-template Contact core_contact_within_discs(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
-template Contact core_contact_within_discs(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<Core, Core>&, int, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<Core, SegmentCore>&, int, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<SegmentCore, Core>&, int, const ContactOptions&);

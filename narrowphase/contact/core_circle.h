@@ -47,7 +47,7 @@ template <int Slots>
 template <class A>
 [[gnu::noinline]] Contact contact_on_cores(const A& a, const Orientation& a_orientation, const Circle& b,
                                            const ContactOptions& options) {
-  return core_contact(core_pair(a, a_orientation, b, Orientation{}), options);
+  return core_contact(a, a_orientation, b, Orientation{}, options);
 }
 
 // In the shape's frame, with c the circle's centre: the face of greatest separation s, then, as

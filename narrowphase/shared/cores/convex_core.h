@@ -139,8 +139,12 @@ struct Placement {
 
   // Where a shape posed at `center` and `o` goes in the frame posed at `frame_center` and `frame`.
   static Placement of(const Vec2& center, const Orientation& o, const Vec2& frame_center, const Orientation& frame) {
-    const Rotation<double> r = Rotation<double>::of(o), f = Rotation<double>::of(frame);
-    return {r.relative_to(f), f.apply_inverse(Vec2(center - frame_center))};
+    const Rotation<double> f = Rotation<double>::of(frame);
+    return {Rotation<double>::of(o).relative_to(f), offset_of(center, frame_center, f)};
+  }
+  // The offset alone, which the discs about two centres need.
+  static Vec2 offset_of(const Vec2& center, const Vec2& frame_center, const Rotation<double>& frame) {
+    return frame.apply_inverse(Vec2(center - frame_center));
   }
   bool moves() const { return rot.c != 1.0 || rot.s != 0.0 || offset != Vec2::Zero(); }
   Vec2 point(const Vec2& p) const { return offset + rot.apply(p); }
@@ -275,16 +279,29 @@ template <class X, class Y>
 bool core_overlap(const CorePairOf<X, Y>& p);
 template <class X, class Y>
 DistanceResult core_distance(const CorePairOf<X, Y>& p);
+// The contact of the pair where the discs about the centres leave it open (the form on shapes below
+// tries them first).
 template <class X, class Y>
 Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options);
-// The same where the caller has found the discs not beyond the limit.
-template <class X, class Y>
-Contact core_contact_within_discs(const CorePairOf<X, Y>& p, const ContactOptions& options);
 // The contact on A's face i with its normal held there: B's deepest point over the face (between
 // its side planes) and B's incident face clipped to it; empty, its separation infinite, where no
 // point of B's core lies over the face.
 template <class X, class Y>
 Contact core_face_contact(const CorePairOf<X, Y>& p, int i, const ContactOptions& options);
+// The contact of two core shapes: B's offset alone first, and the discs about the two centres, which
+// settle a pair beyond the limit before any core is built.
+template <class A, class B>
+Contact core_contact(const A& a, const Orientation& ao, const B& b, const Orientation& bo,
+                     const ContactOptions& options) {
+  const Rotation<double> frame = Rotation<double>::of(ao);
+  const Vec2 offset = Placement::offset_of(b.center, a.center, frame);
+  if (has_limit(options)) {
+    if (const auto gap = discs_beyond(offset, discs_of(a).reach + discs_of(b).reach, options)) {
+      return Contact::beyond(*gap);
+    }
+  }
+  return core_contact(core_pair(a, ao, b, Placement{Rotation<double>::of(bo).relative_to(frame), offset}), options);
+}
 
 // A core shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
 // ellipse is centred at the origin with semi-axis a along x and b along y.
