@@ -84,21 +84,19 @@ constexpr bool batched = RowOf<Kinds, X, Y>::batched;
 
 // kernel(x, y, swapped) with the pair in the list's rank order, two shapes of one kind by key
 // (shapes/kinds.h), so that swapping A and B swaps the result bit for bit.
+template <class List, class X, class Y, class Kernel>
+auto kinds_in_rank_order(const X& x, const Y& y, Kernel& kernel) {
+  if constexpr (List::template rank<X>() < List::template rank<Y>()) {
+    return kernel(x, y, false);
+  } else if constexpr (List::template rank<X>() > List::template rank<Y>()) {
+    return kernel(y, x, true);
+  } else {
+    return precedes(y, x) ? kernel(y, x, true) : kernel(x, y, false);
+  }
+}
 template <class List, class Variant, class Kernel>
 auto in_rank_order(const Variant& a, const Variant& b, Kernel kernel) {
-  return std::visit(
-      [&kernel](const auto& x, const auto& y) {
-        using X = std::decay_t<decltype(x)>;
-        using Y = std::decay_t<decltype(y)>;
-        if constexpr (List::template rank<X>() < List::template rank<Y>()) {
-          return kernel(x, y, false);
-        } else if constexpr (List::template rank<X>() > List::template rank<Y>()) {
-          return kernel(y, x, true);
-        } else {
-          return precedes(y, x) ? kernel(y, x, true) : kernel(x, y, false);
-        }
-      },
-      a, b);
+  return std::visit([&kernel](const auto& x, const auto& y) { return kinds_in_rank_order<List>(x, y, kernel); }, a, b);
 }
 
 // The queries on two shapes of a list's kinds, from their row: in rank order, the result turned
@@ -131,16 +129,22 @@ DistanceResult boundary_of(const Variant& a, const Variant& b) {
   });
 }
 // A pair given the other way round has its guess turned round, and its result swapped back.
-template <class List, class Variant>
-Contact contact_of(const Variant& a, const Orientation& oa, const Variant& b, const Orientation& ob,
-                   const ContactOptions& options) {
-  return in_rank_order<List>(a, b, [&](const auto& x, const auto& y, bool swapped) {
+template <class List, class X, class Y>
+Contact contact_of_kinds(const X& a, const Orientation& oa, const Y& b, const Orientation& ob,
+                         const ContactOptions& options) {
+  auto kernel = [&](const auto& x, const auto& y, bool swapped) {
     using Row = Pair<std::decay_t<decltype(x)>, std::decay_t<decltype(y)>>;
     if (!swapped) return Row::contact(x, oa, y, ob, options, false);
     ContactOptions reversed = options;
     reversed.guess = -options.guess;
     return Row::contact(x, ob, y, oa, reversed, true).swapped();
-  });
+  };
+  return kinds_in_rank_order<List>(a, b, kernel);
+}
+template <class List, class Variant>
+Contact contact_of(const Variant& a, const Orientation& oa, const Variant& b, const Orientation& ob,
+                   const ContactOptions& options) {
+  return std::visit([&](const auto& x, const auto& y) { return contact_of_kinds<List>(x, oa, y, ob, options); }, a, b);
 }
 
 }  // namespace collide2d::detail

@@ -7,6 +7,7 @@
 
 #include <collide2d/kernels.h>
 #include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/pairs.h"
 #include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
 #include "shapes/kinds.h"
@@ -68,9 +69,13 @@ Faces unit(Faces f, const ChainSegment& s) {
 }
 
 // The point whose side decides: a shape's centre, a polygon's centroid (its centre may lie outside).
-Vec2 reference_point(const Shape& shape, const Orientation& o) {
-  if (const auto* p = std::get_if<ConvexPolygon>(&shape)) return p->center + Rot::of(o).apply(p->outline->centroid);
-  return center_of(shape);
+template <class B>
+Vec2 reference_point(const B& shape, const Orientation& o) {
+  if constexpr (std::is_same_v<B, ConvexPolygon>) {
+    return shape.center + Rot::of(o).apply(shape.outline->centroid);
+  } else {
+    return shape.center;
+  }
 }
 
 bool in_front(const Faces& f, const Vec2& r) {
@@ -81,9 +86,13 @@ bool in_front(const Faces& f, const Vec2& r) {
 
 // The shape's separation from the line through q of unit normal u (a circle's without the square
 // root its support point takes).
-double separation_along(const Shape& shape, const Orientation& o, const Vec2& u, const Vec2& q) {
-  if (const auto* c = std::get_if<Circle>(&shape)) return u.dot(c->center - q) - c->radius;
-  return u.dot(support(shape, o, -u) - q);
+template <class B>
+double separation_along(const B& shape, const Orientation& o, const Vec2& u, const Vec2& q) {
+  if constexpr (std::is_same_v<B, Circle>) {
+    return u.dot(shape.center - q) - shape.radius;
+  } else {
+    return u.dot(detail::support(shape, Rot::of(o), Vec2(-u)) - q);
+  }
 }
 
 // Whether no convex neighbour's line lies farther from the shape than the segment's, beyond the
@@ -91,10 +100,11 @@ double separation_along(const Shape& shape, const Orientation& o, const Vec2& u,
 // neighbour each round on their own, so the slack is of the coordinates' size: with less, where a
 // chain's points in line carry their rounding (turns of 1e-14 rad at 1000 from the origin), both
 // segments at a vertex could give the body to the other.
-bool owns(const Faces& f, const Shape& shape, const Orientation& o, const Vec2& r) {
+template <class B>
+bool owns(const Faces& f, const B& shape, const Orientation& o, const Vec2& r) {
   if (!f.convex1 && !f.convex2) return true;
   const double own = separation_along(shape, o, f.n, f.p1);
-  const double scale = f.p1.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + reach_of(shape) + f.length;
+  const double scale = f.p1.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + detail::reach(shape) + f.length;
   const double slack = 64 * kEpsilon * scale;
   return !(f.convex1 && separation_along(shape, o, f.n0, f.p1) > own + slack) &&
          !(f.convex2 && separation_along(shape, o, f.n2, f.p2) > own + slack);
@@ -124,35 +134,33 @@ Contact held_at(const Faces& f, const Vec2& q, const ContactOptions& options) {
 }
 
 // The contact with the segment's normal held: the shape's deepest points over the segment.
-Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const Shape& b, const Orientation& bo,
+template <class B>
+Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const B& b, const Orientation& bo,
              const ContactOptions& options) {
-  return std::visit(
-      [&](const auto& x) {
-        using X = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<X, Circle> || std::is_same_v<X, Ellipse>) {
-          return held_at(f, support(b, bo, Vec2(-f.n)), options);
-        } else {
-          return detail::core_face_contact(detail::core_pair(a.segment, ao, x, bo), 0, options);
-        }
-      },
-      b);
+  if constexpr (std::is_same_v<B, Circle> || std::is_same_v<B, Ellipse>) {
+    return held_at(f, detail::support(b, Rot::of(bo), Vec2(-f.n)), options);
+  } else {
+    return detail::core_face_contact(detail::core_pair(a.segment, ao, b, bo), 0, options);
+  }
 }
 
-}  // namespace
-
-bool in_front(const ChainSegment& s, const Shape& shape) {
-  return in_front(sides_of(s, Orientation::of(s.segment.angle)),
-                  reference_point(shape, Orientation::of(angle_of(shape))));
-}
-
-Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
-                const ContactOptions& options) {
+template <class B>
+Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo,
+                        const ContactOptions& options) {
   const Faces sides = sides_of(a, ao);
   const Vec2 r = reference_point(b, bo);
   if (!in_front(sides, r)) return Contact::beyond(kInf);
   // The segment's contact first: with a limit it ends soonest for the pairs apart.
-  const Contact c = contact(Shape(a.segment), ao, b, bo, options);
+  const Contact c = detail::contact_of_kinds<detail::Kinds>(a.segment, ao, b, bo, options);
   if (c.empty()) return c;
+  if constexpr (std::is_same_v<B, Circle>) {
+    // On the segment's front face the centre lies over the segment, in front of it. A convex
+    // neighbour's normal is the segment's turned by the vertex's angle t away from the segment, so
+    // the centre's height along it is cos t times its height over the segment less sin t times its
+    // distance from the vertex along the segment: never more, and the neighbour leaves it to the
+    // segment (owns()); the normal is the segment's (admitted()).
+    if (c.manifold[0].id == feature_id(FeatureKind::face_of_a, 0, 0)) return c;
+  }
   const Faces f = unit(sides, a);
   if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
@@ -161,6 +169,18 @@ Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, co
   // comes round from the back (a sliver whose centre is in front beyond the segment's end): none.
   if (c.separation > 0 && !(h.separation >= 0)) return Contact::beyond(kInf);
   return h;
+}
+
+}  // namespace
+
+bool in_front(const ChainSegment& s, const Shape& shape) {
+  const Vec2 r = std::visit([](const auto& x) { return reference_point(x, detail::orientation_of(x)); }, shape);
+  return in_front(sides_of(s, Orientation::of(s.segment.angle)), r);
+}
+
+Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
+                const ContactOptions& options) {
+  return std::visit([&](const auto& x) { return contact_of_kind(a, ao, x, bo, options); }, b);
 }
 
 Contact contact(const ChainSegment& a, const Shape& b, const ContactOptions& options) {
