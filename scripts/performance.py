@@ -145,6 +145,8 @@ WORLD = [
     ('100,000 moving bodies', 'frame/crowd/100000/1', 'box2d_frame/crowd/100000'),
     ('the built-in scene (4,036 bodies)', 'frame/scene/4000/1', 'box2d_frame/scene/4000'),
 ]
+WORLD_V3 = [(f'{n:,} moving bodies, contacts', f'frame/alone_contacts/{n}/1',
+             f'box2d_v3_frame/alone_contacts/{n}/manual_time') for n in (1000, 10000)]
 
 
 def collect(args):
@@ -463,6 +465,21 @@ The scene has no polygons, capsules, segments or chains: their rows have no scen
 {table(CONTACT_V3, med, CONTACT_WORKLOADS)}"""
 
 
+def v3_world_section(med):
+    """The frame with contacts raced against Box2D v3's World, where the run has it."""
+    if not any(name.startswith('box2d_v3_frame/') for name in med):
+        return ''
+    return f"""With contacts (`WorldOptions::contacts`), against Box2D v3's World on the same
+bodies (bench/box2d_v3/world.cpp): dynamic bodies with no gravity, sleep or continuous collision, one
+worker, each frame every body's `b2Body_SetTransform` with its velocities zeroed, then
+`b2World_Step`. v3's time is its pose loop's plus the step's `b2Profile` `pairs` and `collide`
+(what makes its contacts; its solver is not counted).
+
+{table(WORLD_V3, med, False)}
+
+"""
+
+
 def tree_rival(med):
     """The box tree against Box2D v3's b2DynamicTree where the run has it, else 2.4.1's."""
     if any(name.startswith('box/box2d_v3/') for name in med):
@@ -485,7 +502,8 @@ def page(args):
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
     groups = [('contact vs v3', CONTACT_V3, True), ('overlap', OVERLAP, True), ('distance', DISTANCE, True), ('contact', CONTACT, True),
-              ('time of impact', TOI, False), ('broad phase', BROAD, False), ('World', WORLD, False)]
+              ('time of impact', TOI, False), ('broad phase', BROAD, False), ('World', WORLD, False),
+              ('World vs v3', WORLD_V3, False)]
     report = newest['report']
     svgs = {
         'ratios.svg': ratio_svg(groups, med),
@@ -602,7 +620,7 @@ as `b2ContactManager` applies them).
 
 {table(WORLD, med, False)}
 
-{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
+{v3_world_section(med)}{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
 
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
