@@ -39,6 +39,7 @@
 #include <cstdint>
 #include <random>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -271,9 +272,12 @@ void box2d_frame(benchmark::State& state) {
 // The built-in scene of `collide2d run` (tool::default_scene: n mixed bodies, a quarter of them on a
 // second layer, one bullet per 500, a static level and four sensors), one frame per iteration: its
 // kinematics, the poses and update() on the second argument's threads (0: every hardware thread, as
-// the command runs it).
+// the command runs it); with contacts, a contact for every overlapping pair.
+template <bool contacts = false>
 void scene_frame(benchmark::State& state) {
-  tool::SceneRun run(tool::default_scene(static_cast<int>(state.range(0)), 1), static_cast<unsigned>(state.range(1)));
+  tool::Scene scene = tool::default_scene(static_cast<int>(state.range(0)), 1);
+  scene.contacts = contacts;
+  tool::SceneRun run(std::move(scene), static_cast<unsigned>(state.range(1)));
   for (int k = 0; k < 20; ++k) run.frame();
   FrameTotals totals;
   for (auto _ : state) {
@@ -346,6 +350,7 @@ BENCHMARK(frame<Level::none>)->Name("frame/crowd")->Args({100000, 1})->Args({100
 BENCHMARK(box2d_frame)->Name("box2d_frame/alone")->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(box2d_frame)->Name("box2d_frame/crowd")->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(scene_frame)->Name("frame/scene")->Args({4000, 1})->Args({4000, 2})->Unit(benchmark::kMicrosecond);
+BENCHMARK(scene_frame<true>)->Name("frame/scene_contacts")->Args({4000, 1})->Unit(benchmark::kMicrosecond);
 BENCHMARK(box2d_scene_frame)->Name("box2d_frame/scene")->Arg(4000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -146,7 +146,9 @@ WORLD = [
     ('the built-in scene (4,036 bodies)', 'frame/scene/4000/1', 'box2d_frame/scene/4000'),
 ]
 WORLD_V3 = [(f'{n:,} moving bodies, contacts', f'frame/alone_contacts/{n}/1',
-             f'box2d_v3_frame/alone_contacts/{n}/manual_time') for n in (1000, 10000)]
+             f'box2d_v3_frame/alone_contacts/{n}/manual_time') for n in (1000, 10000)] + [
+    ('the built-in scene (4,036 bodies), contacts', 'frame/scene_contacts/4000/1',
+     'box2d_v3_frame/scene_contacts/4000/manual_time')]
 
 
 def collect(args):
@@ -473,7 +475,8 @@ def v3_world_section(med):
 bodies (bench/box2d_v3/world.cpp): dynamic bodies with no gravity, sleep or continuous collision, one
 worker, each frame every body's `b2Body_SetTransform` with its velocities zeroed, then
 `b2World_Step`. v3's time is its pose loop's plus the step's `b2Profile` `pairs` and `collide`
-(what makes its contacts; its solver is not counted).
+(what makes its contacts; its solver is not counted). The scene's level is static in both, its cave
+a `b2ChainShape` loop in v3, its sensors sensor shapes, its layers `b2Filter`s.
 
 {table(WORLD_V3, med, False)}
 

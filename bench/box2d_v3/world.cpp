@@ -1,12 +1,14 @@
-// A World frame against Box2D v3's (linked into bench_world when a Box2D v3 source is given): the
-// moving bodies of frame/alone_contacts (bench/movers.h) as v3's dynamic bodies, one shape each (an
-// ellipse its inscribed 8-gon, bench/box2d_v3/shapes.h), in a world with no gravity, sleep or
-// continuous collision, on one worker. A frame sets every body's transform and zeroes its
-// velocities, then steps the world; its time is the pose loop's plus the step's pair update and
-// narrow phase (b2Profile::pairs and b2Profile::collide), which make the contacts collide2d's
-// update() makes: the solver that follows is v3's own work and is not counted.
+// World frames against Box2D v3's World (linked into bench_world when a Box2D v3 source is given):
+// the moving bodies of frame/alone_contacts (bench/movers.h) and the built-in scene of
+// frame/scene_contacts as v3's bodies, one shape each (an ellipse its inscribed 8-gon,
+// bench/box2d_v3/shapes.h), in a world with no gravity, sleep or continuous collision, on one
+// worker. A frame sets every moving body's transform and zeroes its velocities, then steps the
+// world; its time is the pose loop's plus the step's pair update and narrow phase (b2Profile::pairs
+// and b2Profile::collide), which make the contacts collide2d's update() makes: the solver that
+// follows is v3's own work and is not counted.
 #include "bench/box2d_v3/shapes.h"
 #include "bench/movers.h"
+#include "tools/scene/scene.h"
 
 #include <box2d/box2d.h>
 
@@ -16,6 +18,7 @@
 #include <chrono>
 #include <random>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -24,16 +27,22 @@ namespace {
 
 using box2d_v3::posed;
 
-b2BodyId add_body(b2WorldId world, const Shape& shape) {
+b2Filter filter_of(const Filter& f) { return {f.category, f.mask, f.group}; }
+
+// A body of one shape, at the shape's pose.
+b2BodyId add_body(b2WorldId world, const Shape& shape, b2BodyType type = b2_dynamicBody, const Filter& filter = {},
+                  bool sensor = false) {
   return std::visit(
       [&](const auto& s) {
         const auto p = posed(s);
         b2BodyDef body = b2DefaultBodyDef();
-        body.type = b2_dynamicBody;
+        body.type = type;
         body.position = p.transform.p;
         body.rotation = p.transform.q;
         const b2BodyId id = b2CreateBody(world, &body);
-        const b2ShapeDef def = b2DefaultShapeDef();
+        b2ShapeDef def = b2DefaultShapeDef();
+        def.filter = filter_of(filter);
+        def.isSensor = sensor;
         using S = std::decay_t<decltype(p.shape)>;
         if constexpr (std::is_same_v<S, b2Circle>) {
           b2CreateCircleShape(id, &def, &p.shape);
@@ -49,27 +58,40 @@ b2BodyId add_body(b2WorldId world, const Shape& shape) {
       shape);
 }
 
-void box2d_v3_frame(benchmark::State& state) {
-  std::mt19937_64 rng(11);
-  bench::Movers movers(static_cast<int>(state.range(0)), Vec2::Zero(), rng);
+// A static chain of b2ChainShape's segments.
+void add_chain(b2WorldId world, const tool::SceneBody& b) {
+  const b2BodyDef body = b2DefaultBodyDef();
+  const b2BodyId id = b2CreateBody(world, &body);
+  std::vector<b2Vec2> points;
+  for (const Vec2& p : b.chain) points.push_back(box2d_v3::to_float(p));
+  b2ChainDef def = b2DefaultChainDef();
+  def.points = points.data();
+  def.count = static_cast<int>(points.size());
+  def.isLoop = b.loop;
+  def.filter = filter_of(b.filter);
+  b2CreateChain(id, &def);
+}
+
+b2WorldId make_world() {
   b2WorldDef def = b2DefaultWorldDef();
   def.gravity = b2Vec2{0.0f, 0.0f};
   def.enableSleep = false;
   def.enableContinuous = false;
   def.workerCount = 1;
-  const b2WorldId world = b2CreateWorld(&def);
-  std::vector<b2BodyId> bodies;
-  for (const Shape& shape : movers.shapes) bodies.push_back(add_body(world, shape));
-  const auto pose = [&] {
-    movers.step(rng);
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-      const b2Transform t = box2d_v3::transform_of(movers.centre[k], movers.angle[k]);
-      b2Body_SetTransform(bodies[k], t.p, t.q);
-      b2Body_SetLinearVelocity(bodies[k], b2Vec2{0.0f, 0.0f});
-      b2Body_SetAngularVelocity(bodies[k], 0.0f);
-    }
-  };
-  // The frame's three timed parts, in seconds.
+  return b2CreateWorld(&def);
+}
+
+void set_pose(b2BodyId body, const Vec2& centre, double angle) {
+  const b2Transform t = box2d_v3::transform_of(centre, angle);
+  b2Body_SetTransform(body, t.p, t.q);
+  b2Body_SetLinearVelocity(body, b2Vec2{0.0f, 0.0f});
+  b2Body_SetAngularVelocity(body, 0.0f);
+}
+
+// The frames of a world whose `pose` moves its bodies, after 20 of warm-up (the contacts exist, as
+// in collide2d's frames): each timed as its pose loop plus the step's pairs and collide.
+template <class Pose>
+void time_frames(benchmark::State& state, b2WorldId world, Pose pose) {
   const auto frame = [&] {
     const auto start = std::chrono::steady_clock::now();
     pose();
@@ -78,7 +100,6 @@ void box2d_v3_frame(benchmark::State& state) {
     const b2Profile profile = b2World_GetProfile(world);
     return std::array<double, 3>{posed, 1e-3 * profile.pairs, 1e-3 * profile.collide};
   };
-  // Steady state, as collide2d's frames: the contacts exist.
   for (int k = 0; k < 20; ++k) frame();
   std::array<double, 3> total{};
   double contacts = 0.0;
@@ -96,10 +117,50 @@ void box2d_v3_frame(benchmark::State& state) {
   b2DestroyWorld(world);
 }
 
+void box2d_v3_frame(benchmark::State& state) {
+  std::mt19937_64 rng(11);
+  bench::Movers movers(static_cast<int>(state.range(0)), Vec2::Zero(), rng);
+  const b2WorldId world = make_world();
+  std::vector<b2BodyId> bodies;
+  for (const Shape& shape : movers.shapes) bodies.push_back(add_body(world, shape));
+  time_frames(state, world, [&] {
+    movers.step(rng);
+    for (std::size_t k = 0; k < bodies.size(); ++k) set_pose(bodies[k], movers.centre[k], movers.angle[k]);
+  });
+}
+
+// The built-in scene of frame/scene_contacts (tool::default_scene): its moving bodies and bullets
+// dynamic, its level static (the cave a b2ChainShape loop), its sensors sensor shapes, the layers'
+// filters as b2Filter; the same kinematics (tool::step). Bullets are ordinary bodies here, where
+// the World also finds their first contacts in the frame.
+void box2d_v3_scene_frame(benchmark::State& state) {
+  tool::Scene scene = tool::default_scene(static_cast<int>(state.range(0)), 1);
+  const b2WorldId world = make_world();
+  std::vector<std::pair<const tool::SceneBody*, b2BodyId>> moving;
+  for (const tool::SceneBody& b : scene.bodies) {
+    if (!b.chain.empty()) {
+      add_chain(world, b);
+      continue;
+    }
+    const b2BodyId id =
+        add_body(world, tool::placed_first(b), b.is_static ? b2_staticBody : b2_dynamicBody, b.filter, b.sensor);
+    if (!b.is_static) moving.emplace_back(&b, id);
+  }
+  time_frames(state, world, [&] {
+    tool::step(scene);
+    for (const auto& [b, id] : moving) set_pose(id, b->pose.position, b->pose.angle);
+  });
+}
+
 BENCHMARK(box2d_v3_frame)
     ->Name("box2d_v3_frame/alone_contacts")
     ->Arg(1000)
     ->Arg(10000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(box2d_v3_scene_frame)
+    ->Name("box2d_v3_frame/scene_contacts")
+    ->Arg(4000)
     ->UseManualTime()
     ->Unit(benchmark::kMicrosecond);
 
