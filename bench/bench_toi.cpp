@@ -7,61 +7,29 @@
 #include <collide2d/time_of_impact.h>
 
 #include "bench/box2d_baseline.h"
+#include "bench/toi_pairs.h"
 #include "bench/workload.h"
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
 #include <vector>
 
 namespace collide2d {
 namespace {
 
 using bench::kPairs;
-
-struct Moving {
-  std::vector<Shape> a, b;
-  std::vector<Motion> ma, mb;
-};
-
-template <class A, class B>
-Moving moving_pairs(bool turning) {
-  bench::Generator g;
-  Moving out;
-  while (out.a.size() < kPairs) {
-    A a;
-    B b;
-    g.make(a);
-    g.make(b);
-    const double heading = g.uniform(0, 6.283185307179586);
-    const Vec2 u(std::cos(heading), std::sin(heading));
-    b.center = a.center + g.uniform(2, 4) * u;
-    if (overlaps(a, b)) continue;
-    const Vec2 drift(-u.y(), u.x());
-    const double spin_a = turning ? g.uniform(-2, 2) : 0.0, spin_b = turning ? g.uniform(-2, 2) : 0.0;
-    out.a.push_back(a);
-    out.b.push_back(b);
-    out.ma.push_back({Vec2::Zero(), spin_a});
-    out.mb.push_back({-g.uniform(4, 8) * u + g.uniform(-1, 1) * drift, spin_b});
-  }
-  return out;
-}
-
-template <class A, class B, bool Turning>
-const Moving& workload() {
-  static const Moving w = moving_pairs<A, B>(Turning);
-  return w;
-}
+using bench::Moving;
+using bench::toi_workload;
 
 template <class A, class B, bool Turning>
 void ours(benchmark::State& state) {
-  const Moving& w = workload<A, B, Turning>();
+  const Moving& w = toi_workload<A, B, Turning>();
   bench::time_queries(state, [&](std::size_t k) { return time_of_impact(w.a[k], w.ma[k], w.b[k], w.mb[k]).t; });
 }
 
 template <class A, class B, bool Turning, int Sides>
 void box2d(benchmark::State& state) {
-  const Moving& w = workload<A, B, Turning>();
+  const Moving& w = toi_workload<A, B, Turning>();
   std::vector<baseline::ToiPair> pairs;
   for (std::size_t k = 0; k < kPairs; ++k) {
     pairs.push_back(baseline::to_box2d_toi(w.a[k], w.ma[k], w.b[k], w.mb[k], Sides, baseline::Fit::inscribed));

@@ -125,6 +125,11 @@ TOI = [
     ('circle–ellipse turning vs 16-gon', 'ours/circle_ellipse_turning', 'box2d_toi/circle_ellipse_turning_16gon'),
     ('rect–rect turning', 'ours/rect_rect_turning', 'box2d_toi/rect_rect_turning'),
 ]
+TOI_V3 = [(f'{pair.replace("_", "–")} {motion} vs {gons}', f'ours/{pair}_{motion}',
+           f'box2d_v3_toi/{pair}_{motion}_{gons.replace("-", "")}')
+          for pair, gons in (('ellipse_ellipse', '8-gons'), ('rect_ellipse', '8-gon'), ('circle_ellipse', '8-gon'))
+          for motion in ('translating', 'turning')] + [
+    ('rect–rect turning', 'ours/rect_rect_turning', 'box2d_v3_toi/rect_rect_turning')]
 SIZES = (1000, 10000, 100000, 1000000)
 # Each tree as insertion leaves it, and rebuilt (collide2d's rebuild(), v3's b2DynamicTree_Rebuild).
 TREES = (('tree', 'box2d_v3', 'trees built by insertion'), ('tree_rebuilt', 'box2d_v3_rebuilt', 'trees rebuilt'))
@@ -467,6 +472,20 @@ The scene has no polygons, capsules, segments or chains: their rows have no scen
 {table(CONTACT_V3, med, CONTACT_WORKLOADS)}"""
 
 
+def v3_toi_section(med):
+    """Time of impact raced against Box2D v3's, where the run has it, before 2.4.1's table."""
+    if not any(name.startswith('box2d_v3_toi/') for name in med):
+        return ''
+    return f"""Box2D v3's `b2TimeOfImpact` on the same pairs (bench/box2d_v3/toi.cpp), its sweeps turning
+by interpolated rotations where collide2d's turn at a constant rate:
+
+{table(TOI_V3, med, False)}
+
+Box2D 2.4.1's:
+
+"""
+
+
 def v3_world_section(med):
     """The frame with contacts raced against Box2D v3's World, where the run has it."""
     if not any(name.startswith('box2d_v3_frame/') for name in med):
@@ -505,7 +524,8 @@ def page(args):
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
     groups = [('contact vs v3', CONTACT_V3, True), ('overlap', OVERLAP, True), ('distance', DISTANCE, True), ('contact', CONTACT, True),
-              ('time of impact', TOI, False), ('broad phase', BROAD, False), ('World', WORLD, False),
+              ('time of impact', TOI, False), ('time of impact vs v3', TOI_V3, False),
+              ('broad phase', BROAD, False), ('World', WORLD, False),
               ('World vs v3', WORLD_V3, False)]
     report = newest['report']
     svgs = {
@@ -601,7 +621,7 @@ The scene has no polygons, capsules, segments or chains: their rows have no scen
 Pairs apart at t = 0 coming together over one step, translating or both turning up to 2 radians a
 step (bench/bench_toi.cpp); Box2D: `b2TimeOfImpact` on the inscribed polygons with the same sweeps.
 
-{table(TOI, med, False)}
+{v3_toi_section(med)}{table(TOI, med, False)}
 
 ## Broad phase
 
