@@ -152,6 +152,63 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
   std::printf("[measure] world contacts: %d circle-ellipse contacts checked\n", circle_ellipse);
 }
 
+// Every reported bit depends on the current poses and options alone: frame after frame of motion,
+// a World updated from frame to frame reports what a World built from that frame's poses reports
+// at its first update (static bodies, sensors, proximity and speculative contacts among them). The
+// broad phase's counts (candidates, filtered) follow its fat boxes, which follow the motion: they
+// are work done, not results, and may differ.
+TEST(World, EveryFrameMatchesAWorldBuiltFromItsPoses) {
+  const WorldOptions options{
+      .fat_margin = 0.1, .proximity_margin = 0.3, .contacts = true, .speculative_margin = 0.1, .threads = 1};
+  World warm(options);
+  std::vector<BodyDef> defs;
+  Rng rng(23);
+  for (int k = 0; k < 600; ++k) {
+    defs.push_back({.filter = {.group = k % 11 == 0 ? -1 : 0}, .is_static = k % 5 == 0, .sensor = k % 37 == 0});
+    warm.add(random_shape(rng, 30.0), defs.back());
+  }
+  std::size_t contacts = 0, sensing = 0;
+  for (int frame = 0; frame < 12; ++frame) {
+    for (const BodyId id : warm.bodies()) {
+      if (!warm.is_static(id)) warm.move_by(id, uniform_point(rng, -0.3, 0.3), 0.05);
+    }
+    warm.update();
+    World cold(options);
+    std::size_t k = 0;
+    for (const BodyId id : warm.bodies()) cold.add(warm.shape(id), defs[k++]);
+    cold.update();
+    ASSERT_EQ(warm.overlapping(), cold.overlapping()) << frame;
+    ASSERT_EQ(warm.sensing(), cold.sensing()) << frame;
+    ASSERT_EQ(warm.proximity().size(), cold.proximity().size()) << frame;
+    for (std::size_t i = 0; i < warm.proximity().size(); ++i) {
+      const Proximity &w = warm.proximity()[i], &c = cold.proximity()[i];
+      ASSERT_TRUE(w.a == c.a && w.b == c.b) << frame;
+      ASSERT_EQ(w.result.distance, c.result.distance) << frame;
+      ASSERT_EQ(w.result.point_a, c.result.point_a) << frame;
+      ASSERT_EQ(w.result.point_b, c.result.point_b) << frame;
+    }
+    ASSERT_EQ(warm.contacts().size(), cold.contacts().size()) << frame;
+    for (std::size_t i = 0; i < warm.contacts().size(); ++i) {
+      const BodyContact &w = warm.contacts()[i], &c = cold.contacts()[i];
+      ASSERT_TRUE(w.a == c.a && w.b == c.b && w.touching == c.touching) << frame;
+      ASSERT_EQ(w.contact.separation, c.contact.separation) << frame;
+      ASSERT_EQ(w.contact.normal, c.contact.normal) << frame;
+      ASSERT_EQ(w.contact.point_a, c.contact.point_a) << frame;
+      ASSERT_EQ(w.contact.point_b, c.contact.point_b) << frame;
+      ASSERT_EQ(w.contact.manifold_size, c.contact.manifold_size) << frame;
+      for (int m = 0; m < w.contact.manifold_size; ++m) {
+        const ContactPoint &pw = w.contact.manifold[m], &pc = c.contact.manifold[m];
+        ASSERT_TRUE(pw.point_a == pc.point_a && pw.point_b == pc.point_b) << frame;
+        ASSERT_TRUE(pw.separation == pc.separation && pw.id == pc.id) << frame;
+      }
+    }
+    contacts += warm.contacts().size();
+    sensing += warm.sensing().size();
+  }
+  EXPECT_GT(contacts / 12, 100u);
+  EXPECT_GT(sensing / 12, 5u);
+}
+
 TEST(World, BadInputIsRefusedAndChangesNothing) {
   World world({.proximity_margin = 0.5});
   const BodyId a = world.add(Circle{Vec2(0, 0), 1}, {.user_id = 1});
