@@ -42,7 +42,7 @@ compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 flags=$(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:[A-Z]*=//p' "$build/CMakeCache.txt")
 python3 "$root/scripts/performance.py" collect --runs "$runs" --results "$root/bench/results" \
   --cpu "$cpu" --cores "$(nproc)" --compiler "$("$compiler" --version | head -n 1)" \
-  --flags "$flags -ffp-contract=off (collide2d and Box2D); collide2d with EIGEN_DONT_VECTORIZE" \
+  --flags "$flags -ffp-contract=off -fno-math-errno (collide2d and Box2D); collide2d with EIGEN_DONT_VECTORIZE" \
   --repetitions "$repetitions" --min-time "$min_time"
 slug=$(tr 'A-Z' 'a-z' <<< "$cpu" | sed -E 's/[^a-z0-9]+/-/g; s/^-//; s/-$//')
 echo "bench_python.py" >&2

@@ -19,7 +19,7 @@ mkdir -p "$work/include" "$work/obj"
 # Highway's and nlohmann-json's headers alone, not the host's C library's.
 ln -sfn /usr/include/hwy "$work/include/hwy"
 ln -sfn /usr/include/nlohmann "$work/include/nlohmann"
-flags=(-std=c++20 -O2 -fexceptions -ffp-contract=off -DHWY_COMPILE_ONLY_STATIC=1 -DEIGEN_DONT_VECTORIZE
+flags=(-std=c++20 -O2 -fexceptions -ffp-contract=off -fno-math-errno -DHWY_COMPILE_ONLY_STATIC=1 -DEIGEN_DONT_VECTORIZE
   -DEIGEN_MAX_ALIGN_BYTES=16 -DEIGEN_MAX_STATIC_ALIGN_BYTES=16 -I"$root/include" -I"$root" -I"$root/tests"
   -I"$root/tests/support"
   -isystem /usr/include/eigen3 -isystem "$work/include")
