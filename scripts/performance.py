@@ -451,9 +451,14 @@ as they are ([distributed.md](distributed.md#scale)).
 '''
 
 
+def has_runs(med, prefix):
+    """Whether the run measured any benchmark whose name starts with `prefix`."""
+    return any(name.startswith(prefix) for name in med)
+
+
 def v3_contact_section(med):
     """The contacts raced against Box2D v3, or how to add them where the run has none."""
-    if not any(name.startswith('box2d_v3/') for name in med):
+    if not has_runs(med, 'box2d_v3/'):
         return ('These results have no Box2D v3 figures: `BOX2D_V3_DIR=<a Box2D v3 source folder> bash '
                 'scripts/bench.sh` adds them.')
     return f"""Box2D v3: its manifold function of the pair (`b2CollideCapsules`, `b2CollidePolygons`,
@@ -474,7 +479,7 @@ The scene has no polygons, capsules, segments or chains: their rows have no scen
 
 def v3_toi_section(med):
     """Time of impact raced against Box2D v3's, where the run has it, before 2.4.1's table."""
-    if not any(name.startswith('box2d_v3_toi/') for name in med):
+    if not has_runs(med, 'box2d_v3_toi/'):
         return ''
     return f"""Box2D v3's `b2TimeOfImpact` on the same pairs (bench/box2d_v3/toi.cpp), its sweeps turning
 by interpolated rotations where collide2d's turn at a constant rate:
@@ -488,7 +493,7 @@ Box2D 2.4.1's:
 
 def v3_world_section(med):
     """The frame with contacts raced against Box2D v3's World, where the run has it."""
-    if not any(name.startswith('box2d_v3_frame/') for name in med):
+    if not has_runs(med, 'box2d_v3_frame/'):
         return ''
     return f"""With contacts (`WorldOptions::contacts`), against Box2D v3's World on the same
 bodies (bench/box2d_v3/world.cpp): dynamic bodies with no gravity, sleep or continuous collision, one
@@ -504,7 +509,7 @@ a `b2ChainShape` loop in v3, its sensors sensor shapes, its layers `b2Filter`s.
 
 def tree_rival(med):
     """The box tree against Box2D v3's b2DynamicTree where the run has it, else 2.4.1's."""
-    if any(name.startswith('box/box2d_v3/') for name in med):
+    if has_runs(med, 'box/box2d_v3/'):
         return f"""Box2D v3's `b2DynamicTree_QueryAll` and `b2DynamicTree_RayCast` on the
 same boxes, each tree as insertion leaves it and fully rebuilt (`rebuild()`, `b2DynamicTree_Rebuild`).
 

@@ -114,7 +114,6 @@ void time_frames(benchmark::State& state, b2WorldId world, Pose pose) {
   state.counters["pairs_ms"] = 1e3 * total[1] / frames;
   state.counters["collide_ms"] = 1e3 * total[2] / frames;
   state.counters["contacts"] = contacts / frames;
-  b2DestroyWorld(world);
 }
 
 void box2d_v3_frame(benchmark::State& state) {
@@ -127,6 +126,7 @@ void box2d_v3_frame(benchmark::State& state) {
     movers.step(rng);
     for (std::size_t k = 0; k < bodies.size(); ++k) set_pose(bodies[k], movers.centre[k], movers.angle[k]);
   });
+  b2DestroyWorld(world);
 }
 
 // The built-in scene of frame/scene_contacts (tool::default_scene): its moving bodies and bullets
@@ -150,6 +150,7 @@ void box2d_v3_scene_frame(benchmark::State& state) {
     tool::step(scene);
     for (const auto& [b, id] : moving) set_pose(id, b->pose.position, b->pose.angle);
   });
+  b2DestroyWorld(world);
 }
 
 BENCHMARK(box2d_v3_frame)
