@@ -173,11 +173,11 @@ class WorldState {
     bool ghost = false;       // its body's
     bool chain = false;       // a chain's segment, its ghosts in ghosts_
     bool alive = false;
+    bool at_origin = true;  // local centre and angle zero: the shape takes the body's pose as it is
     std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
-    bool at_origin = true;               // local centre and angle zero: the shape takes the body's pose as it is
     std::uint32_t next = kNone;          // its body's next shape
     ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
     AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
