@@ -128,7 +128,8 @@ DistanceResult boundary_of(const Variant& a, const Variant& b) {
     return swapped ? r.swapped() : r;
   });
 }
-// A pair given the other way round has its guess turned round, and its result swapped back.
+// A pair given the other way round has its guess turned round, and its result swapped back (by the
+// row itself where it writes the caller's order: in_callers_order).
 template <class List, class X, class Y>
 Contact contact_of_kinds(const X& a, const Orientation& oa, const Y& b, const Orientation& ob,
                          const ContactOptions& options) {
@@ -137,7 +138,11 @@ Contact contact_of_kinds(const X& a, const Orientation& oa, const Y& b, const Or
     if (!swapped) return Row::contact(x, oa, y, ob, options, false);
     ContactOptions reversed = options;
     reversed.guess = -options.guess;
-    return Row::contact(x, ob, y, oa, reversed, true).swapped();
+    if constexpr (requires { Row::in_callers_order; }) {
+      return Row::contact(x, ob, y, oa, reversed, true);
+    } else {
+      return Row::contact(x, ob, y, oa, reversed, true).swapped();
+    }
   };
   return kinds_in_rank_order<List>(a, b, kernel);
 }

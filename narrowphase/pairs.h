@@ -16,6 +16,7 @@
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
 
+#include "narrowphase/contact/capsule_segment.h"
 #include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/dispatch.h"
 #include "narrowphase/shared/cores/convex_core.h"
@@ -200,10 +201,20 @@ struct Pair<ConvexPolygon, Ellipse> : OnCores {
 
 // ---- a capsule first ----
 
+// The capsule's rows write a contact the caller's way round themselves (`swapped`: the caller gave
+// B first), which costs them nothing, rather than have the dispatch turn it (Contact::swapped()).
+template <class B>
+struct CapsuleAndSegment : OnCores {
+  static constexpr bool in_callers_order = true;
+  static Contact contact(const Capsule& a, const Orientation& oa, const B& b, const Orientation& ob,
+                         const ContactOptions& o, bool swapped) {
+    return capsule_segment_contact(a, oa, b, ob, o, swapped);
+  }
+};
 template <>
-struct Pair<Capsule, Capsule> : OnCores {};
+struct Pair<Capsule, Capsule> : CapsuleAndSegment<Capsule> {};
 template <>
-struct Pair<Capsule, Segment> : OnCores {};
+struct Pair<Capsule, Segment> : CapsuleAndSegment<Segment> {};
 template <>
 struct Pair<Capsule, Circle> : OnCores {
   static constexpr bool batched = true;

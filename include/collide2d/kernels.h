@@ -83,7 +83,17 @@ Contact contact_polygon_circle(const ConvexPolygon& a, const Orientation& a_orie
 Contact contact_capsule_circle(const Capsule& a, const Circle& b, const ContactOptions& options = {});
 Contact contact_capsule_circle(const Capsule& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options = {});
-/// A segment and a circle: the same, on the segment.
+/// Two capsules: their segments' nearest features apart, the deepest of their four faces where the
+/// segments meet, and Box2D's manifold on that face (b2ClipPolygons); the convex cores' contact
+/// where features tie (segments parallel or in line).
+Contact contact_capsule_capsule(const Capsule& a, const Capsule& b, const ContactOptions& options = {});
+Contact contact_capsule_capsule(const Capsule& a, const Orientation& a_orientation, const Capsule& b,
+                                const Orientation& b_orientation, const ContactOptions& options = {});
+/// A capsule and a segment: the same, the segment a capsule of radius 0.
+Contact contact_capsule_segment(const Capsule& a, const Segment& b, const ContactOptions& options = {});
+Contact contact_capsule_segment(const Capsule& a, const Orientation& a_orientation, const Segment& b,
+                                const Orientation& b_orientation, const ContactOptions& options = {});
+/// A segment and a circle: the same as a capsule and a circle, on the segment.
 Contact contact_segment_circle(const Segment& a, const Circle& b, const ContactOptions& options = {});
 Contact contact_segment_circle(const Segment& a, const Orientation& a_orientation, const Circle& b,
                                const ContactOptions& options = {});
