@@ -12,5 +12,10 @@ namespace collide2d::detail {
 template <class B>
 Contact capsule_segment_contact(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
                                 const ContactOptions& options, bool swapped);
+// The same where the kernel decides; where features tie, a contact of manifold size -1, which
+// capsule_segment_contact() leaves to the convex cores' contact.
+template <class B>
+Contact capsule_segment_direct(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
+                               const ContactOptions& options, bool swapped);
 
 }  // namespace collide2d::detail

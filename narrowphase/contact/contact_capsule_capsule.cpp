@@ -324,8 +324,8 @@ bool meet(const Pair& p) {
 }  // namespace
 
 template <class B>
-Contact capsule_segment_contact(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
-                                const ContactOptions& options, bool swapped) {
+Contact capsule_segment_direct(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
+                               const ContactOptions& options, bool swapped) {
   const Rotation<double> frame = Rotation<double>::of(ao);
   const Vec2 offset = Placement::offset_of(b.center, a.center, frame);
   const double reach = discs_of(a).reach + discs_of(b).reach;
@@ -334,14 +334,24 @@ Contact capsule_segment_contact(const Capsule& a, const Orientation& ao, const B
   }
   const Placement at{Rotation<double>::of(bo).relative_to(frame), offset};
   const Pair p = pair_of(frame, a.center, a.half_length, a.radius, reach, placed(b, at), swapped);
-  Contact out = meet(p) ? crossing(p, options) : apart(p, options);
+  return meet(p) ? crossing(p, options) : apart(p, options);
+}
+
+template <class B>
+Contact capsule_segment_contact(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
+                                const ContactOptions& options, bool swapped) {
+  Contact out = capsule_segment_direct(a, ao, b, bo, options, swapped);
   if (out.manifold_size < 0) {
-    out = core_contact(core_pair(a, ao, b, at), options);
+    out = core_contact(a, ao, b, bo, options);
     if (swapped) out = out.swapped();
   }
   return out;
 }
 
+template Contact capsule_segment_direct(const Capsule&, const Orientation&, const Capsule&, const Orientation&,
+                                        const ContactOptions&, bool);
+template Contact capsule_segment_direct(const Capsule&, const Orientation&, const Segment&, const Orientation&,
+                                        const ContactOptions&, bool);
 template Contact capsule_segment_contact(const Capsule&, const Orientation&, const Capsule&, const Orientation&,
                                          const ContactOptions&, bool);
 template Contact capsule_segment_contact(const Capsule&, const Orientation&, const Segment&, const Orientation&,

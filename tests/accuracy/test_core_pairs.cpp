@@ -8,6 +8,7 @@
 
 #include <collide2d/kernels.h>
 
+#include "narrowphase/contact/capsule_segment.h"
 #include "narrowphase/shared/cores/convex_core.h"
 
 #include <gtest/gtest.h>
@@ -380,24 +381,41 @@ TEST(CorePairs, CircleKernelsAreTheCoresContact) {
   EXPECT_GT(compared, 200);
 }
 
-// The capsule–capsule and capsule–segment kernel (the two segments' features found directly)
-// against the cores' contact (separating axes, then the nearest vertex–edge pair): the same
-// features (every manifold point's id) and, to rounding, the same separation, normal and points,
-// on every family of two capsules or of a capsule and a segment, the contact limited or not.
+// The capsule–capsule and capsule–segment kernel's own contact (the two segments' features found
+// directly) against the cores' contact (separating axes, then the nearest vertex–edge pair): the
+// same features (every manifold point's id) and, to rounding, the same separation, normal and
+// points, on every family of two capsules or of a capsule and a segment, the contact limited or
+// not. The kernel leaves ties to the cores: parallel faces (the parallel families) and ends on a
+// face's end (the face families, where a stub's whole face is its ends); it decides the rest.
+Contact capsule_direct(const Shape& a, const Shape& b, const ContactOptions& o) {
+  const auto& x = std::get<Capsule>(a);
+  if (const auto* y = std::get_if<Capsule>(&b))
+    return detail::capsule_segment_direct(x, orientation_of(x), *y, orientation_of(*y), o, false);
+  const auto& y = std::get<Segment>(b);
+  return detail::capsule_segment_direct(x, orientation_of(x), y, orientation_of(y), o, false);
+}
+
 TEST(CorePairs, CapsuleKernelIsTheCoresContact) {
-  int compared = 0;
+  int compared = 0, left = 0, left_off_ties = 0;
   for (const CoreFamily& f : core_families()) {
     const bool a_capsule = is_one_of(testing::kCapsuleKinds, f.a), b_capsule = is_one_of(testing::kCapsuleKinds, f.b);
     if (!((a_capsule && (b_capsule || f.b == Form::segment)) || (f.a == Form::segment && b_capsule))) continue;
+    const bool ties = f.touch != testing::Touch::any;
     int k = 0;
     for (const CoreCase& c : cases_of(f)) {
       const std::string what = f.name + " case " + std::to_string(k++);
       const bool swap = f.a == Form::segment;
       const Shape &a = swap ? c.b : c.a, &b = swap ? c.a : c.b;
-      const Kernels kernels = kernels_of(a, b), cores = core_kernels(a, b);
+      const Kernels cores = core_kernels(a, b);
       const double scale = std::max({reach_of(a), reach_of(b), (center_of(b) - center_of(a)).norm()});
       for (const double limit : {HUGE_VAL, 0.0}) {
-        const Contact got = kernels.contact({.max_separation = limit}), want = cores.contact({.max_separation = limit});
+        const Contact got = capsule_direct(a, b, {.max_separation = limit}),
+                      want = cores.contact({.max_separation = limit});
+        if (got.manifold_size < 0) {
+          ++left;
+          left_off_ties += ties ? 0 : 1;
+          continue;
+        }
         if (got.empty() != want.empty()) {
           // Only a pair at the limit, to rounding, may fall either side of it.
           EXPECT_LE(std::abs(cores.contact({}).separation - limit), 8 * kU * scale) << what << " limit " << limit;
@@ -423,7 +441,11 @@ TEST(CorePairs, CapsuleKernelIsTheCoresContact) {
       }
     }
   }
+  std::printf(
+      "[capsule kernel] decided and compared %d, left to the cores %d (%d outside the parallel and face families)\n",
+      compared, left, left_off_ties);
   EXPECT_GT(compared, 1000);
+  EXPECT_LE(left_off_ties, compared / 100);
 }
 
 // The same contact to the bit: every field and every manifold point.
