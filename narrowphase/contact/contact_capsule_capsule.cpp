@@ -24,7 +24,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 namespace collide2d {
 namespace detail {
@@ -146,8 +145,8 @@ Clip clip(const Face& f) {
   std::array<Point, 2> kept;
   for (int e = 0; e < 2; ++e) {
     const double a = f.a[e], limit = std::clamp(a, 0.0, f.length);
-    const double toward = (f.b[1 - e] - f.b[e]) * ((limit - a) / (f.a[1 - e] - a));
-    kept[e] = limit == a ? Point{a, f.b[e], f.id[e]} : Point{limit, f.b[e] + toward, a < 0.0 ? kCutAtStart : kCutAtEnd};
+    const double cut = height_at(limit, a, f.b[e], f.a[1 - e], f.b[1 - e]);
+    kept[e] = limit == a ? Point{a, f.b[e], f.id[e]} : Point{limit, cut, a < 0.0 ? kCutAtStart : kCutAtEnd};
   }
   const bool beyond = (f.a[0] < 0.0 && f.a[1] < 0.0) || (f.a[0] > f.length && f.a[1] > f.length);
   const bool swap = kept[1].b < kept[0].b;
@@ -201,11 +200,11 @@ Contact corner(const Pair& p, int k, int j) {
 
 double square(double x) { return x * x; }
 
-// The rounding the cores allow for on the pair's scale (contact_cores.cpp's face_contact).
+// The rounding the cores allow for on the pair's scale (face_rounding()).
 double rounding_of(const Pair& p) {
   const double extent =
       std::max({p.h, std::abs(p.b.q0.x()), std::abs(p.b.q0.y()), std::abs(p.b.q1.x()), std::abs(p.b.q1.y())});
-  return 8 * std::numeric_limits<double>::epsilon() * (2 * extent + p.radii());
+  return face_rounding(pair_scale(extent, p.radii()));
 }
 
 // An end's squared distance from the other segment, its ends' `along` coordinates lo and hi.
@@ -213,18 +212,14 @@ double squared_from(double along, double height, double lo, double hi) {
   return square(along - std::clamp(along, lo, hi)) + square(height);
 }
 
-// The contact of B's end j over A's face, or A's end k over B's face, or the two nearest ends.
-Contact over_a(const Pair& p, int j, const ContactOptions& options) {
-  const int i = p.b_in_a.height[j] < 0.0 ? 0 : 1;
-  const Face f = face_of_a(p, i);
-  const int e = f.id[0] == j ? 0 : 1;
-  return on_face<true>(p, f, i, f.b[e], {f.a[e], f.b[e], j}, clip(f), options);
-}
-Contact over_b(const Pair& p, int k, const ContactOptions& options) {
-  const int i = p.a_in_b.height[k] < 0.0 ? 0 : 1;
-  const Face f = face_of_b(p, i);
-  const int e = f.id[0] == k ? 0 : 1;
-  return on_face<false>(p, f, i, f.b[e], {f.a[e], f.b[e], k}, clip(f), options);
+// The contact of an end over the other segment's face: B's end `end` over A's face (OnA), or A's
+// over B's.
+template <bool OnA>
+Contact over(const Pair& p, int end, const ContactOptions& options) {
+  const int i = (OnA ? p.b_in_a : p.a_in_b).height[end] < 0.0 ? 0 : 1;
+  const Face f = OnA ? face_of_a(p, i) : face_of_b(p, i);
+  const int e = f.id[0] == end ? 0 : 1;
+  return on_face<OnA>(p, f, i, f.b[e], {f.a[e], f.b[e], end}, clip(f), options);
 }
 
 // The four candidates apart: B's ends against A's segment, then A's ends against B's; each one's
@@ -232,14 +227,20 @@ Contact over_b(const Pair& p, int k, const ContactOptions& options) {
 struct Candidates {
   std::array<double, 4> squared;
   std::array<bool, 4> over;
+
+  // Whether candidate e's end lies over a face as near as `distance`, to the tie of the reaches.
+  bool as_near(int e, double distance, double reach) const {
+    const double tie = distance + 1e-9 * reach;
+    return over[e] && squared[e] <= tie * tie;
+  }
 };
 Candidates candidates_of(const Pair& p) {
   const Ends &b = p.b_in_a, &a = p.a_in_b;
+  const auto inside = [&p](double along) { return along > 0.0 && along < p.b.length; };
   return {
       {squared_from(b.along[0], b.height[0], -p.h, p.h), squared_from(b.along[1], b.height[1], -p.h, p.h),
        squared_from(a.along[0], a.height[0], 0.0, p.b.length), squared_from(a.along[1], a.height[1], 0.0, p.b.length)},
-      {std::abs(b.along[0]) <= p.h, std::abs(b.along[1]) <= p.h,
-       a.along[0] > 0.0 && a.along[0]<p.b.length, a.along[1]> 0.0 && a.along[1] < p.b.length}};
+      {std::abs(b.along[0]) <= p.h, std::abs(b.along[1]) <= p.h, inside(a.along[0]), inside(a.along[1])}};
 }
 
 // The greatest separation along a segment's two faces of the other's ends.
@@ -251,11 +252,10 @@ double best_face(const Ends& other) {
 // segment's face comes as near, to the tie (the segments parallel): the cores' rules for ties keep
 // the deeper face's normal and A's manifold.
 Contact end_over_face(const Pair& p, const Candidates& c, int best, double distance, const ContactOptions& options) {
-  const double tie = distance + 1e-9 * p.reach;
   if (best_face(best < 2 ? p.a_in_b : p.b_in_a) >= distance - 1e-9 * p.reach) return undecided();
-  if (best < 2) return over_a(p, best, options);
-  const bool b_end_as_near = (c.over[0] && c.squared[0] <= tie * tie) || (c.over[1] && c.squared[1] <= tie * tie);
-  return b_end_as_near ? undecided() : over_b(p, best - 2, options);
+  if (best < 2) return over<true>(p, best, options);
+  const bool b_end_as_near = c.as_near(0, distance, p.reach) || c.as_near(1, distance, p.reach);
+  return b_end_as_near ? undecided() : over<false>(p, best - 2, options);
 }
 
 // Candidate `best`, two ends, at `distance`; undecided where a face comes as near, to the tie, or
@@ -266,10 +266,10 @@ Contact two_ends(const Pair& p, const Candidates& c, int best, double distance) 
   const Ends &b = p.b_in_a, &a = p.a_in_b;
   const int k = best < 2 ? (b.along[best] > 0.0 ? 1 : 0) : best - 2;
   const int j = best < 2 ? best : (a.along[k] > 0.0 ? 1 : 0);
-  const double tie = distance + 1e-9 * p.reach, room = 8 * rounding_of(p) * distance;
+  const double room = 8 * rounding_of(p) * distance;
   const auto close = [room](double d) { return d <= 0.0 || d * d <= room; };
   for (int e = 0; e < 4; ++e) {
-    if (c.over[e] && c.squared[e] <= tie * tie) return undecided();
+    if (c.as_near(e, distance, p.reach)) return undecided();
   }
   if (close(std::abs(b.along[j]) - p.h) || close(j == 1 ? a.along[k] - p.b.length : -a.along[k])) return undecided();
   return corner(p, k, j);

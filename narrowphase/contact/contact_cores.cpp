@@ -108,8 +108,7 @@ Contact face_contact(const P& p, const X& x, const Y& y, bool x_is_a, const Axis
     if (side == 0) return on_face(p, x_is_a, i, s, {w, s, axis.vertex}, c, options);
     const Closest near = beside_face(p, x_is_a, axis, side);
     const double distance = std::sqrt(near.squared);
-    const double rounding = 8 * std::numeric_limits<double>::epsilon() * p.scale();
-    if (c.count == 0 || c.kept[0].b > distance + rounding) return nearest_contact(p, near, options);
+    if (c.count == 0 || c.kept[0].b > distance + face_rounding(p.scale())) return nearest_contact(p, near, options);
     return on_face(p, x_is_a, i, distance, c.kept[0], c, options);
   }
   if (c.count == 0) {

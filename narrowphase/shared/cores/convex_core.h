@@ -226,6 +226,13 @@ PairCore<A> pair_core_of(const A& shape, const Placement& at) {
   }
 }
 
+// A pair of cores' scale, what their rounding is a few u of: the larger core's largest coordinate
+// (B's offset and size within it), twice, and the two radii.
+inline double pair_scale(double extent, double radii) { return 2 * extent + radii; }
+// The rounding a face's contact allows for between the clipped incident face and the nearest
+// features apart (contact_cores.cpp's face_contact, contact_capsule_capsule.cpp).
+inline double face_rounding(double scale) { return 8 * std::numeric_limits<double>::epsilon() * scale; }
+
 // A pair of core shapes: A's core in its own frame, B's in A's, and A's pose to go back to the world.
 template <class X, class Y>
 struct CorePairOf {
@@ -237,7 +244,7 @@ struct CorePairOf {
   Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }
   // The pair's scale: the offset of B and both cores' sizes, what their rounding is a few u of.
-  double scale() const { return 2 * std::max(a.extent(), b.extent()) + a.radius + b.radius; }
+  double scale() const { return pair_scale(std::max(a.extent(), b.extent()), a.radius + b.radius); }
 };
 
 // The pair, B placed in A's frame by `at`.

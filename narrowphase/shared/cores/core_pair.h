@@ -223,12 +223,18 @@ struct FaceClip {
   int count = 0;                // 0 when the incident face lies beyond a side plane
 };
 
+// The height over a face's line where an edge from heights b0 to b1 at positions a0 to a1 along
+// the face crosses the side plane at `limit`.
+inline double height_at(double limit, double a0, double b0, double a1, double b1) {
+  return b0 + (b1 - b0) * ((limit - a0) / (a1 - a0));
+}
+
 // The point where an edge of y, from heights b0 to b1 over face x's line at positions a0 to a1
 // along it, crosses the side plane at `limit`: on the plane exactly, in the face's coordinates
 // (interpolated, its position along the face would carry the rounding of the whole edge).
 inline Clipped cut(const Vec2& v0, const Vec2& t, const Vec2& n, double limit, double a0, double b0, double a1,
                    double b1, int id) {
-  const double b = b0 + (b1 - b0) * ((limit - a0) / (a1 - a0));
+  const double b = height_at(limit, a0, b0, a1, b1);
   return {v0 + limit * t + b * n, b, id};
 }
 
