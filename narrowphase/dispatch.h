@@ -138,7 +138,7 @@ Contact contact_of_kinds(const X& a, const Orientation& oa, const Y& b, const Or
     if (!swapped) return Row::contact(x, oa, y, ob, options, false);
     ContactOptions reversed = options;
     reversed.guess = -options.guess;
-    if constexpr (requires { Row::in_callers_order; }) {
+    if constexpr (requires { requires Row::in_callers_order; }) {
       return Row::contact(x, ob, y, oa, reversed, true);
     } else {
       return Row::contact(x, ob, y, oa, reversed, true).swapped();

@@ -75,6 +75,10 @@ struct Unsupported {
 // ellipse, the pair's cores placed in A's frame (in the ellipse's, against one).
 struct OnCores : NoBoundary {
   static constexpr bool batched = false;
+  // The cores write a contact the caller's way round themselves (`swapped`: the caller gave B
+  // first), which costs them nothing, rather than have the dispatch turn it (Contact::swapped()).
+  // A row whose kernel does not says so.
+  static constexpr bool in_callers_order = true;
 
   template <class X, class Y, class Run>
   static auto on_core_pair(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, Run run) {
@@ -114,11 +118,12 @@ struct OnCores : NoBoundary {
   // caller gave first.
   template <class X, class Y>
   static Contact contact(const X& a, const Orientation& oa, const Y& b, const Orientation& ob, const ContactOptions& o,
-                         bool) {
+                         bool swapped) {
     if constexpr (std::is_same_v<Y, Ellipse>) {
-      return core_ellipse_contact(CoreEllipse::of(a, oa, b, ob), o);
+      const Contact c = core_ellipse_contact(CoreEllipse::of(a, oa, b, ob), o);
+      return swapped ? c.swapped() : c;
     } else {
-      return core_contact(a, oa, b, ob, o);
+      return core_contact(a, oa, b, ob, o, swapped);
     }
   }
 };
@@ -188,6 +193,7 @@ template <>
 struct Pair<ConvexPolygon, Segment> : OnCores {};
 template <>
 struct Pair<ConvexPolygon, Circle> : OnCores {
+  static constexpr bool in_callers_order = false;
   static constexpr bool batched = true;
   static Contact contact(const ConvexPolygon& a, const Orientation& oa, const Circle& b, const Orientation&,
                          const ContactOptions& o, bool) {
@@ -201,11 +207,9 @@ struct Pair<ConvexPolygon, Ellipse> : OnCores {
 
 // ---- a capsule first ----
 
-// The capsule's rows write a contact the caller's way round themselves (`swapped`: the caller gave
-// B first), which costs them nothing, rather than have the dispatch turn it (Contact::swapped()).
+// The capsule's rows write a contact the caller's way round themselves, as the cores do.
 template <class B>
 struct CapsuleAndSegment : OnCores {
-  static constexpr bool in_callers_order = true;
   static Contact contact(const Capsule& a, const Orientation& oa, const B& b, const Orientation& ob,
                          const ContactOptions& o, bool swapped) {
     return capsule_segment_contact(a, oa, b, ob, o, swapped);
@@ -217,6 +221,7 @@ template <>
 struct Pair<Capsule, Segment> : CapsuleAndSegment<Segment> {};
 template <>
 struct Pair<Capsule, Circle> : OnCores {
+  static constexpr bool in_callers_order = false;
   static constexpr bool batched = true;
   static Contact contact(const Capsule& a, const Orientation& oa, const Circle& b, const Orientation&,
                          const ContactOptions& o, bool) {
@@ -234,6 +239,7 @@ template <>
 struct Pair<Segment, Segment> : OnCores {};
 template <>
 struct Pair<Segment, Circle> : OnCores {
+  static constexpr bool in_callers_order = false;
   static Contact contact(const Segment& a, const Orientation& oa, const Circle& b, const Orientation&,
                          const ContactOptions& o, bool) {
     return contact_segment_circle(a, oa, b, o);

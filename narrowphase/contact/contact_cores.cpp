@@ -40,23 +40,29 @@ Clipped deepest_over_face(const X& x, int i, const Y& y) {
   return best;
 }
 
-// Builds contacts in the world from points in A's frame.
+// Builds contacts in the world from points in A's frame, in the caller's order (CorePairOf::swapped).
 template <class P>
 struct Writer {
   const P& p;
 
+  // Whether x, core A if x_is_a, is the caller's first shape.
+  bool callers_a(bool x_is_a) const { return x_is_a != p.swapped; }
   // A point of y's core and its foot on x's, the normal from x to y.
   ContactPoint point(bool x_is_a, const Vec2& on_x, const Vec2& on_y, const Vec2& normal, double separation,
                      std::uint32_t id) const {
     const double rx = x_is_a ? p.a.radius : p.b.radius, ry = x_is_a ? p.b.radius : p.a.radius;
     const Vec2 x = p.world_point(Vec2(on_x + rx * normal)), y = p.world_point(Vec2(on_y - ry * normal));
-    return x_is_a ? ContactPoint{x, y, separation, id} : ContactPoint{y, x, separation, swapped_feature(id)};
+    return callers_a(x_is_a) ? ContactPoint{x, y, separation, id} : ContactPoint{y, x, separation, swapped_feature(id)};
   }
   Contact one(bool x_is_a, const Vec2& on_x, const Vec2& on_y, const Vec2& normal, double separation,
               std::uint32_t id) const {
     const ContactPoint c = point(x_is_a, on_x, on_y, normal, separation, id);
+    return Contact::of(separation, world_normal(x_is_a, normal), c.point_a, c.point_b, c.id);
+  }
+  // The normal from x to y in the world, turned where x is not the caller's A.
+  Vec2 world_normal(bool x_is_a, const Vec2& normal) const {
     const Vec2 world = p.world_direction(normal);
-    return Contact::of(separation, x_is_a ? world : Vec2(-world), c.point_a, c.point_b, c.id);
+    return callers_a(x_is_a) ? world : Vec2(-world);
   }
 };
 
@@ -76,8 +82,7 @@ Contact on_face(const P& p, bool x_is_a, int i, double s, const Clipped& main, c
                               feature_id(FeatureKind::face_of_a, i, k.id));
   };
   const ContactPoint first = point(main);
-  const Vec2 world = p.world_direction(n);
-  Contact out = Contact::of(s - radii(p), x_is_a ? world : Vec2(-world), first.point_a, first.point_b, first.id);
+  Contact out = Contact::of(s - radii(p), Writer<P>{p}.world_normal(x_is_a, n), first.point_a, first.point_b, first.id);
   out.manifold[0] = first;
   const double keep = std::max(out.separation, 0.0) + options.margin;
   int size = 0;

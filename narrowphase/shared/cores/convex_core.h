@@ -240,6 +240,9 @@ struct CorePairOf {
   Y b;
   Rotation<double> a_rot;
   Vec2 a_center = Vec2::Zero();
+  // The caller gave B first: a contact is written in the caller's order, B's points first and the
+  // normal from B to A, as Contact::swapped() would turn it.
+  bool swapped = false;
 
   Vec2 world_point(const Vec2& p) const { return a_center + a_rot.apply(p); }
   Vec2 world_direction(const Vec2& d) const { return a_rot.apply(d); }
@@ -247,11 +250,12 @@ struct CorePairOf {
   double scale() const { return pair_scale(std::max(a.extent(), b.extent()), a.radius + b.radius); }
 };
 
-// The pair, B placed in A's frame by `at`.
+// The pair, B placed in A's frame by `at`; `swapped`: the caller gave B first (CorePairOf::swapped).
 template <class A, class B>
-CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at) {
+CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
+                                               bool swapped = false) {
   CorePairOf<PairCore<A>, PairCore<B>> p{pair_core_of(a, Placement{}), pair_core_of(b, at), Rotation<double>::of(ao),
-                                         a.center};
+                                         a.center, swapped};
   set_axes(p.a);
   set_axes(p.b);
   return p;
@@ -296,10 +300,11 @@ Contact core_contact(const CorePairOf<X, Y>& p, const ContactOptions& options);
 template <class X, class Y>
 Contact core_face_contact(const CorePairOf<X, Y>& p, int i, const ContactOptions& options);
 // The contact of two core shapes: B's offset alone first, and the discs about the two centres, which
-// settle a pair beyond the limit before any core is built.
+// settle a pair beyond the limit before any core is built. `swapped`: the caller gave B first, and
+// the contact is written in its order.
 template <class A, class B>
 Contact core_contact(const A& a, const Orientation& ao, const B& b, const Orientation& bo,
-                     const ContactOptions& options) {
+                     const ContactOptions& options, bool swapped = false) {
   const Rotation<double> frame = Rotation<double>::of(ao);
   const Vec2 offset = Placement::offset_of(b.center, a.center, frame);
   if (has_limit(options)) {
@@ -307,7 +312,8 @@ Contact core_contact(const A& a, const Orientation& ao, const B& b, const Orient
       return Contact::beyond(*gap);
     }
   }
-  return core_contact(core_pair(a, ao, b, Placement{Rotation<double>::of(bo).relative_to(frame), offset}), options);
+  return core_contact(core_pair(a, ao, b, Placement{Rotation<double>::of(bo).relative_to(frame), offset}, swapped),
+                      options);
 }
 
 // A core shape A against an ellipse B (core_ellipse.cpp): A's core in the ellipse's frame, where the
