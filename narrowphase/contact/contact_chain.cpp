@@ -31,19 +31,16 @@ constexpr double kTurn = 64 * kEpsilon;
 
 Vec2 right_of(const Vec2& d) { return {d.y(), -d.x()}; }
 
-// The chain segment in the world: its points, its normal n (its direction turned clockwise, towards
-// the side it collides from), and at each end whether the vertex is convex and the neighbour's
-// normal there (read only at a convex vertex). The one-sided rule reads the normals' signs alone,
-// so sides_of() leaves them as long as their edges, and unit() scales them for the other rules,
-// which only pairs within the contact's limit reach.
+// The chain segment in the world: its points, its unit normal n (its direction turned clockwise,
+// towards the side it collides from) and direction e, and at each end whether the vertex is convex
+// and the neighbour's unit normal there (read only at a convex vertex).
 struct Faces {
-  Vec2 p1, p2, n, n0, n2;
+  Vec2 p1, p2, n, n0, n2, e;
   bool convex1 = false, convex2 = false;
-  Vec2 e = Vec2::Zero();  // the unit direction, once unit
   double length = 0.0;
 };
 
-Faces sides_of(const ChainSegment& s, const Orientation& o) {
+Faces faces_of(const ChainSegment& s, const Orientation& o) {
   const Vec2& end = s.segment.end;
   const Vec2 in = -s.ghost1, out = s.ghost2 - end;  // the neighbours' directions, in the segment's frame
   Faces f;
@@ -51,20 +48,13 @@ Faces sides_of(const ChainSegment& s, const Orientation& o) {
   const Rot rot = Rot::of(o);
   const Vec2 d = rot.apply(end);
   f.p2 = f.p1 + d;
-  f.n = right_of(d);
+  f.length = end.norm();
+  f.n = right_of(d) / f.length;
+  f.e = Vec2(-f.n.y(), f.n.x());
   f.convex1 = cross(in, end) > 0.0;
   f.convex2 = cross(end, out) > 0.0;
-  if (f.convex1) f.n0 = right_of(rot.apply(in));
-  if (f.convex2) f.n2 = right_of(rot.apply(out));
-  return f;
-}
-
-Faces unit(Faces f, const ChainSegment& s) {
-  f.length = s.segment.end.norm();
-  f.n /= f.length;
-  f.e = Vec2(-f.n.y(), f.n.x());
-  if (f.convex1) f.n0.normalize();
-  if (f.convex2) f.n2.normalize();
+  if (f.convex1) f.n0 = right_of(rot.apply(in)).normalized();
+  if (f.convex2) f.n2 = right_of(rot.apply(out)).normalized();
   return f;
 }
 
@@ -78,10 +68,19 @@ Vec2 reference_point(const B& shape, const Orientation& o) {
   }
 }
 
-bool in_front(const Faces& f, const Vec2& r) {
-  const Vec2 from1 = r - f.p1;
-  return f.n.dot(from1) >= 0.0 || (f.convex1 && f.n0.dot(from1) >= 0.0) ||
-         (f.convex2 && f.n2.dot(Vec2(r - f.p2)) >= 0.0);
+// Whether the point r, given in the segment's frame from its first point, lies in front of the
+// segment or of a convex neighbour's line: read in the segment's own frame, where the neighbours'
+// directions are given, so that no rotation precedes the test that turns half the pairs away.
+bool in_front(const ChainSegment& s, const Vec2& r) {
+  const Vec2& end = s.segment.end;
+  const Vec2 in = -s.ghost1, out = s.ghost2 - end;
+  return right_of(end).dot(r) >= 0.0 || (cross(in, end) > 0.0 && right_of(in).dot(r) >= 0.0) ||
+         (cross(end, out) > 0.0 && right_of(out).dot(Vec2(r - end)) >= 0.0);
+}
+
+template <class B>
+bool in_front(const ChainSegment& s, const Orientation& o, const B& shape, const Orientation& shape_o) {
+  return in_front(s, Rot::of(o).apply_inverse(Vec2(reference_point(shape, shape_o) - s.segment.center)));
 }
 
 // The shape's separation from the line through q of unit normal u (a circle's without the square
@@ -147,9 +146,7 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
 template <class B>
 Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo,
                         const ContactOptions& options) {
-  const Faces sides = sides_of(a, ao);
-  const Vec2 r = reference_point(b, bo);
-  if (!in_front(sides, r)) return Contact::beyond(kInf);
+  if (!in_front(a, ao, b, bo)) return Contact::beyond(kInf);
   // The segment's contact first: with a limit it ends soonest for the pairs apart.
   const Contact c = detail::contact_of_kinds<detail::Kinds>(a.segment, ao, b, bo, options);
   if (c.empty()) return c;
@@ -161,8 +158,8 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
     // segment (owns()); the normal is the segment's (admitted()).
     if (c.manifold[0].id == feature_id(FeatureKind::face_of_a, 0, 0)) return c;
   }
-  const Faces f = unit(sides, a);
-  if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
+  const Faces f = faces_of(a, ao);
+  if (!owns(f, b, bo, reference_point(b, bo))) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
   const Contact h = held(a, ao, f, b, bo, options);
   // Apart, a shape's points over the segment lie in front of it, or all behind it where the shape
@@ -174,8 +171,9 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
 }  // namespace
 
 bool in_front(const ChainSegment& s, const Shape& shape) {
-  const Vec2 r = std::visit([](const auto& x) { return reference_point(x, detail::orientation_of(x)); }, shape);
-  return in_front(sides_of(s, Orientation::of(s.segment.angle)), r);
+  return std::visit(
+      [&](const auto& x) { return in_front(s, Orientation::of(s.segment.angle), x, detail::orientation_of(x)); },
+      shape);
 }
 
 Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
