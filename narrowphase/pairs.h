@@ -17,6 +17,7 @@
 #include <collide2d/query.h>
 
 #include "narrowphase/contact/capsule_segment.h"
+#include "narrowphase/contact/circle_circle.h"
 #include "narrowphase/contact/contact_rect_rect.h"
 #include "narrowphase/dispatch.h"
 #include "narrowphase/shared/cores/convex_core.h"
@@ -142,10 +143,11 @@ struct Pair<Rect, Rect> : NoBoundary {
     return overlap_rect_rect(a, oa, b, ob);
   }
   static DistanceResult distance(const Rect& a, const Rect& b) { return distance_rect_rect(a, b); }
-  // `prefer_b`: the kernel's B is the caller's A, whose face the manifold prefers.
+  // Where swapped, the kernel's B is the caller's A, whose face the manifold prefers.
+  static constexpr bool in_callers_order = true;
   static Contact contact(const Rect& a, const Orientation& oa, const Rect& b, const Orientation& ob,
-                         const ContactOptions& o, bool prefer_b) {
-    return contact_rect_rect(a, oa, b, ob, o, prefer_b ? PreferredFace::of_b : PreferredFace::of_a);
+                         const ContactOptions& o, bool swapped) {
+    return contact_rect_rect(a, oa, b, ob, o, swapped);
   }
 };
 template <>
@@ -258,9 +260,10 @@ struct Pair<Circle, Circle> {
     return overlap_circle_circle(a, b);
   }
   static DistanceResult distance(const Circle& a, const Circle& b) { return distance_circle_circle(a, b); }
+  static constexpr bool in_callers_order = true;
   static Contact contact(const Circle& a, const Orientation&, const Circle& b, const Orientation&,
-                         const ContactOptions& o, bool) {
-    return contact_circle_circle(a, b, o);
+                         const ContactOptions& o, bool swapped) {
+    return circle_circle_contact(a, b, o, swapped);
   }
   static DistanceResult boundary(const Circle& a, const Circle& b) { return boundary_distance_circle_circle(a, b); }
 };

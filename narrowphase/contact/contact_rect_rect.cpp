@@ -103,9 +103,11 @@ Feature nearest_corners(const View& v) {
   return best;
 }
 
-// The contact with the reference face k of view v, whose separation is `best`.
+// The contact with the reference face k of view v, whose separation is `best`, written in the
+// caller's order (swapped: the caller gave B first).
 Contact contact_on(const detail::RectPairFrame& f, const Rect& a, const View& v, int k, double best,
-                   const ContactOptions& options) {
+                   const ContactOptions& options, bool swapped) {
+  const bool ref_first = v.ref_is_a != swapped;  // the reference rectangle is the caller's A
   const auto to_a = [&](const Vec2& p) -> Vec2 { return v.ref_is_a ? p : Vec2(f.b_center + f.b_rel.apply(p)); };
   const auto to_world = [&](const Vec2& p) -> Vec2 { return a.center + f.a_rot.apply(to_a(p)); };
   const auto direction_to_world = [&](const Vec2& n) -> Vec2 {
@@ -113,10 +115,10 @@ Contact contact_on(const detail::RectPairFrame& f, const Rect& a, const View& v,
   };
   const auto point = [&](const Feature& x, FeatureKind kind) {
     const Vec2 r = to_world(x.on_ref), i = to_world(x.on_inc);
-    const std::uint32_t id = kind == FeatureKind::corner_corner && !v.ref_is_a
+    const std::uint32_t id = kind == FeatureKind::corner_corner && !ref_first
                                  ? feature_id(kind, x.inc_index, x.ref_index)
                                  : feature_id(kind, x.ref_index, x.inc_index);
-    return v.ref_is_a ? ContactPoint{r, i, x.separation, id} : ContactPoint{i, r, x.separation, id};
+    return ref_first ? ContactPoint{r, i, x.separation, id} : ContactPoint{i, r, x.separation, id};
   };
 
   const double sigma = sign_of(v.center[k]);
@@ -139,11 +141,11 @@ Contact contact_on(const detail::RectPairFrame& f, const Rect& a, const View& v,
     // From the corners' difference in the frame, not from the world points, whose rounding grows
     // with the offset of the pair from the origin.
     const Vec2 towards_inc = direction_to_world(Vec2((c.on_inc - c.on_ref) / c.separation));
-    return Contact::of(c.separation, v.ref_is_a ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b, p.id);
+    return Contact::of(c.separation, ref_first ? towards_inc : Vec2(-towards_inc), p.point_a, p.point_b, p.id);
   }
   const Vec2 n_ref = k == 0 ? Vec2(sigma, 0) : Vec2(0, sigma);
-  const Vec2 normal = (v.ref_is_a ? 1.0 : -1.0) * direction_to_world(n_ref);
-  const FeatureKind kind = v.ref_is_a ? FeatureKind::face_of_a : FeatureKind::face_of_b;
+  const Vec2 normal = (ref_first ? 1.0 : -1.0) * direction_to_world(n_ref);
+  const FeatureKind kind = ref_first ? FeatureKind::face_of_a : FeatureKind::face_of_b;
   const int ref_face = k + (sigma < 0 ? 2 : 0);
   const auto on_face = [&](Feature x) {
     x.on_ref = x.on_inc - x.separation * n_ref;
@@ -181,21 +183,21 @@ Face deepest_face(const View& v) {
   return out;
 }
 
-// The contact on the deeper of the two rectangles' deepest faces, with the manifold on the
-// preferred side's face where the two tie (below).
+// The contact on the deeper of the two rectangles' deepest faces, with the manifold on the caller's
+// first rectangle's face where the two tie (below); written in the caller's order.
 Contact on_faces(const detail::RectPairFrame& f, const Rect& a, const View& from_a, const Face& on_a,
-                 const View& from_b, const Face& on_b, const ContactOptions& options, detail::PreferredFace preferred) {
+                 const View& from_b, const Face& on_b, const ContactOptions& options, bool swapped) {
   const bool b_deepest = on_b.separation > on_a.separation;
-  Contact out = b_deepest ? contact_on(f, a, from_b, on_b.k, on_b.separation, options)
-                          : contact_on(f, a, from_a, on_a.k, on_a.separation, options);
-  const bool on_preferred = b_deepest == (preferred == detail::PreferredFace::of_b);
+  Contact out = b_deepest ? contact_on(f, a, from_b, on_b.k, on_b.separation, options, swapped)
+                          : contact_on(f, a, from_a, on_a.k, on_a.separation, options, swapped);
+  const bool on_preferred = b_deepest == swapped;
   const double bias = 1e-9 * (a.half_extents.sum() + from_a.inc_half.sum());
   if (on_preferred || std::abs(on_b.separation - on_a.separation) > bias ||
       feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) {
     return out;
   }
-  const Contact kept = b_deepest ? contact_on(f, a, from_a, on_a.k, on_a.separation, options)
-                                 : contact_on(f, a, from_b, on_b.k, on_b.separation, options);
+  const Contact kept = b_deepest ? contact_on(f, a, from_a, on_a.k, on_a.separation, options, swapped)
+                                 : contact_on(f, a, from_b, on_b.k, on_b.separation, options, swapped);
   if (feature_kind(kept.manifold[0].id) == FeatureKind::corner_corner) return out;
   out.manifold = kept.manifold;
   out.manifold_size = kept.manifold_size;
@@ -220,12 +222,11 @@ Contact contact_rect_rect(const Rect& a, const Rect& b, const ContactOptions& op
 
 Contact contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
                           const Orientation& b_orientation, const ContactOptions& options) {
-  return detail::contact_rect_rect(a, a_orientation, b, b_orientation, options, detail::PreferredFace::of_a);
+  return detail::contact_rect_rect(a, a_orientation, b, b_orientation, options, false);
 }
 
 Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientation, const Rect& b,
-                                  const Orientation& b_orientation, const ContactOptions& options,
-                                  PreferredFace preferred) {
+                                  const Orientation& b_orientation, const ContactOptions& options, bool swapped) {
   // The fields as they are, not Rotation::of: through it GCC spills the rotations in halves and then
   // stalls reading them whole (bench_contact's rect_rect rows).
   const detail::RectPairFrame f(a, {a_orientation.c, a_orientation.s}, b, {b_orientation.c, b_orientation.s});
@@ -238,7 +239,7 @@ Contact detail::contact_rect_rect(const Rect& a, const Orientation& a_orientatio
     const double scale = a.half_extents.sum() + b.half_extents.sum() + f.b_center.cwiseAbs().sum();
     if (detail::beyond_limit(face_separation, scale, options)) return Contact::beyond(face_separation);
   }
-  return detail::limited(options, [&] { return on_faces(f, a, from_a, on_a, from_b, on_b, options, preferred); });
+  return detail::limited(options, [&] { return on_faces(f, a, from_a, on_a, from_b, on_b, options, swapped); });
 }
 
 }  // namespace collide2d

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include "contact_testing.h"
 #include "refusals.h"
 #include "tools/random.h"
 
@@ -389,8 +390,7 @@ TYPED_TEST(CurvedOutline, AabbIsTight) {
 }
 
 // Every query of query.h on the pairs with a polygon, a capsule or a segment: the same result bit
-// for bit with the pair swapped (features renamed, normal reversed, every manifold point's two
-// points exchanged), the distance 0 exactly when
+// for bit with the pair swapped (a contact as Contact::swapped() turns it), the distance 0 exactly when
 // they overlap, the contact's separation the distance when apart.
 TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
   std::mt19937_64 rng(11);
@@ -431,18 +431,7 @@ TEST(PolygonCapsuleQueries, SymmetricAndConsistent) {
     EXPECT_EQ(d.overlapping, hit);
     EXPECT_EQ(d.distance == 0, hit);
     const Contact c = contact(a, b), r = contact(b, a);
-    EXPECT_EQ(c.separation, r.separation);
-    EXPECT_EQ(c.normal, Vec2(-r.normal));
-    EXPECT_EQ(c.point_a, r.point_b);
-    EXPECT_EQ(c.point_b, r.point_a);
-    ASSERT_EQ(c.manifold_size, r.manifold_size);
-    for (int i = 0; i < c.manifold_size; ++i) {
-      const ContactPoint &p = c.points()[i], &q = r.points()[i];
-      EXPECT_EQ(p.point_a, q.point_b);
-      EXPECT_EQ(p.point_b, q.point_a);
-      EXPECT_EQ(p.separation, q.separation);
-      EXPECT_EQ(p.id, swapped_feature(q.id));
-    }
+    testing::expect_same_contact(c, r.swapped(), "swapped");
     if (!hit) EXPECT_NEAR(c.separation, d.distance, 1e-14);
     if (hit) EXPECT_LE(c.separation, 1e-14);
     (hit ? overlapping : apart)++;

@@ -1,4 +1,5 @@
 // The user-facing dispatch (invariants, errors) and the `collide2d query` command.
+#include "contact_testing.h"
 #include "hard_cases.h"
 #include "mp_reference.h"
 
@@ -74,6 +75,8 @@ TEST(Dispatch, InvariantUnderRigidMotionOfBoth) {
               worst_distance / (kU * 60), worst_point / (kU * 60));
 }
 
+// A contact with the pair swapped is Contact::swapped() of the other, with a limit and without,
+// where a kernel writes the caller's order itself as where the dispatch turns it.
 TEST(Dispatch, SwappingSwapsTheResultExactly) {
   for (const auto& [a, b] : random_pairs(3000, 5)) {
     ASSERT_EQ(overlaps(a, b), overlaps(b, a));
@@ -82,6 +85,10 @@ TEST(Dispatch, SwappingSwapsTheResultExactly) {
     ASSERT_EQ(ab.point_a, ba.point_b);
     ASSERT_EQ(ab.point_b, ba.point_a);
     ASSERT_EQ(ab.overlapping, ab.distance == 0.0);
+    const std::string what = std::string(shape_name(a)) + "-" + shape_name(b);
+    testing::expect_same_contact(contact(a, b), contact(b, a).swapped(), what);
+    const ContactOptions near{.max_separation = 0.02};
+    testing::expect_same_contact(contact(a, b, near), contact(b, a, near).swapped(), what + " within 0.02");
   }
 }
 
