@@ -2,7 +2,10 @@
 // holding the pair's kernel for each query:
 //   overlap(a, b), posed_overlap(a, oa, b, ob)   overlap/overlap_<a>_<b>.cpp
 //   distance(a, b)                               distance/distance_<a>_<b>.cpp
-//   contact(a, oa, b, ob, options, prefer_b)     contact/contact_<a>_<b>.cpp
+//   contact(a, oa, b, ob, options, swapped)      contact/contact_<a>_<b>.cpp (swapped: the caller
+//                                                gave B first)
+//   in_callers_order                             whether contact() then writes the caller's order
+//                                                itself, else the dispatch turns it
 //   boundary(a, b)                               the gap between boundary curves, where it applies
 //   batched                                      whether batch.h tests the pair in SIMD lanes
 // A row that takes the convex cores' methods (OnCores: overlap/overlap_cores.cpp and
