@@ -78,9 +78,9 @@ bool in_front(const ChainSegment& s, const Vec2& r) {
          (cross(end, out) > 0.0 && right_of(out).dot(Vec2(r - end)) >= 0.0);
 }
 
-template <class B>
-bool in_front(const ChainSegment& s, const Orientation& o, const B& shape, const Orientation& shape_o) {
-  return in_front(s, Rot::of(o).apply_inverse(Vec2(reference_point(shape, shape_o) - s.segment.center)));
+// The same for a point r in the world, the segment posed by o.
+bool in_front(const ChainSegment& s, const Orientation& o, const Vec2& r) {
+  return in_front(s, Rot::of(o).apply_inverse(Vec2(r - s.segment.center)));
 }
 
 // The shape's separation from the line through q of unit normal u (a circle's without the square
@@ -146,7 +146,8 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
 template <class B>
 Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo,
                         const ContactOptions& options) {
-  if (!in_front(a, ao, b, bo)) return Contact::beyond(kInf);
+  const Vec2 r = reference_point(b, bo);
+  if (!in_front(a, ao, r)) return Contact::beyond(kInf);
   // The segment's contact first: with a limit it ends soonest for the pairs apart.
   const Contact c = detail::contact_of_kinds<detail::Kinds>(a.segment, ao, b, bo, options);
   if (c.empty()) return c;
@@ -159,7 +160,7 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
     if (c.manifold[0].id == feature_id(FeatureKind::face_of_a, 0, 0)) return c;
   }
   const Faces f = faces_of(a, ao);
-  if (!owns(f, b, bo, reference_point(b, bo))) return Contact::beyond(kInf);
+  if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
   const Contact h = held(a, ao, f, b, bo, options);
   // Apart, a shape's points over the segment lie in front of it, or all behind it where the shape
@@ -171,9 +172,8 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
 }  // namespace
 
 bool in_front(const ChainSegment& s, const Shape& shape) {
-  return std::visit(
-      [&](const auto& x) { return in_front(s, Orientation::of(s.segment.angle), x, detail::orientation_of(x)); },
-      shape);
+  const Vec2 r = std::visit([](const auto& x) { return reference_point(x, detail::orientation_of(x)); }, shape);
+  return in_front(s, Orientation::of(s.segment.angle), r);
 }
 
 Contact contact(const ChainSegment& a, const Orientation& ao, const Shape& b, const Orientation& bo,
