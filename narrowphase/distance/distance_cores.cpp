@@ -110,5 +110,7 @@ template DistanceResult core_distance(const CorePairOf<Core, Core>&);
 template DistanceResult core_distance(const CorePairOf<Core, SegmentCore>&);
 template DistanceResult core_distance(const CorePairOf<SegmentCore, Core>&);
 template DistanceResult core_distance(const CorePairOf<SegmentCore, SegmentCore>&);
+template DistanceResult core_distance(const CorePairOf<OwnFrameCore<Rect>, SegmentCore>&);
+template DistanceResult core_distance(const CorePairOf<OwnFrameCore<ConvexPolygon>, SegmentCore>&);
 
 }  // namespace collide2d::detail

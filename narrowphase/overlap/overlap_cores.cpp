@@ -13,5 +13,7 @@ template bool core_overlap(const CorePairOf<Core, Core>&);
 template bool core_overlap(const CorePairOf<Core, SegmentCore>&);
 template bool core_overlap(const CorePairOf<SegmentCore, Core>&);
 template bool core_overlap(const CorePairOf<SegmentCore, SegmentCore>&);
+template bool core_overlap(const CorePairOf<OwnFrameCore<Rect>, SegmentCore>&);
+template bool core_overlap(const CorePairOf<OwnFrameCore<ConvexPolygon>, SegmentCore>&);
 
 }  // namespace collide2d::detail

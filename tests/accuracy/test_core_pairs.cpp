@@ -44,37 +44,30 @@ struct Kernels {
   std::function<bool()> overlap;
 };
 
-// A shape's core in the core type C.
-template <class C, class S>
-C core_as(const S& shape, const detail::Placement& at) {
-  if constexpr (std::is_same_v<C, detail::SegmentCore>) {
-    return detail::core_of<C>(shape, at);
-  } else {
-    return detail::core_of(shape, at);
-  }
+template <class P>
+Kernels kernels_on(const P& p) {
+  return {[p](const ContactOptions& o) { return detail::core_contact(p, o); }, [p] { return detail::core_distance(p); },
+          [p] { return detail::core_overlap(p); }};
 }
-template <class>
-using EightSlots = detail::Core;
 
-// The cores' methods on a pair of core shapes, each core in the slots `Cores` gives its kind:
-// detail::PairCore's, as the queries take them, or eight for every kind.
-template <template <class> class Cores = detail::PairCore>
-Kernels core_kernels(const Shape& a, const Shape& b) {
+// The cores' methods on a pair of core shapes, the cores as the queries take them
+// (detail::core_pair()), or in eight slots for every kind where `eight_slots`. The kernels read the
+// shapes' polygon outlines: they hold for as long as the shapes do.
+Kernels core_kernels(const Shape& a, const Shape& b, bool eight_slots = false) {
   return std::visit(
-      [](const auto& x, const auto& y) -> Kernels {
+      [eight_slots](const auto& x, const auto& y) -> Kernels {
         using X = std::decay_t<decltype(x)>;
         using Y = std::decay_t<decltype(y)>;
         if constexpr (std::is_same_v<X, Ellipse> || std::is_same_v<Y, Ellipse>) {
           throw std::logic_error("not a pair of core shapes");
         } else {
-          detail::CorePairOf<Cores<X>, Cores<Y>> p{
-              core_as<Cores<X>>(x, {}),
-              core_as<Cores<Y>>(y, detail::Placement::of(y.center, orientation_of(y), x.center, orientation_of(x))),
-              detail::Rotation<double>::of(orientation_of(x)), x.center};
+          if (!eight_slots) return kernels_on(detail::core_pair(x, orientation_of(x), y, orientation_of(y)));
+          const detail::Placement at = detail::Placement::of(y.center, orientation_of(y), x.center, orientation_of(x));
+          detail::CorePairOf<detail::Core, detail::Core> p{detail::core_of(x, {}), detail::core_of(y, at),
+                                                           detail::Rotation<double>::of(orientation_of(x)), x.center};
           detail::set_axes(p.a);
           detail::set_axes(p.b);
-          return {[p](const ContactOptions& o) { return detail::core_contact(p, o); },
-                  [p] { return detail::core_distance(p); }, [p] { return detail::core_overlap(p); }};
+          return kernels_on(p);
         }
       },
       a, b);
@@ -463,10 +456,11 @@ void expect_same(const Contact& got, const Contact& want, const std::string& wha
   }
 }
 
-// A capsule's or a segment's core in two slots (as the queries take it) against the same core in
-// eight, the slots every other core shape takes: the same contact (with and without a limit),
-// distance and verdict on every family with a capsule or a segment.
-TEST(CorePairs, TwoSlotCoresAreTheEightSlotCores) {
+// The cores as the queries take them against eight slots for every core: a capsule's or a segment's
+// core in two slots, and against one, a rectangle's or a polygon's read in its own frame (A's). The
+// same contact (with and without a limit), distance and verdict on every family with a capsule or a
+// segment.
+TEST(CorePairs, QueriesCoresAreTheEightSlotCores) {
   const auto segment_like = [](Form k) { return k == Form::segment || is_one_of(testing::kCapsuleKinds, k); };
   int compared = 0;
   for (const CoreFamily& f : core_families()) {
@@ -474,7 +468,7 @@ TEST(CorePairs, TwoSlotCoresAreTheEightSlotCores) {
     int k = 0;
     for (const CoreCase& c : cases_of(f)) {
       const std::string what = f.name + " case " + std::to_string(k++);
-      const Kernels two = core_kernels(c.a, c.b), eight = core_kernels<EightSlots>(c.a, c.b);
+      const Kernels two = core_kernels(c.a, c.b), eight = core_kernels(c.a, c.b, true);
       for (const double limit : {HUGE_VAL, 0.0}) {
         expect_same(two.contact({.max_separation = limit}), eight.contact({.max_separation = limit}), what);
       }

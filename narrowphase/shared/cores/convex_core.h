@@ -118,6 +118,36 @@ struct BasicCore : CoreCount<Slots> {
 using Core = BasicCore<kMaxPolygonVertices>;
 using SegmentCore = BasicCore<2>;
 
+// A rectangle's or a polygon's core read in its own frame, as the pair's A takes it against a capsule
+// or a segment: nothing to place and no axes to set, a polygon's vertices and normals its outline's
+// (read in place) and a rectangle's four built from its half extents. Its axes are its faces, which
+// best_axis() measures one at a time with the products and sums an eight-slot core's lanes take, so
+// that the pair's contact, distance and verdict are an eight-slot core's to the bit.
+template <class Shape>
+struct OwnFrameCore {
+  using Slots = std::conditional_t<std::is_same_v<Shape, Rect>, std::array<Vec2, 4>,
+                                   const std::array<Vec2, kMaxPolygonVertices>&>;
+  Slots v, n;
+  std::conditional_t<std::is_same_v<Shape, Rect>, std::array<double, 4>, const std::array<double, kMaxPolygonVertices>&>
+      offsets;  // each face's n.v
+  int count;
+  double radius;
+  Discs discs;
+
+  int faces() const { return count; }
+  int axes() const { return count; }
+  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
+  // The largest coordinate of a vertex, by magnitude (BasicCore::extent()'s).
+  double extent() const {
+    double reach = 0.0;
+    for (const Vec2& p : v) reach = std::max(reach, std::max(std::abs(p.x()), std::abs(p.y())));
+    return reach;
+  }
+};
+template <class C>
+constexpr bool kOwnFrame = std::is_same_v<C, OwnFrameCore<Rect>> || std::is_same_v<C, OwnFrameCore<ConvexPolygon>>;
+
 // Where the point w lies along the face from v0 to v1 of outward normal n: over it (0, between its
 // side planes), before v0 (-1) or beyond v1 (1).
 inline int along_face(const Vec2& n, const Vec2& v0, const Vec2& v1, const Vec2& w) {
@@ -213,6 +243,19 @@ C core_of(const Capsule& c, const Placement& at);
 template <class C = Core>
 C core_of(const Segment& s, const Placement& at);
 Core core_of(const Circle& c, const Placement& at);
+inline OwnFrameCore<Rect> own_frame_core(const Rect& r) {
+  const double hx = r.half_extents.x(), hy = r.half_extents.y();
+  return {{{{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}}},
+          {{{0, -1}, {1, 0}, {0, 1}, {-1, 0}}},
+          {hy, hx, hy, hx},
+          4,
+          0.0,
+          discs_of(r)};
+}
+inline OwnFrameCore<ConvexPolygon> own_frame_core(const ConvexPolygon& p) {
+  const PolygonOutline& o = *p.outline;
+  return {o.vertices, o.normals, o.offsets, o.count, o.radius, discs_of(p)};
+}
 
 // The core a pair of cores takes for a shape: a capsule's and a segment's in two slots.
 template <class A>
@@ -223,6 +266,23 @@ PairCore<A> pair_core_of(const A& shape, const Placement& at) {
     return core_of<SegmentCore>(shape, at);
   } else {
     return core_of(shape, at);
+  }
+}
+
+// The core a pair of cores takes for its shape A against B: a rectangle's or a polygon's read in its
+// own frame against a capsule or a segment, whose few vertices its faces' axes take one at a time.
+template <class A, class B>
+using FirstCore = std::conditional_t<(std::is_same_v<A, Rect> ||
+                                      std::is_same_v<A, ConvexPolygon>)&&std::is_same_v<PairCore<B>, SegmentCore>,
+                                     OwnFrameCore<A>, PairCore<A>>;
+template <class A, class B>
+FirstCore<A, B> first_core_of(const A& shape) {
+  if constexpr (kOwnFrame<FirstCore<A, B>>) {
+    return own_frame_core(shape);
+  } else {
+    PairCore<A> c = pair_core_of(shape, Placement{});
+    set_axes(c);
+    return c;
   }
 }
 
@@ -252,16 +312,16 @@ struct CorePairOf {
 
 // The pair, B placed in A's frame by `at`; `swapped`: the caller gave B first (CorePairOf::swapped).
 template <class A, class B>
-CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
-                                               bool swapped = false) {
-  CorePairOf<PairCore<A>, PairCore<B>> p{pair_core_of(a, Placement{}), pair_core_of(b, at), Rotation<double>::of(ao),
-                                         a.center, swapped};
-  set_axes(p.a);
+CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
+                                                   bool swapped = false) {
+  CorePairOf<FirstCore<A, B>, PairCore<B>> p{first_core_of<A, B>(a), pair_core_of(b, at), Rotation<double>::of(ao),
+                                             a.center, swapped};
   set_axes(p.b);
   return p;
 }
 template <class A, class B>
-CorePairOf<PairCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
+CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b,
+                                                   const Orientation& bo) {
   return core_pair(a, ao, b, Placement::of(b.center, bo, a.center, ao));
 }
 

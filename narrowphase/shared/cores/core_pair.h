@@ -42,25 +42,62 @@ struct Axes {
   bool b_best() const { return of_b.s > of_a.s; }
   const Axis& best() const { return b_best() ? of_b : of_a; }
 };
-// Core y's best axis against x (BestAxis): an eight-slot core's in SIMD lanes, a segment's four
-// one at a time with the same products, sums and minima, so that the two agree to the bit.
+// Core y's least and greatest projections on the direction (ax, ay), and the first vertex at each.
+struct Extremes {
+  double least, most;
+  int at_least = 0, at_most = 0;
+};
+template <class Y>
+Extremes extremes_along(double ax, double ay, const Y& y) {
+  const double first = ax * y.v[0].x() + ay * y.v[0].y();
+  Extremes e{first, first};
+  for (int j = 1; j < y.count; ++j) {
+    const double p = ax * y.v[j].x() + ay * y.v[j].y();
+    e.at_least = p < e.least ? j : e.at_least;
+    e.at_most = p > e.most ? j : e.at_most;
+    e.least = std::min(e.least, p);
+    e.most = std::max(e.most, p);
+  }
+  return e;
+}
+
+// Core y's best axis against x (BestAxis): an eight-slot core's in SIMD lanes, the others' one at a
+// time with the same products, sums and minima, so that they agree to the bit. A segment's four
+// axes come in opposite pairs (its faces' normals, then its ends' directions, each the other
+// negated to the bit), so y's least projection on one is its greatest on the other negated; a
+// core in its own frame takes its faces' offsets n.v as set_axes() computes them.
+template <class X>
+constexpr bool axes_in_lanes() {
+  if constexpr (kOwnFrame<X>) {
+    return false;
+  } else {
+    return X::kSlots != 2;
+  }
+}
 template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
-  if constexpr (X::kSlots != 2) {
+  if constexpr (axes_in_lanes<X>()) {
     return best_axis(x, y.x.data(), y.y.data(), y.count, stop);
   } else {
     BestAxis best;
-    for (int i = 0; i < X::kAxes; ++i) {
-      double least = x.ax[i] * y.x[0] + x.ay[i] * y.y[0];
-      int vertex = 0;
-      for (int j = 1; j < y.count; ++j) {
-        const double p = x.ax[i] * y.x[j] + x.ay[i] * y.y[j];
-        vertex = p < least ? j : vertex;
-        least = std::min(least, p);
-      }
-      const double s = least - x.ad[i];
-      if (s > stop) return {s, i, vertex};
+    const auto take = [&](int i, double s, int vertex) {
       if (s > best.s) best = {s, i, vertex};
+      return s > stop;
+    };
+    if constexpr (kOwnFrame<X>) {
+      for (int i = 0; i < x.count; ++i) {
+        const Extremes e = extremes_along(x.n[i].x(), x.n[i].y(), y);
+        if (take(i, e.least - x.offsets[i], e.at_least)) return {e.least - x.offsets[i], i, e.at_least};
+      }
+    } else {
+      const Extremes face = extremes_along(x.ax[0], x.ay[0], y), end = extremes_along(x.ax[3], x.ay[3], y);
+      const std::array<BestAxis, 4> axes{{{face.least - x.ad[0], 0, face.at_least},
+                                          {-face.most - x.ad[1], 1, face.at_most},
+                                          {-end.most - x.ad[2], 2, end.at_most},
+                                          {end.least - x.ad[3], 3, end.at_least}}};
+      for (const BestAxis& a : axes) {
+        if (take(a.axis, a.s, a.vertex)) return a;
+      }
     }
     return best;
   }
