@@ -63,7 +63,21 @@ constexpr std::uint32_t feature_id(FeatureKind kind, int first, int second) {
 /// The kind of a feature id.
 constexpr FeatureKind feature_kind(std::uint32_t id) { return static_cast<FeatureKind>(id >> 16); }
 /// The id of the same features for the pair (B, A).
-std::uint32_t swapped_feature(std::uint32_t id);
+// A face of A and a face of B trade kinds (1 and 2, the same two bits flipped); two corners trade
+// places; a curved point has no features. Inline: every contact of a pair given in the other order
+// renames its points' features.
+constexpr std::uint32_t swapped_feature(std::uint32_t id) {
+  switch (feature_kind(id)) {
+    case FeatureKind::face_of_a:
+    case FeatureKind::face_of_b:
+      return id ^ 3u << 16;
+    case FeatureKind::corner_corner:
+      return (id & 0xffff0000u) | (id & 0xffu) << 8 | (id >> 8 & 0xffu);
+    case FeatureKind::curved:
+      break;
+  }
+  return id;
+}
 
 /// One point of a contact manifold.
 struct ContactPoint {

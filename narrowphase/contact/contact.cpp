@@ -2,21 +2,6 @@
 
 namespace collide2d {
 
-// A face of A and a face of B trade kinds (1 and 2, the same two bits flipped); two corners trade
-// places; a curved point has no features.
-std::uint32_t swapped_feature(std::uint32_t id) {
-  switch (feature_kind(id)) {
-    case FeatureKind::face_of_a:
-    case FeatureKind::face_of_b:
-      return id ^ 3u << 16;
-    case FeatureKind::corner_corner:
-      return (id & 0xffff0000u) | (id & 0xffu) << 8 | (id >> 8 & 0xffu);
-    case FeatureKind::curved:
-      break;
-  }
-  return id;
-}
-
 // The points past the manifold's size are unset: only the manifold's own are turned round.
 Contact Contact::swapped() const {
   Contact out = *this;

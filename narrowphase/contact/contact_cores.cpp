@@ -87,7 +87,10 @@ Contact on_face(const P& p, bool x_is_a, int i, double s, const Clipped& main, c
   const double keep = std::max(out.separation, 0.0) + options.margin;
   int size = 0;
   for (int k = 0; k < c.count; ++k) {
-    if (c.kept[k].b - radii(p) <= keep) out.manifold[size++] = point(c.kept[k]);
+    const Clipped& q = c.kept[k];
+    // The main point is most often a kept one: written once.
+    const bool is_main = q.id == main.id && q.b == main.b && q.on_y == main.on_y;
+    if (q.b - radii(p) <= keep) out.manifold[size++] = is_main ? first : point(q);
   }
   out.manifold_size = std::max(size, 1);
   return out;

@@ -18,19 +18,21 @@ namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-detail::BestAxis best_axis(const detail::Core& x, const double* y_x, const double* y_y, int y_count, double stop) {
-  const hn::CappedTag<double, kMaxPolygonVertices> d;
+template <std::size_t N>
+detail::BestAxis best_axis(const double* axes_x, const double* axes_y, const double* offsets, const Vec2* y,
+                           int y_count, double stop) {
+  const hn::CappedTag<double, N> d;
   detail::BestAxis best;
-  for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
-    const auto ax = hn::LoadU(d, x.ax.data() + k), ay = hn::LoadU(d, x.ay.data() + k);
-    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y_x[0])), hn::Mul(ay, hn::Set(d, y_y[0])));
+  for (std::size_t k = 0; k < N; k += hn::Lanes(d)) {
+    const auto ax = hn::LoadU(d, axes_x + k), ay = hn::LoadU(d, axes_y + k);
+    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y[0].x())), hn::Mul(ay, hn::Set(d, y[0].y())));
     auto vertex = hn::Zero(d);
     for (std::size_t j = 1; j < static_cast<std::size_t>(y_count); ++j) {
-      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y_x[j])), hn::Mul(ay, hn::Set(d, y_y[j])));
+      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y[j].x())), hn::Mul(ay, hn::Set(d, y[j].y())));
       vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
       least = hn::Min(least, p);
     }
-    const auto s = hn::Sub(least, hn::LoadU(d, x.ad.data() + k));
+    const auto s = hn::Sub(least, hn::LoadU(d, offsets + k));
     const auto take = [&](intptr_t lane) {
       const auto i = static_cast<std::size_t>(lane);
       best = {hn::ExtractLane(s, i), static_cast<int>(k + i), static_cast<int>(hn::ExtractLane(vertex, i))};
@@ -45,6 +47,14 @@ detail::BestAxis best_axis(const detail::Core& x, const double* y_x, const doubl
   }
   return best;
 }
+detail::BestAxis best_of_four_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
+                                   double stop) {
+  return best_axis<4>(ax, ay, ad, y, y_count, stop);
+}
+detail::BestAxis best_of_eight_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
+                                    double stop) {
+  return best_axis<kMaxPolygonVertices>(ax, ay, ad, y, y_count, stop);
+}
 
 }  // namespace collide2d::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -52,10 +62,16 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace collide2d::detail {
 
-HWY_EXPORT(best_axis);
+HWY_EXPORT(best_of_four_axes);
+HWY_EXPORT(best_of_eight_axes);
 
-BestAxis best_axis(const Core& x, const double* y_x, const double* y_y, int y_count, double stop) {
-  return HWY_DYNAMIC_DISPATCH(best_axis)(x, y_x, y_y, y_count, stop);
+BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLanes<4>& ad, const Vec2* y, int y_count,
+                   double stop) {
+  return HWY_DYNAMIC_DISPATCH(best_of_four_axes)(ax.data(), ay.data(), ad.data(), y, y_count, stop);
+}
+BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
+                   const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop) {
+  return HWY_DYNAMIC_DISPATCH(best_of_eight_axes)(ax.data(), ay.data(), ad.data(), y, y_count, stop);
 }
 
 }  // namespace collide2d::detail

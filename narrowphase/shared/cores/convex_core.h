@@ -140,6 +140,7 @@ struct OwnFrameCore {
   int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
   // The largest coordinate of a vertex, by magnitude (BasicCore::extent()'s).
   double extent() const {
+    if constexpr (std::is_same_v<Shape, Rect>) return std::max(v[2].x(), v[2].y());  // (hx, hy)
     double reach = 0.0;
     for (const Vec2& p : v) reach = std::max(reach, std::max(std::abs(p.x()), std::abs(p.y())));
     return reach;
@@ -222,14 +223,19 @@ inline double radius_of(const Capsule& c) { return c.radius; }
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
-// vertex there. Every axis of an eight-slot core at once in SIMD lanes (best_axis.cpp), y's vertices
-// given by their coordinates; x has an axis.
+// vertex there. Four or eight axes at once in SIMD lanes (best_axis.cpp), given by their
+// directions and offsets apart, y's `y_count` vertices by y.
 struct BestAxis {
   double s = -std::numeric_limits<double>::infinity();
   int axis = 0;
   int vertex = 0;
 };
-BestAxis best_axis(const Core& x, const double* y_x, const double* y_y, int y_count, double stop);
+template <std::size_t N>
+using AxisLanes = std::array<double, N>;
+BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLanes<4>& ad, const Vec2* y, int y_count,
+                   double stop);
+BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
+                   const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop);
 
 // Sets the core's axes (Core::ax, ay, ad), which a pair of cores needs and a core against an
 // ellipse does not.
@@ -280,9 +286,7 @@ FirstCore<A, B> first_core_of(const A& shape) {
   if constexpr (kOwnFrame<FirstCore<A, B>>) {
     return own_frame_core(shape);
   } else {
-    PairCore<A> c = pair_core_of(shape, Placement{});
-    set_axes(c);
-    return c;
+    return pair_core_of(shape, Placement{});
   }
 }
 
@@ -316,6 +320,7 @@ CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation
                                                    bool swapped = false) {
   CorePairOf<FirstCore<A, B>, PairCore<B>> p{first_core_of<A, B>(a), pair_core_of(b, at), Rotation<double>::of(ao),
                                              a.center, swapped};
+  if constexpr (!kOwnFrame<FirstCore<A, B>>) set_axes(p.a);
   set_axes(p.b);
   return p;
 }

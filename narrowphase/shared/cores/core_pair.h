@@ -42,17 +42,17 @@ struct Axes {
   bool b_best() const { return of_b.s > of_a.s; }
   const Axis& best() const { return b_best() ? of_b : of_a; }
 };
-// Core y's least and greatest projections on the direction (ax, ay), and the first vertex at each.
+// The least and greatest of a core's vertices' projections, and the first vertex at each.
 struct Extremes {
   double least, most;
   int at_least = 0, at_most = 0;
 };
-template <class Y>
-Extremes extremes_along(double ax, double ay, const Y& y) {
-  const double first = ax * y.v[0].x() + ay * y.v[0].y();
-  Extremes e{first, first};
-  for (int j = 1; j < y.count; ++j) {
-    const double p = ax * y.v[j].x() + ay * y.v[j].y();
+// Of the projections at(0) ... at(count - 1).
+template <class At>
+Extremes extremes_of(At at, int count) {
+  Extremes e{at(0), at(0)};
+  for (int j = 1; j < count; ++j) {
+    const double p = at(j);
     e.at_least = p < e.least ? j : e.at_least;
     e.at_most = p > e.most ? j : e.at_most;
     e.least = std::min(e.least, p);
@@ -60,46 +60,80 @@ Extremes extremes_along(double ax, double ay, const Y& y) {
   }
   return e;
 }
+// Core y's projections on the direction (ax, ay). A rectangle's four are two sums, as its
+// vertices' coordinates are its half extents negated or not (to the bit: rounding is symmetric).
+template <class Y>
+Extremes extremes_along(double ax, double ay, const Y& y) {
+  if constexpr (std::is_same_v<Y, OwnFrameCore<Rect>>) {
+    const double a = ax * y.v[2].x(), b = ay * y.v[2].y();
+    const std::array<double, 4> p{-(a + b), a - b, a + b, -(a - b)};
+    return extremes_of([&p](int j) { return p[j]; }, 4);
+  } else {
+    return extremes_of([&](int j) { return ax * y.v[j].x() + ay * y.v[j].y(); }, y.count);
+  }
+}
+// Core y's coordinates along x (k = 0) or y (k = 1): its projections on a rectangle's normals, whose
+// zero component adds nothing but a zero's sign.
+template <class Y>
+Extremes coordinate_extremes(const Y& y, int k) {
+  return extremes_of([&](int j) { return y.v[j][k]; }, y.count);
+}
 
-// Core y's best axis against x (BestAxis): an eight-slot core's in SIMD lanes, the others' one at a
-// time with the same products, sums and minima, so that they agree to the bit. A segment's four
-// axes come in opposite pairs (its faces' normals, then its ends' directions, each the other
-// negated to the bit), so y's least projection on one is its greatest on the other negated; a
-// core in its own frame takes its faces' offsets n.v as set_axes() computes them.
-template <class X>
+// Core y's best axis against x (BestAxis): an eight-slot core's, or a segment's against a polygon, in
+// SIMD lanes; the others' one at a time with the same products, sums and minima, so that they agree
+// to the bit. A segment's four axes come in opposite pairs (its faces' normals, then its ends'
+// directions, each the other negated to the bit), so y's least projection on one is its greatest on
+// the other negated; a core in its own frame takes its faces' offsets n.v as set_axes() computes
+// them.
+template <class X, class Y>
 constexpr bool axes_in_lanes() {
   if constexpr (kOwnFrame<X>) {
     return false;
   } else {
-    return X::kSlots != 2;
+    return X::kSlots != 2 || std::is_same_v<Y, Core> || std::is_same_v<Y, OwnFrameCore<ConvexPolygon>>;
   }
+}
+// The first of the axes axis(0) ... axis(count - 1) beyond `stop`, else the first of the greatest.
+template <class Axis>
+BestAxis pick_axis(int count, Axis axis, double stop) {
+  BestAxis best;
+  for (int i = 0; i < count; ++i) {
+    const BestAxis a = axis(i);
+    if (a.s > stop) return a;
+    if (a.s > best.s) best = a;
+  }
+  return best;
+}
+template <std::size_t N>
+BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
+  return pick_axis(
+      N, [&axes](int i) { return axes[i]; }, stop);
 }
 template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
-  if constexpr (axes_in_lanes<X>()) {
-    return best_axis(x, y.x.data(), y.y.data(), y.count, stop);
-  } else {
-    BestAxis best;
-    const auto take = [&](int i, double s, int vertex) {
-      if (s > best.s) best = {s, i, vertex};
-      return s > stop;
+  if constexpr (axes_in_lanes<X, Y>()) {
+    return best_axis(x.ax, x.ay, x.ad, y.v.data(), y.count, stop);
+  } else if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {
+    // The faces' normals (0, -1), (1, 0), (0, 1), (-1, 0).
+    const Extremes ex = coordinate_extremes(y, 0), ey = coordinate_extremes(y, 1);
+    return pick_axis(std::array<BestAxis, 4>{{{-ey.most - x.offsets[0], 0, ey.at_most},
+                                              {ex.least - x.offsets[1], 1, ex.at_least},
+                                              {ey.least - x.offsets[2], 2, ey.at_least},
+                                              {-ex.most - x.offsets[3], 3, ex.at_most}}},
+                     stop);
+  } else if constexpr (kOwnFrame<X>) {
+    const auto face = [&](int i) {
+      const Extremes e = extremes_along(x.n[i].x(), x.n[i].y(), y);
+      return BestAxis{e.least - x.offsets[i], i, e.at_least};
     };
-    if constexpr (kOwnFrame<X>) {
-      for (int i = 0; i < x.count; ++i) {
-        const Extremes e = extremes_along(x.n[i].x(), x.n[i].y(), y);
-        if (take(i, e.least - x.offsets[i], e.at_least)) return {e.least - x.offsets[i], i, e.at_least};
-      }
-    } else {
-      const Extremes face = extremes_along(x.ax[0], x.ay[0], y), end = extremes_along(x.ax[3], x.ay[3], y);
-      const std::array<BestAxis, 4> axes{{{face.least - x.ad[0], 0, face.at_least},
-                                          {-face.most - x.ad[1], 1, face.at_most},
-                                          {-end.most - x.ad[2], 2, end.at_most},
-                                          {end.least - x.ad[3], 3, end.at_least}}};
-      for (const BestAxis& a : axes) {
-        if (take(a.axis, a.s, a.vertex)) return a;
-      }
-    }
-    return best;
+    return pick_axis(x.count, face, stop);
+  } else {
+    const Extremes face = extremes_along(x.ax[0], x.ay[0], y), end = extremes_along(x.ax[3], x.ay[3], y);
+    return pick_axis(std::array<BestAxis, 4>{{{face.least - x.ad[0], 0, face.at_least},
+                                              {-face.most - x.ad[1], 1, face.at_most},
+                                              {-end.most - x.ad[2], 2, end.at_most},
+                                              {end.least - x.ad[3], 3, end.at_least}}},
+                     stop);
   }
 }
 
