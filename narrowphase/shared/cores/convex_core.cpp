@@ -1,13 +1,10 @@
 #include "narrowphase/shared/cores/convex_core.h"
 
 #include <algorithm>
-#include <limits>
 #include <span>
 
 namespace collide2d::detail {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The core of `count` vertices from the shape's slots: a polygon's outline gives all of them (those
 // past the count repeating the first), so that the loops run a fixed length; the slots not given
@@ -36,27 +33,6 @@ C make(int count, std::span<const Vec2> vertices, std::span<const Vec2> normals,
 }
 
 }  // namespace
-
-template <class C>
-void set_axes(C& c) {
-  const int faces = c.faces(), axes = c.axes();
-  // Every slot in one loop of fixed length, the slots of no face set apart by a select.
-  for (int i = 0; i < C::kSlots; ++i) {
-    const bool face = i < faces;
-    const double nx = c.n[i].x(), ny = c.n[i].y();
-    c.ax[i] = face ? nx : 0.0, c.ay[i] = face ? ny : 0.0;
-    c.ad[i] = face ? nx * c.x[i] + ny * c.y[i] : kInf;  // n.v, as plane_of's
-  }
-  if (axes == faces) return;
-  // A segment's two ends, as plane_of() gives them: slot 2 the first end, facing back along the
-  // segment, slot 3 the second, facing on; their offsets written out rather than through a Plane,
-  // which the compiler builds in memory.
-  const Vec2 e = perp(c.n[0]);
-  c.ax[2] = -e.x(), c.ay[2] = -e.y(), c.ad[2] = -e.x() * c.x[0] + -e.y() * c.y[0];
-  c.ax[3] = e.x(), c.ay[3] = e.y(), c.ad[3] = e.x() * c.x[1] + e.y() * c.y[1];
-}
-template void set_axes(Core&);
-template void set_axes(SegmentCore&);
 
 Core core_of(const Rect& r, const Placement& at) {
   const double hx = r.half_extents.x(), hy = r.half_extents.y();

@@ -238,9 +238,25 @@ BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMa
                    const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop);
 
 // Sets the core's axes (Core::ax, ay, ad), which a pair of cores needs and a core against an
-// ellipse does not.
+// ellipse does not. Inline: a pair builds them on every query.
 template <class C>
-void set_axes(C& c);
+void set_axes(C& c) {
+  const int faces = c.faces(), axes = c.axes();
+  // Every slot in one loop of fixed length, the slots of no face set apart by a select.
+  for (int i = 0; i < C::kSlots; ++i) {
+    const bool face = i < faces;
+    const double nx = c.n[i].x(), ny = c.n[i].y();
+    c.ax[i] = face ? nx : 0.0, c.ay[i] = face ? ny : 0.0;
+    c.ad[i] = face ? nx * c.x[i] + ny * c.y[i] : std::numeric_limits<double>::infinity();  // n.v, as plane_of's
+  }
+  if (axes == faces) return;
+  // A segment's two ends, as plane_of() gives them: slot 2 the first end, facing back along the
+  // segment, slot 3 the second, facing on; their offsets written out rather than through a Plane,
+  // which the compiler builds in memory.
+  const Vec2 e = perp(c.n[0]);
+  c.ax[2] = -e.x(), c.ay[2] = -e.y(), c.ad[2] = -e.x() * c.x[0] + -e.y() * c.y[0];
+  c.ax[3] = e.x(), c.ay[3] = e.y(), c.ad[3] = e.x() * c.x[1] + e.y() * c.y[1];
+}
 
 Core core_of(const Rect& r, const Placement& at);
 Core core_of(const ConvexPolygon& p, const Placement& at);

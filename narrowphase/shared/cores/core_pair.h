@@ -60,14 +60,16 @@ Extremes extremes_of(At at, int count) {
   }
   return e;
 }
-// Core y's projections on the direction (ax, ay). A rectangle's four are two sums, as its
-// vertices' coordinates are its half extents negated or not (to the bit: rounding is symmetric).
+// Core y's projections on the direction (ax, ay). A rectangle's four are -s, d, s and -d for the
+// two sums s and d of its half extents' products (its vertices' coordinates are those negated or
+// not, and rounding is symmetric: the same bits), so the greatest is m, the larger of |s| and |d|,
+// and the least -m, each first at the first vertex that has it.
 template <class Y>
 Extremes extremes_along(double ax, double ay, const Y& y) {
   if constexpr (std::is_same_v<Y, OwnFrameCore<Rect>>) {
-    const double a = ax * y.v[2].x(), b = ay * y.v[2].y();
-    const std::array<double, 4> p{-(a + b), a - b, a + b, -(a - b)};
-    return extremes_of([&p](int j) { return p[j]; }, 4);
+    const double a = ax * y.v[2].x(), b = ay * y.v[2].y(), s = a + b, d = a - b;
+    const double m = std::max(std::abs(s), std::abs(d));
+    return {-m, m, s == m ? 0 : d == -m ? 1 : s == -m ? 2 : 3, s == -m ? 0 : d == m ? 1 : s == m ? 2 : 3};
   } else {
     return extremes_of([&](int j) { return ax * y.v[j].x() + ay * y.v[j].y(); }, y.count);
   }
