@@ -20,7 +20,7 @@ C make(int count, std::span<const Vec2> vertices, std::span<const Vec2> normals,
   c.center = at.offset;
   normals = normals.first(std::min(normals.size(), c.n.size()));
   const bool moves = at.moves();
-  // The axes' kernel reads all the slots. The coordinates apart are written from the vertex as
+  // The lanes read all the slots. The coordinates apart are written from the vertex as
   // computed, not read back from the vertex's slot, which would stall on the store.
   const auto put = [&c](std::size_t i, const Vec2& v) { c.v[i] = v, c.x[i] = v.x(), c.y[i] = v.y(); };
   const Vec2 first = moves ? at.point(vertices[0]) : vertices[0];

@@ -93,7 +93,9 @@ struct BasicCore : CoreCount<Slots> {
 
   // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
   std::array<Vec2, Slots> v;
-  std::array<double, Slots> x, y;  // v's coordinates apart, for the separating axes
+  // v's coordinates apart, for the lanes of the methods on an ellipse (face_supports.cpp,
+  // core_ellipse.cpp), set_axes() and extent().
+  std::array<double, Slots> x, y;
   std::array<Vec2, Slots> n;
   // The separating axes (the faces, then a segment's two ends, away from the other): directions
   // and offsets (the direction's dot product with the axis' point of the core) apart, for their
