@@ -63,11 +63,9 @@ Kernels core_kernels(const Shape& a, const Shape& b, bool eight_slots = false) {
         } else {
           if (!eight_slots) return kernels_on(detail::core_pair(x, orientation_of(x), y, orientation_of(y)));
           const detail::Placement at = detail::Placement::of(y.center, orientation_of(y), x.center, orientation_of(x));
-          detail::CorePairOf<detail::Core, detail::Core> p{detail::core_of(x, {}), detail::core_of(y, at),
-                                                           detail::Rotation<double>::of(orientation_of(x)), x.center};
-          detail::set_axes(p.a);
-          detail::set_axes(p.b);
-          return kernels_on(p);
+          return kernels_on(detail::CorePairOf<detail::Core, detail::Core>{
+              detail::core_of(x, {}), detail::core_of(y, at), detail::Rotation<double>::of(orientation_of(x)),
+              x.center});
         }
       },
       a, b);

@@ -94,13 +94,13 @@ struct BasicCore : CoreCount<Slots> {
   // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
   std::array<Vec2, Slots> v;
   // v's coordinates apart, for the lanes of the methods on an ellipse (face_supports.cpp,
-  // core_ellipse.cpp), set_axes() and extent().
+  // core_ellipse.cpp), the axes and extent().
   std::array<double, Slots> x, y;
   std::array<Vec2, Slots> n;
   // The separating axes (the faces, then a segment's two ends, away from the other): directions
   // and offsets (the direction's dot product with the axis' point of the core) apart, for their
   // vector kernel; past axes(), no direction and an infinite offset, so that no other core is
-  // ever found separated along them. Set by set_axes() for a pair of cores.
+  // ever found separated along them.
   std::array<double, kAxes> ax, ay, ad;
   double radius = 0.0;
   Discs discs{0.0, -1.0};      // about its own centre
@@ -239,27 +239,24 @@ BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLan
 BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
                    const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop);
 
-// Sets the core's axes (Core::ax, ay, ad), which a pair of cores needs and a core against an
-// ellipse does not. Inline: a pair builds them on every query.
+// A segment's two end axes (Core::ax, ay, ad slots 2 and 3), as plane_of() gives them: slot 2 the
+// first end, facing back along the segment, slot 3 the second, facing on; their offsets written
+// out rather than through a Plane, which the compiler builds in memory.
 template <class C>
-void set_axes(C& c) {
-  const int faces = c.faces(), axes = c.axes();
-  // Every slot in one loop of fixed length, the slots of no face set apart by a select.
-  for (int i = 0; i < C::kSlots; ++i) {
-    const bool face = i < faces;
-    const double nx = c.n[i].x(), ny = c.n[i].y();
-    c.ax[i] = face ? nx : 0.0, c.ay[i] = face ? ny : 0.0;
-    c.ad[i] = face ? nx * c.x[i] + ny * c.y[i] : std::numeric_limits<double>::infinity();  // n.v, as plane_of's
-  }
-  if (axes == faces) return;
-  // A segment's two ends, as plane_of() gives them: slot 2 the first end, facing back along the
-  // segment, slot 3 the second, facing on; their offsets written out rather than through a Plane,
-  // which the compiler builds in memory.
+void set_end_axes(C& c) {
   const Vec2 e = perp(c.n[0]);
   c.ax[2] = -e.x(), c.ay[2] = -e.y(), c.ad[2] = -e.x() * c.x[0] + -e.y() * c.y[0];
   c.ax[3] = e.x(), c.ay[3] = e.y(), c.ad[3] = e.x() * c.x[1] + e.y() * c.y[1];
 }
 
+// Fills an eight-slot core's vertices, their coordinates apart, its normals (those past
+// `normal_count` zero) and its faces' axes from a shape's slots placed by `at`: every slot at once
+// in SIMD lanes (place_core.cpp).
+void place_slots(const std::array<Vec2, kMaxPolygonVertices>& vertices,
+                 const std::array<Vec2, kMaxPolygonVertices>& normals, int normal_count, int faces, const Placement& at,
+                 Core& c);
+
+// Every core comes with its axes (Core::ax, ay, ad), which a pair of cores reads on every query.
 Core core_of(const Rect& r, const Placement& at);
 Core core_of(const ConvexPolygon& p, const Placement& at);
 template <class C = Core>
@@ -336,11 +333,7 @@ struct CorePairOf {
 template <class A, class B>
 CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
                                                    bool swapped = false) {
-  CorePairOf<FirstCore<A, B>, PairCore<B>> p{first_core_of<A, B>(a), pair_core_of(b, at), Rotation<double>::of(ao),
-                                             a.center, swapped};
-  if constexpr (!kOwnFrame<FirstCore<A, B>>) set_axes(p.a);
-  set_axes(p.b);
-  return p;
+  return {first_core_of<A, B>(a), pair_core_of(b, at), Rotation<double>::of(ao), a.center, swapped};
 }
 template <class A, class B>
 CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b,

@@ -85,8 +85,8 @@ Extremes coordinate_extremes(const Y& y, int k) {
 // SIMD lanes; the others' one at a time with the same products, sums and minima, so that they agree
 // to the bit. A segment's four axes come in opposite pairs (its faces' normals, then its ends'
 // directions, each the other negated to the bit), so y's least projection on one is its greatest on
-// the other negated; a core in its own frame takes its faces' offsets n.v as set_axes() computes
-// them.
+// the other negated; a core in its own frame takes its faces' offsets n.v as the
+// axes' lanes compute them.
 template <class X, class Y>
 constexpr bool axes_in_lanes() {
   if constexpr (kOwnFrame<X>) {
