@@ -205,9 +205,9 @@ template Contact core_contact(const CorePairOf<Core, SegmentCore>&, const Contac
 template Contact core_contact(const CorePairOf<SegmentCore, Core>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<SegmentCore, SegmentCore>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<OwnFrameCore<Rect>, SegmentCore>&, const ContactOptions&);
+template Contact core_contact(const CorePairOf<OwnFrameCore<Rect>, Core>&, const ContactOptions&);
 template Contact core_contact(const CorePairOf<OwnFrameCore<ConvexPolygon>, SegmentCore>&, const ContactOptions&);
-template Contact core_face_contact(const CorePairOf<Core, Core>&, int, const ContactOptions&);
-template Contact core_face_contact(const CorePairOf<Core, SegmentCore>&, int, const ContactOptions&);
+template Contact core_contact(const CorePairOf<OwnFrameCore<ConvexPolygon>, Core>&, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<SegmentCore, Core>&, int, const ContactOptions&);
 template Contact core_face_contact(const CorePairOf<SegmentCore, SegmentCore>&, int, const ContactOptions&);
 

@@ -111,6 +111,8 @@ template DistanceResult core_distance(const CorePairOf<Core, SegmentCore>&);
 template DistanceResult core_distance(const CorePairOf<SegmentCore, Core>&);
 template DistanceResult core_distance(const CorePairOf<SegmentCore, SegmentCore>&);
 template DistanceResult core_distance(const CorePairOf<OwnFrameCore<Rect>, SegmentCore>&);
+template DistanceResult core_distance(const CorePairOf<OwnFrameCore<Rect>, Core>&);
 template DistanceResult core_distance(const CorePairOf<OwnFrameCore<ConvexPolygon>, SegmentCore>&);
+template DistanceResult core_distance(const CorePairOf<OwnFrameCore<ConvexPolygon>, Core>&);
 
 }  // namespace collide2d::detail

@@ -14,6 +14,8 @@ template bool core_overlap(const CorePairOf<Core, SegmentCore>&);
 template bool core_overlap(const CorePairOf<SegmentCore, Core>&);
 template bool core_overlap(const CorePairOf<SegmentCore, SegmentCore>&);
 template bool core_overlap(const CorePairOf<OwnFrameCore<Rect>, SegmentCore>&);
+template bool core_overlap(const CorePairOf<OwnFrameCore<Rect>, Core>&);
 template bool core_overlap(const CorePairOf<OwnFrameCore<ConvexPolygon>, SegmentCore>&);
+template bool core_overlap(const CorePairOf<OwnFrameCore<ConvexPolygon>, Core>&);
 
 }  // namespace collide2d::detail

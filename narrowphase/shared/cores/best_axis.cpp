@@ -18,13 +18,14 @@ namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-template <std::size_t N>
-detail::BestAxis best_axis(const double* axes_x, const double* axes_y, const double* offsets, const Vec2* y,
-                           int y_count, double stop) {
+// The axes' directions from `load(d, k, ax, ay)`, lanes k on.
+template <std::size_t N, class Load>
+detail::BestAxis best_axis(Load load, const double* offsets, const Vec2* y, int y_count, double stop) {
   const hn::CappedTag<double, N> d;
   detail::BestAxis best;
   for (std::size_t k = 0; k < N; k += hn::Lanes(d)) {
-    const auto ax = hn::LoadU(d, axes_x + k), ay = hn::LoadU(d, axes_y + k);
+    hn::Vec<decltype(d)> ax, ay;
+    load(d, k, ax, ay);
     auto least = hn::Add(hn::Mul(ax, hn::Set(d, y[0].x())), hn::Mul(ay, hn::Set(d, y[0].y())));
     auto vertex = hn::Zero(d);
     for (std::size_t j = 1; j < static_cast<std::size_t>(y_count); ++j) {
@@ -47,13 +48,52 @@ detail::BestAxis best_axis(const double* axes_x, const double* axes_y, const dou
   }
   return best;
 }
+// The directions' coordinates apart.
+template <std::size_t N>
+detail::BestAxis best_of_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
+                              double stop) {
+  const auto load = [ax, ay](auto d, std::size_t k, auto& x, auto& y) {
+    x = hn::LoadU(d, ax + k), y = hn::LoadU(d, ay + k);
+  };
+  return best_axis<N>(load, ad, y, y_count, stop);
+}
 detail::BestAxis best_of_four_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
                                    double stop) {
-  return best_axis<4>(ax, ay, ad, y, y_count, stop);
+  return best_of_axes<4>(ax, ay, ad, y, y_count, stop);
 }
 detail::BestAxis best_of_eight_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
                                     double stop) {
-  return best_axis<kMaxPolygonVertices>(ax, ay, ad, y, y_count, stop);
+  return best_of_axes<kMaxPolygonVertices>(ax, ay, ad, y, y_count, stop);
+}
+// The directions as points, x and y in turn: a polygon outline's normals, read in place.
+detail::BestAxis best_of_eight_normals(const Vec2* normals, const double* ad, const Vec2* y, int y_count, double stop) {
+  const auto load = [normals](auto d, std::size_t k, auto& x, auto& y) {
+    hn::LoadInterleaved2(d, normals[k].data(), x, y);
+  };
+  return best_axis<kMaxPolygonVertices>(load, ad, y, y_count, stop);
+}
+
+// The least (or greatest, `most`) of the eight slots c and the first slot at it.
+template <class D>
+void extreme_of(D d, const double* c, bool most, double& value, int& slot) {
+  auto m = hn::LoadU(d, c);
+  for (std::size_t k = hn::Lanes(d); k < kMaxPolygonVertices; k += hn::Lanes(d)) {
+    m = most ? hn::Max(m, hn::LoadU(d, c + k)) : hn::Min(m, hn::LoadU(d, c + k));
+  }
+  const auto e = most ? hn::MaxOfLanes(d, m) : hn::MinOfLanes(d, m);
+  value = hn::GetLane(e);
+  for (std::size_t k = 0;; k += hn::Lanes(d)) {
+    const intptr_t at = hn::FindFirstTrue(d, hn::Eq(hn::LoadU(d, c + k), e));
+    if (at >= 0) return void(slot = static_cast<int>(k) + static_cast<int>(at));
+  }
+}
+void core_extremes(const detail::Core& c, detail::Extremes* out) {
+  const hn::CappedTag<double, kMaxPolygonVertices> d;
+  for (int k = 0; k < 2; ++k) {
+    const double* along = k == 0 ? c.x.data() : c.y.data();
+    extreme_of(d, along, false, out[k].least, out[k].at_least);
+    extreme_of(d, along, true, out[k].most, out[k].at_most);
+  }
 }
 
 }  // namespace collide2d::HWY_NAMESPACE
@@ -64,6 +104,8 @@ namespace collide2d::detail {
 
 HWY_EXPORT(best_of_four_axes);
 HWY_EXPORT(best_of_eight_axes);
+HWY_EXPORT(best_of_eight_normals);
+HWY_EXPORT(core_extremes);
 
 BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLanes<4>& ad, const Vec2* y, int y_count,
                    double stop) {
@@ -72,6 +114,15 @@ BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLan
 BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
                    const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop) {
   return HWY_DYNAMIC_DISPATCH(best_of_eight_axes)(ax.data(), ay.data(), ad.data(), y, y_count, stop);
+}
+BestAxis best_axis(const std::array<Vec2, kMaxPolygonVertices>& normals, const AxisLanes<kMaxPolygonVertices>& ad,
+                   const Vec2* y, int y_count, double stop) {
+  return HWY_DYNAMIC_DISPATCH(best_of_eight_normals)(normals.data(), ad.data(), y, y_count, stop);
+}
+std::array<Extremes, 2> coordinate_extremes(const Core& c) {
+  std::array<Extremes, 2> out;
+  HWY_DYNAMIC_DISPATCH(core_extremes)(c, out.data());
+  return out;
 }
 
 }  // namespace collide2d::detail

@@ -120,11 +120,11 @@ struct BasicCore : CoreCount<Slots> {
 using Core = BasicCore<kMaxPolygonVertices>;
 using SegmentCore = BasicCore<2>;
 
-// A rectangle's or a polygon's core read in its own frame, as the pair's A takes it against a capsule
-// or a segment: nothing to place and no axes to set, a polygon's vertices and normals its outline's
-// (read in place) and a rectangle's four built from its half extents. Its axes are its faces, which
-// best_axis() measures one at a time with the products and sums an eight-slot core's lanes take, so
-// that the pair's contact, distance and verdict are an eight-slot core's to the bit.
+// A rectangle's or a polygon's core read in its own frame, as the pair's A takes it: nothing to
+// place and no axes to set, a polygon's vertices, normals and offsets its outline's (read in place)
+// and a rectangle's four vertices built from its half extents. Its axes are its faces, which
+// best_axis() measures with the products and sums an eight-slot core's lanes take, so that the
+// pair's contact, distance and verdict are an eight-slot core's to the bit.
 template <class Shape>
 struct OwnFrameCore {
   using Slots = std::conditional_t<std::is_same_v<Shape, Rect>, std::array<Vec2, 4>,
@@ -223,6 +223,15 @@ inline int count_of(const Capsule&) { return 2; }
 inline double radius_of(const ConvexPolygon& p) { return p.radius(); }
 inline double radius_of(const Capsule& c) { return c.radius; }
 
+// The least and greatest of a core's vertices' projections, and the first vertex at each.
+struct Extremes {
+  double least, most;
+  int at_least = 0, at_most = 0;
+};
+// An eight-slot core's least and greatest coordinates along x, then along y, in SIMD lanes
+// (best_axis.cpp): the slots past its count repeat its first vertex.
+std::array<Extremes, 2> coordinate_extremes(const Core& c);
+
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first
 // vertex there. Four or eight axes at once in SIMD lanes (best_axis.cpp), given by their
@@ -238,6 +247,9 @@ BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLan
                    double stop);
 BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
                    const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop);
+// The directions as a polygon outline's normals (PolygonOutline::normals), the offsets its faces'.
+BestAxis best_axis(const std::array<Vec2, kMaxPolygonVertices>& normals, const AxisLanes<kMaxPolygonVertices>& ad,
+                   const Vec2* y, int y_count, double stop);
 
 // A segment's two end axes (Core::ax, ay, ad slots 2 and 3), as plane_of() gives them: slot 2 the
 // first end, facing back along the segment, slot 3 the second, facing on; their offsets written
@@ -290,15 +302,14 @@ PairCore<A> pair_core_of(const A& shape, const Placement& at) {
   }
 }
 
-// The core a pair of cores takes for its shape A against B: a rectangle's or a polygon's read in its
-// own frame against a capsule or a segment, whose few vertices its faces' axes take one at a time.
-template <class A, class B>
-using FirstCore = std::conditional_t<(std::is_same_v<A, Rect> ||
-                                      std::is_same_v<A, ConvexPolygon>)&&std::is_same_v<PairCore<B>, SegmentCore>,
-                                     OwnFrameCore<A>, PairCore<A>>;
-template <class A, class B>
-FirstCore<A, B> first_core_of(const A& shape) {
-  if constexpr (kOwnFrame<FirstCore<A, B>>) {
+// The core a pair of cores takes for its shape A, which stays where it is: a rectangle's or a
+// polygon's read in its own frame.
+template <class A>
+using FirstCore =
+    std::conditional_t<std::is_same_v<A, Rect> || std::is_same_v<A, ConvexPolygon>, OwnFrameCore<A>, PairCore<A>>;
+template <class A>
+FirstCore<A> first_core_of(const A& shape) {
+  if constexpr (kOwnFrame<FirstCore<A>>) {
     return own_frame_core(shape);
   } else {
     return pair_core_of(shape, Placement{});
@@ -331,13 +342,12 @@ struct CorePairOf {
 
 // The pair, B placed in A's frame by `at`; `swapped`: the caller gave B first (CorePairOf::swapped).
 template <class A, class B>
-CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
-                                                   bool swapped = false) {
-  return {first_core_of<A, B>(a), pair_core_of(b, at), Rotation<double>::of(ao), a.center, swapped};
+CorePairOf<FirstCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Placement& at,
+                                                bool swapped = false) {
+  return {first_core_of(a), pair_core_of(b, at), Rotation<double>::of(ao), a.center, swapped};
 }
 template <class A, class B>
-CorePairOf<FirstCore<A, B>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b,
-                                                   const Orientation& bo) {
+CorePairOf<FirstCore<A>, PairCore<B>> core_pair(const A& a, const Orientation& ao, const B& b, const Orientation& bo) {
   return core_pair(a, ao, b, Placement::of(b.center, bo, a.center, ao));
 }
 

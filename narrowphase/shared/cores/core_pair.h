@@ -42,11 +42,6 @@ struct Axes {
   bool b_best() const { return of_b.s > of_a.s; }
   const Axis& best() const { return b_best() ? of_b : of_a; }
 };
-// The least and greatest of a core's vertices' projections, and the first vertex at each.
-struct Extremes {
-  double least, most;
-  int at_least = 0, at_most = 0;
-};
 // Of the projections at(0) ... at(count - 1).
 template <class At>
 Extremes extremes_of(At at, int count) {
@@ -74,23 +69,32 @@ Extremes extremes_along(double ax, double ay, const Y& y) {
     return extremes_of([&](int j) { return ax * y.v[j].x() + ay * y.v[j].y(); }, y.count);
   }
 }
-// Core y's coordinates along x (k = 0) or y (k = 1): its projections on a rectangle's normals, whose
-// zero component adds nothing but a zero's sign.
+// Core y's coordinates along x and y: its projections on a rectangle's normals, whose zero component
+// adds nothing but a zero's sign. An eight-slot core's in SIMD lanes.
 template <class Y>
-Extremes coordinate_extremes(const Y& y, int k) {
-  return extremes_of([&](int j) { return y.v[j][k]; }, y.count);
+std::array<Extremes, 2> coordinate_extremes(const Y& y) {
+  if constexpr (std::is_same_v<Y, Core>) {
+    return coordinate_extremes(y);
+  } else {
+    const auto along = [&y](int k) { return extremes_of([&](int j) { return y.v[j][k]; }, y.count); };
+    return {along(0), along(1)};
+  }
 }
 
-// Core y's best axis against x (BestAxis): an eight-slot core's, or a segment's against a polygon, in
-// SIMD lanes; the others' one at a time with the same products, sums and minima, so that they agree
-// to the bit. A segment's four axes come in opposite pairs (its faces' normals, then its ends'
-// directions, each the other negated to the bit), so y's least projection on one is its greatest on
-// the other negated; a core in its own frame takes its faces' offsets n.v as the
-// axes' lanes compute them.
+// Core y's best axis against x (BestAxis): an eight-slot core's or a polygon's in its own frame
+// against an eight-slot core, or a segment's against a polygon, in SIMD lanes; the others' one at a
+// time with the same products, sums and minima, so that they agree to the bit. A segment's four
+// axes come in opposite pairs (its faces' normals, then its ends' directions, each the other
+// negated to the bit), so y's least projection on one is its greatest on the other negated; a
+// polygon in its own frame takes its outline's offsets n.v, which are the lanes' (the slots past
+// its faces repeat its first, whose separation no later one beats), and a rectangle's faces' the
+// coordinates of y.
 template <class X, class Y>
 constexpr bool axes_in_lanes() {
-  if constexpr (kOwnFrame<X>) {
+  if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {
     return false;
+  } else if constexpr (kOwnFrame<X>) {
+    return std::is_same_v<Y, Core>;
   } else {
     return X::kSlots != 2 || std::is_same_v<Y, Core> || std::is_same_v<Y, OwnFrameCore<ConvexPolygon>>;
   }
@@ -113,11 +117,13 @@ BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
 }
 template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
-  if constexpr (axes_in_lanes<X, Y>()) {
+  if constexpr (axes_in_lanes<X, Y>() && kOwnFrame<X>) {
+    return best_axis(x.n, x.offsets, y.v.data(), y.count, stop);
+  } else if constexpr (axes_in_lanes<X, Y>()) {
     return best_axis(x.ax, x.ay, x.ad, y.v.data(), y.count, stop);
   } else if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {
     // The faces' normals (0, -1), (1, 0), (0, 1), (-1, 0).
-    const Extremes ex = coordinate_extremes(y, 0), ey = coordinate_extremes(y, 1);
+    const auto [ex, ey] = coordinate_extremes(y);
     return pick_axis(std::array<BestAxis, 4>{{{-ey.most - x.offsets[0], 0, ey.at_most},
                                               {ex.least - x.offsets[1], 1, ex.at_least},
                                               {ey.least - x.offsets[2], 2, ey.at_least},
