@@ -18,21 +18,16 @@ namespace collide2d::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The axes' directions from `load(d, k, ax, ay)`, lanes k on.
-template <std::size_t N, class Load>
-detail::BestAxis best_axis(Load load, const double* offsets, const Vec2* y, int y_count, double stop) {
+// The axes' directions from `load(d, k, ax, ay)`, lanes k on; the other core's least projection on
+// them and its first vertex there from `least_of(d, ax, ay, least, vertex)`.
+template <std::size_t N, class Load, class Least>
+detail::BestAxis best_axis(Load load, Least least_of, const double* offsets, double stop) {
   const hn::CappedTag<double, N> d;
   detail::BestAxis best;
   for (std::size_t k = 0; k < N; k += hn::Lanes(d)) {
-    hn::Vec<decltype(d)> ax, ay;
+    hn::Vec<decltype(d)> ax, ay, least, vertex;
     load(d, k, ax, ay);
-    auto least = hn::Add(hn::Mul(ax, hn::Set(d, y[0].x())), hn::Mul(ay, hn::Set(d, y[0].y())));
-    auto vertex = hn::Zero(d);
-    for (std::size_t j = 1; j < static_cast<std::size_t>(y_count); ++j) {
-      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y[j].x())), hn::Mul(ay, hn::Set(d, y[j].y())));
-      vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
-      least = hn::Min(least, p);
-    }
+    least_of(d, ax, ay, least, vertex);
     const auto s = hn::Sub(least, hn::LoadU(d, offsets + k));
     const auto take = [&](intptr_t lane) {
       const auto i = static_cast<std::size_t>(lane);
@@ -48,14 +43,40 @@ detail::BestAxis best_axis(Load load, const double* offsets, const Vec2* y, int 
   }
   return best;
 }
+// The `count` points y, one at a time.
+inline auto least_of_points(const Vec2* y, int count) {
+  return [y, count](auto d, auto ax, auto ay, auto& least, auto& vertex) {
+    least = hn::Add(hn::Mul(ax, hn::Set(d, y[0].x())), hn::Mul(ay, hn::Set(d, y[0].y())));
+    vertex = hn::Zero(d);
+    for (std::size_t j = 1; j < static_cast<std::size_t>(count); ++j) {
+      const auto p = hn::Add(hn::Mul(ax, hn::Set(d, y[j].x())), hn::Mul(ay, hn::Set(d, y[j].y())));
+      vertex = hn::IfThenElse(hn::Lt(p, least), hn::Set(d, static_cast<double>(j)), vertex);
+      least = hn::Min(least, p);
+    }
+  };
+}
+// A rectangle of half extents (hx, hy) about the origin, its vertices (-hx, -hy), (hx, -hy),
+// (hx, hy) and (-hx, hy): their projections -s, d, s and -d for the sums s and d of ax hx and
+// ay hy (rounding is symmetric, so the same bits), the least -max(|s|, |d|) at the first vertex
+// that has it.
+inline auto least_of_rect(double hx, double hy) {
+  return [hx, hy](auto d, auto ax, auto ay, auto& least, auto& vertex) {
+    const auto a = hn::Mul(ax, hn::Set(d, hx)), b = hn::Mul(ay, hn::Set(d, hy));
+    const auto s = hn::Add(a, b), t = hn::Sub(a, b), m = hn::Max(hn::Abs(s), hn::Abs(t));
+    least = hn::Neg(m);
+    const auto at = [d](double j) { return hn::Set(d, j); };
+    vertex = hn::IfThenElse(hn::Eq(s, m), at(0),
+                            hn::IfThenElse(hn::Eq(t, least), at(1), hn::IfThenElse(hn::Eq(s, least), at(2), at(3))));
+  };
+}
 // The directions' coordinates apart.
+inline auto load_apart(const double* ax, const double* ay) {
+  return [ax, ay](auto d, std::size_t k, auto& x, auto& y) { x = hn::LoadU(d, ax + k), y = hn::LoadU(d, ay + k); };
+}
 template <std::size_t N>
 detail::BestAxis best_of_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
                               double stop) {
-  const auto load = [ax, ay](auto d, std::size_t k, auto& x, auto& y) {
-    x = hn::LoadU(d, ax + k), y = hn::LoadU(d, ay + k);
-  };
-  return best_axis<N>(load, ad, y, y_count, stop);
+  return best_axis<N>(load_apart(ax, ay), least_of_points(y, y_count), ad, stop);
 }
 detail::BestAxis best_of_four_axes(const double* ax, const double* ay, const double* ad, const Vec2* y, int y_count,
                                    double stop) {
@@ -70,7 +91,12 @@ detail::BestAxis best_of_eight_normals(const Vec2* normals, const double* ad, co
   const auto load = [normals](auto d, std::size_t k, auto& x, auto& y) {
     hn::LoadInterleaved2(d, normals[k].data(), x, y);
   };
-  return best_axis<kMaxPolygonVertices>(load, ad, y, y_count, stop);
+  return best_axis<kMaxPolygonVertices>(load, least_of_points(y, y_count), ad, stop);
+}
+// Against a rectangle of half extents (hx, hy).
+detail::BestAxis best_of_eight_axes_on_rect(const double* ax, const double* ay, const double* ad, double hx, double hy,
+                                            double stop) {
+  return best_axis<kMaxPolygonVertices>(load_apart(ax, ay), least_of_rect(hx, hy), ad, stop);
 }
 
 // The least (or greatest, `most`) of the eight slots c and the first slot at it.
@@ -106,6 +132,7 @@ HWY_EXPORT(best_of_four_axes);
 HWY_EXPORT(best_of_eight_axes);
 HWY_EXPORT(best_of_eight_normals);
 HWY_EXPORT(core_extremes);
+HWY_EXPORT(best_of_eight_axes_on_rect);
 
 BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLanes<4>& ad, const Vec2* y, int y_count,
                    double stop) {
@@ -118,6 +145,11 @@ BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMa
 BestAxis best_axis(const std::array<Vec2, kMaxPolygonVertices>& normals, const AxisLanes<kMaxPolygonVertices>& ad,
                    const Vec2* y, int y_count, double stop) {
   return HWY_DYNAMIC_DISPATCH(best_of_eight_normals)(normals.data(), ad.data(), y, y_count, stop);
+}
+BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
+                   const AxisLanes<kMaxPolygonVertices>& ad, const Vec2& half_extents, double stop) {
+  return HWY_DYNAMIC_DISPATCH(best_of_eight_axes_on_rect)(ax.data(), ay.data(), ad.data(), half_extents.x(),
+                                                          half_extents.y(), stop);
 }
 std::array<Extremes, 2> coordinate_extremes(const Core& c) {
   std::array<Extremes, 2> out;

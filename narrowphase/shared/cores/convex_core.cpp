@@ -1,6 +1,7 @@
 #include "narrowphase/shared/cores/convex_core.h"
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 namespace collide2d::detail {
@@ -32,6 +33,7 @@ SegmentCore segment_core(const std::array<Vec2, 2>& ends, const Vec2& right, con
   for (std::size_t i = 0; i < 2; ++i) {
     const Vec2 v = moves ? at.point(ends[i]) : ends[i];
     c.v[i] = v, c.x[i] = v.x(), c.y[i] = v.y();
+    c.largest = std::max(c.largest, std::max(std::abs(v.x()), std::abs(v.y())));
   }
   c.n = {moves ? at.direction(right) : right, moves ? at.direction(left) : left};
   for (std::size_t i = 0; i < 2; ++i) {

@@ -94,7 +94,7 @@ struct BasicCore : CoreCount<Slots> {
   // Every slot is set by core_of(): left uninitialised here, as a pair is made on every query.
   std::array<Vec2, Slots> v;
   // v's coordinates apart, for the lanes of the methods on an ellipse (face_supports.cpp,
-  // core_ellipse.cpp), the axes and extent().
+  // core_ellipse.cpp), the axes and a rectangle's faces (coordinate_extremes()).
   std::array<double, Slots> x, y;
   std::array<Vec2, Slots> n;
   // The separating axes (the faces, then a segment's two ends, away from the other): directions
@@ -103,6 +103,7 @@ struct BasicCore : CoreCount<Slots> {
   // ever found separated along them.
   std::array<double, kAxes> ax, ay, ad;
   double radius = 0.0;
+  double largest = 0.0;        // extent()'s, set with the vertices
   Discs discs{0.0, -1.0};      // about its own centre
   Vec2 center = Vec2::Zero();  // its own centre, in the frame
 
@@ -111,11 +112,7 @@ struct BasicCore : CoreCount<Slots> {
   int next(int i) const { return i + 1 == this->count ? 0 : i + 1; }
   int prev(int i) const { return i == 0 ? this->count - 1 : i - 1; }
   // The largest coordinate of a vertex, by magnitude.
-  double extent() const {
-    std::array<double, Slots> reach;
-    for (int i = 0; i < Slots; ++i) reach[i] = std::max(std::abs(x[i]), std::abs(y[i]));
-    return tree_fold(reach, [](double l, double r) { return std::max(l, r); });
-  }
+  double extent() const { return largest; }
 };
 using Core = BasicCore<kMaxPolygonVertices>;
 using SegmentCore = BasicCore<2>;
@@ -247,6 +244,9 @@ BestAxis best_axis(const AxisLanes<4>& ax, const AxisLanes<4>& ay, const AxisLan
                    double stop);
 BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
                    const AxisLanes<kMaxPolygonVertices>& ad, const Vec2* y, int y_count, double stop);
+// Against a rectangle about the origin of these half extents, in place of y's vertices.
+BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMaxPolygonVertices>& ay,
+                   const AxisLanes<kMaxPolygonVertices>& ad, const Vec2& half_extents, double stop);
 // The directions as a polygon outline's normals (PolygonOutline::normals), the offsets its faces'.
 BestAxis best_axis(const std::array<Vec2, kMaxPolygonVertices>& normals, const AxisLanes<kMaxPolygonVertices>& ad,
                    const Vec2* y, int y_count, double stop);

@@ -119,6 +119,8 @@ template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
   if constexpr (axes_in_lanes<X, Y>() && kOwnFrame<X>) {
     return best_axis(x.n, x.offsets, y.v.data(), y.count, stop);
+  } else if constexpr (axes_in_lanes<X, Y>() && std::is_same_v<X, Core> && std::is_same_v<Y, OwnFrameCore<Rect>>) {
+    return best_axis(x.ax, x.ay, x.ad, y.v[2], stop);  // v[2] = (hx, hy)
   } else if constexpr (axes_in_lanes<X, Y>()) {
     return best_axis(x.ax, x.ay, x.ad, y.v.data(), y.count, stop);
   } else if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {

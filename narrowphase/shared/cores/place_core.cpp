@@ -35,6 +35,7 @@ void place_slots(const Vec2* vertices, const Vec2* normals, int normal_count, in
   const auto ox = hn::Set(d, at.offset.x()), oy = hn::Set(d, at.offset.y());
   const auto zero = hn::Zero(d), no_offset = hn::Set(d, std::numeric_limits<double>::infinity());
   const auto slot = hn::Iota(d, 0.0);
+  auto largest = zero;
   for (std::size_t k = 0; k < kMaxPolygonVertices; k += hn::Lanes(d)) {
     V x, y, mx, my;
     hn::LoadInterleaved2(d, vertices[k].data(), x, y);
@@ -46,6 +47,7 @@ void place_slots(const Vec2* vertices, const Vec2* normals, int normal_count, in
     const auto given = hn::Lt(at_k, hn::Set(d, static_cast<double>(normal_count)));
     const auto face = hn::Lt(at_k, hn::Set(d, static_cast<double>(faces)));
     mx = hn::IfThenElse(given, mx, zero), my = hn::IfThenElse(given, my, zero);
+    largest = hn::Max(largest, hn::Max(hn::Abs(x), hn::Abs(y)));
     hn::StoreU(x, d, c.x.data() + k), hn::StoreU(y, d, c.y.data() + k);
     hn::StoreInterleaved2(x, y, d, c.v[k].data());
     hn::StoreInterleaved2(mx, my, d, c.n[k].data());
@@ -54,6 +56,7 @@ void place_slots(const Vec2* vertices, const Vec2* normals, int normal_count, in
     const auto along = hn::Add(hn::Mul(mx, x), hn::Mul(my, y));  // n.v, as plane_of's
     hn::StoreU(hn::IfThenElse(face, along, no_offset), d, c.ad.data() + k);
   }
+  c.largest = hn::GetLane(hn::MaxOfLanes(d, largest));
 }
 
 }  // namespace collide2d::HWY_NAMESPACE
