@@ -81,39 +81,31 @@ std::array<Extremes, 2> coordinate_extremes(const Y& y) {
   }
 }
 
-// Core y's best axis against x (BestAxis): an eight-slot core's or a polygon's in its own frame
-// against an eight-slot core, or a segment's against a polygon, in SIMD lanes; the others' one at a
-// time with the same products, sums and minima, so that they agree to the bit. A segment's four
-// axes come in opposite pairs (its faces' normals, then its ends' directions, each the other
-// negated to the bit), so y's least projection on one is its greatest on the other negated; a
-// polygon in its own frame takes its outline's offsets n.v, which are the lanes' (the slots past
-// its faces repeat its first, whose separation no later one beats), and a rectangle's faces' the
-// coordinates of y.
+// Core y's best axis against x (BestAxis). In SIMD lanes: an eight-slot core's (against a rectangle
+// in its own frame, from its projections' two sums), a polygon's in its own frame (its outline's
+// normals and offsets n.v, which are the lanes': the slots past its faces repeat its first, whose
+// separation no later one beats) and a segment's against a polygon. One at a time, with the same
+// products, sums and minima, so that they agree to the bit: a rectangle's faces in its own frame
+// from y's coordinates, and a segment's four axes against a segment or a rectangle, which come in
+// opposite pairs (its faces' normals, then its ends' directions, each the other negated to the
+// bit), so that y's least projection on one is its greatest on the other negated.
 template <class X, class Y>
 constexpr bool axes_in_lanes() {
-  if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {
-    return false;
-  } else if constexpr (kOwnFrame<X>) {
-    return std::is_same_v<Y, Core>;
+  if constexpr (kOwnFrame<X>) {
+    return std::is_same_v<X, OwnFrameCore<ConvexPolygon>>;
   } else {
     return X::kSlots != 2 || std::is_same_v<Y, Core> || std::is_same_v<Y, OwnFrameCore<ConvexPolygon>>;
   }
 }
-// The first of the axes axis(0) ... axis(count - 1) beyond `stop`, else the first of the greatest.
-template <class Axis>
-BestAxis pick_axis(int count, Axis axis, double stop) {
+// The first of the axes beyond `stop`, else the first of the greatest.
+template <std::size_t N>
+BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
   BestAxis best;
-  for (int i = 0; i < count; ++i) {
-    const BestAxis a = axis(i);
+  for (const BestAxis& a : axes) {
     if (a.s > stop) return a;
     if (a.s > best.s) best = a;
   }
   return best;
-}
-template <std::size_t N>
-BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
-  return pick_axis(
-      N, [&axes](int i) { return axes[i]; }, stop);
 }
 template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
@@ -131,12 +123,6 @@ BestAxis best_axis(const X& x, const Y& y, double stop) {
                                               {ey.least - x.offsets[2], 2, ey.at_least},
                                               {-ex.most - x.offsets[3], 3, ex.at_most}}},
                      stop);
-  } else if constexpr (kOwnFrame<X>) {
-    const auto face = [&](int i) {
-      const Extremes e = extremes_along(x.n[i].x(), x.n[i].y(), y);
-      return BestAxis{e.least - x.offsets[i], i, e.at_least};
-    };
-    return pick_axis(x.count, face, stop);
   } else {
     const Extremes face = extremes_along(x.ax[0], x.ay[0], y), end = extremes_along(x.ax[3], x.ay[3], y);
     return pick_axis(std::array<BestAxis, 4>{{{face.least - x.ad[0], 0, face.at_least},
