@@ -151,7 +151,7 @@ BestAxis best_axis(const AxisLanes<kMaxPolygonVertices>& ax, const AxisLanes<kMa
   return HWY_DYNAMIC_DISPATCH(best_of_eight_axes_on_rect)(ax.data(), ay.data(), ad.data(), half_extents.x(),
                                                           half_extents.y(), stop);
 }
-std::array<Extremes, 2> coordinate_extremes(const Core& c) {
+std::array<Extremes, 2> coordinate_extremes_in_lanes(const Core& c) {
   std::array<Extremes, 2> out;
   HWY_DYNAMIC_DISPATCH(core_extremes)(c, out.data());
   return out;

@@ -227,7 +227,7 @@ struct Extremes {
 };
 // An eight-slot core's least and greatest coordinates along x, then along y, in SIMD lanes
 // (best_axis.cpp): the slots past its count repeat its first vertex.
-std::array<Extremes, 2> coordinate_extremes(const Core& c);
+std::array<Extremes, 2> coordinate_extremes_in_lanes(const Core& c);
 
 // Core y's greatest separation along an axis of core x (its least projection on the axis' direction
 // less the axis' offset), or the first beyond `stop`; the axis (a slot of Core::ax) and y's first

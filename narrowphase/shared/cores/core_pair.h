@@ -74,11 +74,22 @@ Extremes extremes_along(double ax, double ay, const Y& y) {
 template <class Y>
 std::array<Extremes, 2> coordinate_extremes(const Y& y) {
   if constexpr (std::is_same_v<Y, Core>) {
-    return coordinate_extremes(y);
+    return coordinate_extremes_in_lanes(y);
   } else {
     const auto along = [&y](int k) { return extremes_of([&](int j) { return y.v[j][k]; }, y.count); };
     return {along(0), along(1)};
   }
+}
+
+// The first of the axes beyond `stop`, else the first of the greatest.
+template <std::size_t N>
+BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
+  BestAxis best;
+  for (const BestAxis& a : axes) {
+    if (a.s > stop) return a;
+    if (a.s > best.s) best = a;
+  }
+  return best;
 }
 
 // Core y's best axis against x (BestAxis). In SIMD lanes: an eight-slot core's (against a rectangle
@@ -90,31 +101,11 @@ std::array<Extremes, 2> coordinate_extremes(const Y& y) {
 // opposite pairs (its faces' normals, then its ends' directions, each the other negated to the
 // bit), so that y's least projection on one is its greatest on the other negated.
 template <class X, class Y>
-constexpr bool axes_in_lanes() {
-  if constexpr (kOwnFrame<X>) {
-    return std::is_same_v<X, OwnFrameCore<ConvexPolygon>>;
-  } else {
-    return X::kSlots != 2 || std::is_same_v<Y, Core> || std::is_same_v<Y, OwnFrameCore<ConvexPolygon>>;
-  }
-}
-// The first of the axes beyond `stop`, else the first of the greatest.
-template <std::size_t N>
-BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
-  BestAxis best;
-  for (const BestAxis& a : axes) {
-    if (a.s > stop) return a;
-    if (a.s > best.s) best = a;
-  }
-  return best;
-}
-template <class X, class Y>
 BestAxis best_axis(const X& x, const Y& y, double stop) {
-  if constexpr (axes_in_lanes<X, Y>() && kOwnFrame<X>) {
+  if constexpr (std::is_same_v<X, OwnFrameCore<ConvexPolygon>>) {
     return best_axis(x.n, x.offsets, y.v.data(), y.count, stop);
-  } else if constexpr (axes_in_lanes<X, Y>() && std::is_same_v<X, Core> && std::is_same_v<Y, OwnFrameCore<Rect>>) {
+  } else if constexpr (std::is_same_v<X, Core> && std::is_same_v<Y, OwnFrameCore<Rect>>) {
     return best_axis(x.ax, x.ay, x.ad, y.v[2], stop);  // v[2] = (hx, hy)
-  } else if constexpr (axes_in_lanes<X, Y>()) {
-    return best_axis(x.ax, x.ay, x.ad, y.v.data(), y.count, stop);
   } else if constexpr (std::is_same_v<X, OwnFrameCore<Rect>>) {
     // The faces' normals (0, -1), (1, 0), (0, 1), (-1, 0).
     const auto [ex, ey] = coordinate_extremes(y);
@@ -123,6 +114,9 @@ BestAxis best_axis(const X& x, const Y& y, double stop) {
                                               {ey.least - x.offsets[2], 2, ey.at_least},
                                               {-ex.most - x.offsets[3], 3, ex.at_most}}},
                      stop);
+  } else if constexpr (std::is_same_v<X, Core> || std::is_same_v<Y, Core> ||
+                       std::is_same_v<Y, OwnFrameCore<ConvexPolygon>>) {
+    return best_axis(x.ax, x.ay, x.ad, y.v.data(), y.count, stop);
   } else {
     const Extremes face = extremes_along(x.ax[0], x.ay[0], y), end = extremes_along(x.ax[3], x.ay[3], y);
     return pick_axis(std::array<BestAxis, 4>{{{face.least - x.ad[0], 0, face.at_least},
