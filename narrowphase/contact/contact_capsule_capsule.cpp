@@ -340,8 +340,10 @@ Contact capsule_segment_direct(const Capsule& a, const Orientation& ao, const B&
 template <class B>
 Contact capsule_segment_contact(const Capsule& a, const Orientation& ao, const B& b, const Orientation& bo,
                                 const ContactOptions& options, bool swapped) {
-  const Contact out = capsule_segment_direct(a, ao, b, bo, options, swapped);
-  return out.manifold_size < 0 ? core_contact(a, ao, b, bo, options, swapped) : out;
+  // One named result, so that the kernel writes it in the caller's slot.
+  Contact out = capsule_segment_direct(a, ao, b, bo, options, swapped);
+  if (out.manifold_size < 0) out = core_contact(a, ao, b, bo, options, swapped);
+  return out;
 }
 
 template Contact capsule_segment_direct(const Capsule&, const Orientation&, const Capsule&, const Orientation&,

@@ -159,17 +159,13 @@ Contact end_contact(const P& p, bool x_is_a, const Axis& axis) {
   return x_is_a ? on(p.a, p.b) : on(p.b, p.a);
 }
 
-// The contact on the axis of greatest separation; where the two cores' best faces tie to 1e-9 of
-// the sum of their reaches, the manifold is A's (as contact_rect_rect keeps it, so that ids hold).
+// The contact on the best face; where the two cores' best faces tie to 1e-9 of the sum of their
+// reaches, the manifold is A's (as contact_rect_rect keeps it, so that ids hold). Every return is
+// the one named contact, so that it is built in the caller's slot rather than moved there.
 template <class P>
-Contact contact_of(const P& p, const Axes& axes, const ContactOptions& options) {
+Contact best_face_contact(const P& p, const Axes& axes, const ContactOptions& options) {
   const bool b_best = axes.b_best();
-  const Axis& best = axes.best();
-  if (best.face < 0) {
-    if (best.s > 0) return nearest_contact(p, nearest_features(p), options);
-    return end_contact(p, !b_best, best);
-  }
-  Contact out = face_contact(p, !b_best, best, options);
+  Contact out = face_contact(p, !b_best, axes.best(), options);
   const bool tie =
       b_best && axes.of_a.face >= 0 && axes.of_b.s - axes.of_a.s <= 1e-9 * (p.a.discs.reach + p.b.discs.reach);
   if (!tie || feature_kind(out.manifold[0].id) == FeatureKind::corner_corner) return out;
@@ -178,6 +174,15 @@ Contact contact_of(const P& p, const Axes& axes, const ContactOptions& options) 
   out.manifold = kept.manifold;
   out.manifold_size = kept.manifold_size;
   return out;
+}
+
+// The contact on the axis of greatest separation.
+template <class P>
+Contact contact_of(const P& p, const Axes& axes, const ContactOptions& options) {
+  const Axis& best = axes.best();
+  if (best.face >= 0) return best_face_contact(p, axes, options);
+  if (best.s > 0) return nearest_contact(p, nearest_features(p), options);
+  return end_contact(p, !axes.b_best(), best);
 }
 
 }  // namespace
