@@ -81,15 +81,20 @@ std::array<Extremes, 2> coordinate_extremes(const Y& y) {
   }
 }
 
-// The first of the axes beyond `stop`, else the first of the greatest.
+// The first of the axes beyond `stop`, else the first of the greatest, kept in selects: which axis
+// is the greatest is a coin toss, which a branch would mispredict.
 template <std::size_t N>
 BestAxis pick_axis(const std::array<BestAxis, N>& axes, double stop) {
-  BestAxis best;
-  for (const BestAxis& a : axes) {
-    if (a.s > stop) return a;
-    if (a.s > best.s) best = a;
+  double most = -std::numeric_limits<double>::infinity();
+  int k = -1;
+  for (int i = 0; i < static_cast<int>(N); ++i) {
+    const double s = axes[i].s;
+    if (s > stop) return axes[i];
+    const bool greater = s > most;
+    most = greater ? s : most;
+    k = greater ? i : k;
   }
-  return best;
+  return k < 0 ? BestAxis{} : axes[k];
 }
 
 // Core y's best axis against x (BestAxis). In SIMD lanes: an eight-slot core's (against a rectangle
