@@ -7,6 +7,7 @@
 
 #include <collide2d/kernels.h>
 #include "narrowphase/contact/contact_limit.h"
+#include "narrowphase/contact/core_circle.h"
 #include "narrowphase/pairs.h"
 #include "narrowphase/shared/cores/convex_core.h"
 #include "shapes/internal.h"
@@ -143,22 +144,11 @@ Contact held(const ChainSegment& a, const Orientation& ao, const Faces& f, const
   }
 }
 
+// The contact c of the segment, which is not empty and not on the segment's front face, under the
+// rules at its vertices; r is the shape's reference point.
 template <class B>
-Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo,
-                        const ContactOptions& options) {
-  const Vec2 r = reference_point(b, bo);
-  if (!in_front(a, ao, r)) return Contact::beyond(kInf);
-  // The segment's contact first: with a limit it ends soonest for the pairs apart.
-  const Contact c = detail::contact_of_kinds<detail::Kinds>(a.segment, ao, b, bo, options);
-  if (c.empty()) return c;
-  if constexpr (std::is_same_v<B, Circle>) {
-    // On the segment's front face the centre lies over the segment, in front of it. A convex
-    // neighbour's normal is the segment's turned by the vertex's angle t away from the segment, so
-    // the centre's height along it is cos t times its height over the segment less sin t times its
-    // distance from the vertex along the segment: never more, and the neighbour leaves it to the
-    // segment (owns()); the normal is the segment's (admitted()).
-    if (c.manifold[0].id == feature_id(FeatureKind::face_of_a, 0, 0)) return c;
-  }
+Contact at_a_vertex(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo, const Vec2& r,
+                    const Contact& c, const ContactOptions& options) {
   const Faces f = faces_of(a, ao);
   if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
@@ -167,6 +157,39 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
   // comes round from the back (a sliver whose centre is in front beyond the segment's end): none.
   if (c.separation > 0 && !(h.separation >= 0)) return Contact::beyond(kInf);
   return h;
+}
+
+template <class B>
+Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo,
+                        const ContactOptions& options) {
+  const Vec2 r = reference_point(b, bo);
+  if (!in_front(a, ao, r)) return Contact::beyond(kInf);
+  // The segment's contact first: with a limit it ends soonest for the pairs apart.
+  const Contact c = detail::contact_of_kinds<detail::Kinds>(a.segment, ao, b, bo, options);
+  if (c.empty()) return c;
+  return at_a_vertex(a, ao, b, bo, r, c, options);
+}
+
+// A circle whose centre, c in the segment's frame, lies in front. On the segment's front face the
+// centre lies over the segment, in front of it. A convex neighbour's normal is the segment's turned
+// by the vertex's angle t away from the segment, so the centre's height along it is cos t times its
+// height over the segment less sin t times its distance from the vertex along the segment: never
+// more, and the neighbour leaves it to the segment (owns()); the normal is the segment's
+// (admitted()). One named result, built in the caller's slot.
+Contact circle_in_front(const ChainSegment& a, const Orientation& ao, const Vec2& c, const Circle& b,
+                        const Orientation& bo, const ContactOptions& options) {
+  Contact result = detail::core_circle_at(a.segment, detail::SegmentView(a.segment).view(), ao, c, b, options);
+  if (!result.empty() && result.manifold[0].id != feature_id(FeatureKind::face_of_a, 0, 0)) {
+    result = at_a_vertex(a, ao, b, bo, b.center, result, options);
+  }
+  return result;
+}
+
+// A circle: its centre placed in the segment's frame once, for the side and for the segment's kernel.
+Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const Circle& b, const Orientation& bo,
+                        const ContactOptions& options) {
+  const Vec2 c = Rot::of(ao).apply_inverse(Vec2(b.center - a.segment.center));
+  return in_front(a, c) ? circle_in_front(a, ao, c, b, bo, options) : Contact::beyond(kInf);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Private: a convex core of one to eight faces against a circle, the contact that the polygon,
-// capsule and segment pairs with a circle share (contact_polygon_circle.cpp,
-// contact_capsule_circle.cpp, contact_segment_circle.cpp), each instantiating it for its core.
+// capsule, segment and chain segment pairs with a circle share (contact_polygon_circle.cpp,
+// contact_capsule_circle.cpp, contact_segment_circle.cpp, contact_chain.cpp), each instantiating it
+// for its core.
 #pragma once
 
 #include <collide2d/kernels.h>
@@ -23,6 +24,17 @@ struct CoreView {
   int count;
   double radius;
   double reach;
+};
+
+// A segment's core: from its frame's origin to its end, its faces' lines through the origin.
+struct SegmentView {
+  std::array<Vec2, 2> ends;
+  std::array<Vec2, 4> normals;  // the faces' two first
+  double reach;
+  static constexpr std::array<double, 2> kOffsets{};
+
+  explicit SegmentView(const Segment& s) : ends(segment_of(s)), normals(segment_normals(s)), reach(discs_of(s).reach) {}
+  CoreView<2> view() const { return {ends.data(), normals.data(), kOffsets.data(), 2, 0.0, reach}; }
 };
 
 // The face of greatest separation s of point c (the first of equals), as a tree of selects
@@ -50,7 +62,7 @@ template <class A>
   return core_contact(a, a_orientation, b, Orientation{}, options);
 }
 
-// In the shape's frame, with c the circle's centre: the face of greatest separation s, then, as
+// In the shape's frame, with c the circle's centre there: the face of greatest separation s, then, as
 // Box2D's b2CollidePolygonAndCircle, the face where c lies over it or within a polygon (s <= 0),
 // else the face's end beyond which c lies (the core's separation from a point falls away on either
 // side of its greatest face, so the nearest point of the core lies on that face). Where rounding
@@ -64,10 +76,9 @@ template <class A>
 namespace {
 
 template <class A, int Slots>
-Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
-                    const ContactOptions& options) {
+Contact core_circle_at(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Vec2& c,
+                       const Circle& b, const ContactOptions& options) {
   const Rotation<double> rot = Rotation<double>::of(a_orientation);
-  const Vec2 c = rot.apply_inverse(Vec2(b.center - a.center));
   if (has_limit(options)) {  // as the cores' contact
     if (const auto gap = discs_beyond(c, o.reach + b.radius, options)) return Contact::beyond(*gap);
   }
@@ -93,6 +104,14 @@ Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_o
   }
   const LengthAndDirection u = length_and_direction(d);
   return one(o.vertices[end], u.direction, u.length - radii, feature_id(FeatureKind::corner_corner, end, 0));
+}
+
+// The same, c computed from the circle's centre in the world.
+template <class A, int Slots>
+Contact core_circle(const A& a, const CoreView<Slots>& o, const Orientation& a_orientation, const Circle& b,
+                    const ContactOptions& options) {
+  const Vec2 c = Rotation<double>::of(a_orientation).apply_inverse(Vec2(b.center - a.center));
+  return core_circle_at(a, o, a_orientation, c, b, options);
 }
 
 }  // namespace
