@@ -25,8 +25,10 @@ inline Vec2 support(const ConvexPolygon& p, const Rotation<double>& rot, const V
   const Vec2 local = rot.apply_inverse(d);
   const std::span<const Vec2> v = p.vertices();
   const Vec2* best = &v[0];
+  double top = best->dot(local);
   for (const Vec2& w : v.subspan(1)) {
-    if (w.dot(local) > best->dot(local)) best = &w;
+    const double along = w.dot(local);
+    if (along > top) top = along, best = &w;
   }
   const Vec2 vertex = p.center + rot.apply(*best);
   const double n = d.norm();
