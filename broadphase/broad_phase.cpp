@@ -20,11 +20,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace collide2d {
 namespace {
+
+// A removed proxy's fat box: empty, its min above its max.
+const Aabb kRemoved{Vec2::Constant(std::numeric_limits<double>::infinity()),
+                    Vec2::Constant(-std::numeric_limits<double>::infinity())};
 
 void validate_box(const Aabb& box) {
   const char* names[] = {"x", "y"};
@@ -65,8 +70,8 @@ BroadPhaseBase::BroadPhaseBase(double fat_margin) : margin_(fat_margin) {
 
 ProxyId BroadPhaseBase::take_id() {
   if (free_.empty()) {
-    proxies_.emplace_back();
-    return static_cast<ProxyId>(proxies_.size() - 1);
+    fat_.push_back(kRemoved);
+    return static_cast<ProxyId>(fat_.size() - 1);
   }
   const ProxyId id = free_.back();
   free_.pop_back();
@@ -77,11 +82,11 @@ void BroadPhaseBase::check(ProxyId id) const {
   if (!contains(id)) throw std::out_of_range("unknown proxy " + std::to_string(id));
 }
 
-bool BroadPhaseBase::contains(ProxyId id) const { return id < proxies_.size() && proxies_[id].alive; }
+bool BroadPhaseBase::contains(ProxyId id) const { return id < fat_.size() && alive(id); }
 
 const Aabb& BroadPhaseBase::fat_box(ProxyId id) const {
   check(id);
-  return proxies_[id].fat;
+  return fat_[id];
 }
 
 ProxyId BroadPhaseBase::insert(const Aabb& box) { return insert_batch(std::span<const Aabb>(&box, 1)).front(); }
@@ -93,7 +98,7 @@ std::vector<ProxyId> BroadPhaseBase::insert_batch(std::span<const Aabb> boxes) {
   for (const Aabb& box : boxes) {
     const ProxyId id = take_id();
     const Vec2 grow = Vec2::Constant(margin_);
-    proxies_[id] = {{box.min - grow, box.max + grow}, true};
+    fat_[id] = {box.min - grow, box.max + grow};
     inserted_.push_back(id);
     ids.push_back(id);
   }
@@ -104,7 +109,7 @@ std::vector<ProxyId> BroadPhaseBase::insert_batch(std::span<const Aabb> boxes) {
 bool BroadPhaseBase::move(ProxyId id, const Aabb& box) {
   check(id);
   validate_box(box);
-  Aabb& fat = proxies_[id].fat;
+  Aabb& fat = fat_[id];
   if (encloses(fat, box)) return false;
   const Vec2 grow = Vec2::Constant(margin_);
   fat = {box.min - grow, box.max + grow};
@@ -113,7 +118,7 @@ bool BroadPhaseBase::move(ProxyId id, const Aabb& box) {
 
 void BroadPhaseBase::remove(ProxyId id) {
   check(id);
-  proxies_[id].alive = false;
+  fat_[id] = kRemoved;
   removed_.push_back(id);
   --live_;
 }
@@ -149,13 +154,14 @@ void SweepAndPrune::Strip::resize(std::size_t n) {
 bool SweepAndPrune::lay_out() {
   double sum[2] = {0, 0}, sum2[2] = {0, 0}, extent[2] = {0, 0};
   std::size_t n = 0;
-  for (const Proxy& p : proxies_) {
-    if (!p.alive) continue;
+  for (ProxyId id = 0; id < fat_.size(); ++id) {
+    if (!alive(id)) continue;
+    const Aabb& fat = fat_[id];
     for (int k = 0; k < 2; ++k) {
-      const double c = 0.5 * (p.fat.min[k] + p.fat.max[k]);
+      const double c = 0.5 * (fat.min[k] + fat.max[k]);
       sum[k] += c;
       sum2[k] += c * c;
-      extent[k] += p.fat.max[k] - p.fat.min[k];
+      extent[k] += fat.max[k] - fat.min[k];
     }
     ++n;
   }
@@ -191,10 +197,10 @@ SweepAndPrune::StripRange SweepAndPrune::strips_of(const Aabb& box) const {
 // Moves each box into the strips its fat box now reaches; entries of strips it left are dropped
 // when those strips are refreshed.
 void SweepAndPrune::assign_strips() {
-  range_.resize(proxies_.size());
-  for (ProxyId id = 0; id < proxies_.size(); ++id) {
+  range_.resize(fat_.size());
+  for (ProxyId id = 0; id < fat_.size(); ++id) {
     const StripRange old = range_[id];
-    const StripRange now = proxies_[id].alive ? strips_of(proxies_[id].fat) : StripRange{};
+    const StripRange now = alive(id) ? strips_of(fat_[id]) : StripRange{};
     if (now.first == old.first && now.last == old.last) continue;
     for (std::int64_t k = now.first; k <= now.last; ++k) {
       if (k >= old.first && k <= old.last) continue;
@@ -207,7 +213,7 @@ void SweepAndPrune::assign_strips() {
 }
 
 void SweepAndPrune::load(Strip& s, std::size_t i, std::uint32_t t) const {
-  const Aabb& b = proxies_[id_of(t)].fat;
+  const Aabb& b = fat_[id_of(t)];
   s.keys[i] = (is_max(t) ? b.max[sweep_axis_] : b.min[sweep_axis_]) + 0.0;  // -0.0 -> +0.0 for the radix keys
   s.tags[i] = t;
   s.lo[i] = b.min[1 - sweep_axis_];
@@ -221,7 +227,7 @@ void SweepAndPrune::refresh(std::int64_t index, Strip& s) const {
   std::size_t out = 0;
   for (std::size_t i = 0; i < s.tags.size(); ++i) {
     const ProxyId id = id_of(s.tags[i]);
-    if (proxies_[id].alive && range_[id].first <= index && index <= range_[id].last) load(s, out++, s.tags[i]);
+    if (alive(id) && range_[id].first <= index && index <= range_[id].last) load(s, out++, s.tags[i]);
   }
   s.resize(out);
 }
@@ -318,7 +324,7 @@ void SweepAndPrune::sweep(StripWork& w) const {
   // other strips. Kept from frame to frame: a steady frame allocates nothing.
   thread_local std::vector<std::uint32_t> active_slot;
   thread_local std::vector<Active> active;
-  if (active_slot.size() < proxies_.size()) active_slot.resize(proxies_.size());
+  if (active_slot.size() < fat_.size()) active_slot.resize(fat_.size());
   const Strip& s = *w.strip;
   active.clear();
   for (std::size_t i = 0; i < s.tags.size(); ++i) {
@@ -398,7 +404,7 @@ void SweepAndPrune::update(const ParallelFor& parallel) {
   stats_ = {};
   if (lay_out()) {
     strips_.clear();
-    range_.assign(proxies_.size(), StripRange{});
+    range_.assign(fat_.size(), StripRange{});
     stats_.full_sort = true;
   }
   assign_strips();
@@ -435,12 +441,10 @@ void SweepAndPrune::update(const ParallelFor& parallel) {
 
 void BruteForceBroadPhase::update() {
   std::vector<ProxyPair> found;
-  for (ProxyId i = 0; i < proxies_.size(); ++i) {
-    if (!proxies_[i].alive) continue;
-    for (ProxyId j = i + 1; j < proxies_.size(); ++j) {
-      const Aabb& p = proxies_[i].fat;
-      const Aabb& q = proxies_[j].fat;
-      if (proxies_[j].alive && intersects(p, q)) found.push_back({i, j});
+  for (ProxyId i = 0; i < fat_.size(); ++i) {
+    if (!alive(i)) continue;
+    for (ProxyId j = i + 1; j < fat_.size(); ++j) {
+      if (alive(j) && intersects(fat_[i], fat_[j])) found.push_back({i, j});
     }
   }
   finish_update(found);

@@ -71,11 +71,9 @@ class BroadPhaseBase {
   const std::vector<ProxyPair>& ended() const { return ended_; }
 
  protected:
-  struct Proxy {
-    Aabb fat;
-    bool alive = false;
-  };
-  std::vector<Proxy> proxies_;
+  // The fat boxes by id; a removed proxy's is empty, its min above its max (a live one's never is).
+  std::vector<Aabb> fat_;
+  bool alive(ProxyId id) const { return fat_[id].min.x() <= fat_[id].max.x(); }
   std::vector<ProxyId> inserted_;  // since the last update
   std::vector<ProxyId> removed_;   // since the last update; their ids are reused after it
 
