@@ -136,7 +136,7 @@ Aabb WorldState::broad_box(const Aabb& box) const {
 }
 
 Aabb WorldState::broad_box(const ShapeEntry& p) const {
-  return broad_box(p.continuous ? swept(p.start, p.shape) : p.box);
+  return broad_box(p.continuous ? swept(start_of(p), p.shape) : p.box);
 }
 
 Aabb WorldState::broad_box(ShapeId id) const {
@@ -216,7 +216,7 @@ void WorldState::set_local(std::uint32_t index, const Shape& local) {
   p.shape = local;  // its sizes: place_entry() moves a shape at the origin as it is
   p.at_origin = at_origin(local);
   place_entry(index, b.pose, Orientation::of(b.pose.angle));
-  p.start = pose_of(p.shape);
+  if (p.continuous) continuous_[p.step].start = pose_of(p.shape);
 }
 
 // A new shape of body `body`, last in its list, posed and in the broad phase; def.shape is valid.
@@ -236,8 +236,8 @@ std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
   p.ghost = b.ghost;
   p.chain = false;
   p.alive = true;
+  if (b.continuous) join_steps(index);
   set_local(index, def.shape);
-  if (b.continuous) continuous_.push_back(index);
   (b.first == kNone ? b.first : entries_[b.last].next) = index;
   b.last = index;
   ++b.count;
@@ -247,7 +247,7 @@ std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
 
 void WorldState::free_entry(std::uint32_t index) {
   ShapeEntry& p = entries_[index];
-  if (p.continuous) continuous_.erase(std::find(continuous_.begin(), continuous_.end(), index));
+  if (p.continuous) leave_steps(index);
   leave(index);
   p.alive = false;
   p.generation = p.generation == UINT32_MAX ? 1 : p.generation + 1;  // 0 names no shape
@@ -393,7 +393,7 @@ void WorldState::place_body(Body& b, const Vec2& position, double angle, const c
   for (std::uint32_t k = b.first; k != kNone; k = entries_[k].next) {
     ShapeEntry& p = entries_[k];
     place_entry(k, b.pose, turn);
-    if (teleport && p.continuous) p.start = pose_of(p.shape);
+    if (teleport && p.continuous) continuous_[p.step].start = pose_of(p.shape);
     refresh_box(k);
   }
 }

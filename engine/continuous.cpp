@@ -42,12 +42,11 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
   each_entry(b, [&](std::uint32_t k) {
     ShapeEntry& p = entries_[k];
     if (continuous) {
-      continuous_.push_back(k);
+      join_steps(k);
     } else {
-      continuous_.erase(std::find(continuous_.begin(), continuous_.end(), k));
+      leave_steps(k);
     }
     p.continuous = continuous;
-    p.start = pose_of(p.shape);
     refresh_box(k);
   });
 }
@@ -57,10 +56,10 @@ void WorldState::set_continuous(BodyId id, bool continuous) {
 void WorldState::impact(std::uint32_t a, std::uint32_t b, ChunkResults& out) const {
   const ShapeEntry& x = entries_[a];
   const ShapeEntry& y = entries_[b];
-  const auto from = [](const ShapeEntry& p) {
-    return p.continuous ? placed_at(p.shape, p.start.position, p.start.angle) : p.shape;
+  const auto from = [&](const ShapeEntry& p) {
+    return p.continuous ? placed_at(p.shape, start_of(p).position, start_of(p).angle) : p.shape;
   };
-  const auto motion = [](const ShapeEntry& p) { return p.continuous ? step_of(p.start, p.shape) : Motion{}; };
+  const auto motion = [&](const ShapeEntry& p) { return p.continuous ? step_of(start_of(p), p.shape) : Motion{}; };
   // A chain's segment stops only what comes at it from the front (chain.h's one-sided rule, at the
   // step's start).
   if (x.chain && !in_front(chain_of(a), from(y))) return;
@@ -91,10 +90,25 @@ void WorldState::keep_earliest_impacts() {
 
 // The next step of every continuous body begins at its pose now.
 void WorldState::begin_steps() {
-  for (const std::uint32_t index : continuous_) {
-    entries_[index].start = pose_of(entries_[index].shape);
-    refresh_box(index);
+  for (Step& s : continuous_) {
+    s.start = pose_of(entries_[s.entry].shape);
+    refresh_box(s.entry);
   }
+}
+
+void WorldState::join_steps(std::uint32_t index) {
+  ShapeEntry& p = entries_[index];
+  p.step = static_cast<std::uint32_t>(continuous_.size());
+  continuous_.push_back({index, pose_of(p.shape)});
+}
+
+// The later steps move up one place, in order: begin_steps() refreshes the boxes in the order the
+// shapes became continuous.
+void WorldState::leave_steps(std::uint32_t index) {
+  const std::uint32_t at = entries_[index].step;
+  continuous_.erase(continuous_.begin() + at);
+  for (std::uint32_t k = at; k < continuous_.size(); ++k) entries_[continuous_[k].entry].step = k;
+  entries_[index].step = kNone;
 }
 
 }  // namespace collide2d::detail

@@ -176,6 +176,7 @@ class WorldState {
     bool at_origin = true;  // local centre and angle zero: the shape takes the body's pose as it is
     std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
+    std::uint32_t step = kNone;      // continuous: its place in continuous_
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
     std::uint32_t next = kNone;          // its body's next shape
@@ -184,7 +185,6 @@ class WorldState {
     std::int32_t stale_at = -1;          // moving: its place in stale_leaves_ while its tree leaf is out of date
     Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
     std::vector<std::uint32_t> statics;  // moving: those neighbours (shape indices)
-    Pose start;                          // continuous: its pose at the last update, where the step begins
   };
   // An empty box, which encloses no fat box: a shape entering the sweep and prune looks up its static
   // neighbours at the next update.
@@ -255,7 +255,13 @@ class WorldState {
   // contacts_of(): body slot i's contacts are contact_list_[contact_start_[i], contact_start_[i + 1]).
   std::vector<std::uint32_t> contact_start_;
   std::vector<std::uint32_t> contact_list_;
-  std::vector<std::uint32_t> continuous_;  // the continuous bodies' shapes
+  // A continuous body's shape and its pose at the last update, where its step begins: kept apart
+  // from ShapeEntry, which the many shapes not continuous would otherwise carry it in.
+  struct Step {
+    std::uint32_t entry;
+    Pose start;
+  };
+  std::vector<Step> continuous_;  // in the order the shapes became continuous
   std::function<bool(BodyId, BodyId)> pair_predicate_;
   std::vector<ChunkResults> chunks_;  // kept from frame to frame, so that steady state allocates nothing
   std::unique_ptr<ThreadPool> pool_;
@@ -313,7 +319,10 @@ class WorldState {
   // update.cpp: marks the ended pairs of shapes or bodies removed since the previous update.
   void mark_removed();
 
-  // continuous.cpp
+  // continuous.cpp: the shape's step, which starts where it is now; its step ended.
+  void join_steps(std::uint32_t index);
+  void leave_steps(std::uint32_t index);
+  const Pose& start_of(const ShapeEntry& p) const { return continuous_[p.step].start; }
   void impact(std::uint32_t a, std::uint32_t b, ChunkResults& out) const;
   void keep_earliest_impacts();
   void begin_steps();
