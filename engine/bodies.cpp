@@ -201,7 +201,7 @@ void WorldState::place_entry(std::uint32_t index, const Pose& at, const Orientat
   if (p.at_origin) {
     place(p.shape, at.position, at.angle);
   } else {
-    p.shape = placed(locals_[index], at, turn);
+    p.shape = placed(locals_[p.local], at, turn);
   }
   p.orientation = Orientation::of(angle_of(p.shape));
   p.box = aabb(p.shape, p.orientation);
@@ -212,9 +212,14 @@ void WorldState::place_entry(std::uint32_t index, const Pose& at, const Orientat
 void WorldState::set_local(std::uint32_t index, const Shape& local) {
   ShapeEntry& p = entries_[index];
   const Body& b = bodies_[p.body.index];
-  locals_[index] = local;
   p.shape = local;  // its sizes: place_entry() moves a shape at the origin as it is
   p.at_origin = at_origin(local);
+  if (p.at_origin) {
+    release_local(p);
+  } else {
+    if (p.local == kNone) p.local = take_slot(locals_, free_locals_);
+    locals_[p.local] = local;
+  }
   place_entry(index, b.pose, Orientation::of(b.pose.angle));
   if (p.continuous) continuous_[p.step].start = pose_of(p.shape);
 }
@@ -224,7 +229,6 @@ std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
   const std::uint32_t index = take_slot(entries_, free_entries_);
   Body& b = bodies_[body];
   ShapeEntry& p = entries_[index];  // a reused slot keeps the generation free_entry() gave it
-  locals_.resize(entries_.size());
   p.body = body_id(body);
   p.body_user_id = b.user_id;
   p.next = kNone;
@@ -245,9 +249,16 @@ std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
   return index;
 }
 
+void WorldState::release_local(ShapeEntry& p) {
+  if (p.local == kNone) return;
+  free_locals_.push_back(p.local);
+  p.local = kNone;
+}
+
 void WorldState::free_entry(std::uint32_t index) {
   ShapeEntry& p = entries_[index];
   if (p.continuous) leave_steps(index);
+  release_local(p);
   leave(index);
   p.alive = false;
   p.generation = p.generation == UINT32_MAX ? 1 : p.generation + 1;  // 0 names no shape

@@ -60,7 +60,7 @@ bool World::is_continuous(BodyId id) const { return state_->is_continuous(id); }
 bool World::is_ghost(BodyId id) const { return state_->is_ghost(id); }
 std::vector<ShapeId> World::shapes(BodyId id) const { return state_->shapes(id); }
 const Shape& World::shape(ShapeId id) const { return state_->shape(id); }
-const Shape& World::local_shape(ShapeId id) const { return state_->local_shape(id); }
+Shape World::local_shape(ShapeId id) const { return state_->local_shape(id); }
 BodyId World::body(ShapeId id) const { return state_->body_of(id); }
 std::optional<ChainSegment> World::chain_segment(ShapeId id) const { return state_->chain_segment(id); }
 std::uint64_t World::user_id(ShapeId id) const { return state_->user_id(id); }

@@ -86,9 +86,11 @@ class WorldState {
   bool is_ghost(BodyId id) const { return body(id).ghost; }
   std::vector<ShapeId> shapes(BodyId id) const;
   const Shape& shape(ShapeId id) const { return entry(id).shape; }
-  const Shape& local_shape(ShapeId id) const {
-    entry(id);  // refuses an unknown or stale handle
-    return locals_[id.index];
+  // A shape at its body's origin is its world shape moved there (at_origin()): only the others
+  // keep theirs.
+  Shape local_shape(ShapeId id) const {
+    const ShapeEntry& p = entry(id);
+    return p.at_origin ? placed_at(p.shape, Vec2::Zero(), 0.0) : locals_[p.local];
   }
   BodyId body_of(ShapeId id) const { return entry(id).body; }
   std::optional<ChainSegment> chain_segment(ShapeId id) const;
@@ -177,6 +179,7 @@ class WorldState {
     std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
     std::uint32_t step = kNone;      // continuous: its place in continuous_
+    std::uint32_t local = kNone;     // not at its body's origin: its shape in the body's frame in locals_
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
     std::uint32_t next = kNone;          // its body's next shape
@@ -232,8 +235,8 @@ class WorldState {
   std::vector<std::uint32_t> free_bodies_;
   std::size_t live_ = 0;
   std::vector<ShapeEntry> entries_;  // by ShapeId::index
-  std::vector<Shape> locals_;        // by ShapeId::index: each shape in its body's frame, apart from the
-                                     // entries that every frame reads
+  std::vector<Shape> locals_;        // the shapes not at their body's origin, in its frame (ShapeEntry::local)
+  std::vector<std::uint32_t> free_locals_;
   std::vector<std::uint32_t> free_entries_;
   std::vector<std::array<Vec2, 2>> ghosts_;  // by ShapeId::index, for a chain's segments: its ghosts
   SweepAndPrune broad_;                      // the moving shapes
@@ -281,6 +284,7 @@ class WorldState {
   }
   std::uint32_t new_entry(std::uint32_t body, const ShapeDef& def);
   void free_entry(std::uint32_t index);
+  void release_local(ShapeEntry& p);  // its slot in locals_, if it has one
   Aabb broad_box(const Aabb& box) const;
   Aabb broad_box(const ShapeEntry& p) const;
   void enter(std::uint32_t index);

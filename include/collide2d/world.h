@@ -411,7 +411,7 @@ class World {
   /// A shape where it is, as placed in its body's frame, its body, user id, filter and kind.
   /// Each throws std::out_of_range for an unknown or stale handle.
   const Shape& shape(ShapeId id) const;
-  const Shape& local_shape(ShapeId id) const;
+  Shape local_shape(ShapeId id) const;
   BodyId body(ShapeId id) const;
   /// The chain segment a shape is, with its ghosts, where it is; nullopt for a shape of no chain.
   std::optional<ChainSegment> chain_segment(ShapeId id) const;
