@@ -18,6 +18,10 @@ namespace collide2d::bench {
 
 constexpr std::size_t kPairs = 4096;  // a power of two: the cycle index is a mask
 
+// A convex 8-gon rounded by a radius (ConvexPolygon::radius()): Box2D v3's rounded hulls
+// (b2MakePolygon with a radius, b2MakeRoundedBox). A type of its own so that a workload can name it.
+struct RoundedPolygon : ConvexPolygon {};
+
 template <class A, class B>
 struct Workload {
   std::vector<A> a;
@@ -67,8 +71,8 @@ struct Generator {
     s = Segment::between(c - h * d, c + h * d);
   }
   // A convex 8-gon: vertices on an ellipse of aspect up to 2, each within a sixteenth of a turn of
-  // its regular place.
-  void make(ConvexPolygon& p) {
+  // its regular place; `rounded`, rounded by 5% to 30% of the ellipse's smaller half axis.
+  ConvexPolygon polygon(bool rounded) {
     const double a = size(), b = a / uniform(1, 2);
     std::array<Vec2, 8> v;
     for (int k = 0; k < 8; ++k) {
@@ -77,8 +81,12 @@ struct Generator {
       v[k] = Vec2(a * o.c, b * o.s);
     }
     const double angle = uniform(0, 6.3);
-    p = ConvexPolygon::of(v).at(center(), angle);
+    const Vec2 c = center();
+    const double radius = rounded ? uniform(0.05, 0.3) * b : 0.0;
+    return ConvexPolygon::of(v, radius).at(c, angle);
   }
+  void make(ConvexPolygon& p) { p = polygon(false); }
+  void make(RoundedPolygon& p) { p = {polygon(true)}; }
 };
 
 template <class A, class B>
@@ -105,6 +113,7 @@ S made_again(const S& s) {
 inline ConvexPolygon made_again(const ConvexPolygon& p) {
   return ConvexPolygon::of(p.outline->points(), p.radius()).at(p.center, p.angle);
 }
+inline RoundedPolygon made_again(const RoundedPolygon& p) { return {made_again(static_cast<const ConvexPolygon&>(p))}; }
 template <class A, class B>
 Workload<A, B> in_pair_order(const Workload<A, B>& w) {
   Workload<A, B> out;

@@ -64,6 +64,10 @@ V3_PAIRS = [
     ('circle–circle', 'circle_circle'), ('capsule–circle', 'capsule_circle'), ('rect–circle', 'rect_circle'),
     ('polygon–circle', 'polygon_circle'), ('rect–capsule', 'rect_capsule'), ('polygon–capsule', 'polygon_capsule'),
     ('rect–rect', 'rect_rect'), ('rect–polygon', 'rect_polygon'), ('polygon–polygon (8-gons)', 'polygon_polygon'),
+    ('rounded polygon–circle', 'rounded_circle'), ('rounded polygon–capsule', 'rounded_capsule'),
+    ('rect–rounded polygon', 'rect_rounded'), ('polygon–rounded polygon', 'polygon_rounded'),
+    ('rounded polygon–rounded polygon', 'rounded_rounded'), ('segment–rounded polygon', 'segment_rounded'),
+    ('chain segment–rounded polygon', 'chain_rounded'),
     ('circle–ellipse vs 8-gon', 'circle_ellipse'), ('capsule–ellipse vs 8-gon', 'capsule_ellipse'),
     ('rect–ellipse vs 8-gon', 'rect_ellipse'), ('polygon–ellipse vs 8-gon', 'polygon_ellipse'),
     ('ellipse–ellipse vs 8-gons', 'ellipse_ellipse'), ('segment–ellipse vs 8-gon', 'segment_ellipse'),
@@ -472,7 +476,9 @@ length unit per metre), beyond which v3 returns no manifold. Each benchmark coun
 pairs whose manifold has points (the counter `manifolds` in the results file): the two libraries'
 are equal for the exact pairs, and differ by up to 10 pairs in 100 where v3 meets an ellipse as its
 inscribed 8-gon or a chain segment as its one-sided edge. v3 computes in float, collide2d in double.
-The scene has no polygons, capsules, segments or chains: their rows have no scene columns.
+A rounded polygon is one of the 8-gons rounded by 5% to 30% of its smaller half axis (v3's
+`b2MakePolygon` with that radius). The scene has no polygons, capsules, segments or chains: their rows
+have no scene columns.
 
 {table(CONTACT_V3, med, CONTACT_WORKLOADS)}"""
 

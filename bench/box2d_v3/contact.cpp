@@ -26,6 +26,7 @@
 namespace collide2d {
 namespace {
 
+using bench::RoundedPolygon;
 using box2d_v3::Posed;
 using box2d_v3::posed;
 
@@ -187,10 +188,16 @@ void race_level(const std::string& kind) {
   race<Rect, Rect>("rect_rect");
   race<Rect, ConvexPolygon>("rect_polygon");
   race<ConvexPolygon, ConvexPolygon>("polygon_polygon");
+  race<RoundedPolygon, Circle>("rounded_circle");
+  race<RoundedPolygon, Capsule>("rounded_capsule");
+  race<Rect, RoundedPolygon>("rect_rounded");
+  race<ConvexPolygon, RoundedPolygon>("polygon_rounded");
+  race<RoundedPolygon, RoundedPolygon>("rounded_rounded");
   race_level<Circle>("circle");
   race_level<Capsule>("capsule");
   race_level<Rect>("rect");
   race_level<ConvexPolygon>("polygon");
+  race_level<RoundedPolygon>("rounded");
   race_level<Ellipse>("ellipse");
   race<Circle, Ellipse>("circle_ellipse");
   race<Capsule, Ellipse>("capsule_ellipse");
