@@ -171,7 +171,7 @@ void WorldState::leave(std::uint32_t index) {
   part_of_[p.proxy] = kNone;
   moving_tree_.remove(p.leaf);
   if (p.stale_at >= 0) drop_stale(index);
-  p.statics.clear();
+  release_statics(p);
 }
 
 void WorldState::drop_stale(std::uint32_t index) {
@@ -220,7 +220,7 @@ void WorldState::set_local(std::uint32_t index, const Shape& local) {
     if (p.local == kNone) p.local = take_slot(locals_, free_locals_);
     locals_[p.local] = local;
   }
-  place_entry(index, b.pose, Orientation::of(b.pose.angle));
+  place_entry(index, b.pose(), Orientation::of(b.angle));
   if (p.continuous) continuous_[p.step].start = pose_of(p.shape);
 }
 
@@ -253,6 +253,19 @@ void WorldState::release_local(ShapeEntry& p) {
   if (p.local == kNone) return;
   free_locals_.push_back(p.local);
   p.local = kNone;
+}
+
+std::vector<std::uint32_t>& WorldState::static_list(ShapeEntry& p) {
+  if (p.statics == kNone) p.statics = take_slot(static_lists_, free_static_lists_);
+  std::vector<std::uint32_t>& list = static_lists_[p.statics];
+  list.clear();
+  return list;
+}
+
+void WorldState::release_statics(ShapeEntry& p) {
+  if (p.statics == kNone) return;
+  free_static_lists_.push_back(p.statics);
+  p.statics = kNone;
 }
 
 void WorldState::free_entry(std::uint32_t index) {
@@ -294,7 +307,8 @@ BodyId WorldState::add(const Pose& pose, std::span<const ShapeDef> shapes, const
   for (const ShapeDef& s : shapes) require_static_for(s.shape, def.is_static, "add");
   const std::uint32_t index = take_slot(bodies_, free_bodies_);
   Body& b = bodies_[index];  // a reused slot keeps the generation remove() gave it
-  b.pose = pose;
+  b.position = pose.position;
+  b.angle = pose.angle;
   b.user_id = def.user_id;
   b.filter = def.filter;
   b.is_static = def.is_static;
@@ -386,7 +400,7 @@ void WorldState::move_by(BodyId id, const Vec2& shift, double turn) {
   require_finite(shift.x(), "move_by shift x");
   require_finite(shift.y(), "move_by shift y");
   require_finite(turn, "move_by turn");
-  place_body(b, b.pose.position + shift, b.pose.angle + turn, "move_by", false);
+  place_body(b, b.position + shift, b.angle + turn, "move_by", false);
 }
 
 // The body and its shapes at a pose, checked first so that a refusal, named after the call, leaves
@@ -396,14 +410,16 @@ void WorldState::place_body(Body& b, const Vec2& position, double angle, const c
   if (!(std::abs(position.x()) <= kMaxMagnitude && std::abs(position.y()) <= kMaxMagnitude))
     validate_point(position, (std::string(call) + " position").c_str());
   if (!std::isfinite(angle)) require_finite(angle, (std::string(call) + " angle").c_str());
-  b.pose = {position, angle};
+  b.position = position;
+  b.angle = angle;
   // A body of one shape at its origin needs no turn of its own (the shape's orientation is computed
   // anyway).
   const bool alone = b.count == 1 && entries_[b.first].at_origin;
   const Orientation turn = alone ? Orientation{} : Orientation::of(angle);
+  const Pose pose = b.pose();
   for (std::uint32_t k = b.first; k != kNone; k = entries_[k].next) {
     ShapeEntry& p = entries_[k];
-    place_entry(k, b.pose, turn);
+    place_entry(k, pose, turn);
     if (teleport && p.continuous) continuous_[p.step].start = pose_of(p.shape);
     refresh_box(k);
   }

@@ -92,13 +92,17 @@ void WorldState::find_candidates() {
       // fat boxes stay within it and need no look-up: the statics kept are a superset, and the test
       // below keeps those the fat box meets.
       b.queried = grown(fat, 0.5 * (fat.max - fat.min).maxCoeff());
-      b.statics.clear();
+      // A shape keeps its list once it has had a neighbour, so that a steady frame allocates nothing.
+      const bool had_list = b.statics != kNone;
+      std::vector<std::uint32_t>& list = static_list(b);
       static_tree_.query(b.queried, [&](std::uint32_t s) {
-        if (intersects(broad_box(entries_[s]), b.queried)) b.statics.push_back(s);
+        if (intersects(broad_box(entries_[s]), b.queried)) list.push_back(s);
       });
+      if (!had_list && list.empty()) release_statics(b);
       ++stats_.requeried;
     }
-    for (const std::uint32_t s : b.statics) {
+    if (b.statics == kNone) continue;
+    for (const std::uint32_t s : static_lists_[b.statics]) {
       if (intersects(broad_box(entries_[s]), fat)) add(index, s);
     }
   }

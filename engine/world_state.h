@@ -76,7 +76,7 @@ class WorldState {
   bool contains(ShapeId id) const;
   std::size_t size() const { return live_; }
   unsigned threads() const { return pool_->threads(); }
-  Pose pose(BodyId id) const { return body(id).pose; }
+  Pose pose(BodyId id) const { return body(id).pose(); }
   const Shape& shape(BodyId id) const { return entries_[body(id).first].shape; }
   std::uint64_t user_id(BodyId id) const { return body(id).user_id; }
   const Filter& filter(BodyId id) const { return body(id).filter; }
@@ -147,9 +147,11 @@ class WorldState {
 
  private:
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
-  // A body: its pose, what it is, and its shapes as a list through ShapeEntry::next.
+  // A body: its pose, what it is, and its shapes as a list through ShapeEntry::next. The pose's
+  // position and angle lie apart, where a Pose would pad its angle to 16 bytes.
   struct Body {
-    Pose pose;
+    Vec2 position = Vec2::Zero();
+    double angle = 0.0;
     std::uint64_t user_id = 0;
     Filter filter;
     std::uint32_t generation = 1;
@@ -161,6 +163,8 @@ class WorldState {
     std::uint32_t first = kNone;  // its first shape
     std::uint32_t last = kNone;   // its last shape, where the next one joins
     std::uint32_t count = 0;      // its shapes
+
+    Pose pose() const { return {position, angle}; }
   };
   // A shape of a body, where the broad and the narrow phase work: what a pair's test and record read
   // first, together, then what posing and the broad phase keep.
@@ -180,14 +184,14 @@ class WorldState {
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
     std::uint32_t step = kNone;      // continuous: its place in continuous_
     std::uint32_t local = kNone;     // not at its body's origin: its shape in the body's frame in locals_
+    std::uint32_t next = kNone;      // its body's next shape
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
-    std::uint32_t next = kNone;          // its body's next shape
-    ProxyId proxy = 0;                   // moving: its sweep-and-prune proxy
-    AabbTree::Leaf leaf = -1;            // its leaf in the moving or the static tree
-    std::int32_t stale_at = -1;          // moving: its place in stale_leaves_ while its tree leaf is out of date
-    Aabb queried;                        // moving: the box its static neighbours were looked up in (kNowhere: none yet)
-    std::vector<std::uint32_t> statics;  // moving: those neighbours (shape indices)
+    ProxyId proxy = 0;              // moving: its sweep-and-prune proxy
+    AabbTree::Leaf leaf = -1;       // its leaf in the moving or the static tree
+    std::int32_t stale_at = -1;     // moving: its place in stale_leaves_ while its tree leaf is out of date
+    std::uint32_t statics = kNone;  // moving: its static neighbours' list in static_lists_, if any,
+    Aabb queried;                   // looked up in this box (kNowhere: none yet)
   };
   // An empty box, which encloses no fat box: a shape entering the sweep and prune looks up its static
   // neighbours at the next update.
@@ -237,6 +241,10 @@ class WorldState {
   std::vector<ShapeEntry> entries_;  // by ShapeId::index
   std::vector<Shape> locals_;        // the shapes not at their body's origin, in its frame (ShapeEntry::local)
   std::vector<std::uint32_t> free_locals_;
+  // The moving shapes' static neighbours (shape indices), a list for each shape that has some
+  // (ShapeEntry::statics); a freed list keeps its room for the next.
+  std::vector<std::vector<std::uint32_t>> static_lists_;
+  std::vector<std::uint32_t> free_static_lists_;
   std::vector<std::uint32_t> free_entries_;
   std::vector<std::array<Vec2, 2>> ghosts_;  // by ShapeId::index, for a chain's segments: its ghosts
   SweepAndPrune broad_;                      // the moving shapes
@@ -284,7 +292,9 @@ class WorldState {
   }
   std::uint32_t new_entry(std::uint32_t body, const ShapeDef& def);
   void free_entry(std::uint32_t index);
-  void release_local(ShapeEntry& p);  // its slot in locals_, if it has one
+  void release_local(ShapeEntry& p);                       // its slot in locals_, if it has one
+  std::vector<std::uint32_t>& static_list(ShapeEntry& p);  // its list in static_lists_, emptied or new
+  void release_statics(ShapeEntry& p);                     // its list in static_lists_, if it has one
   Aabb broad_box(const Aabb& box) const;
   Aabb broad_box(const ShapeEntry& p) const;
   void enter(std::uint32_t index);
