@@ -47,9 +47,9 @@ bool WorldState::contains(ShapeId id) const {
 
 namespace {
 
-// A free slot of `slots`, the last one freed, or a new one at the end.
-template <class Slot>
-std::uint32_t take_slot(std::vector<Slot>& slots, std::vector<std::uint32_t>& free) {
+// A free slot of `slots` (a std::vector or Pages), the last one freed, or a new one at the end.
+template <class Slots>
+std::uint32_t take_slot(Slots& slots, std::vector<std::uint32_t>& free) {
   if (free.empty()) {
     slots.emplace_back();
     return static_cast<std::uint32_t>(slots.size() - 1);

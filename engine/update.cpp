@@ -64,7 +64,7 @@ void WorldState::find_candidates() {
   if (fresh(static_tree_)) static_tree_.rebuild();
   // Two shapes in the order of their bodies, or (kNone, kNone) for two shapes of one body. Static,
   // so that the task below captures no more than std::function holds without allocating.
-  static constexpr auto in_body_order = [](const std::vector<ShapeEntry>& parts, std::uint32_t x, std::uint32_t y) {
+  static constexpr auto in_body_order = [](const Pages<ShapeEntry>& parts, std::uint32_t x, std::uint32_t y) {
     const std::uint32_t bx = parts[x].body.index, by = parts[y].body.index;
     return bx == by ? std::pair(kNone, kNone) : bx < by ? std::pair(x, y) : std::pair(y, x);
   };
@@ -134,7 +134,7 @@ void WorldState::Batch<A, B>::add(std::uint32_t place, std::uint32_t a_part, std
 }
 
 template <class A, class B>
-void WorldState::Batch<A, B>::run(const std::vector<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts) {
+void WorldState::Batch<A, B>::run(const Pages<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts) {
   verdicts.resize(places.size());
   overlap_pairs<A, B>(
       [&](std::size_t k) {

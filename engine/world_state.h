@@ -34,6 +34,7 @@
 #include <collide2d/world.h>
 
 #include "engine/internal.h"
+#include "engine/pages.h"
 #include "engine/thread_pool.h"
 #include "narrowphase/internal.h"
 
@@ -210,7 +211,7 @@ class WorldState {
     std::vector<std::uint32_t> b;
     std::vector<std::uint8_t> verdicts;
     void add(std::uint32_t place, std::uint32_t a_part, std::uint32_t b_part);
-    void run(const std::vector<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts);
+    void run(const Pages<ShapeEntry>& parts, std::vector<Verdict>& chunk_verdicts);
     void clear();
   };
   template <class Pairs>
@@ -235,11 +236,11 @@ class WorldState {
     void clear();
   };
 
-  std::vector<Body> bodies_;  // by BodyId::index
+  Pages<Body> bodies_;  // by BodyId::index
   std::vector<std::uint32_t> free_bodies_;
   std::size_t live_ = 0;
-  std::vector<ShapeEntry> entries_;  // by ShapeId::index
-  std::vector<Shape> locals_;        // the shapes not at their body's origin, in its frame (ShapeEntry::local)
+  Pages<ShapeEntry> entries_;  // by ShapeId::index
+  std::vector<Shape> locals_;  // the shapes not at their body's origin, in its frame (ShapeEntry::local)
   std::vector<std::uint32_t> free_locals_;
   // The moving shapes' static neighbours (shape indices), a list for each shape that has some
   // (ShapeEntry::statics); a freed list keeps its room for the next.
