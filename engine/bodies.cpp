@@ -155,7 +155,10 @@ void WorldState::enter(std::uint32_t index) {
   p.proxy = broad_.insert(broad_box(p));
   if (p.proxy >= part_of_.size()) part_of_.resize(static_cast<std::size_t>(p.proxy) + 1, kNone);
   part_of_[p.proxy] = index;
-  p.leaf = moving_tree_.insert(broad_.fat_box(p.proxy), index);
+  if (moving_tree_on_.load(std::memory_order_relaxed)) {
+    if (p.proxy >= moving_leaves_.size()) moving_leaves_.resize(static_cast<std::size_t>(p.proxy) + 1, -1);
+    moving_leaves_[p.proxy] = moving_tree_.insert(broad_.fat_box(p.proxy), index);
+  }
   p.stale_at = -1;
   p.queried = kNowhere;
 }
@@ -169,7 +172,7 @@ void WorldState::leave(std::uint32_t index) {
   }
   broad_.remove(p.proxy);
   part_of_[p.proxy] = kNone;
-  moving_tree_.remove(p.leaf);
+  if (moving_tree_on_.load(std::memory_order_relaxed)) moving_tree_.remove(moving_leaves_[p.proxy]);
   if (p.stale_at >= 0) drop_stale(index);
   release_statics(p);
 }

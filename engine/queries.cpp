@@ -47,6 +47,21 @@ void WorldState::require_not_querying(const char* call) const {
   }
 }
 
+// The moving shapes' tree, built by the first query from their fat boxes (a stale leaf's is then
+// its new box, and the walks below test it from stale_leaves_ all the same), top-down.
+void WorldState::need_moving_tree() const {
+  if (moving_tree_on_.load(std::memory_order_acquire)) return;
+  const std::lock_guard lock(moving_tree_mutex_);
+  if (moving_tree_on_.load(std::memory_order_relaxed)) return;
+  moving_leaves_.assign(part_of_.size(), -1);
+  for (ProxyId proxy = 0; proxy < part_of_.size(); ++proxy) {
+    if (part_of_[proxy] != kNone) moving_leaves_[proxy] = moving_tree_.insert(broad_.fat_box(proxy), part_of_[proxy]);
+  }
+  moving_tree_.rebuild();
+  moving_perimeter_ = moving_tree_.inner_perimeter();
+  moving_tree_on_.store(true, std::memory_order_release);
+}
+
 // visit(found) for the solid shapes the filter lets through whose tight box meets `box` and that
 // pass `test`, in the trees' order, until visit returns false.
 template <class Test>
@@ -60,6 +75,7 @@ void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
       go = visit({p.body, shape_id(index)});
     return go;
   };
+  need_moving_tree();
   // A shape whose tree leaf is stale is tested from stale_leaves_ instead (see below).
   moving_tree_.query(box, [&](std::uint32_t index) { return entries_[index].stale_at >= 0 || consider(index); });
   for (std::size_t k = 0; go && k < stale_leaves_.size(); ++k) consider(stale_leaves_[k]);
@@ -139,6 +155,7 @@ void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_
     return next_reach(visit(RayHit{p.body, shape_id(index), hit->distance, hit->point, hit->normal}), reach);
   };
   double reach = max_distance;
+  need_moving_tree();
   moving_tree_.ray_cast(origin, unit, reach, [&](std::uint32_t index, double r) {
     return reach =
                entries_[index].stale_at < 0 ? visit_shape(index, r) : r;  // a stale leaf is tested from stale_leaves_

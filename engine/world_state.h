@@ -20,8 +20,10 @@
 // keeps the static shapes near its fat box (within half the box's larger side) and looks them up
 // again only when the fat box leaves that neighbourhood or the statics changed. Either tree is
 // rebuilt top-down at an update when a quarter or more of its shapes were added since the last
-// rebuild. The moving shapes' tree is not re-shaped as they move: the leaves whose fat box changed
-// take their new box and their ancestors are refitted (re-inserting each moved leaf, as Box2D does,
+// rebuild. The moving shapes' tree serves queries alone (the sweep and prune finds their pairs), so
+// the World's first query builds it, and a World never queried holds none. It is not re-shaped as
+// they move: the leaves whose fat box changed take
+// their new box and their ancestors are refitted (re-inserting each moved leaf, as Box2D does,
 // costs far more), and it is rebuilt once its inner perimeters have grown 1.5 times since the last
 // rebuild. Between set_pose() and update(), queries test the shapes moved out of their fat box one
 // by one.
@@ -44,6 +46,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <tuple>
@@ -189,7 +192,7 @@ class WorldState {
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
     ProxyId proxy = 0;              // moving: its sweep-and-prune proxy
-    AabbTree::Leaf leaf = -1;       // its leaf in the moving or the static tree
+    AabbTree::Leaf leaf = -1;       // static: its leaf in the static tree
     std::int32_t stale_at = -1;     // moving: its place in stale_leaves_ while its tree leaf is out of date
     std::uint32_t statics = kNone;  // moving: its static neighbours' list in static_lists_, if any,
     Aabb queried;                   // looked up in this box (kNowhere: none yet)
@@ -250,8 +253,13 @@ class WorldState {
   std::vector<std::array<Vec2, 2>> ghosts_;  // by ShapeId::index, for a chain's segments: its ghosts
   SweepAndPrune broad_;                      // the moving shapes
   std::vector<std::uint32_t> part_of_;       // by sweep-and-prune proxy: its shape, or kNone
-  AabbTree moving_tree_;                     // the moving shapes' fat boxes as of the last update
-  double moving_perimeter_ = 0.0;            // its inner boxes' perimeters right after its last rebuild
+  // The moving shapes' fat boxes as of the last update (or of the first query, which builds it),
+  // each shape's leaf by its proxy; built once under the mutex, as queries may run at once.
+  mutable AabbTree moving_tree_;
+  mutable std::vector<AabbTree::Leaf> moving_leaves_;
+  mutable std::atomic<bool> moving_tree_on_{false};
+  mutable std::mutex moving_tree_mutex_;
+  mutable double moving_perimeter_ = 0.0;    // its inner boxes' perimeters right after its last rebuild
   std::vector<std::uint32_t> stale_leaves_;  // moving shapes whose fat box changed since the last update
   std::vector<std::pair<AabbTree::Leaf, Aabb>> tree_boxes_;  // refresh_moving_tree()'s, kept
   AabbTree static_tree_;                                     // the static shapes' broad-phase boxes
@@ -320,6 +328,7 @@ class WorldState {
 
   // update.cpp
   void refresh_moving_tree();
+  void need_moving_tree() const;  // queries.cpp
   void find_candidates();
   void narrow_phase();
   void narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out) const;

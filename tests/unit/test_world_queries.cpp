@@ -16,6 +16,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace collide2d {
@@ -46,6 +47,46 @@ TEST(World, QueriesMatchBruteForce) {
     ASSERT_EQ(world.within(point, d), near_point) << k;
     ASSERT_EQ(world.within(probe, d), near_shape) << k;
     ASSERT_EQ(world.overlapping(box), in_box) << k;
+  }
+}
+
+// The first query builds the moving shapes' tree: queries from several threads at once on a World
+// moved since its update (some shapes out of their fat boxes) each find what brute force finds,
+// and so do queries after the next update, which keeps the tree.
+TEST(World, FirstQueriesFromSeveralThreadsAgree) {
+  Rng rng(12);
+  World world = random_world(rng, 400);
+  world.update();
+  for (const BodyId id : world.bodies()) {
+    if (uniform(rng, 0, 1) < 0.5) world.move_by(id, uniform_point(rng, -1, 1), uniform(rng, -1, 1));
+  }
+  std::vector<Shape> probes;
+  for (int k = 0; k < 40; ++k) probes.push_back(random_shape(rng, 10.0));
+  const auto brute_force = [&world](const Shape& probe) {
+    std::vector<BodyId> hit;
+    for (const BodyId id : world.bodies()) {
+      if (overlaps(probe, world.shape(id))) hit.push_back(id);
+    }
+    return hit;
+  };
+  for (int round = 0; round < 2; ++round) {
+    std::vector<std::vector<BodyId>> expected;
+    for (const Shape& probe : probes) expected.push_back(brute_force(probe));
+    std::atomic<bool> go{false};
+    std::vector<std::vector<std::vector<BodyId>>> found(4);
+    std::vector<std::thread> threads;
+    for (auto& mine : found) {
+      threads.emplace_back([&] {
+        while (!go.load()) std::this_thread::yield();
+        for (const Shape& probe : probes) mine.push_back(world.overlapping(probe));
+      });
+    }
+    go = true;
+    for (std::thread& t : threads) t.join();
+    for (std::size_t t = 0; t < found.size(); ++t)
+      EXPECT_EQ(found[t], expected) << "round " << round << ", thread " << t;
+    for (const BodyId id : world.bodies()) world.move_by(id, uniform_point(rng, -0.5, 0.5), 0.1);
+    world.update();
   }
 }
 
