@@ -191,7 +191,9 @@ void WorldState::narrow_phase() {
     const std::size_t k = task - 1;
     narrow_chunk(k * kPairsPerChunk, std::min(candidates_.size(), (k + 1) * kPairsPerChunk), chunks_[k]);
   };
-  if (chunks < 4) {  // a thousand pairs take less time than waking the pool
+  // Several thousand pairs take less time than waking the pool and then fetching back the cache
+  // lines its threads took (the next frame's poses write the shapes they read).
+  if (chunks < 32) {
     for (std::size_t k = 0; k <= chunks; ++k) task(k);
   } else {
     pool_->run(chunks + 1, task);
