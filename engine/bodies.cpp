@@ -185,13 +185,14 @@ void WorldState::drop_stale(std::uint32_t index) {
   entries_[index].stale_at = -1;
 }
 
-// Its broad-phase box, after a new pose or margin.
+// Its broad-phase box, after a new pose or margin. A moving shape's tree leaf goes stale only once
+// the tree is built: the first query builds it from the fat boxes as they are.
 void WorldState::refresh_box(std::uint32_t index) {
   ShapeEntry& p = entries_[index];
   if (p.is_static) {
     static_tree_.move(p.leaf, broad_box(p));
     statics_changed_ = true;
-  } else if (broad_.move(p.proxy, broad_box(p)) && p.stale_at < 0) {
+  } else if (broad_.move(p.proxy, broad_box(p)) && p.stale_at < 0 && moving_tree_on_.load(std::memory_order_relaxed)) {
     p.stale_at = static_cast<std::int32_t>(stale_leaves_.size());
     stale_leaves_.push_back(index);
   }
@@ -252,11 +253,13 @@ std::uint32_t WorldState::new_entry(std::uint32_t body, const ShapeDef& def) {
   return index;
 }
 
-void WorldState::release_local(ShapeEntry& p) {
-  if (p.local == kNone) return;
-  free_locals_.push_back(p.local);
-  p.local = kNone;
+void WorldState::release_slot(std::uint32_t& slot, std::vector<std::uint32_t>& free) {
+  if (slot == kNone) return;
+  free.push_back(slot);
+  slot = kNone;
 }
+
+void WorldState::release_local(ShapeEntry& p) { release_slot(p.local, free_locals_); }
 
 std::vector<std::uint32_t>& WorldState::static_list(ShapeEntry& p) {
   if (p.statics == kNone) p.statics = take_slot(static_lists_, free_static_lists_);
@@ -265,11 +268,7 @@ std::vector<std::uint32_t>& WorldState::static_list(ShapeEntry& p) {
   return list;
 }
 
-void WorldState::release_statics(ShapeEntry& p) {
-  if (p.statics == kNone) return;
-  free_static_lists_.push_back(p.statics);
-  p.statics = kNone;
-}
+void WorldState::release_statics(ShapeEntry& p) { release_slot(p.statics, free_static_lists_); }
 
 void WorldState::free_entry(std::uint32_t index) {
   ShapeEntry& p = entries_[index];

@@ -31,16 +31,12 @@ bool fresh(const AabbTree& tree) { return tree.size() >= 64 && 4 * tree.inserted
 // refitted), and the tree is rebuilt when a quarter of it is new since its last rebuild or its inner
 // perimeters have grown 1.5 times since. It runs alongside the narrow phase, which does not use it.
 void WorldState::refresh_moving_tree() {
-  const bool on = moving_tree_on_.load(std::memory_order_relaxed);
+  if (!moving_tree_on_.load(std::memory_order_relaxed)) return;  // no leaf is stale before it is built
   tree_boxes_.clear();
   for (const std::uint32_t index : stale_leaves_) {
     ShapeEntry& p = entries_[index];
-    if (on) tree_boxes_.emplace_back(moving_leaves_[p.proxy], broad_.fat_box(p.proxy));
+    tree_boxes_.emplace_back(moving_leaves_[p.proxy], broad_.fat_box(p.proxy));
     p.stale_at = -1;
-  }
-  if (!on) {
-    stale_leaves_.clear();
-    return;
   }
   moving_tree_.set_boxes(tree_boxes_);
   const bool moved = !stale_leaves_.empty();

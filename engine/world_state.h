@@ -22,11 +22,10 @@
 // rebuilt top-down at an update when a quarter or more of its shapes were added since the last
 // rebuild. The moving shapes' tree serves queries alone (the sweep and prune finds their pairs), so
 // the World's first query builds it, and a World never queried holds none. It is not re-shaped as
-// they move: the leaves whose fat box changed take
-// their new box and their ancestors are refitted (re-inserting each moved leaf, as Box2D does,
-// costs far more), and it is rebuilt once its inner perimeters have grown 1.5 times since the last
-// rebuild. Between set_pose() and update(), queries test the shapes moved out of their fat box one
-// by one.
+// they move: the leaves whose fat box changed take their new box and their ancestors are refitted
+// (re-inserting each moved leaf, as Box2D does, costs far more), and it is rebuilt once its inner
+// perimeters have grown 1.5 times since the last rebuild. Between set_pose() and update(), queries
+// test the shapes moved out of their fat box one by one.
 #pragma once
 
 #include <collide2d/aabb_tree.h>
@@ -301,6 +300,8 @@ class WorldState {
   }
   std::uint32_t new_entry(std::uint32_t body, const ShapeDef& def);
   void free_entry(std::uint32_t index);
+  // A slot a shape holds (kNone: none) back among the free ones.
+  static void release_slot(std::uint32_t& slot, std::vector<std::uint32_t>& free);
   void release_local(ShapeEntry& p);                       // its slot in locals_, if it has one
   std::vector<std::uint32_t>& static_list(ShapeEntry& p);  // its list in static_lists_, emptied or new
   void release_statics(ShapeEntry& p);                     // its list in static_lists_, if it has one
