@@ -35,6 +35,7 @@ WorldState::WorldState(const WorldOptions& options)
   require_margin(options.speculative_margin, "speculative margin");
   pool_ = std::make_unique<ThreadPool>(options.threads > 0 ? options.threads
                                                            : std::max(1u, std::thread::hardware_concurrency()));
+  scratch_.resize(pool_->threads());
 }
 
 bool WorldState::contains(BodyId id) const {

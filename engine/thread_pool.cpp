@@ -3,7 +3,7 @@
 namespace collide2d::detail {
 
 ThreadPool::ThreadPool(unsigned threads) {
-  for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this] { work(); });
+  for (unsigned k = 1; k < threads; ++k) workers_.emplace_back([this, k] { work(k); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -16,13 +16,13 @@ ThreadPool::~ThreadPool() {
 }
 
 // Takes tasks until none is left.
-void ThreadPool::drain() {
-  for (std::size_t k = next_.fetch_add(1); k < count_; k = next_.fetch_add(1)) (*task_)(k);
+void ThreadPool::drain(unsigned worker) {
+  for (std::size_t k = next_.fetch_add(1); k < count_; k = next_.fetch_add(1)) (*task_)(k, worker);
 }
 
-void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& task) {
+void ThreadPool::run(std::size_t count, const Task& task) {
   if (workers_.empty() || count <= 1) {
-    for (std::size_t k = 0; k < count; ++k) task(k);
+    for (std::size_t k = 0; k < count; ++k) task(k, 0);
     return;
   }
   {
@@ -34,13 +34,13 @@ void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& 
     ++generation_;
   }
   wake_.notify_all();
-  drain();
+  drain(0);
   std::unique_lock lock(mutex_);
   done_.wait(lock, [this] { return busy_ == 0; });
   task_ = nullptr;
 }
 
-void ThreadPool::work() {
+void ThreadPool::work(unsigned worker) {
   std::uint64_t seen = 0;
   for (;;) {
     {
@@ -49,7 +49,7 @@ void ThreadPool::work() {
       if (stopping_) return;
       seen = generation_;
     }
-    drain();
+    drain(worker);
     const std::lock_guard lock(mutex_);
     if (--busy_ == 0) done_.notify_one();
   }

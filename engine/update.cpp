@@ -58,7 +58,7 @@ void WorldState::find_candidates() {
     if (broad_.size() < kParallelBodies) {
       for (std::size_t k = 0; k < count; ++k) task(k);
     } else {
-      pool_->run(count, task);
+      pool_->run(count, [&task](std::size_t k, unsigned) { task(k); });
     }
   };
   broad_.update(parallel);
@@ -117,6 +117,9 @@ void WorldState::ChunkResults::clear() {
   contacts.clear();
   impacts.clear();
   filtered = 0;
+}
+
+void WorldState::ChunkScratch::clear() {
   verdicts.clear();
   std::apply([](auto&... batch) { (batch.clear(), ...); }, batches);
 }
@@ -179,18 +182,19 @@ void WorldState::update() {
 void WorldState::narrow_phase() {
   const std::size_t chunks = std::max<std::size_t>(1, (candidates_.size() + kPairsPerChunk - 1) / kPairsPerChunk);
   if (chunks_.size() < chunks) chunks_.resize(chunks);
-  const auto task = [this](std::size_t task) {
+  const ThreadPool::Task task = [this](std::size_t task, unsigned worker) {
     if (task == 0) {  // the longest task, so first
       refresh_moving_tree();
       return;
     }
     const std::size_t k = task - 1;
-    narrow_chunk(k * kPairsPerChunk, std::min(candidates_.size(), (k + 1) * kPairsPerChunk), chunks_[k]);
+    narrow_chunk(k * kPairsPerChunk, std::min(candidates_.size(), (k + 1) * kPairsPerChunk), chunks_[k],
+                 scratch_[worker]);
   };
   // Several thousand pairs take less time than waking the pool and then fetching back the cache
   // lines its threads took (the next frame's poses write the shapes they read).
   if (chunks < 32) {
-    for (std::size_t k = 0; k <= chunks; ++k) task(k);
+    for (std::size_t k = 0; k <= chunks; ++k) task(k, 0);
   } else {
     pool_->run(chunks + 1, task);
   }
@@ -200,7 +204,7 @@ void WorldState::narrow_phase() {
   impacts_.clear();
   for (std::size_t k = 0; k < chunks; ++k) {
     const ChunkResults& f = chunks_[k];
-    frame_pairs_.insert(frame_pairs_.end(), f.overlapping.begin(), f.overlapping.end());
+    for (const auto& [a, b] : f.overlapping) frame_pairs_.push_back(ShapePair{ids_of(a, b)});
     proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
     contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());
@@ -292,20 +296,22 @@ void WorldState::mark_removed() {
 
 // The candidate pairs [begin, end): first every overlap test, the chunk's pairs in batches by kind
 // (the same verdicts as one by one, 2 to 8 pairs at a time), then each pair's results in order.
-void WorldState::narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out) const {
+void WorldState::narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out, ChunkScratch& scratch) const {
   out.clear();
+  scratch.clear();
   for (std::size_t i = begin; i < end; ++i)
-    out.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out));
-  std::apply([&](auto&... batch) { (batch.run(entries_, out.verdicts), ...); }, out.batches);
+    scratch.verdicts.push_back(overlap_verdict(candidates_[i].first, candidates_[i].second, out, scratch));
+  std::apply([&](auto&... batch) { (batch.run(entries_, scratch.verdicts), ...); }, scratch.batches);
   for (std::size_t i = begin; i < end; ++i) {
-    const Verdict v = out.verdicts[i - begin];
+    const Verdict v = scratch.verdicts[i - begin];
     if (v != Verdict::skipped) narrow(candidates_[i].first, candidates_[i].second, v == Verdict::touching, out);
   }
 }
 
 // A pair of two ghosts, dropped by the filters or made of two sensors is skipped; a pair whose boxes meet joins the
 // batch of its kind, in kernel order.
-WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out) const {
+WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out,
+                                                ChunkScratch& scratch) const {
   const ShapeEntry& x = entries_[a];
   const ShapeEntry& y = entries_[b];
   if (x.ghost && y.ghost) return Verdict::skipped;  // another World's pair, not filtered here
@@ -315,7 +321,7 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
   }
   if (x.sensor && y.sensor) return Verdict::skipped;
   if (!intersects(x.box, y.box)) return Verdict::apart;
-  const auto place = static_cast<std::uint32_t>(out.verdicts.size());
+  const auto place = static_cast<std::uint32_t>(scratch.verdicts.size());
   return std::visit(
       [&](const auto& xs, const auto& ys) {
         using X = std::decay_t<decltype(xs)>;
@@ -323,10 +329,10 @@ WorldState::Verdict WorldState::overlap_verdict(std::uint32_t a, std::uint32_t b
         if constexpr (!batched<X, Y>) {
           return overlaps(x.shape, x.orientation, y.shape, y.orientation) ? Verdict::touching : Verdict::apart;
         } else if constexpr (rank<X>() <= rank<Y>()) {
-          std::get<Batch<X, Y>>(out.batches).add(place, a, b);
+          std::get<Batch<X, Y>>(scratch.batches).add(place, a, b);
           return Verdict::batched;
         } else {
-          std::get<Batch<Y, X>>(out.batches).add(place, b, a);
+          std::get<Batch<Y, X>>(scratch.batches).add(place, b, a);
           return Verdict::batched;
         }
       },
@@ -363,7 +369,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
     const bool chained = x.chain || y.chain;
     const Contact c = chained || contacts_on_ ? pair_contact(a, b, manifold) : Contact{};
     if (!chained || !c.empty()) {
-      out.overlapping.push_back(ShapePair{ids_of(a, b)});
+      out.overlapping.emplace_back(a, b);
       if (contacts_on_) record(true, c);
       return;
     }

@@ -224,15 +224,20 @@ class WorldState {
   };
   template <class Pairs>
   using BatchesOf = typename BatchTuple<Pairs>::type;
-  // What the narrow phase found in one chunk of the candidate pairs, and its scratch: each pair's
-  // verdict, and the batches.
+  // What the narrow phase found in one chunk of the candidate pairs; its overlapping pairs as shape
+  // indices (a's body first), whose ids the join fills in.
   struct ChunkResults {
-    std::vector<ShapePair> overlapping;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping;
     std::vector<SensorPair> sensing;
     std::vector<Proximity> proximity;
     std::vector<BodyContact> contacts;
     std::vector<Impact> impacts;
     std::size_t filtered = 0;
+    void clear();
+  };
+  // A thread's scratch for the chunk it works on: each pair's verdict, and the batches. One for each
+  // thread rather than each chunk, as a chunk needs it only while it runs.
+  struct ChunkScratch {
     std::vector<Verdict> verdicts;
     BatchesOf<BatchedPairs<Kinds>> batches;  // one for each pair of kinds with a batch, in rank order
     void clear();
@@ -282,7 +287,8 @@ class WorldState {
   };
   std::vector<Step> continuous_;  // in the order the shapes became continuous
   std::function<bool(BodyId, BodyId)> pair_predicate_;
-  std::vector<ChunkResults> chunks_;  // kept from frame to frame, so that steady state allocates nothing
+  std::vector<ChunkResults> chunks_;   // kept from frame to frame, so that steady state allocates nothing
+  std::vector<ChunkScratch> scratch_;  // by the pool's worker
   std::unique_ptr<ThreadPool> pool_;
 
   // bodies.cpp
@@ -332,8 +338,8 @@ class WorldState {
   void need_moving_tree() const;  // queries.cpp
   void find_candidates();
   void narrow_phase();
-  void narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out) const;
-  Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out) const;
+  void narrow_chunk(std::size_t begin, std::size_t end, ChunkResults& out, ChunkScratch& scratch) const;
+  Verdict overlap_verdict(std::uint32_t a, std::uint32_t b, ChunkResults& out, ChunkScratch& scratch) const;
   void narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const;
   void update_body_pairs();
   void index_contacts();

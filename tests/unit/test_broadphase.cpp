@@ -59,7 +59,9 @@ struct Twin {
   }
   void update_and_compare(const std::string& what) {
     sap.update();
-    threaded.update([this](std::size_t n, const std::function<void(std::size_t)>& task) { pool.run(n, task); });
+    threaded.update([this](std::size_t n, const std::function<void(std::size_t)>& task) {
+      pool.run(n, [&task](std::size_t k, unsigned) { task(k); });
+    });
     brute.update();
     ++updates;
     ASSERT_EQ(sap.pairs(), brute.pairs()) << what << " update " << updates;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <string>
@@ -96,9 +97,38 @@ TEST(WorldThreads, ThePoolRunsEveryTaskOnce) {
     detail::ThreadPool pool(threads);
     EXPECT_EQ(pool.threads(), threads);
     std::vector<std::atomic<int>> calls(1000);
-    for (int run = 0; run < 200; ++run) pool.run(run % 2 == 0 ? calls.size() : 7, [&](std::size_t k) { ++calls[k]; });
+    for (int run = 0; run < 200; ++run)
+      pool.run(run % 2 == 0 ? calls.size() : 7, [&](std::size_t k, unsigned) { ++calls[k]; });
     for (std::size_t k = 0; k < calls.size(); ++k)
       ASSERT_EQ(calls[k].load(), k < 7 ? 200 : 100) << threads << " threads, task " << k;
+  }
+}
+
+// A task's worker index names its thread, the calling thread 0, so that no two tasks running at once
+// share one (the World's scratch space is by worker).
+TEST(WorldThreads, EachWorkerIndexIsOneThread) {
+  for (const unsigned threads : {1u, 2u, 4u}) {
+    detail::ThreadPool pool(threads);
+    std::vector<std::atomic<int>> running(threads);
+    std::vector<std::thread::id> owner(threads);
+    owner[0] = std::this_thread::get_id();
+    std::mutex owners;
+    std::atomic<int> wrong{0};
+    for (int run = 0; run < 50; ++run) {
+      pool.run(500, [&](std::size_t, unsigned worker) {
+        if (worker >= threads || running[worker].exchange(1) != 0) {
+          ++wrong;
+          return;
+        }
+        {
+          const std::lock_guard lock(owners);
+          if (owner[worker] == std::thread::id{}) owner[worker] = std::this_thread::get_id();
+          if (owner[worker] != std::this_thread::get_id()) ++wrong;
+        }
+        running[worker].store(0);
+      });
+    }
+    EXPECT_EQ(wrong.load(), 0) << threads << " threads";
   }
 }
 
