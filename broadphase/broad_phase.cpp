@@ -141,13 +141,13 @@ void SweepAndPrune::Strip::resize(std::size_t n) {
     tags.reserve(room);
     lo.reserve(room);
     hi.reserve(room);
-    first.reserve(room);
+    starts.reserve(room);
   }
   keys.resize(n);
   tags.resize(n);
   lo.resize(n);
   hi.resize(n);
-  first.resize(n);
+  starts.resize(n);
 }
 
 // Chooses the sweep axis and the strip width from the boxes; true when the strips must be rebuilt.
@@ -188,8 +188,8 @@ SweepAndPrune::StripRange SweepAndPrune::strips_of(const Aabb& box) const {
   const int across = 1 - sweep_axis_;
   const auto index = [this](double x) {
     const double q = std::floor(x / strip_width_);
-    constexpr double kLimit = 4.0e18;  // beyond int64: such boxes share the outermost strips
-    return static_cast<std::int64_t>(std::clamp(q, -kLimit, kLimit));
+    constexpr double kLimit = 2.0e9;  // beyond int32: such boxes share the outermost strips
+    return static_cast<std::int32_t>(std::clamp(q, -kLimit, kLimit));
   };
   return {index(box.min[across]), index(box.max[across])};
 }
@@ -202,7 +202,7 @@ void SweepAndPrune::assign_strips() {
     const StripRange old = range_[id];
     const StripRange now = alive(id) ? strips_of(fat_[id]) : StripRange{};
     if (now.first == old.first && now.last == old.last) continue;
-    for (std::int64_t k = now.first; k <= now.last; ++k) {
+    for (std::int32_t k = now.first; k <= now.last; ++k) {
       if (k >= old.first && k <= old.last) continue;
       std::vector<std::uint32_t>& in = strips_[k].incoming;
       in.push_back(tag(id, false));
@@ -212,22 +212,23 @@ void SweepAndPrune::assign_strips() {
   }
 }
 
-void SweepAndPrune::load(Strip& s, std::size_t i, std::uint32_t t) const {
+// Endpoint i of strip `index` from its box as it is now.
+void SweepAndPrune::load(Strip& s, std::size_t i, std::uint32_t t, std::int32_t index) const {
   const Aabb& b = fat_[id_of(t)];
   s.keys[i] = (is_max(t) ? b.max[sweep_axis_] : b.min[sweep_axis_]) + 0.0;  // -0.0 -> +0.0 for the radix keys
   s.tags[i] = t;
   s.lo[i] = b.min[1 - sweep_axis_];
   s.hi[i] = b.max[1 - sweep_axis_];
-  s.first[i] = range_[id_of(t)].first;
+  s.starts[i] = range_[id_of(t)].first == index ? 1 : 0;
 }
 
 // Current coordinates for the strip's entries; entries of removed boxes, or of boxes that left the
 // strip, go.
-void SweepAndPrune::refresh(std::int64_t index, Strip& s) const {
+void SweepAndPrune::refresh(std::int32_t index, Strip& s) const {
   std::size_t out = 0;
   for (std::size_t i = 0; i < s.tags.size(); ++i) {
     const ProxyId id = id_of(s.tags[i]);
-    if (alive(id) && range_[id].first <= index && index <= range_[id].last) load(s, out++, s.tags[i]);
+    if (alive(id) && range_[id].first <= index && index <= range_[id].last) load(s, out++, s.tags[i], index);
   }
   s.resize(out);
 }
@@ -235,7 +236,7 @@ void SweepAndPrune::refresh(std::int64_t index, Strip& s) const {
 bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget, std::size_t& swaps) const {
   for (std::size_t i = 1; i < s.keys.size(); ++i) {
     const double k = s.keys[i], lo = s.lo[i], hi = s.hi[i];
-    const std::int64_t first = s.first[i];
+    const std::uint8_t starts = s.starts[i];
     const std::uint32_t t = s.tags[i];
     std::size_t j = i;
     while (j > 0 && before(k, t, s.keys[j - 1], s.tags[j - 1])) {
@@ -243,7 +244,7 @@ bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget, std::size_t& sw
       s.tags[j] = s.tags[j - 1];
       s.lo[j] = s.lo[j - 1];
       s.hi[j] = s.hi[j - 1];
-      s.first[j] = s.first[j - 1];
+      s.starts[j] = s.starts[j - 1];
       --j;
       if (++swaps > budget) break;
     }
@@ -251,7 +252,7 @@ bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget, std::size_t& sw
     s.tags[j] = t;
     s.lo[j] = lo;
     s.hi[j] = hi;
-    s.first[j] = first;
+    s.starts[j] = starts;
     if (swaps > budget) return false;
   }
   return true;
@@ -259,7 +260,7 @@ bool SweepAndPrune::insertion_sort(Strip& s, std::size_t budget, std::size_t& sw
 
 // LSD radix sort on (key, is_max): one pass on the max bit, then eight on the key's bytes; every
 // pass is stable, so equal keys keep mins first.
-void SweepAndPrune::radix_sort(Strip& s) const {
+void SweepAndPrune::radix_sort(Strip& s, std::int32_t index) const {
   const std::size_t n = s.keys.size();
   thread_local std::vector<std::uint64_t> bits, bits_tmp;
   thread_local std::vector<std::uint32_t> tags_tmp;
@@ -283,17 +284,17 @@ void SweepAndPrune::radix_sort(Strip& s) const {
   for (int shift = 0; shift < 64; shift += 8) {
     pass([shift](std::uint64_t b, std::uint32_t) { return static_cast<std::size_t>((b >> shift) & 0xffu); }, 256);
   }
-  for (std::size_t i = 0; i < n; ++i) load(s, i, s.tags[i]);
+  for (std::size_t i = 0; i < n; ++i) load(s, i, s.tags[i], index);
 }
 
 // The endpoints of boxes that entered the strip, sorted among themselves, merged in. The scratch
 // lists are the thread's, kept from frame to frame: a steady frame allocates nothing.
-void SweepAndPrune::merge_incoming(Strip& s) const {
+void SweepAndPrune::merge_incoming(Strip& s, std::int32_t index) const {
   if (s.incoming.empty()) return;
   thread_local Strip fresh;
   thread_local std::vector<std::uint32_t> order, tags;
   fresh.resize(s.incoming.size());
-  for (std::size_t i = 0; i < s.incoming.size(); ++i) load(fresh, i, s.incoming[i]);
+  for (std::size_t i = 0; i < s.incoming.size(); ++i) load(fresh, i, s.incoming[i], index);
   s.incoming.clear();
   order.resize(fresh.keys.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -308,7 +309,9 @@ void SweepAndPrune::merge_incoming(Strip& s) const {
     tags.push_back(take_old ? s.tags[i++] : fresh.tags[order[j++]]);
   }
   s.resize(tags.size());
-  for (std::size_t k = 0; k < tags.size(); ++k) load(s, k, tags[k]);
+  for (std::size_t k = 0; k < tags.size(); ++k) load(s, k, tags[k], index);
+  // A strip filled at once (the first frame, or new strips) gives back the room its arrivals took.
+  if (2 * fresh.keys.size() > tags.size()) std::vector<std::uint32_t>().swap(s.incoming);
 }
 
 // The pairs of the strip: overlapping along the sweep axis (both in the active list) and across it,
@@ -318,7 +321,7 @@ void SweepAndPrune::sweep(StripWork& w) const {
     ProxyId id;
     double lo;
     double hi;
-    std::int64_t first;
+    std::uint8_t starts;
   };
   // A proxy's place in the active list, and the list, per thread: tasks on other threads sweep
   // other strips. Kept from frame to frame: a steady frame allocates nothing.
@@ -338,12 +341,12 @@ void SweepAndPrune::sweep(StripWork& w) const {
     }
     w.axis_overlaps += active.size();
     for (const Active& q : active) {
-      if (s.lo[i] <= q.hi && q.lo <= s.hi[i] && w.index == std::max(s.first[i], q.first)) {
+      if (s.lo[i] <= q.hi && q.lo <= s.hi[i] && (s.starts[i] | q.starts) != 0) {
         w.found.push_back(id < q.id ? ProxyPair{id, q.id} : ProxyPair{q.id, id});
       }
     }
     active_slot[id] = static_cast<std::uint32_t>(active.size());
-    active.push_back({id, s.lo[i], s.hi[i], s.first[i]});
+    active.push_back({id, s.lo[i], s.hi[i], s.starts[i]});
   }
 }
 
@@ -357,8 +360,8 @@ void SweepAndPrune::process(StripWork& w) const {
   w.axis_overlaps = 0;
   refresh(w.index, strip);
   w.full_sort = !insertion_sort(strip, 8 * strip.keys.size() + 64, w.swaps);
-  if (w.full_sort) radix_sort(strip);
-  merge_incoming(strip);
+  if (w.full_sort) radix_sort(strip, w.index);
+  merge_incoming(strip, w.index);
   sweep(w);
   std::sort(w.found.begin(), w.found.end());
 }

@@ -125,17 +125,20 @@ class SweepAndPrune : public BroadPhaseBase {
     std::vector<std::uint32_t> tags;  // id << 1 | is_max
     std::vector<double> lo;           // the box's interval across the sweep axis
     std::vector<double> hi;
-    std::vector<std::int64_t> first;      // the first strip the box reaches (where its pairs are reported)
+    // 1 where this is the first strip the box reaches: a pair is reported in the first strip both
+    // boxes reach, the one where either starts.
+    std::vector<std::uint8_t> starts;
     std::vector<std::uint32_t> incoming;  // tags of boxes that entered since the last update
     void resize(std::size_t n);
   };
+  // Strip indices are clamped to 32 bits (strips_of()): the range is kept for every proxy.
   struct StripRange {
-    std::int64_t first = 0;
-    std::int64_t last = -1;  // empty
+    std::int32_t first = 0;
+    std::int32_t last = -1;  // empty
   };
   // What one strip's task did.
   struct StripWork {
-    std::int64_t index = 0;
+    std::int32_t index = 0;
     Strip* strip = nullptr;
     std::vector<ProxyPair> found;
     std::size_t swaps = 0;
@@ -145,7 +148,7 @@ class SweepAndPrune : public BroadPhaseBase {
 
   int sweep_axis_ = 0;
   double strip_width_ = 0.0;  // 0: not laid out yet
-  std::unordered_map<std::int64_t, Strip> strips_;
+  std::unordered_map<std::int32_t, Strip> strips_;
   std::vector<StripRange> range_;  // per proxy
   std::vector<StripWork> work_;    // per strip, kept from frame to frame
   std::vector<ProxyPair> found_;   // the strips' pairs joined; its storage is kept from frame to frame
@@ -156,11 +159,11 @@ class SweepAndPrune : public BroadPhaseBase {
   bool lay_out();
   StripRange strips_of(const Aabb& box) const;
   void assign_strips();
-  void load(Strip& s, std::size_t i, std::uint32_t tag) const;
-  void refresh(std::int64_t index, Strip& s) const;
+  void load(Strip& s, std::size_t i, std::uint32_t tag, std::int32_t index) const;
+  void refresh(std::int32_t index, Strip& s) const;
   bool insertion_sort(Strip& s, std::size_t budget, std::size_t& swaps) const;
-  void radix_sort(Strip& s) const;
-  void merge_incoming(Strip& s) const;
+  void radix_sort(Strip& s, std::int32_t index) const;
+  void merge_incoming(Strip& s, std::int32_t index) const;
   void sweep(StripWork& w) const;
   void process(StripWork& w) const;
   void join(std::size_t strips, const ParallelFor& run);

@@ -194,6 +194,11 @@ TEST(SweepAndPrune, HugeAndFarBoxes) {
   t.insert({Vec2(-1e300, -1e300), Vec2(-1e300, -1e300)});
   t.insert({Vec2(1e300, 1e300), Vec2(1e300, 1e300)});
   t.insert({Vec2(1e300, 1e300), Vec2(1e300, 1e300)});
+  // Past 2e9 strips (a strip is about four boxes wide): these share the outermost strip, the last
+  // two overlapping and the first apart from them.
+  t.insert(box_at(Vec2(1e10, 3e10), Vec2(0.5, 0.5)));
+  t.insert(box_at(Vec2(3e10, 3e10), Vec2(0.5, 0.5)));
+  t.insert(box_at(Vec2(3e10 + 0.5, 3e10 + 0.5), Vec2(0.5, 0.5)));
   for (int frame = 0; frame < 20; ++frame) {
     for (std::size_t k = 0; k < 200; ++k) {
       centre[k] += uniform_point(rng, -0.3, 0.3);
