@@ -13,23 +13,6 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kMax = std::numeric_limits<float>::max();
 
-// The next float up (or down) from a finite f; std::nextafter, but inline: boxes are stored at every
-// update, and a library call each would be a noticeable part of a frame.
-float step(float f, bool up) {
-  if (f == 0.0f) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
-  const auto bits = detail::bit_copy<std::uint32_t>(f);
-  return detail::bit_copy<float>((f > 0.0f) == up ? bits + 1 : bits - 1);
-}
-
-// A float at or below x (at or above, for up), one more step out: see the header.
-float outward(double x, bool up) {
-  if (x > kMax) return up ? kInf : kMax;
-  if (x < -kMax) return up ? -kMax : -kInf;
-  float f = static_cast<float>(x);
-  if (up ? f < x : f > x) f = step(f, up);
-  return step(f, up);
-}
-
 float perimeter(const float lo[2], const float hi[2]) { return (hi[0] - lo[0]) + (hi[1] - lo[1]); }
 // For inner_perimeter(): in double, and 0 for a box that reaches past float's range (an infinite
 // term would make the sum NaN for good).
@@ -49,8 +32,8 @@ float joined_perimeter(const Node& p, const Node& q) {
 
 void AabbTree::store(const Aabb& box, float lo[2], float hi[2]) {
   for (int k = 0; k < 2; ++k) {
-    lo[k] = outward(box.min[k], false);
-    hi[k] = outward(box.max[k], true);
+    lo[k] = detail::outward(box.min[k], false);
+    hi[k] = detail::outward(box.max[k], true);
   }
 }
 

@@ -88,16 +88,17 @@ void WorldState::find_candidates() {
     if (index == kNone) continue;
     ShapeEntry& b = entries_[index];
     const Aabb& fat = broad_.fat_box(proxy);
-    if (statics_changed_ || !encloses(b.queried, fat)) {
+    if (statics_changed_ || !encloses(as_aabb(b.queried), fat)) {
       // Looked up around the fat box, half its larger side further, so that the next few frames'
       // fat boxes stay within it and need no look-up: the statics kept are a superset, and the test
       // below keeps those the fat box meets.
-      b.queried = grown(fat, 0.5 * (fat.max - fat.min).maxCoeff());
+      b.queried = outward(grown(fat, 0.5 * (fat.max - fat.min).maxCoeff()));
+      const Aabb around = as_aabb(b.queried);
       // A shape keeps its list once it has had a neighbour, so that a steady frame allocates nothing.
       const bool had_list = b.statics != kNone;
       std::vector<std::uint32_t>& list = static_list(b);
-      static_tree_.query(b.queried, [&](std::uint32_t s) {
-        if (intersects(broad_box(entries_[s]), b.queried)) list.push_back(s);
+      static_tree_.query(around, [&](std::uint32_t s) {
+        if (intersects(broad_box(entries_[s]), around)) list.push_back(s);
       });
       if (!had_list && list.empty()) release_statics(b);
       ++stats_.requeried;

@@ -194,12 +194,12 @@ class WorldState {
     AabbTree::Leaf leaf = -1;       // static: its leaf in the static tree
     std::int32_t stale_at = -1;     // moving: its place in stale_leaves_ while its tree leaf is out of date
     std::uint32_t statics = kNone;  // moving: its static neighbours' list in static_lists_, if any,
-    Aabb queried;                   // looked up in this box (kNowhere: none yet)
+    FloatBox queried = kNowhere;    // looked up in this box, kept in float (kNowhere: none yet)
   };
   // An empty box, which encloses no fat box: a shape entering the sweep and prune looks up its static
   // neighbours at the next update.
-  static inline const Aabb kNowhere{Vec2::Constant(std::numeric_limits<double>::infinity()),
-                                    Vec2::Constant(-std::numeric_limits<double>::infinity())};
+  static constexpr float kFar = std::numeric_limits<float>::infinity();
+  static constexpr FloatBox kNowhere{{kFar, kFar}, {-kFar, -kFar}};
 
   // A candidate pair's overlap test, decided at once or left for the chunk's batch.
   enum class Verdict : std::uint8_t { skipped, apart, touching, batched };

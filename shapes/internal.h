@@ -1,10 +1,11 @@
 // The shapes module's interface to the rest of the library (not installed): rotations generic over
-// the scalar, a value's bits, and the form of every validation message.
+// the scalar, a value's bits, boxes kept in float, and the form of every validation message.
 #pragma once
 
 #include <collide2d/shapes.h>
 
 #include "shapes/bits.h"
+#include "shapes/float_box.h"
 #include "shapes/rotation.h"
 
 #include <Eigen/Core>
