@@ -70,6 +70,7 @@ BroadPhaseBase::BroadPhaseBase(double fat_margin) : margin_(fat_margin) {
 
 ProxyId BroadPhaseBase::take_id() {
   if (free_.empty()) {
+    detail::reserve_room(fat_, fat_.size() + 1);
     fat_.push_back(kRemoved);
     return static_cast<ProxyId>(fat_.size() - 1);
   }
@@ -99,7 +100,6 @@ std::vector<ProxyId> BroadPhaseBase::insert_batch(std::span<const Aabb> boxes) {
     const ProxyId id = take_id();
     const Vec2 grow = Vec2::Constant(margin_);
     fat_[id] = {box.min - grow, box.max + grow};
-    inserted_.push_back(id);
     ids.push_back(id);
   }
   live_ += boxes.size();
@@ -127,7 +127,6 @@ void BroadPhaseBase::finish_update(std::vector<ProxyPair>& now) {
   detail::replace_pairs(pairs_, now, began_, ended_);
   free_.insert(free_.end(), removed_.begin(), removed_.end());
   removed_.clear();
-  inserted_.clear();
 }
 
 // ---- sweep and prune ----
@@ -136,7 +135,7 @@ void BroadPhaseBase::finish_update(std::vector<ProxyPair>& now) {
 // do so without allocating.
 void SweepAndPrune::Strip::resize(std::size_t n) {
   if (n > keys.capacity()) {
-    const std::size_t room = n + n / 4 + 8;
+    const std::size_t room = n + n / 8 + 8;
     keys.reserve(room);
     tags.reserve(room);
     lo.reserve(room);
@@ -197,6 +196,7 @@ SweepAndPrune::StripRange SweepAndPrune::strips_of(const Aabb& box) const {
 // Moves each box into the strips its fat box now reaches; entries of strips it left are dropped
 // when those strips are refreshed.
 void SweepAndPrune::assign_strips() {
+  detail::reserve_room(range_, fat_.size());
   range_.resize(fat_.size());
   for (ProxyId id = 0; id < fat_.size(); ++id) {
     const StripRange old = range_[id];

@@ -199,10 +199,17 @@ void WorldState::narrow_phase() {
   } else {
     pool_->run(chunks + 1, task);
   }
-  frame_pairs_.clear();
-  proximity_.clear();
-  contacts_.clear();
-  impacts_.clear();
+  // Each list emptied, with room for the chunks' results joined.
+  const auto make_room = [&](auto& list, const auto ChunkResults::*results) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < chunks; ++k) n += (chunks_[k].*results).size();
+    list.clear();
+    reserve_room(list, n);
+  };
+  make_room(frame_pairs_, &ChunkResults::overlapping);
+  make_room(proximity_, &ChunkResults::proximity);
+  make_room(contacts_, &ChunkResults::contacts);
+  make_room(impacts_, &ChunkResults::impacts);
   for (std::size_t k = 0; k < chunks; ++k) {
     const ChunkResults& f = chunks_[k];
     for (const auto& [a, b] : f.overlapping) frame_pairs_.push_back(ShapePair{ids_of(a, b)});
@@ -249,6 +256,7 @@ std::vector<ShapePair> WorldState::candidates() const {
 // The overlapping pairs by bodies: each pair of bodies once (the shape pairs are sorted by bodies).
 void WorldState::update_body_pairs() {
   frame_body_pairs_.clear();
+  reserve_room(frame_body_pairs_, overlapping_.size());
   for (const ShapePair& p : overlapping_) {
     if (frame_body_pairs_.empty() || frame_body_pairs_.back().a != p.a || frame_body_pairs_.back().b != p.b)
       frame_body_pairs_.push_back({p.a, p.b, p.user_a, p.user_b});

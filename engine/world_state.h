@@ -170,29 +170,32 @@ class WorldState {
     Pose pose() const { return {position, angle}; }
   };
   // A shape of a body, where the broad and the narrow phase work: what a pair's test and record read
-  // first, together, then what posing and the broad phase keep.
+  // first, together, then what posing and the broad phase keep. Its flags are bits and its place in
+  // the broad phase one word, so that it fills 208 bytes.
   struct ShapeEntry {
     Shape shape;              // where it is in the world
     Aabb box;                 // aabb(shape), kept with the pose
     Orientation orientation;  // of the shape's world angle, kept with the pose
     Filter filter;
-    bool sensor = false;
-    bool is_static = false;   // its body's kind, kept here for the pair loops
-    bool continuous = false;  // its body's
-    bool ghost = false;       // its body's
-    bool chain = false;       // a chain's segment, its ghosts in ghosts_
-    bool alive = false;
-    bool at_origin = true;  // local centre and angle zero: the shape takes the body's pose as it is
+    bool sensor : 1 = false;
+    bool is_static : 1 = false;   // its body's kind, kept here for the pair loops
+    bool continuous : 1 = false;  // its body's
+    bool ghost : 1 = false;       // its body's
+    bool chain : 1 = false;       // a chain's segment, its ghosts in ghosts_
+    bool alive : 1 = false;
+    bool at_origin : 1 = true;  // local centre and angle zero: the shape takes the body's pose as it is
     std::uint32_t generation = 1;
     BodyId body;                     // its body, whose handle and user id stay as they are while the shape lives
     std::uint32_t step = kNone;      // continuous: its place in continuous_
     std::uint32_t local = kNone;     // not at its body's origin: its shape in the body's frame in locals_
     std::uint32_t next = kNone;      // its body's next shape
+    std::int32_t stale_at = -1;      // moving: its place in stale_leaves_ while its tree leaf is out of date
     std::uint64_t body_user_id = 0;  // kept here, as the handle, so that a record reads the shapes alone
     std::uint64_t user_id = 0;
-    ProxyId proxy = 0;              // moving: its sweep-and-prune proxy
-    AabbTree::Leaf leaf = -1;       // static: its leaf in the static tree
-    std::int32_t stale_at = -1;     // moving: its place in stale_leaves_ while its tree leaf is out of date
+    union {
+      ProxyId proxy = 0;    // moving: its sweep-and-prune proxy
+      AabbTree::Leaf leaf;  // static: its leaf in the static tree
+    };
     std::uint32_t statics = kNone;  // moving: its static neighbours' list in static_lists_, if any,
     FloatBox queried = kNowhere;    // looked up in this box, kept in float (kNowhere: none yet)
   };

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace collide2d::detail {
 
@@ -79,6 +80,13 @@ inline Aabb around(const Vec2& center, const Vec2& half) { return around(center,
 
 // The shortest digits that read back as the value ("0.1", "1e+51", "nan"), for messages.
 std::string shortest(double value);
+
+// Room for n elements, an eighth more when it must grow, where push_back and resize double it: the
+// lists kept for every proxy and shape would otherwise be up to half empty.
+template <class T>
+void reserve_room(std::vector<T>& list, std::size_t n) {
+  if (n > list.capacity()) list.reserve(n + n / 8);
+}
 
 }  // namespace collide2d::detail
 

@@ -74,8 +74,7 @@ class BroadPhaseBase {
   // The fat boxes by id; a removed proxy's is empty, its min above its max (a live one's never is).
   std::vector<Aabb> fat_;
   bool alive(ProxyId id) const { return fat_[id].min.x() <= fat_[id].max.x(); }
-  std::vector<ProxyId> inserted_;  // since the last update
-  std::vector<ProxyId> removed_;   // since the last update; their ids are reused after it
+  std::vector<ProxyId> removed_;  // since the last update; their ids are reused after it
 
   // Installs the new pair set (sorted) and derives began/ended; recycles removed ids. `now` is left
   // holding the old pairs (replace_pairs).
