@@ -194,11 +194,14 @@ void WorldState::narrow_phase() {
   };
   // Several thousand pairs take less time than waking the pool and then fetching back the cache
   // lines its threads took (the next frame's poses write the shapes they read).
-  if (chunks < 32) {
-    for (std::size_t k = 0; k <= chunks; ++k) task(k, 0);
-  } else {
-    pool_->run(chunks + 1, task);
-  }
+  const auto run = [&](std::size_t count, const ThreadPool::Task& each) {
+    if (chunks < 32) {
+      for (std::size_t k = 0; k < count; ++k) each(k, 0);
+    } else {
+      pool_->run(count, each);
+    }
+  };
+  run(chunks + 1, task);
   // Each list emptied, with room for the chunks' results joined.
   const auto make_room = [&](auto& list, const auto ChunkResults::*results) {
     std::size_t n = 0;
@@ -210,9 +213,17 @@ void WorldState::narrow_phase() {
   make_room(proximity_, &ChunkResults::proximity);
   make_room(contacts_, &ChunkResults::contacts);
   make_room(impacts_, &ChunkResults::impacts);
+  // The overlapping pairs' ids, each chunk's at its place: the shapes they read lie far apart.
+  for (std::size_t k = 0; k < chunks; ++k) {
+    chunks_[k].first_pair = frame_pairs_.size();
+    frame_pairs_.resize(frame_pairs_.size() + chunks_[k].overlapping.size());
+  }
+  run(chunks, [this](std::size_t k, unsigned) {
+    ShapePair* out = frame_pairs_.data() + chunks_[k].first_pair;
+    for (const auto& [a, b] : chunks_[k].overlapping) *out++ = ShapePair{ids_of(a, b)};
+  });
   for (std::size_t k = 0; k < chunks; ++k) {
     const ChunkResults& f = chunks_[k];
-    for (const auto& [a, b] : f.overlapping) frame_pairs_.push_back(ShapePair{ids_of(a, b)});
     proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());
     contacts_.insert(contacts_.end(), f.contacts.begin(), f.contacts.end());
     impacts_.insert(impacts_.end(), f.impacts.begin(), f.impacts.end());

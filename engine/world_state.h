@@ -231,6 +231,7 @@ class WorldState {
   // indices (a's body first), whose ids the join fills in.
   struct ChunkResults {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping;
+    std::size_t first_pair = 0;  // where the join puts the first in frame_pairs_
     std::vector<SensorPair> sensing;
     std::vector<Proximity> proximity;
     std::vector<BodyContact> contacts;
