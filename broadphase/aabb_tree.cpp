@@ -256,18 +256,59 @@ void AabbTree::rebuild() {
     if (nodes_[i].height > 0) release(i);
     if (nodes_[i].height == 0) leaf_list_.push_back(i);
   }
-  root_ = build(leaf_list_.data(), leaf_list_.data() + leaf_list_.size());
+  root_ = build(leaf_list_.data(), leaf_list_.data() + leaf_list_.size(), 0);
   nodes_[root_].parent = -1;
 }
 
-std::int32_t AabbTree::build(std::int32_t* first, std::int32_t* last) {
+// Twice the node's centre; a box unbounded both ways (coordinates beyond float's range) counts as at 0.
+double AabbTree::centre(std::int32_t node, int axis) const {
+  const double c = static_cast<double>(nodes_[node].lo[axis]) + nodes_[node].hi[axis];
+  return std::isnan(c) ? 0.0 : c;
+}
+
+// The split of least cost, perimeter times count on each side, among the bounds of kBins bins of
+// the centres along the axis, whose centres span [lo, hi]; null where no bin boundary divides the
+// boxes.
+std::int32_t* AabbTree::sah_split(std::int32_t* first, std::int32_t* last, int axis, double lo, double hi) const {
+  constexpr int kBins = 16;
+  const double extent = hi - lo;
+  if (!(extent > 0.0) || !std::isfinite(extent)) return nullptr;
+  const double scale = kBins / extent;
+  const auto bin_of = [&](std::int32_t i) {
+    return std::min(kBins - 1, static_cast<int>((centre(i, axis) - lo) * scale));
+  };
+  struct Bin {
+    float lo[2] = {kInf, kInf};
+    float hi[2] = {-kInf, -kInf};
+    double count = 0;
+    void join(const float (&box_lo)[2], const float (&box_hi)[2], double boxes) {
+      for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], box_lo[k]), hi[k] = std::max(hi[k], box_hi[k]);
+      count += boxes;
+    }
+    double cost() const { return count > 0 ? counted_perimeter(lo, hi) * count : kInf; }
+  };
+  Bin bins[kBins];
+  for (const std::int32_t* i = first; i != last; ++i) bins[bin_of(*i)].join(nodes_[*i].lo, nodes_[*i].hi, 1);
+  double right_cost[kBins];  // of bins [j, kBins)
+  Bin side;
+  for (int j = kBins - 1; j > 0; --j) {
+    side.join(bins[j].lo, bins[j].hi, bins[j].count);
+    right_cost[j] = side.cost();
+  }
+  side = Bin{};
+  double best = kInf;
+  int best_bin = 0;
+  for (int j = 1; j < kBins; ++j) {
+    side.join(bins[j - 1].lo, bins[j - 1].hi, bins[j - 1].count);
+    if (side.cost() + right_cost[j] < best) best = side.cost() + right_cost[j], best_bin = j;
+  }
+  if (best_bin == 0) return nullptr;
+  return std::partition(first, last, [&](std::int32_t i) { return bin_of(i) < best_bin; });
+}
+
+std::int32_t AabbTree::build(std::int32_t* first, std::int32_t* last, int depth) {
   if (last - first == 1) return *first;
   double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
-  // Twice the centre; a box unbounded both ways (coordinates beyond float's range) counts as at 0.
-  const auto centre = [this](std::int32_t i, int k) {
-    const double c = static_cast<double>(nodes_[i].lo[k]) + nodes_[i].hi[k];
-    return std::isnan(c) ? 0.0 : c;
-  };
   for (const std::int32_t* i = first; i != last; ++i) {
     for (int k = 0; k < 2; ++k) {
       lo[k] = std::min(lo[k], centre(*i, k));
@@ -275,10 +316,15 @@ std::int32_t AabbTree::build(std::int32_t* first, std::int32_t* last) {
     }
   }
   const int axis = hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0;
-  std::int32_t* mid = first + (last - first) / 2;
-  std::nth_element(first, mid, last, [&](std::int32_t p, std::int32_t q) { return centre(p, axis) < centre(q, axis); });
-  const std::int32_t left = build(first, mid);
-  const std::int32_t right = build(mid, last);
+  constexpr int kSahDepth = 16;
+  std::int32_t* mid = depth < kSahDepth ? sah_split(first, last, axis, lo[axis], hi[axis]) : nullptr;
+  if (mid == nullptr || mid == first || mid == last) {
+    mid = first + (last - first) / 2;
+    std::nth_element(first, mid, last,
+                     [&](std::int32_t p, std::int32_t q) { return centre(p, axis) < centre(q, axis); });
+  }
+  const std::int32_t left = build(first, mid, depth + 1);
+  const std::int32_t right = build(mid, last, depth + 1);
   const std::int32_t node = allocate();
   Node& n = nodes_[node];
   n.child[0] = left;

@@ -22,9 +22,11 @@
 /// v3's b2DynamicTree). On the way back up, each ancestor swaps a child with a grandchild where that
 /// lowers the perimeter of the inner node between them (Kopta et al., "Fast, Effective BVH Updates
 /// for Animated Scenes"); a tree grown taller than 48 is rebuilt. rebuild() builds the inner nodes again top-down,
-/// splitting the boxes at the median of their centres along the longer side of the centres' bounds: O(n log n), a
-/// height of ceil(log2 n), and boxes grouped by place rather than by the order they came in. Leaves keep their handles
-/// across rebuild().
+/// grouping the boxes by place rather than by the order they came in: each split cuts along the longer side of the
+/// centres' bounds where the binned surface area heuristic (I. Wald, "On fast Construction of SAH-based Bounding
+/// Volume Hierarchies", with perimeters for areas; Box2D v3's rebuild bins too) puts it, or, from depth 16 on and where
+/// the bins cannot divide the boxes, at the median centre, so that the height stays at most 48. O(n log n).
+/// Leaves keep their handles across rebuild().
 ///
 /// Boxes must be valid (finite, min <= max): the tree does not check; its callers do.
 #pragma once
@@ -101,7 +103,8 @@ class AabbTree {
     bool leaf() const { return child[0] < 0; }
   };
   // The stack of a traversal never holds more than the height plus one nodes: insert() rebuilds a
-  // tree taller than kMaxHeight, and the top-down build's height is at most 32.
+  // tree taller than kMaxHeight, and the top-down build's height is at most 48 (kSahDepth, then
+  // median splits).
   static constexpr int kMaxHeight = 48;
   static constexpr std::size_t kStack = kMaxHeight + 2;
 
@@ -122,7 +125,9 @@ class AabbTree {
   void replace_child(std::int32_t parent, std::int32_t from, std::int32_t to);
   void refit(std::int32_t node);
   void refit_up(std::int32_t node);
-  std::int32_t build(std::int32_t* first, std::int32_t* last);
+  std::int32_t build(std::int32_t* first, std::int32_t* last, int depth);
+  std::int32_t* sah_split(std::int32_t* first, std::int32_t* last, int axis, double lo, double hi) const;
+  double centre(std::int32_t node, int axis) const;
   void refit_below(std::int32_t node);
   static bool overlap(const Node& n, const float lo[2], const float hi[2]) {
     return n.lo[0] <= hi[0] && lo[0] <= n.hi[0] && n.lo[1] <= hi[1] && lo[1] <= n.hi[1];
