@@ -31,10 +31,9 @@ float joined_perimeter(const Node& p, const Node& q) {
 }  // namespace
 
 void AabbTree::store(const Aabb& box, float lo[2], float hi[2]) {
-  for (int k = 0; k < 2; ++k) {
-    lo[k] = detail::outward(box.min[k], false);
-    hi[k] = detail::outward(box.max[k], true);
-  }
+  const detail::FloatBox f = detail::outward(box);
+  std::copy(f.lo, f.lo + 2, lo);
+  std::copy(f.hi, f.hi + 2, hi);
 }
 
 std::int32_t AabbTree::allocate() {
@@ -300,7 +299,8 @@ std::int32_t* AabbTree::sah_split(std::int32_t* first, std::int32_t* last, int a
   int best_bin = 0;
   for (int j = 1; j < kBins; ++j) {
     side.join(bins[j - 1].lo, bins[j - 1].hi, bins[j - 1].count);
-    if (side.cost() + right_cost[j] < best) best = side.cost() + right_cost[j], best_bin = j;
+    const double cost = side.cost() + right_cost[j];
+    if (cost < best) best = cost, best_bin = j;
   }
   if (best_bin == 0) return nullptr;
   return std::partition(first, last, [&](std::int32_t i) { return bin_of(i) < best_bin; });

@@ -1,11 +1,12 @@
 // A small pool of std::thread workers for the World's per-frame work: run(count, task) calls
 // task(k, worker) for every k in [0, count), spread over the workers and the calling thread, and
-// returns when all calls are done. `worker` names the thread in [0, threads()), the calling thread 0,
-// so that a task may use scratch space of its thread's own. Tasks are taken in order from an atomic counter, so a slow
-// one does not hold the others back. The workers sleep on a condition variable between runs. Standard threads rather
-// than oneTBB: the World needs one parallel loop per phase and nothing of TBB's scheduler, and the
-// library keeps linking only Eigen (and the standard library's threads). std::thread rather than
-// std::jthread, which the C++ library of Emscripten 3.1 lacks.
+// returns when all calls are done. `worker` names the thread in [0, threads()), the calling thread
+// 0, so that a task may use scratch space of its thread's own. Tasks are taken in order from an
+// atomic counter, so a slow one does not hold the others back. The workers sleep on a condition
+// variable between runs. Standard threads rather than oneTBB: the World needs one parallel loop per
+// phase and nothing of TBB's scheduler, and the library keeps linking only Eigen (and the standard
+// library's threads). std::thread rather than std::jthread, which the C++ library of Emscripten 3.1
+// lacks.
 #pragma once
 
 #include <atomic>

@@ -213,11 +213,14 @@ void WorldState::narrow_phase() {
   make_room(proximity_, &ChunkResults::proximity);
   make_room(contacts_, &ChunkResults::contacts);
   make_room(impacts_, &ChunkResults::impacts);
-  // The overlapping pairs' ids, each chunk's at its place: the shapes they read lie far apart.
+  // The overlapping pairs' ids, each chunk's at its place, on the pool: the shapes they read lie far
+  // apart.
+  std::size_t pairs = 0;
   for (std::size_t k = 0; k < chunks; ++k) {
-    chunks_[k].first_pair = frame_pairs_.size();
-    frame_pairs_.resize(frame_pairs_.size() + chunks_[k].overlapping.size());
+    chunks_[k].first_pair = pairs;
+    pairs += chunks_[k].overlapping.size();
   }
+  frame_pairs_.resize(pairs);
   run(chunks, [this](std::size_t k, unsigned) {
     ShapePair* out = frame_pairs_.data() + chunks_[k].first_pair;
     for (const auto& [a, b] : chunks_[k].overlapping) *out++ = ShapePair{ids_of(a, b)};
