@@ -95,16 +95,21 @@ double separation_along(const B& shape, const Orientation& o, const Vec2& u, con
   }
 }
 
+// The scale of the separations that decide which segment, of length `length`, owns a shape of
+// reference point r (in the world) and reach `reach`: a segment and its neighbour each round their
+// points on their own, so it is of the world coordinates' size. With less, where a chain's points in
+// line carry their rounding (turns of 1e-14 rad at 1000 from the origin), both segments at a vertex
+// could give the body to the other.
+double owning_scale(const ChainSegment& s, const Vec2& r, double reach, double length) {
+  return s.segment.center.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + reach + length;
+}
+
 // Whether no convex neighbour's line lies farther from the shape than the segment's, beyond the
-// rounding of the separations. They are measured in the world, from points a segment and its
-// neighbour each round on their own, so the slack is of the coordinates' size: with less, where a
-// chain's points in line carry their rounding (turns of 1e-14 rad at 1000 from the origin), both
-// segments at a vertex could give the body to the other.
+// rounding of the separations at `scale` (owning_scale()).
 template <class B>
-bool owns(const Faces& f, const B& shape, const Orientation& o, const Vec2& r) {
+bool owns(const Faces& f, const B& shape, const Orientation& o, double scale) {
   if (!f.convex1 && !f.convex2) return true;
   const double own = separation_along(shape, o, f.n, f.p1);
-  const double scale = f.p1.cwiseAbs().maxCoeff() + r.cwiseAbs().maxCoeff() + detail::reach(shape) + f.length;
   const double slack = 64 * kEpsilon * scale;
   return !(f.convex1 && separation_along(shape, o, f.n0, f.p1) > own + slack) &&
          !(f.convex2 && separation_along(shape, o, f.n2, f.p2) > own + slack);
@@ -150,7 +155,7 @@ template <class B>
 Contact at_a_vertex(const ChainSegment& a, const Orientation& ao, const B& b, const Orientation& bo, const Vec2& r,
                     const Contact& c, const ContactOptions& options) {
   const Faces f = faces_of(a, ao);
-  if (!owns(f, b, bo, r)) return Contact::beyond(kInf);
+  if (!owns(f, b, bo, owning_scale(a, r, detail::reach(b), f.length))) return Contact::beyond(kInf);
   if (admitted(f, c.normal)) return c;
   const Contact h = held(a, ao, f, b, bo, options);
   // Apart, a shape's points over the segment lie in front of it, or all behind it where the shape
@@ -170,16 +175,71 @@ Contact contact_of_kind(const ChainSegment& a, const Orientation& ao, const B& b
   return at_a_vertex(a, ao, b, bo, r, c, options);
 }
 
+// The rules at an end of the segment for a circle whose centre c (in the segment's frame, from its
+// first point) lies beyond that end (1 or 2) in front of the segment's line, at height h over it:
+// its contact is at that end, along d, c's offset from it. owns() and admitted() as a circle reads
+// them in the segment's frame, where it needs no turning, squared where they divide by a length:
+// no convex neighbour's line, of direction w, lies farther from c than the segment's, (right of w)
+// . x / |w| <= h + slack; at a convex end the normal lies in the vertex's cone, d not past the
+// neighbour's direction away from the end (w . d <= kTurn |w| |d|); at a concave end it is the
+// segment's normal. A normal not admitted leaves none: the circle's deepest point over the segment
+// lies beyond the same end. Out of line: inlined, it weighs on the pairs that never come to it.
+[[gnu::noinline]] bool circle_kept_at(const ChainSegment& a, const detail::SegmentView& view, const Vec2& c,
+                                      const Circle& b, int end) {
+  const Vec2& p2 = a.segment.end;
+  const double h = view.normals[0].dot(c);
+  const Vec2 in = -a.ghost1, out = a.ghost2 - p2;
+  const bool convex1 = cross(in, p2) > 0.0, convex2 = cross(p2, out) > 0.0;
+  const double bound = h + 64 * kEpsilon * owning_scale(a, b.center, b.radius, view.reach);
+  const auto nearer = [&](const Vec2& w, const Vec2& x) {
+    const double s = right_of(w).dot(x);
+    return !(s > 0.0 && s * s > bound * bound * w.squaredNorm());
+  };
+  if ((convex1 && !nearer(in, c)) || (convex2 && !nearer(out, Vec2(c - p2)))) return false;
+  const Vec2 d = end == 1 ? c : Vec2(c - p2);
+  const double turn = kTurn * kTurn * d.squaredNorm();
+  if (end == 1 ? convex1 : convex2) {
+    const Vec2& w = end == 1 ? a.ghost1 : out;
+    const double t = w.dot(d);
+    return !(t > 0.0 && t * t > turn * w.squaredNorm());
+  }
+  const double along = view.normals[2].dot(d);
+  return h > 0.0 && along * along <= turn;
+}
+
+// The end (1 or 2) that a circle's centre c (in the segment's frame, from its first point) lies
+// beyond, in front of the segment's line, where the circle's contact at that end lies within the
+// limit; else 0. Read without the unit normal that core_circle_at() divides out, so by a margin of
+// the rounding between the two readings and of the world's coordinates (at_a_vertex() reads the
+// centre's place along the segment there): where core_circle_at() too finds c past that end (its
+// front face leading, then along_face()), and no rounding could put it over the segment.
+int end_ruled(const ChainSegment& a, const Vec2& c, const Circle& b, const ContactOptions& options) {
+  const Vec2& p2 = a.segment.end;
+  const double at = p2.dot(c), height = right_of(p2).dot(c), last = p2.squaredNorm();
+  const int end = !(height > 0.0) ? 0 : at < 0.0 ? 1 : at > last ? 2 : 0;
+  if (end == 0 || detail::may_pass_limit(end == 1 ? c : Vec2(c - p2), b.radius, options)) return 0;
+  const Vec2 size = p2.cwiseAbs();
+  const double world = a.segment.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff();
+  const double margin = 8 * kEpsilon * size.sum() * (c.cwiseAbs().sum() + size.sum() + world);
+  return height > margin && (end == 1 ? at < -margin : at > last + margin) ? end : 0;
+}
+
 // A circle whose centre, c in the segment's frame, lies in front. On the segment's front face the
 // centre lies over the segment, in front of it. A convex neighbour's normal is the segment's turned
 // by the vertex's angle t away from the segment, so the centre's height along it is cos t times its
 // height over the segment less sin t times its distance from the vertex along the segment: never
 // more, and the neighbour leaves it to the segment (owns()); the normal is the segment's
-// (admitted()). One named result, built in the caller's slot.
+// (admitted()). Beyond an end (end_ruled()), the rules decide before the contact is made, which
+// they spare for most such pairs; elsewhere the limit turns most pairs away first, and the rules
+// follow a contact found. One named result, built in the caller's slot.
 Contact circle_in_front(const ChainSegment& a, const Orientation& ao, const Vec2& c, const Circle& b,
                         const Orientation& bo, const ContactOptions& options) {
-  Contact result = detail::core_circle_at(a.segment, detail::SegmentView(a.segment).view(), ao, c, b, options);
-  if (!result.empty() && result.manifold[0].id != feature_id(FeatureKind::face_of_a, 0, 0)) {
+  const int end = end_ruled(a, c, b, options);
+  const detail::SegmentView view(a.segment);
+  Contact result = end != 0 && !circle_kept_at(a, view, c, b, end)
+                       ? Contact::beyond(kInf)
+                       : detail::core_circle_at(a.segment, view.view(), ao, c, b, options);
+  if (!result.empty() && end == 0 && result.manifold[0].id != feature_id(FeatureKind::face_of_a, 0, 0)) {
     result = at_a_vertex(a, ao, b, bo, b.center, result, options);
   }
   return result;

@@ -148,6 +148,38 @@ TEST(ChainContact, FlatVertexNeverCatches) {
   }
 }
 
+// A circle resting over the seam of a straight floor lands on it wherever the floor lies: far from
+// the origin the seam's vertex is rounded in the world, and the centre, nudged by an ulp either way,
+// sits over one segment or the other, or just beyond both ends; one of them still reports the floor.
+TEST(ChainContact, CircleOverAFarSeamLands) {
+  for (const double far : {0.0, 1e3, 1e5}) {
+    for (const double theta : {0.0, 0.3, -1.1}) {
+      const Vec2 dir(-std::cos(theta), -std::sin(theta));  // from right to left: the floor faces up
+      const Vec2 origin(far, 0.5 * far), up(dir.y(), -dir.x());
+      std::vector<Vec2> points;
+      for (int k = 0; k < 5; ++k) points.push_back(origin + (0.75 * k) * dir);
+      const std::vector<ChainSegment> both = chain_segments(points, false);  // meeting at points[2]
+      ASSERT_EQ(both.size(), 2u);
+      for (const double height : {0.1, 0.3}) {
+        for (const Vec2 nudge : {Vec2(0, 0), Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1), Vec2(1, 1)}) {
+          Vec2 centre = points[2] + height * up;
+          centre.x() = std::nextafter(centre.x(), centre.x() + nudge.x());
+          centre.y() = std::nextafter(centre.y(), centre.y() + nudge.y());
+          const Circle ball{centre, 0.25};
+          double deepest = std::numeric_limits<double>::infinity();
+          for (const ChainSegment& s : both) {
+            const Contact c = contact(s, ball);
+            if (c.empty()) continue;
+            EXPECT_LT((c.normal - up).norm(), 1e-9) << "far " << far << " theta " << theta;
+            deepest = std::min(deepest, c.separation);
+          }
+          EXPECT_NEAR(deepest, height - 0.25, 1e-9) << "far " << far << " theta " << theta << " height " << height;
+        }
+      }
+    }
+  }
+}
+
 // The island's top-right corner is convex: the top and the right split the space around it along
 // the bisector, and the normal there is the vertex's, in the cone between the two faces' normals.
 TEST(ChainContact, ConvexCornerSplitsBetweenFaces) {
