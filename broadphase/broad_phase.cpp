@@ -70,8 +70,7 @@ BroadPhaseBase::BroadPhaseBase(double fat_margin) : margin_(fat_margin) {
 
 ProxyId BroadPhaseBase::take_id() {
   if (free_.empty()) {
-    detail::reserve_room(fat_, fat_.size() + 1);
-    fat_.push_back(kRemoved);
+    detail::resize_room(fat_, fat_.size() + 1, kRemoved);
     return static_cast<ProxyId>(fat_.size() - 1);
   }
   const ProxyId id = free_.back();
@@ -196,8 +195,7 @@ SweepAndPrune::StripRange SweepAndPrune::strips_of(const Aabb& box) const {
 // Moves each box into the strips its fat box now reaches; entries of strips it left are dropped
 // when those strips are refreshed.
 void SweepAndPrune::assign_strips() {
-  detail::reserve_room(range_, fat_.size());
-  range_.resize(fat_.size());
+  detail::resize_room(range_, fat_.size());
   for (ProxyId id = 0; id < fat_.size(); ++id) {
     const StripRange old = range_[id];
     const StripRange now = alive(id) ? strips_of(fat_[id]) : StripRange{};

@@ -154,10 +154,7 @@ void WorldState::enter(std::uint32_t index) {
     return;
   }
   p.proxy = broad_.insert(broad_box(p));
-  if (p.proxy >= part_of_.size()) {
-    reserve_room(part_of_, std::size_t{p.proxy} + 1);
-    part_of_.resize(std::size_t{p.proxy} + 1, kNone);
-  }
+  if (p.proxy >= part_of_.size()) resize_room(part_of_, std::size_t{p.proxy} + 1, kNone);
   part_of_[p.proxy] = index;
   if (moving_tree_on_.load(std::memory_order_relaxed)) {
     if (p.proxy >= moving_leaves_.size()) moving_leaves_.resize(static_cast<std::size_t>(p.proxy) + 1, -1);

@@ -20,8 +20,8 @@ void ThreadPool::drain(unsigned worker) {
   for (std::size_t k = next_.fetch_add(1); k < count_; k = next_.fetch_add(1)) (*task_)(k, worker);
 }
 
-void ThreadPool::run(std::size_t count, const Task& task) {
-  if (workers_.empty() || count <= 1) {
+void ThreadPool::run(std::size_t count, const Task& task, bool worth_waking) {
+  if (!worth_waking || workers_.empty() || count <= 1) {
     for (std::size_t k = 0; k < count; ++k) task(k, 0);
     return;
   }

@@ -30,7 +30,9 @@ class ThreadPool {
 
   unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
   using Task = std::function<void(std::size_t k, unsigned worker)>;
-  void run(std::size_t count, const Task& task);
+  // worth_waking false runs every task on the calling thread: for work smaller than the cost of
+  // waking the workers (and of fetching back the cache lines they took).
+  void run(std::size_t count, const Task& task, bool worth_waking = true);
 
  private:
   std::vector<std::thread> workers_;

@@ -55,11 +55,8 @@ void WorldState::find_candidates() {
   // A few thousand moving shapes sort and sweep in less time than waking the pool takes.
   constexpr std::size_t kParallelBodies = 4096;
   const auto parallel = [this](std::size_t count, const std::function<void(std::size_t)>& task) {
-    if (broad_.size() < kParallelBodies) {
-      for (std::size_t k = 0; k < count; ++k) task(k);
-    } else {
-      pool_->run(count, [&task](std::size_t k, unsigned) { task(k); });
-    }
+    pool_->run(
+        count, [&task](std::size_t k, unsigned) { task(k); }, broad_.size() >= kParallelBodies);
   };
   broad_.update(parallel);
   if (fresh(static_tree_)) static_tree_.rebuild();
@@ -194,14 +191,8 @@ void WorldState::narrow_phase() {
   };
   // Several thousand pairs take less time than waking the pool and then fetching back the cache
   // lines its threads took (the next frame's poses write the shapes they read).
-  const auto run = [&](std::size_t count, const ThreadPool::Task& each) {
-    if (chunks < 32) {
-      for (std::size_t k = 0; k < count; ++k) each(k, 0);
-    } else {
-      pool_->run(count, each);
-    }
-  };
-  run(chunks + 1, task);
+  const bool worth_waking = chunks >= 32;
+  pool_->run(chunks + 1, task, worth_waking);
   // Each list emptied, with room for the chunks' results joined.
   const auto make_room = [&](auto& list, const auto ChunkResults::*results) {
     std::size_t n = 0;
@@ -221,10 +212,13 @@ void WorldState::narrow_phase() {
     pairs += chunks_[k].overlapping.size();
   }
   frame_pairs_.resize(pairs);
-  run(chunks, [this](std::size_t k, unsigned) {
-    ShapePair* out = frame_pairs_.data() + chunks_[k].first_pair;
-    for (const auto& [a, b] : chunks_[k].overlapping) *out++ = ShapePair{ids_of(a, b)};
-  });
+  pool_->run(
+      chunks,
+      [this](std::size_t k, unsigned) {
+        ShapePair* out = frame_pairs_.data() + chunks_[k].first_pair;
+        for (const auto& [a, b] : chunks_[k].overlapping) *out++ = ShapePair{ids_of(a, b)};
+      },
+      worth_waking);
   for (std::size_t k = 0; k < chunks; ++k) {
     const ChunkResults& f = chunks_[k];
     proximity_.insert(proximity_.end(), f.proximity.begin(), f.proximity.end());

@@ -88,6 +88,13 @@ void reserve_room(std::vector<T>& list, std::size_t n) {
   if (n > list.capacity()) list.reserve(n + n / 8);
 }
 
+// The list resized to n, new elements `fill`, growing as reserve_room() does.
+template <class T>
+void resize_room(std::vector<T>& list, std::size_t n, const T& fill = T{}) {
+  reserve_room(list, n);
+  list.resize(n, fill);
+}
+
 }  // namespace collide2d::detail
 
 // Each kind's geometry as the generic code takes it, defined inline in its own header
