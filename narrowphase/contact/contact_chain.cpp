@@ -84,15 +84,11 @@ bool in_front(const ChainSegment& s, const Orientation& o, const Vec2& r) {
   return in_front(s, Rot::of(o).apply_inverse(Vec2(r - s.segment.center)));
 }
 
-// The shape's separation from the line through q of unit normal u (a circle's without the square
-// root its support point takes).
+// The shape's separation from the line through q of unit normal u: its centre's height less its
+// support function along -u.
 template <class B>
 double separation_along(const B& shape, const Orientation& o, const Vec2& u, const Vec2& q) {
-  if constexpr (std::is_same_v<B, Circle>) {
-    return u.dot(shape.center - q) - shape.radius;
-  } else {
-    return u.dot(detail::support(shape, Rot::of(o), Vec2(-u)) - q);
-  }
+  return u.dot(shape.center - q) - detail::support_along(shape, Rot::of(o).apply_inverse(Vec2(-u)));
 }
 
 // The scale of the separations that decide which segment, of length `length`, owns a shape of
