@@ -129,8 +129,10 @@ class AabbTree {
   std::int32_t* sah_split(std::int32_t* first, std::int32_t* last, int axis, double lo, double hi) const;
   double centre(std::int32_t node, int axis) const;
   void refit_below(std::int32_t node);
+  // All four comparisons, then one branch: which of them fails first varies from node to node, and
+  // a branch on each would often be mispredicted.
   static bool overlap(const Node& n, const float lo[2], const float hi[2]) {
-    return n.lo[0] <= hi[0] && lo[0] <= n.hi[0] && n.lo[1] <= hi[1] && lo[1] <= n.hi[1];
+    return (n.lo[0] <= hi[0]) & (lo[0] <= n.hi[0]) & (n.lo[1] <= hi[1]) & (lo[1] <= n.hi[1]);
   }
   static void store(const Aabb& box, float lo[2], float hi[2]);
 };
