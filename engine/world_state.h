@@ -228,8 +228,10 @@ class WorldState {
   template <class Pairs>
   using BatchesOf = typename BatchTuple<Pairs>::type;
   // What the narrow phase found in one chunk of the candidate pairs; its overlapping pairs as shape
-  // indices (a's body first), whose ids the join fills in.
-  struct ChunkResults {
+  // indices (a's body first), whose ids the join fills in. Each chunk's on cache lines of its own,
+  // as each thread's scratch below: threads writing neighbouring records would pass the lines back
+  // and forth on every pair.
+  struct alignas(64) ChunkResults {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> overlapping;
     std::size_t first_pair = 0;  // where the join puts the first in frame_pairs_
     std::vector<SensorPair> sensing;
@@ -241,7 +243,7 @@ class WorldState {
   };
   // A thread's scratch for the chunk it works on: each pair's verdict, and the batches. One for each
   // thread rather than each chunk, as a chunk needs it only while it runs.
-  struct ChunkScratch {
+  struct alignas(64) ChunkScratch {
     std::vector<Verdict> verdicts;
     BatchesOf<BatchedPairs<Kinds>> batches;  // one for each pair of kinds with a batch, in rank order
     void clear();

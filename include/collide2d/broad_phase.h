@@ -135,8 +135,9 @@ class SweepAndPrune : public BroadPhaseBase {
     std::int32_t first = 0;
     std::int32_t last = -1;  // empty
   };
-  // What one strip's task did.
-  struct StripWork {
+  // What one strip's task did. Each on cache lines of its own: two threads writing neighbouring
+  // records would pass the lines back and forth on every pair found and every swap.
+  struct alignas(64) StripWork {
     std::int32_t index = 0;
     Strip* strip = nullptr;
     std::vector<ProxyPair> found;
