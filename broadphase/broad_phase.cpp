@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -361,43 +362,27 @@ void SweepAndPrune::process(StripWork& w) const {
   if (w.full_sort) radix_sort(strip, w.index);
   merge_incoming(strip, w.index);
   sweep(w);
-  std::sort(w.found.begin(), w.found.end());
 }
 
-// found_: the first `strips` tasks' pairs, each list sorted by its task, merged pairwise until one
-// run is left, the merges of a pass as tasks for `run`. A pair is found in one strip only, so the
-// result is the sorted union whatever the order of the strips; the merges cost less than sorting
-// the union, and the sorts ran in parallel.
-void SweepAndPrune::join(std::size_t strips, const ParallelFor& run) {
-  found_.clear();
-  runs_.assign(1, 0);
+// found_: the first `strips` tasks' pairs in order, by a counting sort on each pair's first proxy,
+// then each proxy's few pairs sorted on the second. A pair is found in one strip only, so the result
+// is the sorted union whatever the order of the strips; two passes over the pairs and one over the
+// proxies cost less than sorting or merging the strips' lists, and no pass is left for one thread.
+void SweepAndPrune::join(std::size_t strips) {
+  ends_.assign(fat_.size() + 1, 0);
   for (std::size_t k = 0; k < strips; ++k) {
-    found_.insert(found_.end(), work_[k].found.begin(), work_[k].found.end());
-    runs_.push_back(found_.size());
+    for (const ProxyPair& p : work_[k].found) ++ends_[p.a + 1];
   }
-  // Where merge m's output ends: after runs 2m and 2m + 1, or the last run alone.
-  static constexpr auto end_of = [](const std::vector<std::size_t>& runs, std::size_t m) {
-    return 2 * m + 2 < runs.size() ? runs[2 * m + 2] : runs.back();
-  };
-  // Captures `this` alone, which std::function holds without allocating.
-  const auto merge = [this](std::size_t m) {
-    const auto at = [](std::vector<ProxyPair>& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
-    const std::size_t i = 2 * m;
-    std::merge(at(found_, runs_[i]), at(found_, runs_[i + 1]), at(found_, runs_[i + 1]), at(found_, end_of(runs_, m)),
-               at(merged_, runs_[i]));
-  };
-  while (runs_.size() > 2) {
-    merged_.resize(found_.size());
-    const std::size_t merges = runs_.size() / 2;
-    if (run) {
-      run(merges, merge);
-    } else {
-      for (std::size_t m = 0; m < merges; ++m) merge(m);
-    }
-    next_runs_.assign(1, 0);
-    for (std::size_t m = 0; m < merges; ++m) next_runs_.push_back(end_of(runs_, m));
-    found_.swap(merged_);
-    runs_.swap(next_runs_);
+  std::partial_sum(ends_.begin(), ends_.end(), ends_.begin());  // where each proxy's pairs start
+  found_.resize(ends_.back());
+  for (std::size_t k = 0; k < strips; ++k) {
+    for (const ProxyPair& p : work_[k].found) found_[ends_[p.a]++] = p;  // ends_[a] moves to a's end
+  }
+  std::uint32_t begin = 0;
+  for (ProxyId id = 0; id < fat_.size(); ++id) {
+    const auto at = [this](std::uint32_t i) { return found_.begin() + static_cast<std::ptrdiff_t>(i); };
+    if (ends_[id] - begin > 1) std::sort(at(begin), at(ends_[id]));
+    begin = ends_[id];
   }
 }
 
@@ -429,7 +414,7 @@ void SweepAndPrune::update(const ParallelFor& parallel) {
     stats_.full_sort = stats_.full_sort || w.full_sort;
     empty += w.strip->tags.empty() ? 1 : 0;
   }
-  join(n, parallel);
+  join(n);
   // Empty strips are dropped together once they are half of all: a strip that empties and fills
   // again frame after frame (a body crossing its edge) keeps its storage.
   if (2 * empty > n) std::erase_if(strips_, [](const auto& entry) { return entry.second.tags.empty(); });

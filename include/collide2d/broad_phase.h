@@ -149,11 +149,10 @@ class SweepAndPrune : public BroadPhaseBase {
   int sweep_axis_ = 0;
   double strip_width_ = 0.0;  // 0: not laid out yet
   std::unordered_map<std::int32_t, Strip> strips_;
-  std::vector<StripRange> range_;  // per proxy
-  std::vector<StripWork> work_;    // per strip, kept from frame to frame
-  std::vector<ProxyPair> found_;   // the strips' pairs joined; its storage is kept from frame to frame
-  std::vector<ProxyPair> merged_;  // the other side of join()'s merges, kept the same way
-  std::vector<std::size_t> runs_, next_runs_;
+  std::vector<StripRange> range_;    // per proxy
+  std::vector<StripWork> work_;      // per strip, kept from frame to frame
+  std::vector<ProxyPair> found_;     // the strips' pairs joined; its storage is kept from frame to frame
+  std::vector<std::uint32_t> ends_;  // join()'s counting sort: per proxy, where its pairs end
   UpdateStats stats_;
 
   bool lay_out();
@@ -166,7 +165,7 @@ class SweepAndPrune : public BroadPhaseBase {
   void merge_incoming(Strip& s, std::int32_t index) const;
   void sweep(StripWork& w) const;
   void process(StripWork& w) const;
-  void join(std::size_t strips, const ParallelFor& run);
+  void join(std::size_t strips);
 };
 
 /// Every pair tested: the reference the tests hold the sweep and prune to.
