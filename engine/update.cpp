@@ -68,7 +68,7 @@ void WorldState::find_candidates() {
   };
   // The moving pairs' shapes, in blocks on the pool (each pair reads two shapes far apart in
   // memory), a pair of one body's shapes marked and then dropped.
-  constexpr std::size_t kBlock = 16384;
+  constexpr std::size_t kBlock = 4096;
   const std::vector<ProxyPair>& moving = broad_.pairs();
   candidates_.resize(moving.size());
   parallel((moving.size() + kBlock - 1) / kBlock, [this, &moving](std::size_t block) {
@@ -200,7 +200,6 @@ void WorldState::narrow_phase() {
     list.clear();
     reserve_room(list, n);
   };
-  make_room(frame_pairs_, &ChunkResults::overlapping);
   make_room(proximity_, &ChunkResults::proximity);
   make_room(contacts_, &ChunkResults::contacts);
   make_room(impacts_, &ChunkResults::impacts);
@@ -211,7 +210,8 @@ void WorldState::narrow_phase() {
     chunks_[k].first_pair = pairs;
     pairs += chunks_[k].overlapping.size();
   }
-  frame_pairs_.resize(pairs);
+  // Not emptied first: the pool writes every pair, and the last frame's elements need no filling.
+  resize_room(frame_pairs_, pairs);
   pool_->run(
       chunks,
       [this](std::size_t k, unsigned) {
