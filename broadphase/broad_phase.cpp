@@ -366,8 +366,9 @@ void SweepAndPrune::process(StripWork& w) const {
 
 // found_: the first `strips` tasks' pairs in order, by a counting sort on each pair's first proxy,
 // then each proxy's few pairs sorted on the second. A pair is found in one strip only, so the result
-// is the sorted union whatever the order of the strips; two passes over the pairs and one over the
-// proxies cost less than sorting or merging the strips' lists, and no pass is left for one thread.
+// is the sorted union whatever the order of the strips. It runs on the calling thread: two passes
+// over the pairs and one over the proxies take less time there than sorting each strip's list and
+// merging the lists in passes took on two threads.
 void SweepAndPrune::join(std::size_t strips) {
   ends_.assign(fat_.size() + 1, 0);
   for (std::size_t k = 0; k < strips; ++k) {
@@ -378,9 +379,9 @@ void SweepAndPrune::join(std::size_t strips) {
   for (std::size_t k = 0; k < strips; ++k) {
     for (const ProxyPair& p : work_[k].found) found_[ends_[p.a]++] = p;  // ends_[a] moves to a's end
   }
+  const auto at = [this](std::uint32_t i) { return found_.begin() + static_cast<std::ptrdiff_t>(i); };
   std::uint32_t begin = 0;
   for (ProxyId id = 0; id < fat_.size(); ++id) {
-    const auto at = [this](std::uint32_t i) { return found_.begin() + static_cast<std::ptrdiff_t>(i); };
     if (ends_[id] - begin > 1) std::sort(at(begin), at(ends_[id]));
     begin = ends_[id];
   }
