@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace collide2d {
@@ -14,6 +15,9 @@ using detail::Kinds;
 void detail::validate(const ContactOptions& options) {
   if (!options.guess.allFinite()) throw std::invalid_argument("contact guess must be finite");
   if (std::isnan(options.max_separation)) throw std::invalid_argument("contact max_separation must not be NaN");
+  if (!(options.tolerance >= 0 && std::isfinite(options.tolerance)))
+    throw std::invalid_argument("contact tolerance must be finite and not negative (got " +
+                                std::to_string(options.tolerance) + ")");
 }
 
 bool overlaps(const Shape& a, const Shape& b) {

@@ -27,11 +27,14 @@ void add_queries(py::module_& m) {
         "The distance between the boundary curves of two circles or ellipses (nested ones give their gap).");
   m.def(
       "contact",
-      [](const Shape& a, const Shape& b, double max_separation, double margin) {
-        return contact(a, b, ContactOptions{.margin = margin, .max_separation = max_separation});
+      [](const Shape& a, const Shape& b, double max_separation, double margin, double tolerance) {
+        return contact(a, b,
+                       ContactOptions{.margin = margin, .max_separation = max_separation, .tolerance = tolerance});
       },
       py::arg("a"), py::arg("b"), py::arg("max_separation") = std::numeric_limits<double>::infinity(),
-      py::arg("margin") = 0.0, "The signed distance, normal from A to B, deepest points and manifold.");
+      py::arg("margin") = 0.0, py::arg("tolerance") = 0.0,
+      "The signed distance, normal from A to B, deepest points and manifold; within `tolerance` of\n"
+      "the exact ones for two ellipses.");
   m.def(
       "time_of_impact",
       [](const Shape& a, const Shape& b, const Pair& a_velocity, double a_turn, const Pair& b_velocity, double b_turn) {

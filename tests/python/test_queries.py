@@ -153,6 +153,17 @@ def test_contact_beyond_the_limit_is_empty():
     assert not c.empty and c.separation == 1.0 and c.normal == (1.0, 0.0)
 
 
+def test_contact_to_a_tolerance():
+    a, b = collide2d.Ellipse((0, 0), 2, 0.5, 0.3), collide2d.Ellipse((2.5, 1), 1.5, 0.4, -0.7)
+    exact = collide2d.contact(a, b)
+    loose = collide2d.contact(a, b, tolerance=1e-3)
+    assert abs(loose.separation - exact.separation) <= 1e-3
+    assert all(abs(p - q) <= 1e-3 for p, q in zip(loose.point_a, exact.point_a))
+    assert (loose.separation <= 0) == collide2d.overlaps(a, b)
+    with pytest.raises(ValueError, match="contact tolerance must be finite and not negative"):
+        collide2d.contact(a, b, tolerance=-1.0)
+
+
 def test_shapes_read_back_their_fields():
     e = collide2d.Ellipse((1, 2), 3, 0.5, 0.25)
     assert (e.center, e.a, e.b, e.angle) == ((1.0, 2.0), 3.0, 0.5, 0.25)

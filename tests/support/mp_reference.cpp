@@ -595,6 +595,20 @@ R golden_maximum(const F& f, R lo, R hi, const R& width) {
 
 }  // namespace
 
+Point support_point(const Shape& s, const Point& n) {
+  if (const auto* c = std::get_if<Circle>(&s)) {
+    const Frame f = frame_of(c->center, 0.0);
+    return to_world(f, {Real(c->radius) * n.x, Real(c->radius) * n.y});
+  }
+  const auto* e = std::get_if<Ellipse>(&s);
+  if (e == nullptr) throw std::invalid_argument("support_point: a circle or an ellipse only");
+  const Frame f = frame_of(e->center, e->angle);
+  const Point l = to_local(Frame{{Real(0), Real(0)}, f.c, f.s}, n);
+  const Real a(e->a), b(e->b);
+  const Real h = norm(a * l.x, b * l.y);
+  return to_world(f, {a * a * l.x / h, b * b * l.y / h});
+}
+
 SignedDistance signed_distance(const Shape& a, const Shape& b) {
   const double angle_a = angle_of(a), angle_b = angle_of(b);
   const Point ca = to_mp(center_of(a)), cb = to_mp(center_of(b));

@@ -75,4 +75,9 @@ struct SignedDistance {
 };
 SignedDistance signed_distance(const Shape& a, const Shape& b);
 
+// The support point of a circle or an ellipse along the unit direction n, in the world, from its
+// closed form (an ellipse's (a^2 l_0, b^2 l_1) / h(l) in its own axes, l the direction there).
+// Throws std::invalid_argument for other shapes, whose support sets may be faces.
+Point support_point(const Shape& s, const Point& n);
+
 }  // namespace collide2d::reference

@@ -35,7 +35,7 @@ Contact face_contact(const SupportPair<double, SA, SB>& p, const Vec2& cb, const
 // point may sit anywhere along the side, tip included; see at_maximum). Either way one shape's
 // support point jumps as n turns by a hair (1e-6 rad, wider than any such kink) and the other's
 // barely moves: the steadier point is kept, and its partner is that point moved by the separation
-// along the normal.
+// along the normal. A contact within a tolerance keeps the point within_tolerance chose.
 template <class SA, class SB>
 Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, const Vec2& cb, const Deepest<double>& d) {
   const Separation<double>& e = d.at;
@@ -47,8 +47,10 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   const auto rounding = [&] {
     return 4 * std::numeric_limits<double>::epsilon() * (p.delta.norm() + off_a.norm() + off_b.norm());
   };
-  if (on_face_normal(p.B, d.n)) {
+  if (d.kept == Kept::a || on_face_normal(p.B, d.n)) {
     pb = pa + e.s * normal;
+  } else if (d.kept == Kept::b) {
+    pa = pb - e.s * normal;
   } else if (e.slope != 0 && !(std::abs(e.slope) <= rounding())) {  // 0: a root, its norms spared
     const V2<double> hair = 1e-6 * perp(d.n);
     const V2<double> before = (d.n - hair).normalized(), after = (d.n + hair).normalized();
@@ -62,6 +64,12 @@ Contact curved_contact(const SupportPair<double, SA, SB>& p, const Vec2& ca, con
   Contact c = Contact::of(e.s, normal, pa, pb);
   c.evaluations = d.evaluations;
   return c;
+}
+
+// ContactOptions::tolerance for the pair, whose larger shape's reach is `size`.
+template <class SA, class SB>
+Tolerance<double> tolerance_of(const SupportPair<double, SA, SB>& p, double size, const ContactOptions& options) {
+  return {options.tolerance, options.tolerance / size, p.A.rho_min() + p.B.rho_min()};
 }
 
 }  // namespace collide2d::detail

@@ -101,12 +101,17 @@ Real cheap_arc_bound(const P& p, const Direction<Real>& x, const Direction<Real>
   return tangents <= floor ? tangents : arc_bound(p, x, y);
 }
 
+// Which support point a contact within a tolerance keeps as found (its partner is that point moved
+// by s along the normal), or none: the exact maximum, whose points curved_contact chooses.
+enum class Kept : unsigned char { none, a, b };
+
 // The global maximum: its direction, the separation there (with its support points), and the
 // support evaluations it took (the search stops at `cap` of them, uncertified; the tests and the
-// fuzzers require fewer).
+// fuzzers require fewer); with a tolerance, the point kept.
 template <class Real>
 struct Deepest : Direction<Real> {
   int evaluations = 0;
+  Kept kept = Kept::none;
 };
 
 // Whether s' at e is 0 to rounding: within `flat` (the rounding of the gap, a few u of the scale)
@@ -117,6 +122,48 @@ template <class Real>
 bool level(const Separation<Real>& e, Real flat) {
   using std::abs;
   return abs(e.slope) <= flat + 4 * std::numeric_limits<Real>::epsilon() * abs(e.bend);
+}
+
+// What a contact to a tolerance (ContactOptions::tolerance) accepts: `length` on the separation
+// and on each point, `angle` on the normal; `rho_min` is the two shapes' least radii of curvature
+// summed. A length of 0 asks for the exact maximum.
+template <class Real>
+struct Tolerance {
+  Real length = 0;
+  Real angle = 0;
+  Real rho_min = 0;
+};
+
+// Whether the direction n the climb reached, with e = s(n), is within the tolerance of the global
+// maximum, and then which support point to keep. Where s >= s0 = s(n), s'' = -(s + rho_A + rho_B)
+// <= -(s0 + rho_min). For s0 + rho_min > 0 those directions form one arc, on which s is concave: by
+// Blaschke's rolling theorem the pair's Minkowski difference K (s = -h_K) is a convex body K' grown
+// by a disc of radius -s0, and s >= s0 is h_K' <= 0, a convex cone. Within the tolerance's angle
+// of n the radii are at least rho_least_within's, so s'' <= -kappa there, and the slope falls to 0
+// within turn = |s'| / kappa rad uphill: where that is inside the angle, the maximum is there, above
+// s0 by at most |s'| turn / 2, and no bound over every direction is needed. Each support point moves by at most its
+// radius of curvature times the turn; the steadier one is kept, and its partner, moved by s along n, errs by that, the
+// separation's error and |s| turn more. None where that is not within the tolerance, or where the sign of the maximum
+// is uncertain (the verdict must stay the exact one). `margin` covers the rounding of s and of s'.
+template <class Real, class SA, class SB>
+Kept within_tolerance(const SupportPair<Real, SA, SB>& p, const V2<Real>& n, const Separation<Real>& e,
+                      const Tolerance<Real>& tolerance, Real margin) {
+  using std::abs;
+  const Real slope = abs(e.slope) + margin;
+  // Most steps far from the tolerance fail here, before the radii's divisions: s'' at n itself,
+  // -bend, is a fair guess of kappa.
+  if (!(slope <= 2 * tolerance.angle * e.bend) || !(e.s + tolerance.rho_min > 0)) return Kept::none;
+  const Real kappa =
+      e.s + p.A.rho_least_within(e.offset_a, n, tolerance.angle) + p.B.rho_least_within(e.offset_b, n, tolerance.angle);
+  if (!(slope <= tolerance.angle * kappa)) return Kept::none;
+  const Real turn = slope / kappa;
+  const Real error = slope * turn / 2 + margin;
+  if (!(e.s > margin || e.s + error < 0)) return Kept::none;
+  const Real move_a = p.A.rho_within(e.offset_a, n, turn) * turn;
+  const Real move_b = p.B.rho_within(e.offset_b, n, turn) * turn;
+  const Real partner = std::min(move_a, move_b) + error + (abs(e.s) + error) * turn;
+  if (!(error <= tolerance.length && partner <= tolerance.length)) return Kept::none;
+  return move_a <= move_b ? Kept::a : Kept::b;
 }
 
 // The direction inside the arc from x to y where s has its maximum (a root of s' by safeguarded
@@ -224,7 +271,8 @@ V2<Real> best_face(const SupportPair<Real, SA, SB>& p, Real* extent = nullptr) {
 // maximum (a time of impact's step far from contact) passes `rough` > 0: the climb then stops,
 // uncertified, once the pair is apart and Newton's next gain, s'^2 / (2 |s''|), is below rough * s.
 // A caller that needs s only up to a limit passes `stop`: the climb ends, uncertified, where s
-// passes it.
+// passes it. A caller with a tolerance passes it: the climb ends at the first direction
+// within_tolerance certifies.
 template <class Real>
 struct Climb {
   std::optional<Deepest<Real>> deepest;  // the maximum, certified (or near enough, or past `stop`)
@@ -242,8 +290,8 @@ class Climber {
  public:
   static constexpr bool sided = std::is_same_v<SA, RectSupport<Real>> || std::is_same_v<SB, RectSupport<Real>>;
 
-  Climber(const SupportPair<Real, SA, SB>& p, Real margin, Real rough, Real stop)
-      : p_(p), margin_(margin), flat_(margin / 2), rough_(rough), stop_(stop) {}
+  Climber(const SupportPair<Real, SA, SB>& p, Real margin, Real rough, Real stop, const Tolerance<Real>& tolerance)
+      : p_(p), margin_(margin), flat_(margin / 2), rough_(rough), stop_(stop), tolerance_(tolerance) {}
 
   // The first direction and s there; false where there is none (the centres coincide, no guess).
   [[gnu::always_inline]] bool begin(const V2<Real>& start) {
@@ -282,9 +330,16 @@ class Climber {
   }
 
   // Converged when s' is flat to rounding and the angle to the maximum, about s' / s'', is below
-  // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off.
-  [[gnu::always_inline]] bool done() const {
+  // 1e-12 rad: on a deep, nearly flat maximum a flat slope alone left the normal 1e-8 rad off. With
+  // a tolerance, as soon as within_tolerance certifies the direction.
+  [[gnu::always_inline]] bool done() {
     using std::abs;
+    if constexpr (!sided) {
+      if (tolerance_.length > 0) {
+        kept_ = within_tolerance(p_, n_, e_, tolerance_, margin_);
+        if (kept_ != Kept::none) return true;
+      }
+    }
     return near_enough() || kink_ || e_.s > stop_ || (level(e_, flat_) && !(abs(e_.slope) > Real(1e-12) * e_.bend));
   }
 
@@ -329,6 +384,7 @@ class Climber {
 
   // The maximum reached, where the bound certifies it (or the caller asked for less).
   [[gnu::always_inline]] Climb<Real> finish() const {
+    if (kept_ != Kept::none) return {Deepest<Real>{{n_, e_}, evaluations_, kept_}, std::nullopt, evaluations_};
     if (!near_enough() && !(e_.s > stop_) && !(disc_bound(p_, n_, e_) <= e_.s + margin_)) {
       if (kink_) return gave_up();
       return {std::nullopt, Direction<Real>{n_, e_}, evaluations_};
@@ -357,16 +413,18 @@ class Climber {
 
   const SupportPair<Real, SA, SB>& p_;
   Real margin_, flat_, rough_, stop_;
+  Tolerance<Real> tolerance_;
   V2<Real> n_, face_, side_;
   Separation<Real> e_;
   bool kink_ = false;
+  Kept kept_ = Kept::none;
   int evaluations_ = 0;
 };
 
 template <class Real, class SA, class SB>
 Climb<Real> certified_climb(const SupportPair<Real, SA, SB>& p, const V2<Real>& start, Real margin, Real rough = 0,
-                            Real stop = std::numeric_limits<Real>::infinity()) {
-  Climber<Real, SA, SB> climber(p, margin, rough, stop);
+                            Real stop = std::numeric_limits<Real>::infinity(), const Tolerance<Real>& tolerance = {}) {
+  Climber<Real, SA, SB> climber(p, margin, rough, stop, tolerance);
   if (!climber.begin(start)) return {};
   for (int k = 0; !climber.done(); ++k) {
     if (!climber.step(k)) return climber.gave_up();
@@ -388,12 +446,13 @@ Real climb_margin(const SupportPair<Real, SA, SB>& p) {
 // thread, so that a query allocates nothing once warm.
 template <class Real, class SA, class SB>
 Deepest<Real> deepest_direction(const SupportPair<Real, SA, SB>& p, const V2<Real>& start,
-                                Real stop = std::numeric_limits<Real>::infinity()) {
+                                Real stop = std::numeric_limits<Real>::infinity(),
+                                const Tolerance<Real>& tolerance = {}) {
   constexpr int cap = 4096;
   static_assert(!std::is_same_v<SA, RectSupport<Real>> && !std::is_same_v<SB, RectSupport<Real>>,
                 "a rectangle's quarter turns are settled in closed form (contact_rect_ellipse.cpp)");
   const Real margin = climb_margin(p);
-  const Climb<Real> climb = certified_climb(p, start, margin, Real(0), stop);
+  const Climb<Real> climb = certified_climb(p, start, margin, Real(0), stop, tolerance);
   if (climb.deepest) return *climb.deepest;
   const std::optional<Direction<Real>>& reached = climb.reached;
   Deepest<Real> best;

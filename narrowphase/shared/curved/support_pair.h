@@ -74,6 +74,20 @@ struct EllipseSupport {
   }
   // The least radius of curvature, at the ends of the major axis.
   Real rho_min() const { return std::min(a, b) * std::min(a, b) / std::max(a, b); }
+  // Bounds of the radius of curvature over the directions within `turn` rad of n, from the support
+  // offset at n: rho = (ab)^2 / h^3, and |h'| = |perp(n).offset| <= max(a, b) keeps h within
+  // n.offset +- max(a, b) turn. The upper bound is infinite where h may reach 0.
+  Real rho_within(const V2<Real>& offset, const V2<Real>& n, Real turn) const {
+    const Real h = n.dot(offset) - std::max(a, b) * turn;
+    if (!(h > 0)) return std::numeric_limits<Real>::infinity();
+    const Real k = a * b / h;
+    return k * k / h;
+  }
+  Real rho_least_within(const V2<Real>& offset, const V2<Real>& n, Real turn) const {
+    const Real h = n.dot(offset) + std::max(a, b) * turn;
+    const Real k = a * b / h;
+    return std::max(k * k / h, rho_min());
+  }
   // The radius of the largest disc inside the ellipse tangent at its support point `offset` for the
   // unit direction n. Its centre is where the inward normal there meets the major axis (the
   // medial axis: that point's two nearest boundary points are this one and its mirror image), at

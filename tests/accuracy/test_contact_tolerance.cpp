@@ -1,0 +1,155 @@
+// Contacts to a tolerance (ContactOptions::tolerance) against the 50-digit reference's signed
+// distance, on the hard-case families of the pair the tolerance serves (two ellipses) and on deep
+// overlaps: at
+// each tolerance from 1e-2 to 1e-12 of the size, the separation and both deepest points within the
+// tolerance of the reference, the normal within tolerance / size rad, and the verdict overlaps()'s.
+#include "hard_cases.h"
+#include "mp_reference.h"
+
+#include <collide2d/query.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace collide2d::testing {
+namespace {
+
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+constexpr double kTolerances[] = {1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
+
+std::vector<Family> tolerance_families() {
+  std::vector<Family> out;
+  for (Family f : standard_families(Kind::ellipse, Kind::ellipse)) {
+    f.cases = 16;
+    out.push_back(f);
+  }
+  // Deep overlaps: B pushed into A by 0.1 ... 1.5 of the larger size, needles crossing.
+  for (const double aspect : {1.0, 1e2}) {
+    Family f = standard_families(Kind::ellipse, Kind::ellipse).front();
+    f.name = std::string("ellipse-ellipse ") + (aspect == 1 ? "deep" : "deep needles");
+    f.aspect_min = aspect;
+    f.aspect_max = 2 * aspect;
+    f.deltas = {-0.1, -0.5, -0.9, -0.99, -1.5};
+    f.cases = 16;
+    f.seed = 41 + static_cast<std::uint64_t>(aspect);
+    out.push_back(f);
+  }
+  return out;
+}
+
+Vec2 to_double(const reference::Point& p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
+double off_by(const Vec2& got, const reference::Point& want) {
+  return static_cast<double>(hypot(reference::Real(got.x()) - want.x, reference::Real(got.y()) - want.y));
+}
+double angle_between(const Vec2& u, const Vec2& v) {
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
+
+// The worst of each error over a family, as a fraction of what the tolerance allows.
+struct Worst {
+  double separation = 0, normal = 0, points = 0;
+  int normals = 0, points_checked = 0;
+};
+
+class ToleranceFamilies : public ::testing::TestWithParam<Family> {};
+
+TEST_P(ToleranceFamilies, StayWithinTheTolerance) {
+  const Family& f = GetParam();
+  Worst worst;
+  std::vector<double> evaluations(std::size(kTolerances), 0.0);
+  int k = 0, cases = 0;
+  for (const Case& c : family_cases(f)) {
+    const std::string what = f.name + " case " + std::to_string(k++) + ": " + describe(c.a) + " ; " + describe(c.b);
+    const double size = std::max(half_size(c.a), half_size(c.b));
+    const double scale = std::max(size, (center_of(c.b) - center_of(c.a)).norm());
+    const reference::SignedDistance ref = reference::signed_distance(c.a, c.b);
+    const double ref_sep = static_cast<double>(ref.separation);
+    const bool overlapping = overlaps(c.a, c.b);
+    // Normals and points where the maximiser is unique and sharp enough that the exact contact's
+    // own (its rounding of s', 64 u scale, over the curvature) is far below the smallest tolerance.
+    const bool unique = ref.runner_up < ref.separation - 1e-9 * scale;
+    const bool sharp = 64 * kU * scale / static_cast<double>(ref.curvature) <= 1e-14;
+    const reference::Point n = ref.normal, minus_n{-n.x, -n.y};
+    const reference::Point pa = reference::support_point(c.a, n), pb = reference::support_point(c.b, minus_n);
+    ++cases;
+    for (std::size_t t = 0; t < std::size(kTolerances); ++t) {
+      const double tolerance = kTolerances[t] * size;
+      const Contact got = contact(c.a, c.b, {.tolerance = tolerance});
+      const std::string at = what + " at tolerance " + std::to_string(kTolerances[t]) + " size";
+      evaluations[t] += got.evaluations;
+      EXPECT_EQ(got.separation <= 0, overlapping) << at << ": separation " << got.separation;
+      // The reference is exact for the double input; the kernel's own rounding is a few u scale.
+      const double slack = 8 * kU * scale;
+      const double sep_error = std::abs(got.separation - ref_sep);
+      worst.separation = std::max(worst.separation, sep_error / (tolerance + slack));
+      EXPECT_LE(sep_error, tolerance + slack) << at << ": separation " << got.separation << " reference " << ref_sep;
+      const Vec2 along = got.point_b - got.point_a - got.separation * got.normal;
+      EXPECT_LE(along.norm(), slack + 8 * kU * (got.point_a.norm() + got.point_b.norm()))
+          << at << ": point_b - point_a != separation * normal";
+      if (!unique || !sharp) continue;
+      const double turn = angle_between(got.normal, to_double(n));
+      const double allowed_turn = tolerance / size + 4 * kU;
+      worst.normal = std::max(worst.normal, turn / allowed_turn);
+      ++worst.normals;
+      EXPECT_LE(turn, allowed_turn) << at << ": normal (" << got.normal.transpose() << ") reference ("
+                                    << to_double(n).transpose() << ")";
+      // The points' own rounding: a few u of their coordinates and of the scale.
+      const double point_slack = slack + 8 * kU * (got.point_a.cwiseAbs().sum() + got.point_b.cwiseAbs().sum());
+      const double point_error = std::max(off_by(got.point_a, pa), off_by(got.point_b, pb));
+      worst.points = std::max(worst.points, point_error / (tolerance + point_slack));
+      ++worst.points_checked;
+      EXPECT_LE(point_error, tolerance + point_slack)
+          << at << ": points (" << got.point_a.transpose() << ") (" << got.point_b.transpose() << ") reference ("
+          << to_double(pa).transpose() << ") (" << to_double(pb).transpose() << ")";
+    }
+  }
+  std::printf("[tolerance] %-40s of the allowed: separation %.2f normal %.2f (%d) points %.2f (%d); evaluations",
+              f.name.c_str(), worst.separation, worst.normal, worst.normals, worst.points, worst.points_checked);
+  for (const double e : evaluations) std::printf(" %.1f", e / std::max(cases, 1));
+  std::printf("\n");
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, ToleranceFamilies, ::testing::ValuesIn(tolerance_families()),
+                         [](const auto& info) { return test_name(info.param); });
+
+// Tolerance 0 is the exact contact, bit for bit, and any tolerance leaves the other pairs alone.
+TEST(ContactTolerance, ZeroIsTheExactContactAndClosedFormsIgnoreIt) {
+  const Shape shapes[] = {Circle{{0.3, 0.1}, 0.7}, Ellipse{{1.2, -0.4}, 1.5, 0.4, 0.3},
+                          Rect{{-0.5, 0.9}, {0.8, 0.3}, 1.1}, Ellipse{{0.1, 0.2}, 0.9, 0.2, -1.0}};
+  for (const Shape& a : shapes) {
+    for (const Shape& b : shapes) {
+      const Contact exact = contact(a, b), zero = contact(a, b, {.tolerance = 0.0});
+      EXPECT_EQ(exact.separation, zero.separation);
+      EXPECT_EQ(exact.normal, zero.normal);
+      EXPECT_EQ(exact.point_a, zero.point_a);
+      EXPECT_EQ(exact.point_b, zero.point_b);
+      if (std::holds_alternative<Ellipse>(a) && std::holds_alternative<Ellipse>(b)) continue;
+      const Contact loose = contact(a, b, {.tolerance = 0.1});
+      EXPECT_EQ(exact.separation, loose.separation);
+      EXPECT_EQ(exact.normal, loose.normal);
+    }
+  }
+}
+
+TEST(ContactTolerance, BadTolerancesAreRefused) {
+  const Shape a = Circle{{0, 0}, 1}, b = Ellipse{{3, 0}, 1, 0.5, 0};
+  for (const double bad : {-1e-3, std::nan(""), HUGE_VAL}) {
+    try {
+      contact(a, b, {.tolerance = bad});
+      ADD_FAILURE() << "tolerance " << bad << " was taken";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("contact tolerance must be finite and not negative"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace collide2d::testing
