@@ -18,6 +18,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <type_traits>
@@ -94,10 +96,17 @@ WorldManifold world_manifold(const Posed<A>& a, const Posed<B>& b) {
   return out;
 }
 
+// Each shape as v3's, an ellipse as its inscribed polygon of `sides` vertices.
 template <class S>
-auto posed_shapes(const std::vector<S>& shapes) {
+auto posed_shapes(const std::vector<S>& shapes, int sides = 8) {
   std::vector<decltype(posed(shapes[0]))> out;
-  for (const S& s : shapes) out.push_back(posed(s));
+  for (const S& s : shapes) {
+    if constexpr (std::is_same_v<S, Ellipse>) {
+      out.push_back(posed(s, sides));
+    } else {
+      out.push_back(posed(s));
+    }
+  }
   return out;
 }
 
@@ -121,10 +130,10 @@ void count_manifolds(benchmark::State& state, HasPoints has_points) {
 }
 
 template <class A, class B, bool chain = false>
-void box2d_v3(benchmark::State& state) {
+void box2d_v3(benchmark::State& state, int sides = 8) {
   const auto& w = bench::pairs<A, B>(state);
-  const auto a = posed_shapes(side_a<A, chain>(w.a));
-  const auto b = posed_shapes(w.b);
+  const auto a = posed_shapes(side_a<A, chain>(w.a), sides);
+  const auto b = posed_shapes(w.b, sides);
   const auto query = [&](std::size_t k) {
     if constexpr (kTakesInOrder<decltype(a[k].shape), decltype(b[k].shape)>) {
       return world_manifold(a[k], b[k]);
@@ -136,15 +145,19 @@ void box2d_v3(benchmark::State& state) {
   count_manifolds(state, [&](std::size_t k) { return query(k).count > 0; });
 }
 
+// `tolerance`: ContactOptions::tolerance as a fraction of each pair's size (its larger shape's
+// reach_of), set beforehand (not timed).
 template <class A, class B, bool chain = false>
-void ours(benchmark::State& state) {
+void ours(benchmark::State& state, double tolerance = 0) {
   const auto& w = bench::pairs<A, B>(state);
   const std::vector<Orientation> oa = bench::orientations(w.a), ob = bench::orientations(w.b);
   const auto a = side_a<A, chain>(w.a);
   const std::vector<Shape> b(w.b.begin(), w.b.end());
-  const ContactOptions options{.max_separation = B2_SPECULATIVE_DISTANCE};
+  std::vector<ContactOptions> options(bench::kPairs, {.max_separation = B2_SPECULATIVE_DISTANCE});
+  for (std::size_t k = 0; k < bench::kPairs; ++k)
+    options[k].tolerance = tolerance * std::max(reach_of(Shape(w.a[k])), reach_of(b[k]));
   const auto time = [&](const auto& sa) {
-    const auto query = [&](std::size_t k) { return contact(sa[k], oa[k], b[k], ob[k], options); };
+    const auto query = [&](std::size_t k) { return contact(sa[k], oa[k], b[k], ob[k], options[k]); };
     bench::time_queries(state, query);
     count_manifolds(state, [&](std::size_t k) { return !query(k).empty(); });
   };
@@ -166,8 +179,24 @@ void race(const std::string& name) {
   const auto apply = kInScene<A> && kInScene<B> ? bench::contact_workloads : bench::polygon_workloads;
   const int ellipses = std::is_same_v<A, Ellipse> + std::is_same_v<B, Ellipse>;
   const std::string rival = name + (ellipses == 2 ? "_8gons" : ellipses == 1 ? "_8gon" : "");
-  benchmark::RegisterBenchmark(("ours/" + name + "_speculative").c_str(), ours<A, B, chain>)->Apply(apply);
-  benchmark::RegisterBenchmark(("box2d_v3/" + rival).c_str(), box2d_v3<A, B, chain>)->Apply(apply);
+  benchmark::RegisterBenchmark(("ours/" + name + "_speculative").c_str(), ours<A, B, chain>, 0.0)->Apply(apply);
+  benchmark::RegisterBenchmark(("box2d_v3/" + rival).c_str(), box2d_v3<A, B, chain>, 8)->Apply(apply);
+}
+
+// A pair with an ellipse also at the contact tolerances 1e-2 ... 1e-6 of the size, against v3 on
+// the ellipses' inscribed 5-, 6- and 7-gons beside the 8-gons.
+template <class A, class B>
+void race_tolerances(const std::string& name) {
+  const auto apply = kInScene<A> && kInScene<B> ? bench::contact_workloads : bench::polygon_workloads;
+  const bool two = std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>;
+  for (const int exponent : {2, 3, 4, 6}) {
+    const std::string label = "ours/" + name + "_speculative_tolerance_1e-" + std::to_string(exponent);
+    benchmark::RegisterBenchmark(label.c_str(), ours<A, B>, std::pow(10.0, -exponent))->Apply(apply);
+  }
+  for (const int sides : {5, 6, 7}) {
+    const std::string label = "box2d_v3/" + name + "_" + std::to_string(sides) + (two ? "gons" : "gon");
+    benchmark::RegisterBenchmark(label.c_str(), box2d_v3<A, B>, sides)->Apply(apply);
+  }
 }
 
 // Segments and chain segments against each kind.
@@ -200,6 +229,7 @@ void race_level(const std::string& kind) {
   race_level<RoundedPolygon>("rounded");
   race_level<Ellipse>("ellipse");
   race<Circle, Ellipse>("circle_ellipse");
+  race_tolerances<Ellipse, Ellipse>("ellipse_ellipse");
   race<Capsule, Ellipse>("capsule_ellipse");
   race<Rect, Ellipse>("rect_ellipse");
   race<ConvexPolygon, Ellipse>("polygon_ellipse");

@@ -1,8 +1,8 @@
 // collide2d's shapes as Box2D v3's, as a game's bodies hold them: each shape in its own frame, placed
 // by a float transform. A circle about its centre; a capsule along its x axis; a rectangle as
 // b2MakeBox; a convex polygon through b2ComputeHull and b2MakePolygon with its radius; an ellipse as
-// the polygon inscribed in it, vertices at 8 evenly spaced parameters (v3's polygons have at most 8);
-// a segment and a chain segment from their first point.
+// the polygon inscribed in it, vertices at 8 (or 5 to 7) evenly spaced parameters (v3's polygons
+// have at most 8); a segment and a chain segment from their first point.
 //
 // Box2D 2.4.1's headers share v3's type names (b2Vec2, b2Manifold): a file that includes this one
 // includes no header of 2.4.1's (bench/box2d_baseline.h).
@@ -60,13 +60,14 @@ inline Posed<b2Polygon> posed(const ConvexPolygon& p) {
   return {polygon_of(std::span(points).first(vertices.size()), p.radius()), transform_of(p.center, p.angle)};
 }
 
-inline Posed<b2Polygon> posed(const Ellipse& e) {
+// The ellipse's inscribed polygon of `sides` vertices (3 to 8).
+inline Posed<b2Polygon> posed(const Ellipse& e, int sides = 8) {
   std::array<b2Vec2, 8> points;
-  for (int k = 0; k < 8; ++k) {
-    const Orientation o = Orientation::of(k * std::numbers::pi / 4);
-    points[k] = to_float(Vec2(e.a * o.c, e.b * o.s));
+  for (int k = 0; k < sides; ++k) {
+    const Orientation o = Orientation::of(2 * k * std::numbers::pi / sides);
+    points[static_cast<std::size_t>(k)] = to_float(Vec2(e.a * o.c, e.b * o.s));
   }
-  return {polygon_of(points, 0.0), transform_of(e.center, e.angle)};
+  return {polygon_of(std::span(points).first(static_cast<std::size_t>(sides)), 0.0), transform_of(e.center, e.angle)};
 }
 
 inline Posed<b2Segment> posed(const Segment& s) {
