@@ -229,6 +229,7 @@ void race_level(const std::string& kind) {
   race_level<RoundedPolygon>("rounded");
   race_level<Ellipse>("ellipse");
   race<Circle, Ellipse>("circle_ellipse");
+  race_tolerances<Circle, Ellipse>("circle_ellipse");
   race_tolerances<Ellipse, Ellipse>("ellipse_ellipse");
   race<Capsule, Ellipse>("capsule_ellipse");
   race<Rect, Ellipse>("rect_ellipse");

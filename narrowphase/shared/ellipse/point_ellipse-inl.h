@@ -42,6 +42,8 @@ class SecularRoot {
         shift_(r0 - Set(d, 1.0)),
         hi_(n0_ + z1),
         t_(Max(z1, n0_ - shift_)),
+        reach_(Set(d, 1.0)),
+        climb_(Set(d, 0.0)),
         running_(t_ == t_) {}
 
   // One Newton step in every lane still running; false once none is.
@@ -56,7 +58,9 @@ class SecularRoot {
     // The step is (sqrt(sum) - 1) sum / (q' sum^(3/2)); the quotient is formed while the square
     // root runs rather than after it (a fifth off each step's latency, which bounds the batch).
     const V gain = sum / (a * a * u + b * b * v);
-    const V next = t_ + (Sqrt(sum) - one) * gain;
+    reach_ = Sqrt(sum);
+    const V next = t_ + (reach_ - one) * gain;
+    climb_ = (next - t_) * v;
     const M climbs = And(running_, And(next > t_, next < hi_));
     running_ = AndNot(next - t_ <= Set(d_, 0x1p-27) * t_, climbs);
     t_ = IfThenElse(climbs, next, t_);
@@ -64,9 +68,23 @@ class SecularRoot {
   }
   const V& t() const { return t_; }
 
+  // After a step that climbed from t' to t = t' + d, how near the root r is, relative to t: r - t
+  // <= w t with w = x ((1 + 8x)^3 - 1), x = d / t' (infinite for x > 1/8). Why: d = delta / q'(t')
+  // with delta = 1 - q(t'); q' decreases and |q''| <= 3 q' / t (above), so q'(s) >= q'(t') (t' /
+  // s)^3, which for x <= 1/8 puts q(2t') above 1 (r <= 2t') and then r - t' <= delta / q'(r) <= d
+  // (r / t')^3 <= d (1 + 8x)^3. The scalar form only, for a contact to a tolerance.
+  double width() const {
+    if (!(climb_ <= 0.125)) return std::numeric_limits<double>::infinity();
+    const double grow = 1 + 8 * climb_;
+    return climb_ * (grow * grow * grow - 1);
+  }
+  // sqrt(a_^2 + b_^2) at t' (nearest_at_root's a_ and b_): it bounds both, and |g|, for every t >= t'.
+  const V& reach() const { return reach_; }
+
  private:
   D d_;
   V n0_, z1_, shift_, hi_, t_;
+  V reach_, climb_;
   M running_;
 };
 
