@@ -30,9 +30,11 @@ WorldState::WorldState(const WorldOptions& options)
     : broad_(options.fat_margin),
       proximity_margin_(options.proximity_margin),
       contacts_on_(options.contacts),
-      speculative_margin_(options.contacts ? options.speculative_margin : 0.0) {
+      speculative_margin_(options.contacts ? options.speculative_margin : 0.0),
+      contact_tolerance_(options.contact_tolerance) {
   require_margin(options.proximity_margin, "proximity margin");
   require_margin(options.speculative_margin, "speculative margin");
+  require_margin(options.contact_tolerance, "contact tolerance");
   pool_ = std::make_unique<ThreadPool>(options.threads > 0 ? options.threads
                                                            : std::max(1u, std::thread::hardware_concurrency()));
   scratch_.resize(pool_->threads());

@@ -373,7 +373,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
     sense(a, b, touching, out);
     return;
   }
-  const ContactOptions manifold{.margin = speculative_margin_};
+  const ContactOptions manifold{.margin = speculative_margin_, .tolerance = contact_tolerance_};
   if (x.continuous || y.continuous) impact(a, b, out);
   const auto record = [&](bool solids_touch, const Contact& c) {
     BodyContact& r = out.contacts.emplace_back(BodyContact{ids_of(a, b)});
@@ -399,7 +399,8 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
   if (speculative_margin_ > 0.0 &&
       intersects(grown(x.box, 0.5 * speculative_margin_), grown(y.box, 0.5 * speculative_margin_))) {
     // Only the pairs within the margin are recorded: the kernels stop as soon as a pair is beyond.
-    const ContactOptions speculative{.margin = speculative_margin_, .max_separation = speculative_margin_};
+    const ContactOptions speculative{
+        .margin = speculative_margin_, .max_separation = speculative_margin_, .tolerance = contact_tolerance_};
     const Contact c = pair_contact(a, b, speculative);
     if (!c.empty() && c.separation <= speculative_margin_) record(false, c);
   }

@@ -277,6 +277,7 @@ class WorldState {
   double proximity_margin_;
   bool contacts_on_;
   double speculative_margin_;
+  double contact_tolerance_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a's body < b's
   std::vector<ShapePair> frame_pairs_;  // the narrow phase's pairs joined: storage kept between frames
   std::vector<BodyPair> frame_body_pairs_;

@@ -175,16 +175,17 @@ using Bodies = py::class_<PyWorld>;
 
 void add_world_bodies(Bodies& c) {
   c.def(py::init(
-            [](double fat_margin, double proximity_margin, bool contacts, double speculative_margin, unsigned threads) {
+            [](double fat_margin, double proximity_margin, bool contacts, double speculative_margin, unsigned threads,
+               double contact_tolerance) {
               return std::make_unique<PyWorld>(
-                  WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin, threads});
+                  WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin, threads, contact_tolerance});
             }),
         py::kw_only(), py::arg("fat_margin") = 0.0, py::arg("proximity_margin") = 0.0, py::arg("contacts") = false,
-        py::arg("speculative_margin") = 0.0, py::arg("threads") = 0u,
+        py::arg("speculative_margin") = 0.0, py::arg("threads") = 0u, py::arg("contact_tolerance") = 0.0,
         "fat_margin: how far a shape may move before the broad phase looks again; proximity_margin > 0:\n"
         "report pairs apart by less than it; contacts: a contact for every overlapping pair;\n"
         "speculative_margin: contacts also for pairs apart by less than it; threads: 0 for the\n"
-        "hardware's count.");
+        "hardware's count; contact_tolerance: how far a curved pair's contact may be off (0: exact).");
   c.def(
       "add",
       [](PyWorld& w, const std::variant<Shape, std::vector<Shape>>& shapes, std::optional<Pair> center, double angle,

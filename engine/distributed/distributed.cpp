@@ -104,7 +104,8 @@ std::uint64_t fingerprint(const DistributedOptions& o) {
     for (std::size_t k = 0; k < size; ++k) h = (h ^ bytes[k]) * 1099511628211ull;
   };
   const WorldOptions& w = o.world;
-  for (const double x : {w.fat_margin, w.proximity_margin, w.speculative_margin}) mix(&x, sizeof x);
+  for (const double x : {w.fat_margin, w.proximity_margin, w.speculative_margin, w.contact_tolerance})
+    mix(&x, sizeof x);
   mix(&w.contacts, sizeof w.contacts);
   mix(&o.rebalance_every, sizeof o.rebalance_every);
   for (const double b : o.bounds) mix(&b, sizeof b);

@@ -219,6 +219,8 @@ struct WorldOptions {
   /// same, in the same order, for any count. With more than one, the pair predicate may be called
   /// from several threads at once.
   unsigned threads = 0;
+  /// With contacts: ContactOptions::tolerance for every contact (0: exact).
+  double contact_tolerance = 0.0;
 };
 
 /// Two solid shapes apart by less than the proximity margin.

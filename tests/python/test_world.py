@@ -92,6 +92,19 @@ def test_contacts_proximity_and_sensors_come_as_arrays():
     assert world.pose(b) == ((0.0, 1.75), 0.0) and len(world) == 4
 
 
+def test_contacts_to_a_tolerance_are_the_kernel_s():
+    shapes = [collide2d.Ellipse((0, 0), 2, 0.5, 0.3), collide2d.Ellipse((1.5, 0.8), 1.5, 0.4, -0.7)]
+    world = collide2d.World(contacts=True, contact_tolerance=1e-3)
+    for shape in shapes:
+        world.add(shape)
+    world.update()
+    expected = collide2d.contact(shapes[0], shapes[1], tolerance=1e-3)
+    assert world.contacts()['separation'].tolist() == [[expected.separation]]
+    assert world.contacts()['normal'][0].tolist() == list(expected.normal)
+    with pytest.raises(ValueError, match="contact tolerance must not be negative"):
+        collide2d.World(contacts=True, contact_tolerance=-1.0)
+
+
 def test_contacts_of_a_body_against_a_scan():
     """contacts_of(body) gives the rows of contacts() that name the body, the other bodies, and the
     normals turned away from the body: each the normal of the contact query with its shape first."""

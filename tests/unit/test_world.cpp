@@ -55,8 +55,8 @@ TEST(World, PairsMatchAllPairsNarrowPhaseOverFrames) {
 
 // contacts_of() against a scan of contacts(): each body's contacts, in their order. normal_from()
 // turns each normal away from the body asked about: the normal of the contact query with that
-// body's shape first.
-void expect_contacts_of_match_a_scan(const World& world, double margin, const std::string& what) {
+// body's shape first (with the World's margin and tolerance).
+void expect_contacts_of_match_a_scan(const World& world, const ContactOptions& options, const std::string& what) {
   const std::vector<BodyContact>& all = world.contacts();
   for (const BodyId id : world.bodies()) {
     std::vector<std::uint32_t> scan;
@@ -68,8 +68,8 @@ void expect_contacts_of_match_a_scan(const World& world, double margin, const st
     for (const std::uint32_t k : got) {
       const BodyContact& c = all[k];
       const bool first = c.a == id;
-      const Contact from_id = contact(world.shape(first ? c.shape_a : c.shape_b),
-                                      world.shape(first ? c.shape_b : c.shape_a), {.margin = margin});
+      const Contact from_id =
+          contact(world.shape(first ? c.shape_a : c.shape_b), world.shape(first ? c.shape_b : c.shape_a), options);
       ASSERT_EQ(normal_from(c, id), from_id.normal) << what;
     }
   }
@@ -77,12 +77,13 @@ void expect_contacts_of_match_a_scan(const World& world, double margin, const st
 
 // Contacts: off by default and then empty; on, exactly the overlapping pairs (and, with a
 // speculative margin, the pairs whose contact separation is within it), each the contact the
-// narrow phase gives for the pair, in the order of overlapping(), over frames of motion.
+// narrow phase gives for the pair with the World's margin and tolerance, in the order of
+// overlapping(), over frames of motion.
 TEST(World, ContactsMatchAllPairsWhenAskedFor) {
-  int circle_ellipse = 0;
-  for (const double margin : {0.0, 0.2}) {
+  int circle_ellipse = 0, loosened = 0;  // the contacts a tolerance moved off the exact ones
+  for (const auto& [margin, tolerance] : {std::pair{0.0, 0.0}, std::pair{0.2, 0.0}, std::pair{0.2, 1e-3}}) {
     Rng rng(11);
-    World world({.fat_margin = 0.05, .contacts = true, .speculative_margin = margin});
+    World world({.fat_margin = 0.05, .contacts = true, .speculative_margin = margin, .contact_tolerance = tolerance});
     World plain({.fat_margin = 0.05});
     for (int k = 0; k < 200; ++k) {
       const Shape s = random_shape(rng, 12.0);
@@ -105,8 +106,9 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
         for (std::size_t j = i + 1; j < ids.size(); ++j) {
           const Shape& a = world.shape(ids[i]);
           const Shape& b = world.shape(ids[j]);
-          const Contact c = contact(a, b, {.margin = margin});
+          const Contact c = contact(a, b, {.margin = margin, .tolerance = tolerance});
           const bool touching = overlaps(a, b);
+          loosened += tolerance > 0 && c.normal != contact(a, b, {.margin = margin}).normal;
           if (touching || (margin > 0 && c.separation <= margin)) {
             expected.push_back({ids[i], ids[j], world.shapes(ids[i])[0], world.shapes(ids[j])[0], world.user_id(ids[i]),
                                 world.user_id(ids[j]), world.user_id(ids[i]), world.user_id(ids[j]), touching, c});
@@ -134,7 +136,8 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
       }
       EXPECT_EQ(world.last_frame().contacts, expected.size());
       EXPECT_EQ(plain.overlapping(), world.overlapping());
-      expect_contacts_of_match_a_scan(world, margin, "frame " + std::to_string(frame));
+      expect_contacts_of_match_a_scan(world, {.margin = margin, .tolerance = tolerance},
+                                      "frame " + std::to_string(frame));
       if (HasFatalFailure()) return;
       EXPECT_TRUE(plain.contacts_of(ids[0]).empty());
     }
@@ -149,7 +152,11 @@ TEST(World, ContactsMatchAllPairsWhenAskedFor) {
     EXPECT_GT(world.contacts().size(), world.overlapping().size() * (margin > 0 ? 1 : 0));
   }
   EXPECT_GT(circle_ellipse, 100);
-  std::printf("[measure] world contacts: %d circle-ellipse contacts checked\n", circle_ellipse);
+  EXPECT_GT(loosened, 0);
+  std::printf(
+      "[measure] world contacts: %d circle-ellipse contacts checked, %d pair contacts off the exact at "
+      "tolerance 1e-3\n",
+      circle_ellipse, loosened);
 }
 
 // Every reported bit depends on the current poses and options alone: frame after frame of motion,
@@ -226,6 +233,8 @@ TEST(World, BadInputIsRefusedAndChangesNothing) {
   EXPECT_THROW(world.set_proximity_margin(-1), std::invalid_argument);
   EXPECT_THROW(World({.contacts = true, .speculative_margin = -0.1}), std::invalid_argument);
   EXPECT_THROW(World({.contacts = true, .speculative_margin = std::nan("")}), std::invalid_argument);
+  EXPECT_THROW(World({.contacts = true, .contact_tolerance = -1e-3}), std::invalid_argument);
+  EXPECT_THROW(World({.contacts = true, .contact_tolerance = INFINITY}), std::invalid_argument);
   EXPECT_THROW(world.within(Vec2(0, 0), nan), std::invalid_argument);
   EXPECT_THROW(world.ray_cast(Vec2(0, 0), Vec2(0, 0), 1), std::invalid_argument);
   EXPECT_THROW(world.overlapping(Aabb{Vec2(1, 1), Vec2(0, 0)}), std::invalid_argument);
