@@ -140,11 +140,12 @@ struct Tolerance {
 // Blaschke's rolling theorem the pair's Minkowski difference K (s = -h_K) is a convex body K' grown
 // by a disc of radius -s0, and s >= s0 is h_K' <= 0, a convex cone. Within the tolerance's angle
 // of n the radii are at least rho_least_within's, so s'' <= -kappa there, and the slope falls to 0
-// within turn = |s'| / kappa rad uphill: where that is inside the angle, the maximum is there, above
-// s0 by at most |s'| turn / 2, and no bound over every direction is needed. Each support point moves by at most its
-// radius of curvature times the turn; the steadier one is kept, and its partner, moved by s along n, errs by that, the
-// separation's error and |s| turn more. None where that is not within the tolerance, or where the sign of the maximum
-// is uncertain (the verdict must stay the exact one). `margin` covers the rounding of s and of s'.
+// within turn = |s'| / kappa rad uphill: where that is inside the angle, the maximum is there,
+// above s0 by at most |s'| turn / 2, and no bound over every direction is needed. Each support
+// point moves by at most its radius of curvature times the turn; the steadier one is kept, and its
+// partner, moved by s along n, errs by that, the separation's error and |s| turn more. None where
+// that is not within the tolerance, or where the sign of the maximum is uncertain (the verdict
+// must stay the exact one). `margin` covers the rounding of s and of s'.
 template <class Real, class SA, class SB>
 Kept within_tolerance(const SupportPair<Real, SA, SB>& p, const V2<Real>& n, const Separation<Real>& e,
                       const Tolerance<Real>& tolerance, Real margin) {
