@@ -63,10 +63,6 @@ std::vector<ContactFamily> contact_families() {
 
 std::string name_of(const ContactFamily& f) { return test_name(f.family); }
 
-double angle_between(const Vec2& u, const Vec2& v) {
-  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
-}
-
 double ulps_of(const Vec2& p) { return 8 * kU * std::max(std::abs(p.x()), std::abs(p.y())); }
 
 struct Worst {

@@ -3,6 +3,7 @@
 // or an ellipse) and on deep overlaps: at
 // each tolerance from 1e-2 to 1e-12 of the size, the separation and both deepest points within the
 // tolerance of the reference, the normal within tolerance / size rad, and the verdict overlaps()'s.
+#include "contact_testing.h"
 #include "hard_cases.h"
 #include "mp_reference.h"
 
@@ -49,9 +50,6 @@ std::vector<Family> tolerance_families() {
 Vec2 to_double(const reference::Point& p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
 double off_by(const Vec2& got, const reference::Point& want) {
   return static_cast<double>(hypot(reference::Real(got.x()) - want.x, reference::Real(got.y()) - want.y));
-}
-double angle_between(const Vec2& u, const Vec2& v) {
-  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
 }
 
 // The worst of each error over a family, as a fraction of what the tolerance allows.

@@ -3,6 +3,7 @@
 // the 50-digit reference's signed distance (a scan of the dual function, not separating axes) and
 // against the construction's own gap, on near-tangent, deep, far-off and extreme-scale families
 // and on the degenerate configurations of segments and faces.
+#include "contact_testing.h"
 #include "core_families.h"
 #include "mp_reference.h"
 
@@ -26,6 +27,7 @@
 namespace collide2d {
 namespace {
 
+using testing::angle_between;
 using testing::cases_of;
 using testing::core_families;
 using testing::CoreCase;
@@ -118,9 +120,6 @@ Kernels kernels_of(const Shape& a, const Shape& b) {
   return out;
 }
 
-double angle_between(const Vec2& u, const Vec2& v) {
-  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
-}
 double ulps_of(const Vec2& p) { return 8 * kU * p.cwiseAbs().maxCoeff(); }
 
 class CoreFamilies : public ::testing::TestWithParam<CoreFamily> {};

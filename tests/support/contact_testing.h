@@ -5,9 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace collide2d::testing {
+
+// The angle between two directions, in [0, pi], without the rounding of acos near 0.
+inline double angle_between(const Vec2& u, const Vec2& v) {
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
 
 // The same separation, normal, points and manifold, each point with its separation and feature id;
 // of two empty contacts (Contact::beyond), the separation alone, all that an empty contact holds.
