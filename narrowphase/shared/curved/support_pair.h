@@ -79,14 +79,15 @@ struct EllipseSupport {
   // n.offset +- max(a, b) turn. The upper bound is infinite where h may reach 0.
   Real rho_within(const V2<Real>& offset, const V2<Real>& n, Real turn) const {
     const Real h = n.dot(offset) - std::max(a, b) * turn;
-    if (!(h > 0)) return std::numeric_limits<Real>::infinity();
-    const Real k = a * b / h;
-    return k * k / h;
+    return h > 0 ? rho_at(h) : std::numeric_limits<Real>::infinity();
   }
   Real rho_least_within(const V2<Real>& offset, const V2<Real>& n, Real turn) const {
-    const Real h = n.dot(offset) + std::max(a, b) * turn;
+    return std::max(rho_at(n.dot(offset) + std::max(a, b) * turn), rho_min());
+  }
+  // The radius of curvature (ab)^2 / h^3 where the support value is h, without overflow.
+  Real rho_at(Real h) const {
     const Real k = a * b / h;
-    return std::max(k * k / h, rho_min());
+    return k * k / h;
   }
   // The radius of the largest disc inside the ellipse tangent at its support point `offset` for the
   // unit direction n. Its centre is where the inward normal there meets the major axis (the
