@@ -22,11 +22,15 @@
 // quarter stays shut unless its corner lies in the solid ellipse, in the hull of its evolute, or
 // delta in the Voronoi region of its arc, and unless the ellipse's tangents at the quarter's ends
 // (and their discs of curvature) allow a larger s; the open ones are settled in the order of their
-// bounds, and a maximum found in one may certify itself (disc_bound).
+// bounds, and a maximum found in one may certify itself (disc_bound). With a tolerance, the roots
+// stop early (quarter_maximum).
 #include "narrowphase/contact/contact_limit.h"
 #include "narrowphase/shared/curved/curved_contact.h"
 
 #include "narrowphase/shared/ellipse/distance_point_ellipse.h"
+
+#include <algorithm>
+#include <optional>
 
 namespace collide2d {
 namespace detail {
@@ -71,22 +75,38 @@ struct Quarter {
 
 // The maximum of s inside the quarter, into `m` if s has one there (else the quarter's maximum is
 // at an end); `evaluations` counts each point–ellipse root as one. Without q.nearest the nearest
-// point, known to lie outside the quarter, is skipped.
-bool quarter_maximum(const RectEllipse& p, const Quarter& q, Direction<double>& m, int& evaluations) {
+// point, known to lie outside the quarter, is skipped. With a tolerance the nearest point's root
+// stops early (distance_point_ellipse_within) and `within` says so, with a bound of the error of s
+// in `error`; it is taken to the last bit where its normal lies too near the quarter's ends to tell
+// on which side the exact one lies.
+bool quarter_maximum(const RectEllipse& p, const Quarter& q, const Tolerance<double>& tolerance, Direction<double>& m,
+                     double& error, bool& within, int& evaluations) {
   const V2<double>&x = q.x, &y = q.y, &corner = q.corner;
   const Vec2& local = q.local;
-  const auto inside = [&] { return cross(x, m.n) >= 0 && cross(m.n, y) >= 0; };
+  // With `margin` to spare (a sine): see in_cone in core_ellipse.cpp.
+  const auto inside = [&](double margin) { return cross(x, m.n) >= margin && cross(m.n, y) >= margin; };
+  error = 0.0, within = false;
   if (q.nearest) {
     ++evaluations;
-    const PointEllipseResult foot = distance_point_ellipse(p.B.a, p.B.b, local);
-    m = at_foot(p, corner, foot.closest, foot.normal, foot.inside ? -foot.distance : foot.distance);
-    if (inside()) return true;
+    const std::optional<NearestWithin> near =
+        tolerance.length > 0
+            ? distance_point_ellipse_within(p.B.a, p.B.b, local, 0.0, tolerance.length, tolerance.angle)
+            : std::nullopt;
+    if (near) {
+      m = at_foot(p, corner, near->near.closest, near->near.normal, near->signed_distance);
+      if (inside(near->turn)) return within = true, error = near->error, true;
+    }
+    if (!near || inside(-near->turn)) {
+      const PointEllipseResult foot = distance_point_ellipse(p.B.a, p.B.b, local);
+      m = at_foot(p, corner, foot.closest, foot.normal, foot.inside ? -foot.distance : foot.distance);
+      if (inside(0.0)) return true;
+    }
   }
   ++evaluations;
   const std::optional<CurveFoot> other = other_local_nearest(p.B.a, p.B.b, local);
   if (!other) return false;
   m = at_foot(p, corner, other->point, other->normal, other->signed_distance);
-  return inside();
+  return inside(0.0);
 }
 
 // The four face normals of the rectangle, k = 0..3 counter-clockwise from its axis x, with B's
@@ -196,6 +216,8 @@ std::optional<Contact> corner_beyond(const RectEllipse& p, const Quarter& q, con
 // quarter's maximum, is a lower bound of the separation: the search ends when one passes the
 // caller's limit.
 Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb, const ContactOptions& options) {
+  const double size = std::max({std::hypot(p.A.hx, p.A.hy), p.B.a, p.B.b});  // the larger reach_of
+  const Tolerance<double> tolerance{options.tolerance, options.tolerance / size};
   const Faces faces = Faces::of(p);
   const int face = faces.best();
   const V2<double>& f = faces.normal[face];
@@ -216,26 +238,32 @@ Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& c
   int evaluations = 1;
   Direction<double> inner[4];
   const Direction<double>* best = nullptr;
-  double top = s;  // the best value found
+  double top = s;       // the best value found
+  double floor = top;   // a lower bound of the separation at its direction
+  bool within = false;  // whether it came from a root stopped within the tolerance
   // The quarters in the order of their bounds while one exceeds the best value found; a maximum
-  // found inside one may certify itself (disc_bound) before the next root is taken.
+  // found inside one may certify itself (disc_bound, which wants an exact root) before the next
+  // root is taken.
   const auto lower = [](const Quarter& a, const Quarter& b) { return a.bound < b.bound; };
   for (bool certified = false; !certified;) {
     Quarter& q = *std::max_element(quarters, quarters + 4, lower);
-    if (!(q.bound > top + margin)) break;
+    if (!(q.bound > floor + margin)) break;
     q.bound = -std::numeric_limits<double>::infinity();
     Direction<double>& m = inner[&q - quarters];
-    if (quarter_maximum(p, q, m, evaluations) && m.at.s > top) {
+    double error = 0.0;
+    bool early = false;
+    if (quarter_maximum(p, q, tolerance, m, error, early, evaluations) && m.at.s > top) {
       if (beyond_limit(m.at.s, p.scale, options)) return Contact::beyond(m.at.s);
       best = &m;
-      top = m.at.s;
-      certified = std::max_element(quarters, quarters + 4, lower)->bound <= top + margin ||
-                  disc_bound(p, m.n, m.at) <= top + margin;
+      top = m.at.s, floor = top - error, within = early;
+      certified = std::max_element(quarters, quarters + 4, lower)->bound <= floor + margin ||
+                  (!within && disc_bound(p, m.n, m.at) <= top + margin);
     }
   }
   return limited(options, [&] {
-    return best == nullptr ? face_contact(p, cb, f, faces.offset[face], s, evaluations)
-                           : curved_contact(p, ca, cb, Deepest<double>{*best, evaluations});
+    if (best == nullptr) return face_contact(p, cb, f, faces.offset[face], s, evaluations);
+    // A root stopped within the tolerance keeps the corner, and the foot is the corner moved by s.
+    return curved_contact(p, ca, cb, Deepest<double>{*best, evaluations, within ? Kept::a : Kept::none});
   });
 }
 

@@ -595,18 +595,37 @@ R golden_maximum(const F& f, R lo, R hi, const R& width) {
 
 }  // namespace
 
-Point support_point(const Shape& s, const Point& n) {
+std::optional<Point> support_point(const Shape& s, const Point& n) {
   if (const auto* c = std::get_if<Circle>(&s)) {
     const Frame f = frame_of(c->center, 0.0);
     return to_world(f, {Real(c->radius) * n.x, Real(c->radius) * n.y});
   }
-  const auto* e = std::get_if<Ellipse>(&s);
-  if (e == nullptr) throw std::invalid_argument("support_point: a circle or an ellipse only");
-  const Frame f = frame_of(e->center, e->angle);
+  const Frame f = frame_of(center_of(s), angle_of(s));
   const Point l = to_local(Frame{{Real(0), Real(0)}, f.c, f.s}, n);
-  const Real a(e->a), b(e->b);
-  const Real h = norm(a * l.x, b * l.y);
-  return to_world(f, {a * a * l.x / h, b * b * l.y / h});
+  if (const auto* e = std::get_if<Ellipse>(&s)) {
+    const Real a(e->a), b(e->b);
+    const Real h = norm(a * l.x, b * l.y);
+    return to_world(f, {a * a * l.x / h, b * b * l.y / h});
+  }
+  const Dual<Real>::Side side = Dual<Real>::side_of(s, Real(1), Real(0));
+  std::vector<Point> vertices;
+  if (side.kind == 2) {
+    for (const Real x : {-side.p, side.p})
+      for (const Real y : {-side.q, side.q}) vertices.push_back({x, y});
+  } else if (side.kind == 3) {
+    vertices = {{-side.p, Real(0)}, {side.p, Real(0)}};
+  } else {
+    for (const auto& [x, y] : side.vertices) vertices.push_back({x, y});
+  }
+  const Real radius = side.kind == 3 || side.kind == 4 ? side.q : Real(0);
+  const auto along = [&](const Point& v) { return v.x * l.x + v.y * l.y; };
+  const auto best = std::max_element(vertices.begin(), vertices.end(),
+                                     [&](const Point& u, const Point& v) { return along(u) < along(v); });
+  const Real tie = Real(1e-9) * Real(reach_of(s));
+  for (auto v = vertices.begin(); v != vertices.end(); ++v) {
+    if (v != best && along(*best) - along(*v) <= tie) return std::nullopt;
+  }
+  return to_world(f, {best->x + radius * l.x, best->y + radius * l.y});
 }
 
 SignedDistance signed_distance(const Shape& a, const Shape& b) {

@@ -75,9 +75,11 @@ struct SignedDistance {
 };
 SignedDistance signed_distance(const Shape& a, const Shape& b);
 
-// The support point of a circle or an ellipse along the unit direction n, in the world, from its
-// closed form (an ellipse's (a^2 l_0, b^2 l_1) / h(l) in its own axes, l the direction there).
-// Throws std::invalid_argument for other shapes, whose support sets may be faces.
-Point support_point(const Shape& s, const Point& n);
+// The support point of a shape along the unit direction n, in the world: a circle's or an
+// ellipse's from its closed form (an ellipse's (a^2 l_0, b^2 l_1) / h(l) in its own axes, l the
+// direction there); a core shape's (rectangle, polygon, capsule, segment) its farthest vertex moved
+// by its radius along n, unless another vertex lies within 1e-9 of the shape's reach of its support
+// value: then the support set is a face, to the precision of n, and there is no one point (nullopt).
+std::optional<Point> support_point(const Shape& s, const Point& n);
 
 }  // namespace collide2d::reference

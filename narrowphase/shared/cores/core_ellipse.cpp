@@ -17,32 +17,42 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Whether u lies in the arc of directions from `from` counter-clockwise to `to` (a half turn at
-// most).
-bool in_arc(const Vec2& from, const Vec2& to, const Vec2& u) { return cross(from, u) >= 0.0 && cross(u, to) >= 0.0; }
-
-// Whether u lies in the cone of directions where vertex k is A's support point: from the normal of
+// Whether u lies in the cone of directions where vertex k is A's support point, from the normal of
 // the face that ends at k to the normal of the face that starts there (a half turn at a segment's
-// end; every direction at a point).
-bool in_cone(const Core& c, int k, const Vec2& u) { return c.count == 1 || in_arc(c.n[c.prev(k)], c.n[k], u); }
+// end; every direction at a point), with `margin` to spare on both sides (a sine; a negative margin
+// widens the cone). For a direction within `turn` rad of u, a margin of turn makes it certainly
+// inside, and failing a margin of -turn certainly outside.
+bool in_cone(const Core& c, int k, const Vec2& u, double margin = 0.0) {
+  return c.count == 1 || (cross(c.n[c.prev(k)], u) >= margin && cross(u, c.n[k]) >= margin);
+}
 
 // The maxima of the separation over vertex k's cone that lie inside it, into `best`; each root
 // counted in `roots`. Where the nearest foot's normal lies in the cone it is the greatest
-// separation over every direction, and the other foot's cannot pass it.
-void vertex_peaks(const CoreEllipse& p, int k, Peak& best, int& roots) {
+// separation over every direction, and the other foot's cannot pass it. With a tolerance the
+// nearest foot's root stops early (distance_point_ellipse_within), and is taken to the last bit only
+// where its normal lies too near the cone's edge to tell on which side the exact one lies.
+void vertex_peaks(const CoreEllipse& p, int k, const RootTolerance& tolerance, Peak& best, int& roots) {
   const Vec2& v = p.core.v[k];
-  const auto consider = [&](double s, const Vec2& normal, const Vec2& foot) {
-    const Vec2 u = -normal;  // from the vertex towards the ellipse, the ellipse's inward normal
-    const bool inside = in_cone(p.core, k, u);
-    if (s > best.s && inside) best = {s, u, v, foot};
+  const auto consider = [&](const Peak& peak, double turn) {
+    const bool inside = in_cone(p.core, k, peak.u, turn);
+    if (peak.s > best.s && inside) best = peak;
     return inside;
   };
   ++roots;
-  const PointEllipseResult near = distance_point_ellipse(p.a, p.b, v);
-  if (consider(near.inside ? -near.distance : near.distance, near.normal, near.closest)) return;
+  const std::optional<NearestWithin> near =
+      tolerance.length > 0
+          ? distance_point_ellipse_within(p.a, p.b, v, p.core.radius, tolerance.length, tolerance.angle)
+          : std::nullopt;
+  if (!near || in_cone(p.core, k, -near->near.normal, -near->turn)) {
+    if (near && consider({near->signed_distance, -near->near.normal, v, near->near.closest, near->error}, near->turn))
+      return;
+    const PointEllipseResult exact = distance_point_ellipse(p.a, p.b, v);
+    // u, from the vertex towards the ellipse, is the ellipse's inward normal.
+    if (consider({exact.inside ? -exact.distance : exact.distance, -exact.normal, v, exact.closest}, 0.0)) return;
+  }
   ++roots;
   if (const std::optional<CurveFoot> other = other_local_nearest(p.a, p.b, v)) {
-    consider(other->signed_distance, other->normal, other->point);
+    consider({other->signed_distance, -other->normal, v, other->point}, 0.0);
   }
 }
 
@@ -89,7 +99,7 @@ bool cone_within(const CoreEllipse& p, const Faces& faces, int k, double s) {
 // convex set is convex along a line, the segment's nearest point is the line's nearest, across from
 // the support point, clamped to the segment.
 template <CoreKind kind>
-Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
+Peak deepest_of(const CoreEllipse& p, const Faces& faces, const RootTolerance& tolerance, int& roots) {
   const Core& c = p.core;
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * scale(p);
   const bool leads = faces.best.s > rounding && faces.best.s - faces.runner_up > rounding;
@@ -98,7 +108,7 @@ Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
     const int f = faces.face, side = along_face(c.n[f], c.v[f], c.v[c.next(f)], faces.q(f));
     if (side == 0) return best;
     if constexpr (kind == CoreKind::segment) {
-      vertex_peaks(p, side < 0 ? f : c.next(f), best, roots);
+      vertex_peaks(p, side < 0 ? f : c.next(f), tolerance, best, roots);
       return best;
     }
   }
@@ -112,8 +122,8 @@ Peak deepest_of(const CoreEllipse& p, const Faces& faces, int& roots) {
     const bool end_of_best = k == faces.face || k == c.next(faces.face);
     if (!leads || end_of_best) {
       const bool retake = !at_once || best.s > first;
-      const bool within = (settled >> k & 1) || (retake && cone_within<kind>(p, faces, k, best.s));
-      if (!within) vertex_peaks(p, k, best, roots);
+      const bool within = (settled >> k & 1) || (retake && cone_within<kind>(p, faces, k, best.s - best.error));
+      if (!within) vertex_peaks(p, k, tolerance, best, roots);
     }
   }
   return best;
@@ -153,15 +163,15 @@ Faces best_face(const CoreEllipse& p) {
   return out;
 }
 
-Deepest deepest(const CoreEllipse& p, const Faces& faces) {
+Deepest deepest(const CoreEllipse& p, const Faces& faces, const RootTolerance& tolerance) {
   int roots = 0;  // a local, not the result's: the peaks' loop keeps it in a register
   switch (p.core.count) {
     case 1:
-      return {deepest_of<CoreKind::point>(p, faces, roots), roots};
+      return {deepest_of<CoreKind::point>(p, faces, tolerance, roots), roots};
     case 2:
-      return {deepest_of<CoreKind::segment>(p, faces, roots), roots};
+      return {deepest_of<CoreKind::segment>(p, faces, tolerance, roots), roots};
     default:
-      return {deepest_of<CoreKind::polygon>(p, faces, roots), roots};
+      return {deepest_of<CoreKind::polygon>(p, faces, tolerance, roots), roots};
   }
 }
 

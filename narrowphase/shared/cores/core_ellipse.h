@@ -14,11 +14,13 @@
 namespace collide2d::detail {
 
 // A local maximum of the separation of the two cores (A's radius left out), in the ellipse's frame:
-// its value s, its direction u (from A to the ellipse), A's point there and the ellipse's.
+// its value s, its direction u (from A to the ellipse), A's point there and the ellipse's; where its
+// root stopped within a tolerance (RootTolerance), a bound of the error of s (0: exact).
 struct Peak {
   double s = -std::numeric_limits<double>::infinity();
   Vec2 u = Vec2::UnitX();
   Vec2 on_a = Vec2::Zero(), on_e = Vec2::Zero();
+  double error = 0.0;
 };
 
 // The largest face normal's separation, a lower bound of the signed distance; the ellipse's support
@@ -39,13 +41,20 @@ inline double scale(const CoreEllipse& p) {
   return p.core.discs.reach + std::max(p.a, p.b) + p.core.v[0].cwiseAbs().maxCoeff();
 }
 
+// ContactOptions::tolerance as the vertices' point–ellipse roots take it
+// (distance_point_ellipse_within): `length` on the separation and the points, `angle` on the normal;
+// a length of 0 takes every root to the last bit.
+struct RootTolerance {
+  double length = 0.0, angle = 0.0;
+};
+
 // The global maximum of the separation of A's core and the ellipse, from the best face's, and the
 // point–ellipse roots it took.
 struct Deepest {
   Peak peak;
   int roots = 0;
 };
-Deepest deepest(const CoreEllipse& p, const Faces& faces);
+Deepest deepest(const CoreEllipse& p, const Faces& faces, const RootTolerance& tolerance = {});
 
 // Whether the solids overlap: the one verdict of the overlap test and the distance, so that they
 // agree to the bit, with what it found on the way.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace collide2d {
 namespace detail {
@@ -56,6 +57,37 @@ PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p) {
   while (root.step()) {
   }
   return detail::point_ellipse_result(detail::nearest_at_root(d, q, root.t(), p.x(), p.y()));
+}
+
+// With the root within t (1 + w) and |g| <= reach, the normal turns by at most w / 2 up to the root
+// (its angle moves at most 1 / (2t) per unit of t), and the distance |t - 1| e1 |g| by at most
+// e1 reach w (t + |t - 1|) (|g| falls at most as fast as 1 / t). The point moved by the radius
+// moves with the normal, by the radius times the turn; the point moved by the signed distance, by
+// the error and the separation times the turn beyond that. The last step (w = 0) is the exact root.
+std::optional<NearestWithin> distance_point_ellipse_within(double a, double b, const Vec2& p, double radius,
+                                                           double tolerance, double angle) {
+  const detail::Scalar d;
+  const auto q = detail::Quadrant<double, bool>::of(d, p.x(), p.y(), a, b);
+  if (!q.general) return std::nullopt;
+  const double rounding =
+      16 * std::numeric_limits<double>::epsilon() * (std::abs(p.x()) + std::abs(p.y()) + q.e0 + radius);
+  detail::SecularRoot<detail::Scalar, double> root(d, q.r0, q.z0, q.z1);
+  for (bool running = true; running;) {
+    running = root.step();
+    const double w = running ? root.width() : 0.0, turn = w / 2;
+    if (!(turn <= angle)) continue;
+    const double t = root.t();
+    const double error = q.e1 * root.reach() * w * (t + std::abs(t - 1)) + rounding;
+    const PointEllipseResult near = detail::point_ellipse_result(detail::nearest_at_root(d, q, t, p.x(), p.y()));
+    const double signed_distance = near.inside ? -near.distance : near.distance;
+    const double s = std::abs(signed_distance - radius);
+    const bool within = s > error && error <= tolerance && radius * turn + error + (s + error) * turn <= tolerance;
+    if (running && !within) continue;
+    NearestWithin out{near, signed_distance, running ? error : 0.0, turn};
+    out.near.closest = p - signed_distance * near.normal;
+    return out;
+  }
+  return std::nullopt;
 }
 
 // In the reflected first quadrant (Quadrant) the feet across the major axis are the roots of the

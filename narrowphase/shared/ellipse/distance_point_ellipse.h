@@ -36,6 +36,21 @@ struct PointEllipseResult {
 
 PointEllipseResult distance_point_ellipse(double a, double b, const Vec2& p);
 
+// The nearest point for a contact to a tolerance (ContactOptions::tolerance), where the contact's
+// shape reaches `radius` beyond p (a circle's or a rounded core's radius; 0 for a corner): Newton's
+// steps stop at the first after which SecularRoot::width (point_ellipse-inl.h) certifies that the
+// separation, the signed distance less the radius, lies within `error` <= tolerance with its sign
+// certain, the normal within `turn` <= angle rad, and both contact points (p moved by the radius
+// along the normal, and p moved by the signed distance, where `closest` is put) within the
+// tolerance. Nullopt for the axis cases, which distance_point_ellipse settles in closed form.
+struct NearestWithin {
+  PointEllipseResult near;
+  double signed_distance = 0.0;  // negative inside
+  double error = 0.0, turn = 0.0;
+};
+std::optional<NearestWithin> distance_point_ellipse_within(double a, double b, const Vec2& p, double radius,
+                                                           double tolerance, double angle);
+
 // A lower bound of the signed distance from p to the ellipse (negative inside), without its root:
 // the larger of the gap to the ellipse's bounding box (exact beyond the ends of the axes) and of
 // (rho - 1) times min(a, b) outside or max(a, b) inside, where rho E, the ellipse scaled by rho
