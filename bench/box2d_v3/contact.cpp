@@ -185,17 +185,17 @@ void race(const std::string& name) {
 
 // A pair with an ellipse also at the contact tolerances 1e-2 ... 1e-6 of the size, against v3 on
 // the ellipses' inscribed 5-, 6- and 7-gons beside the 8-gons.
-template <class A, class B>
+template <class A, class B, bool chain = false>
 void race_tolerances(const std::string& name) {
   const auto apply = kInScene<A> && kInScene<B> ? bench::contact_workloads : bench::polygon_workloads;
   const bool two = std::is_same_v<A, Ellipse> && std::is_same_v<B, Ellipse>;
   for (const int exponent : {2, 3, 4, 6}) {
     const std::string label = "ours/" + name + "_speculative_tolerance_1e-" + std::to_string(exponent);
-    benchmark::RegisterBenchmark(label.c_str(), ours<A, B>, std::pow(10.0, -exponent))->Apply(apply);
+    benchmark::RegisterBenchmark(label.c_str(), ours<A, B, chain>, std::pow(10.0, -exponent))->Apply(apply);
   }
   for (const int sides : {5, 6, 7}) {
     const std::string label = "box2d_v3/" + name + "_" + std::to_string(sides) + (two ? "gons" : "gon");
-    benchmark::RegisterBenchmark(label.c_str(), box2d_v3<A, B>, sides)->Apply(apply);
+    benchmark::RegisterBenchmark(label.c_str(), box2d_v3<A, B, chain>, sides)->Apply(apply);
   }
 }
 
@@ -204,6 +204,10 @@ template <class B>
 void race_level(const std::string& kind) {
   race<Segment, B>("segment_" + kind);
   race<Segment, B, true>("chain_" + kind);
+  if constexpr (std::is_same_v<B, Ellipse>) {
+    race_tolerances<Segment, B>("segment_" + kind);
+    race_tolerances<Segment, B, true>("chain_" + kind);
+  }
 }
 
 [[maybe_unused]] const bool registered = [] {
@@ -232,8 +236,13 @@ void race_level(const std::string& kind) {
   race_tolerances<Circle, Ellipse>("circle_ellipse");
   race_tolerances<Ellipse, Ellipse>("ellipse_ellipse");
   race<Capsule, Ellipse>("capsule_ellipse");
+  race_tolerances<Capsule, Ellipse>("capsule_ellipse");
   race<Rect, Ellipse>("rect_ellipse");
+  race_tolerances<Rect, Ellipse>("rect_ellipse");
   race<ConvexPolygon, Ellipse>("polygon_ellipse");
+  race_tolerances<ConvexPolygon, Ellipse>("polygon_ellipse");
+  race<RoundedPolygon, Ellipse>("rounded_ellipse");
+  race_tolerances<RoundedPolygon, Ellipse>("rounded_ellipse");
   race<Ellipse, Ellipse>("ellipse_ellipse");
   return true;
 }();
