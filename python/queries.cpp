@@ -34,7 +34,7 @@ void add_queries(py::module_& m) {
       py::arg("a"), py::arg("b"), py::arg("max_separation") = std::numeric_limits<double>::infinity(),
       py::arg("margin") = 0.0, py::arg("tolerance") = 0.0,
       "The signed distance, normal from A to B, deepest points and manifold; within `tolerance` of\n"
-      "the exact ones for an ellipse with a circle or an ellipse.");
+      "the exact ones for a pair with an ellipse.");
   m.def(
       "time_of_impact",
       [](const Shape& a, const Shape& b, const Pair& a_velocity, double a_turn, const Pair& b_velocity, double b_turn) {

@@ -185,7 +185,7 @@ void add_world_bodies(Bodies& c) {
         "fat_margin: how far a shape may move before the broad phase looks again; proximity_margin > 0:\n"
         "report pairs apart by less than it; contacts: a contact for every overlapping pair;\n"
         "speculative_margin: contacts also for pairs apart by less than it; threads: 0 for the\n"
-        "hardware's count; contact_tolerance: how far a curved pair's contact may be off (0: exact).");
+        "hardware's count; contact_tolerance: how far a contact with an ellipse may be off (0: exact).");
   c.def(
       "add",
       [](PyWorld& w, const std::variant<Shape, std::vector<Shape>>& shapes, std::optional<Pair> center, double angle,

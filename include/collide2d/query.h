@@ -171,10 +171,10 @@ struct ContactOptions {
   /// whose separation, as the query without a limit computes it, is at most m. Must not be NaN.
   double max_separation = std::numeric_limits<double>::infinity();
   /// How far the contact may lie from the exact one, in length units; 0 is the exact contact.
-  /// Ellipse–ellipse and circle–ellipse contacts stop their iterations once the separation and both
-  /// points are certified within it and the normal within tolerance / size rad (size: the larger of
-  /// the radius and the semi-axes); other pairs ignore it. The verdict never changes: separation <= 0 exactly when
-  /// overlaps() says so, and point_b - point_a = separation * normal still holds. Must be finite and not negative.
+  /// A pair with an ellipse stops its iterations once the separation and both points are certified
+  /// within it and the normal within tolerance / size rad (size: the larger reach_of); pairs without
+  /// an ellipse ignore it. The verdict never changes: separation <= 0 exactly when overlaps() says
+  /// so, and point_b - point_a = separation * normal still holds. Must be finite and not negative.
   double tolerance = 0.0;
 };
 
