@@ -128,9 +128,15 @@ std::vector<MethodResult> measure_methods(const ReportOptions& options) {
 namespace {
 
 // The pair kind's contact and its batch (none where there is no batch), by overload.
-Contact one_off(const Rect& a, const Ellipse& b) { return contact_rect_ellipse(a, b); }
-Contact one_off(const Circle& a, const Ellipse& b) { return contact_circle_ellipse(a, b); }
-Contact one_off(const Ellipse& a, const Ellipse& b) { return contact_ellipse_ellipse(a, b); }
+Contact one_off(const Rect& a, const Ellipse& b, const ContactOptions& options = {}) {
+  return contact_rect_ellipse(a, b, options);
+}
+Contact one_off(const Circle& a, const Ellipse& b, const ContactOptions& options = {}) {
+  return contact_circle_ellipse(a, b, options);
+}
+Contact one_off(const Ellipse& a, const Ellipse& b, const ContactOptions& options = {}) {
+  return contact_ellipse_ellipse(a, b, options);
+}
 bool batch(const std::vector<Circle>& a, const std::vector<Ellipse>& b, std::vector<Contact>& out) {
   std::vector<Orientation> orientations;
   for (const Ellipse& e : b) orientations.push_back(Orientation::of(e.angle));
@@ -152,6 +158,15 @@ void measure_contact_pairs(const ReportOptions& options, const char* pair, std::
   const std::size_t first = out.size();
   out.push_back(measure(w, options.repetitions, "collide2d contact", 0,
                         [&w](std::size_t k) { return one_off(w.a[k], w.b[k]).separation; }));
+  for (int exponent = 1; exponent <= 12; ++exponent) {
+    const double fraction = std::pow(10.0, -exponent);
+    std::vector<ContactOptions> to(w.a.size());
+    for (std::size_t k = 0; k < w.a.size(); ++k)
+      to[k].tolerance = fraction * std::max(reach_of(Shape(w.a[k])), reach_of(Shape(w.b[k])));
+    out.push_back(measure(w, options.repetitions, "collide2d contact to a tolerance", 0,
+                          [&w, &to](std::size_t k) { return one_off(w.a[k], w.b[k], to[k]).separation; }));
+    out.back().tolerance = fraction;
+  }
   std::vector<Contact> contacts(w.a.size());
   if (batch(w.a, w.b, contacts)) {
     // Timed as a whole list per pass, divided by its pairs; the separations are read back from it.
@@ -194,8 +209,11 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
   out << line;
   out << "| method | N | time per query | median error | max error |\n| --- | --- | --- | --- | --- |\n";
   for (const MethodResult& r : results) {
-    std::snprintf(line, sizeof line, "| %s | %s | %.0f ns | %.1e | %.1e |\n", r.method.c_str(),
-                  r.sides ? std::to_string(r.sides).c_str() : "-", r.nanoseconds, r.median_error, r.max_error);
+    char n[32] = "-";  // the polygons' N, or a tolerance's fraction of the size
+    if (r.sides) std::snprintf(n, sizeof n, "%d", r.sides);
+    if (r.tolerance > 0) std::snprintf(n, sizeof n, "%.0e", r.tolerance);
+    std::snprintf(line, sizeof line, "| %s | %s | %.0f ns | %.1e | %.1e |\n", r.method.c_str(), n, r.nanoseconds,
+                  r.median_error, r.max_error);
     out << line;
   }
   out << "errors are |d - d_ref| / max(size, centre distance); d_ref from 50-digit arithmetic\n";
@@ -222,10 +240,11 @@ void write_report_json(const std::vector<MethodResult>& distance, const std::vec
       char line[300];
       std::snprintf(line, sizeof line,
                     "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %s, \"median_error\": %s, "
-                    "\"max_error\": %s%s%s%s}%s\n",
+                    "\"max_error\": %s%s%s%s%s%s}%s\n",
                     r.method.c_str(), r.sides, json_number(r.nanoseconds).c_str(), json_number(r.median_error).c_str(),
                     json_number(r.max_error).c_str(), r.pair.empty() ? "" : ", \"pair\": \"", r.pair.c_str(),
-                    r.pair.empty() ? "" : "\"", k + 1 < results.size() ? "," : "");
+                    r.pair.empty() ? "" : "\"", r.tolerance > 0 ? ", \"tolerance\": " : "",
+                    r.tolerance > 0 ? json_number(r.tolerance).c_str() : "", k + 1 < results.size() ? "," : "");
       out << line;
     }
     out << "  ]";

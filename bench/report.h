@@ -11,7 +11,8 @@
 // Contacts, for each curved pair (rectangle–ellipse, circle–ellipse, ellipse–ellipse): `pairs`
 // overlapping pairs of the same generator (rectangles of aspect up to 10, circles), deeper than 2%
 // of the larger size; collide2d's contact one pair at a time and, where there is one, its batch
-// (timed over the whole list, per pair), against Box2D's manifold (b2CollidePolygons,
+// (timed over the whole list, per pair), and to each tolerance from 1e-1 to 1e-12 of the pair's size
+// (the larger reach_of), against Box2D's manifold (b2CollidePolygons,
 // b2CollidePolygonAndCircle) on the inscribed and the circumscribed N-gons, N = 5 ... 8
 // (b2_maxPolygonVertices is 8 in 2.4.1) and 16 (the rebuilt 2.4.1). Error: |separation -
 // reference| / scale, the reference being the 50-digit signed distance (a scan of the dual
@@ -30,7 +31,8 @@ struct MethodResult {
   double nanoseconds = 0.0;
   double median_error = 0.0;
   double max_error = 0.0;
-  std::string pair;  // the pair kind of a contact measurement, e.g. "rect-ellipse"
+  std::string pair;        // the pair kind of a contact measurement, e.g. "rect-ellipse"
+  double tolerance = 0.0;  // a contact's ContactOptions::tolerance, as a fraction of the pair's size
 };
 
 struct ReportOptions {
@@ -48,7 +50,8 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
 
 // Both measurements as one JSON object: {"pairs", "repetitions", "distance": [...], "contact": [...]},
 // each result {"method", "sides", "nanoseconds", "median_error", "max_error"} (an error that is not
-// finite, where a method failed on some pair, as null), and "pair" for a contact's.
+// finite, where a method failed on some pair, as null), and "pair" for a contact's, "tolerance" for
+// one to a tolerance.
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out);
 

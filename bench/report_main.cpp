@@ -19,10 +19,10 @@ constexpr const char* kUsage =
     "  inscribed and circumscribed 8- to 256-gons) on N separated pairs (default 200) and\n"
     "  measures its error against 50-digit arithmetic; prints a table. Then the contact\n"
     "  depth of N overlapping pairs of each curved kind (rect-ellipse, circle-ellipse,\n"
-    "  ellipse-ellipse): collide2d's contact, one pair at a time and batched, against Box2D's\n"
-    "  manifold on inscribed and circumscribed 5- to 8- and 16-gons (a table each). --json\n"
-    "  writes all as JSON; --html as a page, the plot of speed against error interactive\n"
-    "  beside the tables.\n";
+    "  ellipse-ellipse): collide2d's contact, one pair at a time, batched and to tolerances of\n"
+    "  1e-1 to 1e-12 of the size, against Box2D's manifold on inscribed and circumscribed 5- to\n"
+    "  8- and 16-gons (a table each). --json writes all as JSON; --html as a page, the plot of\n"
+    "  speed against error interactive beside the tables.\n";
 
 int report(int argc, char** argv) {
   collide2d::report::ReportOptions options;

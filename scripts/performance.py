@@ -312,8 +312,9 @@ def error_svg(results, title):
             points.append(f'{xx:.1f},{yy:.1f}')
             out.append(f'<line x1="{xx:.1f}" y1="{yy:.1f}" x2="{xx:.1f}" y2="{top_y:.1f}" stroke="{colour}" stroke-opacity="0.5"/>')
             out.append(f'<circle cx="{xx:.1f}" cy="{yy:.1f}" r="4" fill="{colour}"/>')
-            if r['sides']:
-                out.append(f'<text x="{xx + 5:.1f}" y="{yy - 5:.1f}" font-size="10">{r["sides"]}</text>')
+            tag = r['sides'] or (f'{r["tolerance"]:.0e}' if r.get('tolerance') else '')
+            if tag:
+                out.append(f'<text x="{xx + 5:.1f}" y="{yy - 5:.1f}" font-size="10">{tag}</text>')
         out.append(f'<polyline points="{" ".join(points)}" fill="none" stroke="{colour}"/>')
         ly = top + 20 + 22 * m
         out.append(f'<circle cx="{width - right + 20}" cy="{ly - 4}" r="4" fill="{colour}"/>')
@@ -326,7 +327,8 @@ def report_table(results):
     lines = ['| method | N | time per query | median error | max error |', '| --- | --- | --- | --- | --- |']
     for r in results:
         errors = [f'{e:.1e}' if math.isfinite(e) else 'failed' for e in (error_of(r['median_error']), error_of(r['max_error']))]
-        lines.append(f'| {r["method"]} | {r["sides"] or "—"} | {fmt_time(r["nanoseconds"])} | {errors[0]} | {errors[1]} |')
+        n = r['sides'] or (f'{r["tolerance"]:.0e}' if r.get('tolerance') else '—')
+        lines.append(f'| {r["method"]} | {n} | {fmt_time(r["nanoseconds"])} | {errors[0]} | {errors[1]} |')
     return '\n'.join(lines)
 
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -44,13 +45,21 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
 TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
   const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 4};
   const std::vector<MethodResult> results = measure_contact_methods(options);
-  ASSERT_EQ(results.size(), 11u + 12u + 11u);
+  ASSERT_EQ(results.size(), 23u + 24u + 23u);
   std::size_t k = 0;
   for (const std::string pair : {"rect-ellipse", "circle-ellipse", "ellipse-ellipse"}) {
     const MethodResult& ours = results[k++];
     EXPECT_EQ(ours.pair, pair);
     EXPECT_EQ(ours.method, "collide2d contact") << pair;
     EXPECT_LE(ours.max_error, 1e-15) << pair;
+    // To each tolerance, within it: it is a fraction of the larger reach, which is at most sqrt(2)
+    // times the larger half-size in the error's scale.
+    for (int exponent = 1; exponent <= 12; ++exponent) {
+      const MethodResult& loose = results[k++];
+      EXPECT_EQ(loose.method, "collide2d contact to a tolerance") << pair;
+      EXPECT_EQ(loose.tolerance, std::pow(10.0, -exponent)) << pair;
+      EXPECT_LE(loose.max_error, std::sqrt(2.0) * loose.tolerance + 1e-15) << pair << " " << loose.tolerance;
+    }
     if (pair == "circle-ellipse") {
       const MethodResult& batch = results[k++];
       EXPECT_EQ(batch.method, "collide2d batch");
@@ -74,6 +83,8 @@ TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
   write_report_json({}, results, options, json);
   EXPECT_NE(json.str().find("\"sides\": 16, "), std::string::npos);
   EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\"}"), std::string::npos);
+  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\", \"tolerance\": 0.001}"), std::string::npos);
+  EXPECT_NE(table.str().find("| collide2d contact to a tolerance | 1e-03 |"), std::string::npos);
 }
 
 }  // namespace
