@@ -69,14 +69,16 @@ class SecularRoot {
   const V& t() const { return t_; }
 
   // After a step that climbed from t' to t = t' + d, how near the root r is, relative to t: r - t
-  // <= w t with w = x ((1 + 8x)^3 - 1), x = d / t' (infinite for x > 1/8). Why: d = delta / q'(t')
-  // with delta = 1 - q(t'); q' decreases and |q''| <= 3 q' / t (above), so q'(s) >= q'(t') (t' /
-  // s)^3, which for x <= 1/8 puts q(2t') above 1 (r <= 2t') and then r - t' <= delta / q'(r) <= d
-  // (r / t')^3 <= d (1 + 8x)^3. The scalar form only, for a contact to a tolerance.
+  // <= w t with w = (3x^2 + 2x^3) / (c (1 + (1 + x) c) (1 + x)), c = sqrt(1 - 2x), x = d / t'
+  // (infinite for x >= 1/2). Why: q' decreases and |q''| <= 3 q' / t (above), so q'(s) >= q'(t')
+  // (t' / s)^3, and 1 - q(t') = q'(t') d (the Newton step) >= q(r) - q(t') >= q'(t') (t' / 2) (1 -
+  // (t' / r)^2): r <= t' / c, and t' / c - t = t' (1 - (1 + x) c) / c, whose numerator is written
+  // without cancellation as (1 - (1 + x)^2 (1 - 2x)) / (1 + (1 + x) c). 2^-20 more covers the
+  // rounding of the bound itself. The scalar form only, for a contact to a tolerance.
   double width() const {
-    if (!(climb_ <= 0.125)) return std::numeric_limits<double>::infinity();
-    const double grow = 1 + 8 * climb_;
-    return climb_ * (grow * grow * grow - 1);
+    if (!(climb_ < 0.5)) return std::numeric_limits<double>::infinity();
+    const double x = climb_, c = std::sqrt(1 - 2 * x);
+    return (1 + 0x1p-20) * (x * x * (3 + 2 * x)) / (c * (1 + (1 + x) * c) * (1 + x));
   }
   // sqrt(a_^2 + b_^2) at t' (nearest_at_root's a_ and b_): it bounds both, and |g|, for every t >= t'.
   const V& reach() const { return reach_; }
