@@ -216,7 +216,9 @@ std::optional<Contact> corner_beyond(const RectEllipse& p, const Quarter& q, con
 // quarter's maximum, is a lower bound of the separation: the search ends when one passes the
 // caller's limit.
 Contact rect_ellipse_contact(const RectEllipse& p, const Vec2& ca, const Vec2& cb, const ContactOptions& options) {
-  const double size = std::max({std::hypot(p.A.hx, p.A.hy), p.B.a, p.B.b});  // the larger reach_of
+  // The larger reach_of, only where a tolerance needs it (an overflow to infinity only stiffens the angle).
+  const double size =
+      options.tolerance > 0 ? std::max({std::sqrt(p.A.hx * p.A.hx + p.A.hy * p.A.hy), p.B.a, p.B.b}) : 1.0;
   const Tolerance<double> tolerance{options.tolerance, options.tolerance / size};
   const Faces faces = Faces::of(p);
   const int face = faces.best();
