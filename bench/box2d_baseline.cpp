@@ -177,10 +177,12 @@ std::optional<Box2dContact> box2d_contact(const ShapePair& pair) {
   identity.SetIdentity();
   b2WorldManifold world;
   world.Initialize(&manifold, identity, pair.shape(first)->m_radius, identity, pair.shape(1 - first)->m_radius);
-  double least = world.separations[0];
-  for (int i = 1; i < manifold.pointCount; ++i) least = std::min(least, static_cast<double>(world.separations[i]));
+  int deepest = 0;
+  for (int i = 1; i < manifold.pointCount; ++i)
+    deepest = world.separations[i] < world.separations[deepest] ? i : deepest;
   const Vec2 normal(world.normal.x, world.normal.y);
-  return Box2dContact{least, swapped ? Vec2(-normal) : normal};
+  return Box2dContact{world.separations[deepest], swapped ? Vec2(-normal) : normal,
+                      Vec2(world.points[deepest].x, world.points[deepest].y)};
 }
 
 namespace {

@@ -93,10 +93,12 @@ void box2d_manifold(const ShapePair& pair, b2Manifold* manifold);
 void box2d_manifolds(std::span<const ShapePair> pairs, std::span<b2Manifold> manifolds);
 
 // The manifold read through b2WorldManifold: its least point separation (the signed distance
-// along its normal) and the normal from A to B; nullopt when it has no point.
+// along its normal), the normal from A to B, and that point (midway between the two surfaces, in
+// the polygons' frame); nullopt when it has no point.
 struct Box2dContact {
   double separation;
   Vec2 normal;
+  Vec2 point;
 };
 std::optional<Box2dContact> box2d_contact(const ShapePair& pair);
 

@@ -12,11 +12,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <ostream>
 #include <random>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 
 namespace collide2d::tool {
 extern const char kReportPage[];  // bench/report.html
@@ -30,11 +34,22 @@ double half_size(const Ellipse& e) { return std::max(e.a, e.b); }
 double half_size(const Rect& r) { return r.half_extents.maxCoeff(); }
 double half_size(const Circle& c) { return c.radius; }
 
+// A query's answer: the separation (or distance), and a contact's normal and point (NaN where the
+// query or the reference has none).
+struct Answer {
+  double separation = 0.0;
+  Vec2 normal = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+  Vec2 point = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+Answer answer_of(double separation) { return {separation}; }
+Answer answer_of(const Answer& a) { return a; }
+Answer answer_of(const Contact& c) { return {c.separation, c.normal, (c.point_a + c.point_b) / 2}; }
+
 template <class A, class B>
 struct Workload {
   std::vector<A> a;
   std::vector<B> b;
-  std::vector<double> reference;
+  std::vector<Answer> reference;
   std::vector<double> scale;
 };
 
@@ -68,7 +83,7 @@ Workload<A, B> make_workload(const ReportOptions& options, Keep keep, Reference 
     if (!keep(a, b)) continue;
     w.a.push_back(a);
     w.b.push_back(b);
-    w.reference.push_back(reference(a, b));
+    w.reference.push_back(answer_of(reference(a, b)));
     w.scale.push_back(std::max({half_size(a), half_size(b), (b.center - a.center).norm()}));
   }
   return w;
@@ -79,19 +94,51 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The median and the largest of a list, NaN for none.
+std::pair<double, double> median_and_max(const std::vector<double>& v) {
+  if (v.empty()) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  return {median(v), *std::max_element(v.begin(), v.end())};
+}
+
 // Runs query(k) over the workload `repetitions` times; the median pass gives the time per query.
 template <class A, class B, class Query>
 MethodResult measure(const Workload<A, B>& w, int repetitions, std::string method, int sides, Query query) {
   const std::size_t n = w.a.size();
-  std::vector<double> got(n), times;
+  std::vector<Answer> got(n);
+  std::vector<double> times;
   for (int r = 0; r < repetitions; ++r) {
     const auto start = std::chrono::steady_clock::now();
-    for (std::size_t k = 0; k < n; ++k) got[k] = query(k);
+    for (std::size_t k = 0; k < n; ++k) got[k] = answer_of(query(k));
     times.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / n);
   }
-  std::vector<double> errors;
-  for (std::size_t k = 0; k < n; ++k) errors.push_back(std::abs(got[k] - w.reference[k]) / w.scale[k]);
-  return {std::move(method), sides, median(times), median(errors), *std::max_element(errors.begin(), errors.end()), ""};
+  std::vector<double> errors, normals, points;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Answer &x = got[k], &want = w.reference[k];
+    errors.push_back(std::abs(x.separation - want.separation) / w.scale[k]);
+    if (x.normal.allFinite() && want.normal.allFinite())
+      normals.push_back(std::atan2(std::abs(x.normal.x() * want.normal.y() - x.normal.y() * want.normal.x()),
+                                   x.normal.dot(want.normal)));
+    if (x.point.allFinite() && want.point.allFinite()) points.push_back((x.point - want.point).norm() / w.scale[k]);
+  }
+  MethodResult out{
+      std::move(method), sides, median(times), median(errors), *std::max_element(errors.begin(), errors.end()), ""};
+  std::tie(out.median_normal_error, out.max_normal_error) = median_and_max(normals);
+  std::tie(out.median_point_error, out.max_point_error) = median_and_max(points);
+  return out;
+}
+
+// The 50-digit signed distance, and where its maximiser is unique, its normal and the support
+// points' midpoint (where neither support set is a face).
+Answer contact_reference(const Shape& a, const Shape& b) {
+  const reference::SignedDistance r = reference::signed_distance(a, b);
+  Answer out{static_cast<double>(r.separation)};
+  const double scale = std::max({reach_of(a), reach_of(b), (center_of(b) - center_of(a)).norm()});
+  if (!(r.runner_up < r.separation - reference::Real(1e-9 * scale))) return out;
+  out.normal = Vec2(static_cast<double>(r.normal.x), static_cast<double>(r.normal.y));
+  const std::optional<reference::Point> pa = reference::support_point(a, r.normal);
+  const std::optional<reference::Point> pb = reference::support_point(b, {-r.normal.x, -r.normal.y});
+  if (pa && pb) out.point = Vec2(static_cast<double>((pa->x + pb->x) / 2), static_cast<double>((pa->y + pb->y) / 2));
+  return out;
 }
 
 }  // namespace
@@ -154,17 +201,17 @@ void measure_contact_pairs(const ReportOptions& options, const char* pair, std::
   const auto w = make_workload<A, B>(
       options,
       [](const A& a, const B& b) { return one_off(a, b).separation < -0.02 * std::max(half_size(a), half_size(b)); },
-      [](const A& a, const B& b) { return static_cast<double>(reference::signed_distance(a, b).separation); });
+      [](const A& a, const B& b) { return contact_reference(a, b); });
   const std::size_t first = out.size();
-  out.push_back(measure(w, options.repetitions, "collide2d contact", 0,
-                        [&w](std::size_t k) { return one_off(w.a[k], w.b[k]).separation; }));
+  out.push_back(
+      measure(w, options.repetitions, "collide2d contact", 0, [&w](std::size_t k) { return one_off(w.a[k], w.b[k]); }));
   for (int exponent = 1; exponent <= 12; ++exponent) {
     const double fraction = std::pow(10.0, -exponent);
     std::vector<ContactOptions> to(w.a.size());
     for (std::size_t k = 0; k < w.a.size(); ++k)
       to[k].tolerance = fraction * std::max(reach_of(Shape(w.a[k])), reach_of(Shape(w.b[k])));
     out.push_back(measure(w, options.repetitions, "collide2d contact to a tolerance", 0,
-                          [&w, &to](std::size_t k) { return one_off(w.a[k], w.b[k], to[k]).separation; }));
+                          [&w, &to](std::size_t k) { return one_off(w.a[k], w.b[k], to[k]); }));
     out.back().tolerance = fraction;
   }
   std::vector<Contact> contacts(w.a.size());
@@ -172,7 +219,7 @@ void measure_contact_pairs(const ReportOptions& options, const char* pair, std::
     // Timed as a whole list per pass, divided by its pairs; the separations are read back from it.
     out.push_back(measure(w, options.repetitions, "collide2d batch", 0, [&](std::size_t k) {
       if (k == 0) batch(w.a, w.b, contacts);
-      return contacts[k].separation;
+      return contacts[k];
     }));
   }
   for (const auto& [name, fit] : {std::pair{"box2d manifold inscribed", baseline::Fit::inscribed},
@@ -183,9 +230,9 @@ void measure_contact_pairs(const ReportOptions& options, const char* pair, std::
         pairs.push_back(baseline::to_box2d_shapes(baseline::to_box2d(w.a[k], sides, fit, w.a[k].center),
                                                   baseline::to_box2d(w.b[k], sides, fit, w.a[k].center)));
       }
-      out.push_back(measure(w, options.repetitions, name, sides, [&pairs](std::size_t k) {
+      out.push_back(measure(w, options.repetitions, name, sides, [&pairs, &w](std::size_t k) {
         const auto c = baseline::box2d_contact(pairs[k]);
-        return c ? c->separation : 0.0;
+        return c ? Answer{c->separation, c->normal, c->point + w.a[k].center} : Answer{};
       }));
     }
   }
@@ -207,14 +254,24 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
   char line[200];
   std::snprintf(line, sizeof line, "%s, time = median of %d passes\n", title.c_str(), options.repetitions);
   out << line;
-  out << "| method | N | time per query | median error | max error |\n| --- | --- | --- | --- | --- |\n";
+  const bool contacts = std::any_of(results.begin(), results.end(),
+                                    [](const MethodResult& r) { return std::isfinite(r.median_normal_error); });
+  out << "| method | N | time per query | median error | max error |"
+      << (contacts ? " normal (median / max, rad) | point (median / max) |\n" : "\n")
+      << "| --- | --- | --- | --- | --- |" << (contacts ? " --- | --- |\n" : "\n");
   for (const MethodResult& r : results) {
     char n[32] = "-";  // the polygons' N, or a tolerance's fraction of the size
     if (r.sides) std::snprintf(n, sizeof n, "%d", r.sides);
     if (r.tolerance > 0) std::snprintf(n, sizeof n, "%.0e", r.tolerance);
-    std::snprintf(line, sizeof line, "| %s | %s | %.0f ns | %.1e | %.1e |\n", r.method.c_str(), n, r.nanoseconds,
+    std::snprintf(line, sizeof line, "| %s | %s | %.0f ns | %.1e | %.1e |", r.method.c_str(), n, r.nanoseconds,
                   r.median_error, r.max_error);
     out << line;
+    if (contacts) {
+      std::snprintf(line, sizeof line, " %.1e / %.1e | %.1e / %.1e |", r.median_normal_error, r.max_normal_error,
+                    r.median_point_error, r.max_point_error);
+      out << line;
+    }
+    out << '\n';
   }
   out << "errors are |d - d_ref| / max(size, centre distance); d_ref from 50-digit arithmetic\n";
 }
@@ -240,12 +297,20 @@ void write_report_json(const std::vector<MethodResult>& distance, const std::vec
       char line[300];
       std::snprintf(line, sizeof line,
                     "    {\"method\": \"%s\", \"sides\": %d, \"nanoseconds\": %s, \"median_error\": %s, "
-                    "\"max_error\": %s%s%s%s%s%s}%s\n",
+                    "\"max_error\": %s%s%s%s%s%s",
                     r.method.c_str(), r.sides, json_number(r.nanoseconds).c_str(), json_number(r.median_error).c_str(),
                     json_number(r.max_error).c_str(), r.pair.empty() ? "" : ", \"pair\": \"", r.pair.c_str(),
                     r.pair.empty() ? "" : "\"", r.tolerance > 0 ? ", \"tolerance\": " : "",
-                    r.tolerance > 0 ? json_number(r.tolerance).c_str() : "", k + 1 < results.size() ? "," : "");
+                    r.tolerance > 0 ? json_number(r.tolerance).c_str() : "");
       out << line;
+      const std::pair<const char*, double> measured[] = {{"median_normal_error", r.median_normal_error},
+                                                         {"max_normal_error", r.max_normal_error},
+                                                         {"median_point_error", r.median_point_error},
+                                                         {"max_point_error", r.max_point_error}};
+      for (const auto& [name, value] : measured) {
+        if (std::isfinite(value)) out << ", \"" << name << "\": " << json_number(value);
+      }
+      out << '}' << (k + 1 < results.size() ? "," : "") << '\n';
     }
     out << "  ]";
   };

@@ -17,9 +17,15 @@
 // (b2_maxPolygonVertices is 8 in 2.4.1) and 16 (the rebuilt 2.4.1). Error: |separation -
 // reference| / scale, the reference being the 50-digit signed distance (a scan of the dual
 // function); a Box2D manifold without points (inscribed polygons apart) counts as separation 0.
+// Where the reference's maximiser is unique (its runner-up 1e-9 of the scale below), also the
+// normal's angle from the reference's and the contact point's distance from the reference's
+// support points' midpoint over the scale (Box2D's point is its deepest manifold point, midway
+// between the surfaces; collide2d's the midpoint of point_a and point_b); a support set that is a
+// face has no one point, and the pair's point goes unmeasured.
 #pragma once
 
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,6 +39,12 @@ struct MethodResult {
   double max_error = 0.0;
   std::string pair;        // the pair kind of a contact measurement, e.g. "rect-ellipse"
   double tolerance = 0.0;  // a contact's ContactOptions::tolerance, as a fraction of the pair's size
+  // A contact's normal (the angle from the reference's, rad) and point (the deepest points' midpoint,
+  // over the scale) on the pairs whose maximiser is unique; NaN for a distance, or where no pair had one.
+  double median_normal_error = std::numeric_limits<double>::quiet_NaN();
+  double max_normal_error = std::numeric_limits<double>::quiet_NaN();
+  double median_point_error = std::numeric_limits<double>::quiet_NaN();
+  double max_point_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ReportOptions {
@@ -51,7 +63,7 @@ void print_report(const std::vector<MethodResult>& results, const std::string& t
 // Both measurements as one JSON object: {"pairs", "repetitions", "distance": [...], "contact": [...]},
 // each result {"method", "sides", "nanoseconds", "median_error", "max_error"} (an error that is not
 // finite, where a method failed on some pair, as null), and "pair" for a contact's, "tolerance" for
-// one to a tolerance.
+// one to a tolerance, "median_normal_error" ... "max_point_error" where measured.
 void write_report_json(const std::vector<MethodResult>& distance, const std::vector<MethodResult>& contact,
                        const ReportOptions& options, std::ostream& out);
 

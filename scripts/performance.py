@@ -324,11 +324,16 @@ def error_svg(results, title):
 
 
 def report_table(results):
-    lines = ['| method | N | time per query | median error | max error |', '| --- | --- | --- | --- | --- |']
+    """The report's rows; a contact's normal and point errors where the results have them."""
+    contacts = any('median_normal_error' in r for r in results)
+    lines = ['| method | N | time per query | median error | max error |' + (' normal (median / max, rad) | point (median / max) |' if contacts else ''),
+             '| --- | --- | --- | --- | --- |' + (' --- | --- |' if contacts else '')]
+    pair_of = lambda r, what: ' / '.join(f'{r[k]:.1e}' if k in r else '—' for k in (f'median_{what}_error', f'max_{what}_error'))
     for r in results:
         errors = [f'{e:.1e}' if math.isfinite(e) else 'failed' for e in (error_of(r['median_error']), error_of(r['max_error']))]
         n = r['sides'] or (f'{r["tolerance"]:.0e}' if r.get('tolerance') else '—')
-        lines.append(f'| {r["method"]} | {n} | {fmt_time(r["nanoseconds"])} | {errors[0]} | {errors[1]} |')
+        extra = f' {pair_of(r, "normal")} | {pair_of(r, "point")} |' if contacts else ''
+        lines.append(f'| {r["method"]} | {n} | {fmt_time(r["nanoseconds"])} | {errors[0]} | {errors[1]} |' + extra)
     return '\n'.join(lines)
 
 

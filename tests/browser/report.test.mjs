@@ -1,8 +1,9 @@
 // The report's page in a real browser (Debian's chromium, driven by puppeteer-core):
 //   node report.test.mjs COLLIDE2D_REPORT WORK_DIR
 // runs `collide2d_report --pairs 10` with --json and --html, and checks that the page plots a point
-// for every measurement of the JSON, that hovering one shows its method, time and error, and that
-// unticking a pair kind takes its points and its table away. Exits 77 (ctest: skipped), saying why,
+// for every measurement of the JSON, that hovering one shows its method, time and error, that a
+// contact's table shows its normal's errors, and that unticking a pair kind takes its points and
+// its table away. Exits 77 (ctest: skipped), saying why,
 // where no browser or no puppeteer-core is installed (scripts/deps.sh --test installs both).
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
@@ -39,6 +40,15 @@ try {
   const expected = [`robust`, `${Number(robust.nanoseconds).toPrecision(3)} ns`,
                     `median error ${Number(robust.median_error).toPrecision(3)}`];
   check(expected.every((e) => tip.includes(e)), `hovering the robust method shows ${JSON.stringify(tip)}`);
+
+  // A contact's table also holds its normal and point errors.
+  const heads = await page.$eval('table[data-kind="circle-ellipse"]',
+                                 (t) => [...t.tHead.rows[0].cells].map((c) => c.textContent));
+  const ours = report.contact.find((r) => r.pair === 'circle-ellipse' && r.method === 'collide2d contact');
+  const cells = await page.$eval('table[data-kind="circle-ellipse"]', (t) => [...t.tBodies[0].rows[0].cells].map((c) => c.textContent));
+  check(heads.includes('normal (median / largest, rad)') &&
+        cells[4] === `${Number(ours.median_normal_error).toPrecision(3)} / ${Number(ours.max_normal_error).toPrecision(3)}`,
+        `the circle-ellipse table shows the normal's errors: ${JSON.stringify(heads)} ${JSON.stringify(cells)}`);
 
   // Untick rect-ellipse.
   await page.click('input[data-kind="rect-ellipse"]');

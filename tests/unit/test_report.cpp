@@ -52,13 +52,17 @@ TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
     EXPECT_EQ(ours.pair, pair);
     EXPECT_EQ(ours.method, "collide2d contact") << pair;
     EXPECT_LE(ours.max_error, 1e-15) << pair;
+    EXPECT_LE(ours.max_normal_error, 1e-14) << pair;
+    EXPECT_LE(ours.max_point_error, 1e-14) << pair;
     // To each tolerance, within it: it is a fraction of the larger reach, which is at most sqrt(2)
-    // times the larger half-size in the error's scale.
+    // times the larger half-size in the error's scale; the normal within that fraction, in rad.
     for (int exponent = 1; exponent <= 12; ++exponent) {
       const MethodResult& loose = results[k++];
       EXPECT_EQ(loose.method, "collide2d contact to a tolerance") << pair;
       EXPECT_EQ(loose.tolerance, std::pow(10.0, -exponent)) << pair;
       EXPECT_LE(loose.max_error, std::sqrt(2.0) * loose.tolerance + 1e-15) << pair << " " << loose.tolerance;
+      EXPECT_LE(loose.max_normal_error, loose.tolerance + 1e-14) << pair << " " << loose.tolerance;
+      EXPECT_LE(loose.max_point_error, std::sqrt(2.0) * loose.tolerance + 1e-14) << pair << " " << loose.tolerance;
     }
     if (pair == "circle-ellipse") {
       const MethodResult& batch = results[k++];
@@ -74,6 +78,7 @@ TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
       EXPECT_EQ(sixteen.sides, 16) << pair;
       EXPECT_EQ(sixteen.pair, pair);
       EXPECT_LT(sixteen.median_error, five.median_error) << pair << " " << fit;
+      EXPECT_LT(sixteen.median_point_error, five.median_point_error) << pair << " " << fit;
       k += 5;
     }
   }
@@ -82,8 +87,9 @@ TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
   EXPECT_NE(table.str().find("| box2d manifold inscribed | 16 |"), std::string::npos);
   write_report_json({}, results, options, json);
   EXPECT_NE(json.str().find("\"sides\": 16, "), std::string::npos);
-  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\"}"), std::string::npos);
-  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\", \"tolerance\": 0.001}"), std::string::npos);
+  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\", \"median_normal_error\": "), std::string::npos);
+  EXPECT_NE(json.str().find(", \"pair\": \"circle-ellipse\", \"tolerance\": 0.001, \"median_normal_error\": "),
+            std::string::npos);
   EXPECT_NE(table.str().find("| collide2d contact to a tolerance | 1e-03 |"), std::string::npos);
 }
 
