@@ -2,6 +2,7 @@
 
 #include <collide2d/batch.h>
 #include <collide2d/kernels.h>
+#include <collide2d/query.h>
 #include "bench/box2d_baseline.h"
 #include "mp_reference.h"
 
@@ -29,10 +30,14 @@ extern const char kReportPage[];  // bench/report.html
 namespace collide2d::report {
 namespace {
 
-// A shape's largest half-size.
+// A shape's largest half-size; a polygon's, capsule's or segment's reach_of.
 double half_size(const Ellipse& e) { return std::max(e.a, e.b); }
 double half_size(const Rect& r) { return r.half_extents.maxCoeff(); }
 double half_size(const Circle& c) { return c.radius; }
+template <class S>
+double half_size(const S& s) {
+  return reach_of(Shape(s));
+}
 
 // A query's answer: the separation (or distance), and a contact's normal and point (NaN where the
 // query or the reference has none).
@@ -68,6 +73,25 @@ struct Generator {
     r = Rect{centre(), Vec2(h, h / std::pow(10.0, uniform(0, 1))), uniform(0, 6.3)};
   }
   void make(Circle& c) { c = Circle{centre(), size()}; }
+  // A polygon: 3 to 8 vertices on an ellipse of the rectangles' sizes, at random angles.
+  void make(ConvexPolygon& p) {
+    const double h = size(), thin = h / std::pow(10.0, uniform(0, 1));
+    const int count = 3 + static_cast<int>(uniform(0, 6));
+    std::vector<Vec2> v;
+    for (int k = 0; k < count; ++k) {
+      const double t = 6.283185307179586 * (k + uniform(0.1, 0.9)) / count;
+      v.emplace_back(h * std::cos(t), thin * std::sin(t));
+    }
+    p = ConvexPolygon::of(v).at(centre(), uniform(0, 6.3));
+  }
+  void make(Capsule& c) {
+    const double h = size();
+    c = Capsule{centre(), h, h / std::pow(10.0, uniform(0, 1)), uniform(0, 6.3)};
+  }
+  void make(Segment& g) {
+    const double h = 2 * size(), t = uniform(0, 6.3);
+    g = Segment{centre(), Vec2(h * std::cos(t), h * std::sin(t)), 0.0};
+  }
 };
 
 // Pairs the generator draws until `keep` accepts `pairs` of them, with `reference` for each.
@@ -174,7 +198,12 @@ std::vector<MethodResult> measure_methods(const ReportOptions& options) {
 
 namespace {
 
-// The pair kind's contact and its batch (none where there is no batch), by overload.
+// The pair kind's contact and its batch (none where there is no batch), by overload; a polygon's,
+// capsule's or segment's through contact(), as the World calls it.
+template <class A>
+Contact one_off(const A& a, const Ellipse& b, const ContactOptions& options = {}) {
+  return contact(Shape(a), Shape(b), options);
+}
 Contact one_off(const Rect& a, const Ellipse& b, const ContactOptions& options = {}) {
   return contact_rect_ellipse(a, b, options);
 }
@@ -246,6 +275,9 @@ std::vector<MethodResult> measure_contact_methods(const ReportOptions& options) 
   measure_contact_pairs<Rect, Ellipse>(options, "rect-ellipse", out);
   measure_contact_pairs<Circle, Ellipse>(options, "circle-ellipse", out);
   measure_contact_pairs<Ellipse, Ellipse>(options, "ellipse-ellipse", out);
+  measure_contact_pairs<ConvexPolygon, Ellipse>(options, "polygon-ellipse", out);
+  measure_contact_pairs<Capsule, Ellipse>(options, "capsule-ellipse", out);
+  measure_contact_pairs<Segment, Ellipse>(options, "segment-ellipse", out);
   return out;
 }
 

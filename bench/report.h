@@ -8,9 +8,10 @@
 // for N = 8 ... 256. Time: the median over `repetitions` passes of the mean time per query in the
 // pass. Error: |d - d_ref| / max(size, centre distance), median and maximum over the pairs.
 //
-// Contacts, for each curved pair (rectangle–ellipse, circle–ellipse, ellipse–ellipse): `pairs`
-// overlapping pairs of the same generator (rectangles of aspect up to 10, circles), deeper than 2%
-// of the larger size; collide2d's contact one pair at a time and, where there is one, its batch
+// Contacts, for each pair with an ellipse (rectangle, circle, ellipse, polygon, capsule, segment):
+// `pairs` overlapping pairs of the same generator (rectangles and capsules of aspect up to 10,
+// circles, polygons of 3 to 8 vertices on such ellipses, segments up to 2 long), deeper than 2% of
+// the larger size; collide2d's contact one pair at a time and, where there is one, its batch
 // (timed over the whole list, per pair), and to each tolerance from 1e-1 to 1e-12 of the pair's size
 // (the larger reach_of), against Box2D's manifold (b2CollidePolygons,
 // b2CollidePolygonAndCircle) on the inscribed and the circumscribed N-gons, N = 5 ... 8

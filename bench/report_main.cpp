@@ -18,11 +18,12 @@ constexpr const char* kUsage =
     "  Times every ellipse-ellipse distance method (robust, gradient, polynomial, Box2D on\n"
     "  inscribed and circumscribed 8- to 256-gons) on N separated pairs (default 200) and\n"
     "  measures its error against 50-digit arithmetic; prints a table. Then the contact\n"
-    "  depth of N overlapping pairs of each curved kind (rect-ellipse, circle-ellipse,\n"
-    "  ellipse-ellipse): collide2d's contact, one pair at a time, batched and to tolerances of\n"
-    "  1e-1 to 1e-12 of the size, against Box2D's manifold on inscribed and circumscribed 5- to\n"
-    "  8- and 16-gons (a table each). --json writes all as JSON; --html as a page, the plot of\n"
-    "  speed against error interactive beside the tables.\n";
+    "  depth of N overlapping pairs of each kind with an ellipse (rect, circle, ellipse,\n"
+    "  polygon, capsule, segment): collide2d's contact, one pair at a time, batched and to\n"
+    "  tolerances of 1e-1 to 1e-12 of the size, against Box2D's manifold on inscribed and\n"
+    "  circumscribed 5- to 8- and 16-gons (a table each, with the normal's and the point's\n"
+    "  errors). --json writes all as JSON; --html as a page, the plot of speed against error\n"
+    "  interactive beside the tables.\n";
 
 int report(int argc, char** argv) {
   collide2d::report::ReportOptions options;
@@ -45,7 +46,8 @@ int report(int argc, char** argv) {
       distance, "ellipse-ellipse distance, " + std::to_string(options.pairs) + " separated pairs", options, std::cout);
   std::cout << '\n';
   const auto contact = collide2d::report::measure_contact_methods(options);
-  for (const char* pair : {"rect-ellipse", "circle-ellipse", "ellipse-ellipse"}) {
+  for (const char* pair :
+       {"rect-ellipse", "circle-ellipse", "ellipse-ellipse", "polygon-ellipse", "capsule-ellipse", "segment-ellipse"}) {
     std::vector<collide2d::report::MethodResult> rows;
     for (const auto& r : contact) {
       if (r.pair == pair) rows.push_back(r);

@@ -40,14 +40,15 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   EXPECT_NE(failed.str().find("\"median_error\": 1e-16, \"max_error\": null}"), std::string::npos) << failed.str();
 }
 
-// The contact depth of each curved pair: ours exact one pair at a time and batched (the same
-// separations), Box2D's manifolds closer as N grows from 5 to 16.
-TEST(Report, MeasuresTheContactDepthOfEveryCurvedPair) {
+// The contact depth of each pair with an ellipse: ours exact one pair at a time, batched (the same
+// separations) and to each tolerance, Box2D's manifolds closer as N grows from 5 to 16.
+TEST(Report, MeasuresTheContactDepthOfEveryPairWithAnEllipse) {
   const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 4};
   const std::vector<MethodResult> results = measure_contact_methods(options);
-  ASSERT_EQ(results.size(), 23u + 24u + 23u);
+  ASSERT_EQ(results.size(), 23u + 24u + 4 * 23u);
   std::size_t k = 0;
-  for (const std::string pair : {"rect-ellipse", "circle-ellipse", "ellipse-ellipse"}) {
+  for (const std::string pair :
+       {"rect-ellipse", "circle-ellipse", "ellipse-ellipse", "polygon-ellipse", "capsule-ellipse", "segment-ellipse"}) {
     const MethodResult& ours = results[k++];
     EXPECT_EQ(ours.pair, pair);
     EXPECT_EQ(ours.method, "collide2d contact") << pair;
