@@ -8,6 +8,7 @@
 #include "hard_cases.h"
 #include "mp_reference.h"
 
+#include <collide2d/chain.h>
 #include <collide2d/query.h>
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -177,6 +179,43 @@ TEST(ContactTolerance, ZeroIsTheExactContactAndPairsWithoutAnEllipseIgnoreIt) {
       EXPECT_EQ(exact.normal, loose.normal);
     }
   }
+}
+
+// Chain segments (one-sided, smooth at their vertices) against ellipses grazing and sunk into a
+// zigzag: at every tolerance, the contact within it of the exact chain contact (itself within a few
+// ulps of the 50-digit reference, test_chain_families), with the exact one's verdict.
+TEST(ContactTolerance, ChainSegmentsTakeIt) {
+  const std::vector<Vec2> points{{-4, 0}, {-2, 0.5}, {0, -0.3}, {2, 0.8}, {4, 0}};
+  const std::vector<ChainSegment> chain = chain_segments(points, false);
+  std::mt19937_64 rng(57);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int apart = 0, overlapping = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const double a = 0.2 + 0.8 * u(rng), b = a / std::pow(10.0, u(rng));
+    const Vec2 centre(-3 + 6 * u(rng), -1 + 2.5 * u(rng));
+    const Ellipse e{centre, a, b, 6.3 * u(rng)};
+    for (const ChainSegment& s : chain) {
+      const Contact exact = contact(s, e);
+      if (exact.empty()) continue;  // behind the segment
+      const double size = std::max(reach_of(s.segment), reach_of(e));
+      const double scale = std::max(size, (e.center - s.segment.center).norm());
+      for (const double fraction : kTolerances) {
+        const double tolerance = fraction * size;
+        const Contact got = contact(s, e, {.tolerance = tolerance});
+        const std::string at =
+            describe(e) + " on segment " + std::to_string(&s - chain.data()) + " at " + std::to_string(fraction);
+        const double slack = 8 * kU * scale;
+        EXPECT_EQ(got.separation <= 0, exact.separation <= 0) << at;
+        EXPECT_LE(std::abs(got.separation - exact.separation), tolerance + slack) << at;
+        EXPECT_LE(angle_between(got.normal, exact.normal), fraction + 4 * kU) << at;
+        EXPECT_LE((got.point_a - exact.point_a).norm(), tolerance + slack) << at;
+        EXPECT_LE((got.point_b - exact.point_b).norm(), tolerance + slack) << at;
+      }
+      ++(exact.separation <= 0 ? overlapping : apart);
+    }
+  }
+  EXPECT_GT(apart, 100);
+  EXPECT_GT(overlapping, 100);
 }
 
 TEST(ContactTolerance, BadTolerancesAreRefused) {
