@@ -76,37 +76,33 @@ struct Quarter {
 // The maximum of s inside the quarter, into `m` if s has one there (else the quarter's maximum is
 // at an end); `evaluations` counts each point–ellipse root as one. Without q.nearest the nearest
 // point, known to lie outside the quarter, is skipped. With a tolerance the nearest point's root
-// stops early (distance_point_ellipse_within) and `within` says so, with a bound of the error of s
-// in `error`; it is taken to the last bit where its normal lies too near the quarter's ends to tell
-// on which side the exact one lies.
+// stops early (nearest_in_range) and `within` says so, with a bound of the error of s in `error`.
 bool quarter_maximum(const RectEllipse& p, const Quarter& q, const Tolerance<double>& tolerance, Direction<double>& m,
                      double& error, bool& within, int& evaluations) {
   const V2<double>&x = q.x, &y = q.y, &corner = q.corner;
   const Vec2& local = q.local;
-  // With `margin` to spare (a sine): see in_cone in core_ellipse.cpp.
-  const auto inside = [&](double margin) { return cross(x, m.n) >= margin && cross(m.n, y) >= margin; };
+  // With `margin` (a sine) to spare on both sides, as in_range wants; n as at_foot turns it.
+  const auto inside = [&](const V2<double>& n, double margin) {
+    return cross(x, n) >= margin && cross(n, y) >= margin;
+  };
+  const auto in_quarter = [&](const Vec2& normal, double margin) {
+    return inside(-p.B.rot.apply(V2<double>(normal)), margin);
+  };
   error = 0.0, within = false;
   if (q.nearest) {
     ++evaluations;
-    const std::optional<NearestWithin> near =
-        tolerance.length > 0
-            ? distance_point_ellipse_within(p.B.a, p.B.b, local, 0.0, tolerance.length, tolerance.angle)
-            : std::nullopt;
-    if (near) {
-      m = at_foot(p, corner, near->near.closest, near->near.normal, near->signed_distance);
-      if (inside(near->turn)) return within = true, error = near->error, true;
-    }
-    if (!near || inside(-near->turn)) {
-      const PointEllipseResult foot = distance_point_ellipse(p.B.a, p.B.b, local);
-      m = at_foot(p, corner, foot.closest, foot.normal, foot.inside ? -foot.distance : foot.distance);
-      if (inside(0.0)) return true;
+    const RangeFoot near = nearest_in_range(p.B.a, p.B.b, local, 0.0, tolerance.length, tolerance.angle, in_quarter);
+    if (near.in_range) {
+      m = at_foot(p, corner, near.foot.point, near.foot.normal, near.foot.signed_distance);
+      error = near.error, within = near.early;
+      return true;
     }
   }
   ++evaluations;
   const std::optional<CurveFoot> other = other_local_nearest(p.B.a, p.B.b, local);
   if (!other) return false;
   m = at_foot(p, corner, other->point, other->normal, other->signed_distance);
-  return inside(0.0);
+  return inside(m.n, 0.0);
 }
 
 // The four face normals of the rectangle, k = 0..3 counter-clockwise from its axis x, with B's

@@ -29,31 +29,20 @@ bool in_cone(const Core& c, int k, const Vec2& u, double margin = 0.0) {
 // The maxima of the separation over vertex k's cone that lie inside it, into `best`; each root
 // counted in `roots`. Where the nearest foot's normal lies in the cone it is the greatest
 // separation over every direction, and the other foot's cannot pass it. With a tolerance the
-// nearest foot's root stops early (distance_point_ellipse_within), and is taken to the last bit only
-// where its normal lies too near the cone's edge to tell on which side the exact one lies.
+// nearest foot's root stops early (nearest_in_range).
 void vertex_peaks(const CoreEllipse& p, int k, const RootTolerance& tolerance, Peak& best, int& roots) {
   const Vec2& v = p.core.v[k];
-  const auto consider = [&](const Peak& peak, double turn) {
-    const bool inside = in_cone(p.core, k, peak.u, turn);
-    if (peak.s > best.s && inside) best = peak;
-    return inside;
+  // u, from the vertex towards the ellipse, is the ellipse's inward normal.
+  const auto in_cone_of = [&](const Vec2& normal, double margin) { return in_cone(p.core, k, Vec2(-normal), margin); };
+  const auto consider = [&](const CurveFoot& f, double error) {
+    if (f.signed_distance > best.s) best = {f.signed_distance, -f.normal, v, f.point, error};
   };
   ++roots;
-  const std::optional<NearestWithin> near =
-      tolerance.length > 0
-          ? distance_point_ellipse_within(p.a, p.b, v, p.core.radius, tolerance.length, tolerance.angle)
-          : std::nullopt;
-  if (!near || in_cone(p.core, k, -near->near.normal, -near->turn)) {
-    if (near && consider({near->signed_distance, -near->near.normal, v, near->near.closest, near->error}, near->turn))
-      return;
-    const PointEllipseResult exact = distance_point_ellipse(p.a, p.b, v);
-    // u, from the vertex towards the ellipse, is the ellipse's inward normal.
-    if (consider({exact.inside ? -exact.distance : exact.distance, -exact.normal, v, exact.closest}, 0.0)) return;
-  }
+  const RangeFoot near = nearest_in_range(p.a, p.b, v, p.core.radius, tolerance.length, tolerance.angle, in_cone_of);
+  if (near.in_range) return consider(near.foot, near.error);
   ++roots;
-  if (const std::optional<CurveFoot> other = other_local_nearest(p.a, p.b, v)) {
-    consider({other->signed_distance, -other->normal, v, other->point}, 0.0);
-  }
+  const std::optional<CurveFoot> other = other_local_nearest(p.a, p.b, v);
+  if (other && in_cone_of(other->normal, 0.0)) consider(*other, 0.0);
 }
 
 // Whether the separation of the point v and the ellipse stays at most s over the arc from the

@@ -82,4 +82,32 @@ struct CurveFoot {
 // nearest point is (distance_point_ellipse.cpp says how); nullopt where there is none.
 std::optional<CurveFoot> other_local_nearest(double a, double b, const Vec2& p);
 
+// The nearest foot of p where only a range of normals counts (a vertex's cone of directions, a
+// corner's quarter turn): `in_range(normal, margin)` says whether the curve's outward normal there
+// lies in the range with `margin` (a sine) to spare on both sides, a negative margin widening it.
+// To the tolerance (distance_point_ellipse_within) where that normal lies in the range, or out of
+// it, by more than its turn, so that the exact one certainly does the same; else the exact root.
+// `error` bounds the signed distance's error (0 for an exact root); `early` says the root stopped
+// within the tolerance. A tolerance of 0 takes the exact root.
+struct RangeFoot {
+  CurveFoot foot;
+  double error = 0.0;
+  bool early = false;
+  bool in_range = false;
+};
+template <class InRange>
+RangeFoot nearest_in_range(double a, double b, const Vec2& p, double radius, double tolerance, double angle,
+                           InRange in_range) {
+  if (tolerance > 0) {
+    if (const std::optional<NearestWithin> near = distance_point_ellipse_within(a, b, p, radius, tolerance, angle)) {
+      const CurveFoot foot{near->near.closest, near->near.normal, near->signed_distance};
+      if (in_range(foot.normal, near->turn)) return {foot, near->error, true, true};
+      if (!in_range(foot.normal, -near->turn)) return {foot, near->error, true, false};
+    }
+  }
+  const PointEllipseResult exact = distance_point_ellipse(a, b, p);
+  const CurveFoot foot{exact.closest, exact.normal, exact.inside ? -exact.distance : exact.distance};
+  return {foot, 0.0, false, in_range(foot.normal, 0.0)};
+}
+
 }  // namespace collide2d
