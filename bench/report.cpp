@@ -4,6 +4,9 @@
 #include <collide2d/kernels.h>
 #include <collide2d/query.h>
 #include "bench/box2d_baseline.h"
+#ifdef COLLIDE2D_REPORT_BOX2D_V3
+#include "bench/box2d_v3/report.h"
+#endif
 #include "mp_reference.h"
 
 #include "narrowphase/baselines/baselines.h"
@@ -265,6 +268,15 @@ void measure_contact_pairs(const ReportOptions& options, const char* pair, std::
       }));
     }
   }
+#ifdef COLLIDE2D_REPORT_BOX2D_V3
+  for (int sides = 5; sides <= 8; ++sides) {
+    const auto manifold = box2d_v3::manifolds(w.a, w.b, sides);
+    out.push_back(measure(w, options.repetitions, "box2d v3 manifold inscribed", sides, [&manifold](std::size_t k) {
+      const std::optional<box2d_v3::Deepest> m = manifold(k);
+      return m ? Answer{m->separation, m->normal, m->point} : Answer{};
+    }));
+  }
+#endif
   for (std::size_t k = first; k < out.size(); ++k) out[k].pair = pair;
 }
 

@@ -15,7 +15,9 @@
 // (timed over the whole list, per pair), and to each tolerance from 1e-1 to 1e-12 of the pair's size
 // (the larger reach_of), against Box2D's manifold (b2CollidePolygons,
 // b2CollidePolygonAndCircle) on the inscribed and the circumscribed N-gons, N = 5 ... 8
-// (b2_maxPolygonVertices is 8 in 2.4.1) and 16 (the rebuilt 2.4.1). Error: |separation -
+// (b2_maxPolygonVertices is 8 in 2.4.1) and 16 (the rebuilt 2.4.1), and where the build has Box2D
+// v3 (COLLIDE2D_BOX2D_V3_SOURCE), v3's manifold (bench/box2d_v3/report.h) on the inscribed 5- to
+// 8-gons, called as its World calls it. Error: |separation -
 // reference| / scale, the reference being the 50-digit signed distance (a scan of the dual
 // function); a Box2D manifold without points (inscribed polygons apart) counts as separation 0.
 // Where the reference's maximiser is unique (its runner-up 1e-9 of the scale below), also the

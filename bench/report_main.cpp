@@ -20,9 +20,10 @@ constexpr const char* kUsage =
     "  measures its error against 50-digit arithmetic; prints a table. Then the contact\n"
     "  depth of N overlapping pairs of each kind with an ellipse (rect, circle, ellipse,\n"
     "  polygon, capsule, segment): collide2d's contact, one pair at a time, batched and to\n"
-    "  tolerances of 1e-1 to 1e-12 of the size, against Box2D's manifold on inscribed and\n"
-    "  circumscribed 5- to 8- and 16-gons (a table each, with the normal's and the point's\n"
-    "  errors). --json writes all as JSON; --html as a page, the plot of speed against error\n"
+    "  tolerances of 1e-1 to 1e-12 of the size, against Box2D 2.4.1's manifold on inscribed\n"
+    "  and circumscribed 5- to 8- and 16-gons and, in a build given Box2D v3's source, v3's on\n"
+    "  inscribed 5- to 8-gons (a table each, with the normal's and the point's errors).\n"
+    "  --json writes all as JSON; --html as a page, the plot of speed against error\n"
     "  interactive beside the tables.\n";
 
 int report(int argc, char** argv) {

@@ -10,7 +10,7 @@
 #include <collide2d/chain.h>
 #include <collide2d/kernels.h>
 
-#include "bench/box2d_v3/shapes.h"
+#include "bench/box2d_v3/manifold.h"
 #include "bench/scene_workload.h"
 #include "bench/workload.h"
 
@@ -30,85 +30,7 @@ namespace {
 
 using bench::RoundedPolygon;
 using box2d_v3::Posed;
-using box2d_v3::posed;
-
-// v3's manifold function of each order of shapes it takes (none where it takes the other order).
-template <class A, class B>
-constexpr std::nullptr_t kManifold = nullptr;
-template <>
-constexpr auto kManifold<b2Circle, b2Circle> = b2CollideCircles;
-template <>
-constexpr auto kManifold<b2Capsule, b2Circle> = b2CollideCapsuleAndCircle;
-template <>
-constexpr auto kManifold<b2Segment, b2Circle> = b2CollideSegmentAndCircle;
-template <>
-constexpr auto kManifold<b2Polygon, b2Circle> = b2CollidePolygonAndCircle;
-template <>
-constexpr auto kManifold<b2Capsule, b2Capsule> = b2CollideCapsules;
-template <>
-constexpr auto kManifold<b2Segment, b2Capsule> = b2CollideSegmentAndCapsule;
-template <>
-constexpr auto kManifold<b2Polygon, b2Capsule> = b2CollidePolygonAndCapsule;
-template <>
-constexpr auto kManifold<b2Polygon, b2Polygon> = b2CollidePolygons;
-template <>
-constexpr auto kManifold<b2Segment, b2Polygon> = b2CollideSegmentAndPolygon;
-template <>
-constexpr auto kManifold<b2ChainSegment, b2Circle> = b2CollideChainSegmentAndCircle;
-template <>
-constexpr auto kManifold<b2ChainSegment, b2Capsule> = b2CollideChainSegmentAndCapsule;
-template <>
-constexpr auto kManifold<b2ChainSegment, b2Polygon> = b2CollideChainSegmentAndPolygon;
-
-template <class A, class B>
-constexpr bool kTakesInOrder = !std::is_null_pointer_v<std::remove_const_t<decltype(kManifold<A, B>)>>;
-
-// The manifold of a pair v3 takes in this order; a chain segment's simplex cache starts empty.
-template <class A, class B>
-b2LocalManifold collide(const A& a, const B& b, b2Transform xf) {
-  if constexpr (std::is_invocable_v<decltype(kManifold<A, B>), const A*, const B*, b2Transform, b2SimplexCache*>) {
-    b2SimplexCache cache{};
-    return kManifold<A, B>(&a, &b, xf, &cache);
-  } else {
-    return kManifold<A, B>(&a, &b, xf);
-  }
-}
-
-// What collide2d's contact returns, in v3's float: the normal, the manifold's points in world
-// coordinates and their separations.
-struct WorldManifold {
-  b2Vec2 normal;
-  b2Vec2 points[2];
-  float separations[2];
-  int count;
-};
-
-template <class A, class B>
-WorldManifold world_manifold(const Posed<A>& a, const Posed<B>& b) {
-  const b2LocalManifold local = collide(a.shape, b.shape, b2InvMulTransforms(a.transform, b.transform));
-  WorldManifold out;
-  out.normal = b2RotateVector(a.transform.q, local.normal);
-  out.count = local.pointCount;
-  for (int i = 0; i < local.pointCount; ++i) {
-    out.points[i] = b2TransformPoint(a.transform, local.points[i].point);
-    out.separations[i] = local.points[i].separation;
-  }
-  return out;
-}
-
-// Each shape as v3's, an ellipse as its inscribed polygon of `sides` vertices.
-template <class S>
-auto posed_shapes(const std::vector<S>& shapes, int sides = 8) {
-  std::vector<decltype(posed(shapes[0]))> out;
-  for (const S& s : shapes) {
-    if constexpr (std::is_same_v<S, Ellipse>) {
-      out.push_back(posed(s, sides));
-    } else {
-      out.push_back(posed(s));
-    }
-  }
-  return out;
-}
+using box2d_v3::posed_shapes;
 
 // The pair's A side: chain segments stand in for the workload's segments (bench/shape_pairs.h).
 template <class A, bool chain>
@@ -134,13 +56,7 @@ void box2d_v3(benchmark::State& state, int sides = 8) {
   const auto& w = bench::pairs<A, B>(state);
   const auto a = posed_shapes(side_a<A, chain>(w.a), sides);
   const auto b = posed_shapes(w.b, sides);
-  const auto query = [&](std::size_t k) {
-    if constexpr (kTakesInOrder<decltype(a[k].shape), decltype(b[k].shape)>) {
-      return world_manifold(a[k], b[k]);
-    } else {
-      return world_manifold(b[k], a[k]);
-    }
-  };
+  const auto query = [&](std::size_t k) { return box2d_v3::manifold(a[k], b[k]); };
   bench::time_queries(state, query);
   count_manifolds(state, [&](std::size_t k) { return query(k).count > 0; });
 }
