@@ -76,6 +76,16 @@ V3_PAIRS = [
 CONTACT_V3 = [(label, f'ours/{name}_speculative/candidates:{{w}}',
                f'box2d_v3/{name}{["", "_8gon", "_8gons"][name.count("ellipse")]}/candidates:{{w}}')
               for label, name in V3_PAIRS]
+# The pairs with an ellipse to ContactOptions::tolerance 1e-2 of the size, against v3 on the
+# ellipses' inscribed 5- to 8-gons (bench/box2d_v3/contact.cpp's race_tolerances).
+V3_TOLERANCE_PAIRS = [('circle–ellipse', 'circle_ellipse'), ('capsule–ellipse', 'capsule_ellipse'),
+                      ('rect–ellipse', 'rect_ellipse'), ('polygon–ellipse', 'polygon_ellipse'),
+                      ('rounded polygon–ellipse', 'rounded_ellipse'), ('segment–ellipse', 'segment_ellipse'),
+                      ('chain segment–ellipse', 'chain_ellipse'), ('ellipse–ellipse', 'ellipse_ellipse')]
+CONTACT_V3_TOLERANCE = [
+    (f'{label} vs {n}-gon{"s" if name == "ellipse_ellipse" else ""}', f'ours/{name}_speculative_tolerance_1e-2/candidates:{{w}}',
+     f'box2d_v3/{name}_{n}gon{"s" if name == "ellipse_ellipse" else ""}/candidates:{{w}}')
+    for label, name in V3_TOLERANCE_PAIRS for n in (5, 6, 7, 8)]
 CONTACT = [
     ('rect–rect, one pair', 'ours/rect_rect_oriented/candidates:{w}', 'box2d_collide_polygons/rect_rect_4gons/candidates:{w}'),
     ('rect–rect, one pair, max_separation 0', 'ours/rect_rect_limited/candidates:{w}', 'box2d_collide_polygons/rect_rect_4gons/candidates:{w}'),
@@ -337,6 +347,44 @@ def report_table(results):
     return '\n'.join(lines)
 
 
+METRICS = (('', 'separation'), ('normal_', 'normal'), ('point_', 'point'))
+
+
+def errors_within(ours, rival):
+    """Whether each of collide2d's largest errors is within the rival's median error on that metric
+    (a metric either leaves unmeasured is not compared)."""
+    for key, _ in METRICS:
+        mine, theirs = ours.get(f'max_{key}error'), rival.get(f'median_{key}error')
+        if mine is not None and theirs is not None and not error_of(mine) <= theirs:
+            return False
+    return True
+
+
+def front_table(results):
+    """For each pair and each of Box2D's inscribed polygons (v3's where the report has them, else
+    2.4.1's), the fastest collide2d row whose largest errors are within the polygon's median errors,
+    and its time over the polygon's."""
+    lines = ['| pair | Box2D | its median errors (separation / normal / point) | collide2d within them | '
+             'its largest errors | time: collide2d / Box2D |', '| --- | --- | --- | --- | --- | --- |']
+    triple = lambda r, which: ' / '.join(f'{error_of(r[k]):.1e}' if k in r else '—'
+                                         for k in (f'{which}_{key}error' for key, _ in METRICS))
+    for pair, rows in contact_pairs(results):
+        ours = [r for r in rows if r['method'].startswith('collide2d contact')]
+        rival = 'box2d v3 manifold inscribed' if any(r['method'].startswith('box2d v3') for r in rows) else 'box2d manifold inscribed'
+        for polygon in (r for r in rows if r['method'] == rival and 5 <= r['sides'] <= 8):
+            within = [r for r in ours if errors_within(r, polygon)]
+            name = f'{"v3" if "v3" in rival else "2.4.1"} {polygon["sides"]}-gon'
+            if not within:
+                lines.append(f'| {pair} | {name} | {triple(polygon, "median")} | none | — | — |')
+                continue
+            best = min(within, key=lambda r: r['nanoseconds'])
+            tolerance = f'to {best["tolerance"]:.0e} of the size' if best.get('tolerance') else 'exact'
+            lines.append(f'| {pair} | {name} | {triple(polygon, "median")} | {tolerance} | {triple(best, "max")} | '
+                         f'{fmt_time(best["nanoseconds"])} / {fmt_time(polygon["nanoseconds"])} = '
+                         f'**{fmt_ratio(best["nanoseconds"], polygon["nanoseconds"])}** |')
+    return '\n'.join(lines)
+
+
 def contact_pairs(results):
     """The report's contact results by pair kind, in their order; a result without one is of two
     ellipses."""
@@ -487,7 +535,21 @@ A rounded polygon is one of the 8-gons rounded by 5% to 30% of its smaller half 
 `b2MakePolygon` with that radius). The scene has no polygons, capsules, segments or chains: their rows
 have no scene columns.
 
-{table(CONTACT_V3, med, CONTACT_WORKLOADS)}"""
+{table(CONTACT_V3, med, CONTACT_WORKLOADS)}
+
+{v3_tolerance_part(med)}"""
+
+
+def v3_tolerance_part(med):
+    """The pairs with an ellipse to a tolerance against v3's smaller polygons, where the run has them."""
+    if not has_runs(med, 'ours/circle_ellipse_speculative_tolerance'):
+        return ''
+    return f"""The pairs with an ellipse to a tolerance (`ContactOptions::tolerance` 1e-2 of the pair's size, the
+larger `reach_of`; [contacts](contacts.md#contacts-to-a-tolerance)) against v3 on the ellipse's
+inscribed 5- to 8-gons. The errors each side carries are weighed under
+[speed against error](#speed-against-error).
+
+{table(CONTACT_V3_TOLERANCE, med, CONTACT_WORKLOADS)}"""
 
 
 def v3_toi_section(med):
@@ -675,10 +737,23 @@ kinds to show or hide, beside the tables.
 {report_table(report['distance'])}
 
 The contact depth of overlapping pairs deeper than 2% of the size, for each curved pair (rectangles
-of aspect up to 10, circles of the same sizes); collide2d one pair at a time and, where it has one,
-its batch (the whole list timed, per pair); Box2D's manifold on N-gons inscribed in and
-circumscribed about each ellipse, N = 5 to 8 and 16. A Box2D manifold without points counts as
-separation 0.
+of aspect up to 10, circles of the same sizes); collide2d one pair at a time, exact and to
+tolerances of 1e-1 to 1e-12 of the pair's size, and, where it has one, its batch (the whole list
+timed, per pair); Box2D 2.4.1's manifold on N-gons inscribed in and circumscribed about each
+ellipse, N = 5 to 8 and 16, and where the run has v3, v3's on the inscribed 5- to 8-gons (its
+shapes posed at 16 times their size, where its hull keeps a thin ellipse's vertices). A Box2D
+manifold without points counts as separation 0. Each metric is measured against the 50-digit
+reference: the separation, the normal's angle (rad) and the deepest points' midpoint (over the
+scale), the last two on the pairs whose deepest direction is unique.
+
+### The fronts
+
+For each pair and each of Box2D's inscribed polygons, the fastest collide2d row whose largest
+error on every metric is within that polygon's median error on it. A rectangle's face is exact in
+Box2D too, so against a rectangle the normal's median error is float rounding, and only a tight
+tolerance meets it.
+
+{front_table(report['contact'])}
 
 {(chr(10) * 2).join(contact_sections)}
 
