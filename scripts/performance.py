@@ -740,8 +740,7 @@ The contact depth of overlapping pairs deeper than 2% of the size, for each curv
 of aspect up to 10, circles of the same sizes); collide2d one pair at a time, exact and to
 tolerances of 1e-1 to 1e-12 of the pair's size, and, where it has one, its batch (the whole list
 timed, per pair); Box2D 2.4.1's manifold on N-gons inscribed in and circumscribed about each
-ellipse, N = 5 to 8 and 16, and where the run has v3, v3's on the inscribed 5- to 8-gons (its
-shapes posed at 16 times their size, where its hull keeps a thin ellipse's vertices). A Box2D
+ellipse, N = 5 to 8 and 16, and where the run has v3, v3's on the inscribed 5- to 8-gons. A Box2D
 manifold without points counts as separation 0. Each metric is measured against the 50-digit
 reference: the separation, the normal's angle (rad) and the deepest points' midpoint (over the
 scale), the last two on the pairs whose deepest direction is unique.

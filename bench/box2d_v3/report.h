@@ -20,8 +20,8 @@ struct Deepest {
 };
 
 // v3's manifold of a[k] and b[k] as a function of k, none where it has no points; each ellipse is its
-// inscribed polygon of `sides` (3 to 8) vertices, and the shapes are posed as v3's once, here, at
-// 16 times their size (v3's answers scaled back), in the range of sizes v3 is tuned for.
+// inscribed polygon of `sides` (3 to 8) vertices, and the shapes are posed as v3's once, here
+// (bench/box2d_v3/shapes.h).
 // Defined for A = Rect, Circle, Ellipse, ConvexPolygon, Capsule, Segment.
 using Manifolds = std::function<std::optional<Deepest>(std::size_t)>;
 template <class A>
