@@ -40,12 +40,20 @@ TEST(Report, MeasuresEveryMethodAgainstTheReference) {
   EXPECT_NE(failed.str().find("\"median_error\": 1e-16, \"max_error\": null}"), std::string::npos) << failed.str();
 }
 
+// Box2D v3's rows of each pair (its inscribed 5- to 8-gons), in a build given its source.
+#ifdef COLLIDE2D_REPORT_BOX2D_V3
+constexpr std::size_t kV3Rows = 4;
+#else
+constexpr std::size_t kV3Rows = 0;
+#endif
+
 // The contact depth of each pair with an ellipse: ours exact one pair at a time, batched (the same
-// separations) and to each tolerance, Box2D's manifolds closer as N grows from 5 to 16.
+// separations) and to each tolerance, Box2D's manifolds closer as N grows from 5 to 16 (v3's from 5
+// to 8).
 TEST(Report, MeasuresTheContactDepthOfEveryPairWithAnEllipse) {
   const ReportOptions options{.pairs = 20, .repetitions = 1, .seed = 4};
   const std::vector<MethodResult> results = measure_contact_methods(options);
-  ASSERT_EQ(results.size(), 23u + 24u + 4 * 23u);
+  ASSERT_EQ(results.size(), 23u + 24u + 4 * 23u + 6 * kV3Rows);
   std::size_t k = 0;
   for (const std::string pair :
        {"rect-ellipse", "circle-ellipse", "ellipse-ellipse", "polygon-ellipse", "capsule-ellipse", "segment-ellipse"}) {
@@ -82,6 +90,13 @@ TEST(Report, MeasuresTheContactDepthOfEveryPairWithAnEllipse) {
       EXPECT_LT(sixteen.median_point_error, five.median_point_error) << pair << " " << fit;
       k += 5;
     }
+    for (std::size_t sides = 5; sides < 5 + kV3Rows; ++sides) {
+      const MethodResult& v3 = results[k++];
+      EXPECT_EQ(v3.method, "box2d v3 manifold inscribed") << pair;
+      EXPECT_EQ(v3.sides, static_cast<int>(sides)) << pair;
+      EXPECT_EQ(v3.pair, pair);
+    }
+    if (kV3Rows > 0) EXPECT_LT(results[k - 1].median_error, results[k - kV3Rows].median_error) << pair;
   }
   std::ostringstream table, json;
   print_report(results, "contact depth", options, table);
