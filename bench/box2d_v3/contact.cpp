@@ -29,7 +29,6 @@ namespace collide2d {
 namespace {
 
 using bench::RoundedPolygon;
-using box2d_v3::Posed;
 using box2d_v3::posed_shapes;
 
 // The pair's A side: chain segments stand in for the workload's segments (bench/shape_pairs.h).
