@@ -13,6 +13,7 @@
 #include <collide2d/chain.h>
 #include <collide2d/function_ref.h>
 #include <collide2d/kernels.h>
+#include <collide2d/mover.h>
 #include <collide2d/query.h>
 #include <collide2d/ray_cast.h>
 #include <collide2d/shapes.h>
