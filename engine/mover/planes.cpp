@@ -7,6 +7,7 @@
 // plane's condition checks out to rounding.
 #include <collide2d/mover.h>
 
+#include "engine/internal.h"
 #include "shapes/internal.h"
 
 #include <algorithm>
@@ -31,17 +32,14 @@ struct Plane {
 };
 
 void validate(const Vec2& v, std::span<const CollisionPlane> planes, const char* what) {
-  const auto finite = [](double x, const std::string& name) {
-    if (!std::isfinite(x)) {
-      throw std::invalid_argument(name + " must be finite (got " + detail::shortest(x) + ')');
-    }
-  };
-  finite(v.x(), std::string(what) + " x"), finite(v.y(), std::string(what) + " y");
+  detail::require_finite(v.x(), (std::string(what) + " x").c_str());
+  detail::require_finite(v.y(), (std::string(what) + " y").c_str());
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const CollisionPlane& p = planes[i];
     const std::string name = "plane " + std::to_string(i);
-    finite(p.normal.x(), name + " normal x"), finite(p.normal.y(), name + " normal y");
-    finite(p.offset, name + " offset");
+    detail::require_finite(p.normal.x(), (name + " normal x").c_str());
+    detail::require_finite(p.normal.y(), (name + " normal y").c_str());
+    detail::require_finite(p.offset, (name + " offset").c_str());
     if (!(std::abs(p.normal.squaredNorm() - 1.0) <= 1e-12)) {
       throw std::invalid_argument(name + " normal must be of unit length (got length " +
                                   detail::shortest(p.normal.norm()) + ')');
@@ -60,8 +58,6 @@ double scale_of(const Vec2& target, int count, At at) {
   for (int i = 0; i < count; ++i) scale = std::max(scale, std::abs(at(i).offset));
   return scale;
 }
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Whether plane p's push e lies strictly between 0 and its limit: the plane holds exactly.
 bool free_push(double e, const Plane& p) { return e > 0.0 && e < p.limit; }
@@ -84,18 +80,22 @@ bool exact_with(const Vec2& target, int count, At at, double slack, int first, i
   Vec2 d = base;
   if (second >= 0) {
     const Plane pi = at(first), pj = at(second);
-    const double det = cross(pi.n, pj.n);
+    const double det = detail::cross(pi.n, pj.n);
     if (!(std::abs(det) > 1e-8)) return false;  // too ill-conditioned a crossing to take
     d = Vec2((pi.offset * pj.n.y() - pj.offset * pi.n.y()) / det, (pi.n.x() * pj.offset - pj.n.x() * pi.offset) / det);
-    lambda = {cross(Vec2(d - base), pj.n) / det, cross(pi.n, Vec2(d - base)) / det};
+    lambda = {detail::cross(Vec2(d - base), pj.n) / det, detail::cross(pi.n, Vec2(d - base)) / det};
   } else if (first >= 0) {
     const Plane p = at(first);
     lambda[0] = (p.offset - p.n.dot(base)) / p.n.squaredNorm();
     d = base + lambda[0] * p.n;
   }
+  // Each plane's push there: the two that hold theirs, those at their limit it, the rest none.
+  const auto push_of = [&](int i, const Plane& p) {
+    return i == first ? lambda[0] : i == second ? lambda[1] : at_limit(push[i], p) ? p.limit : 0.0;
+  };
   for (int i = 0; i < count; ++i) {
     const Plane p = at(i);
-    const double e = i == first ? lambda[0] : i == second ? lambda[1] : at_limit(push[i], p) ? p.limit : 0.0;
+    const double e = push_of(i, p);
     const double gap = p.n.dot(d) - p.offset;
     const bool full = e >= p.limit;
     const bool in_range = e >= -slack && e <= p.limit + slack;
@@ -105,8 +105,7 @@ bool exact_with(const Vec2& target, int count, At at, double slack, int first, i
   }
   for (int i = 0; i < count; ++i) {
     const Plane p = at(i);
-    const double e = i == first ? lambda[0] : i == second ? lambda[1] : at_limit(push[i], p) ? p.limit : 0.0;
-    push[i] = std::clamp(e, 0.0, p.limit);
+    push[i] = std::clamp(push_of(i, p), 0.0, p.limit);
   }
   delta = d;
   return true;
@@ -123,7 +122,7 @@ void make_exact(const Vec2& target, int count, At at, double slack, double* push
     if (!free_push(push[i], at(i))) continue;
     if (most < 0 || push[i] > push[most]) most = i;
     for (int j = 0; j < i; ++j) {
-      const double c = std::abs(cross(at(i).n, at(j).n));
+      const double c = std::abs(detail::cross(at(i).n, at(j).n));
       if (free_push(push[j], at(j)) && c > best) first = j, second = i, best = c;
     }
   }

@@ -87,8 +87,7 @@ void expect_near(const Vec2& got, const RealVec& want, double within) {
 }
 
 TEST(SolvePlanes, FloorKeepsTheSlide) {
-  CollisionPlane planes[] = {plane(M_PI / 2, 0.0)};
-  planes[0].normal = Vec2(0, 1);
+  CollisionPlane planes[] = {{.normal = Vec2(0, 1)}};
   const PlaneSolution s = solve_planes(Vec2(0.375, -0.25), planes);
   EXPECT_EQ(s.delta, Vec2(0.375, 0.0));
   EXPECT_EQ(planes[0].push, 0.25);
