@@ -415,6 +415,7 @@ void WorldState::place_body(Body& b, const Vec2& position, double angle, const c
   if (!(std::abs(position.x()) <= kMaxMagnitude && std::abs(position.y()) <= kMaxMagnitude))
     validate_point(position, (std::string(call) + " position").c_str());
   if (!std::isfinite(angle)) require_finite(angle, (std::string(call) + " angle").c_str());
+  if (b.moved[1].after != updates_) b.moved = {b.moved[1], {updates_, b.pose()}};
   b.position = position;
   b.angle = angle;
   // A body of one shape at its origin needs no turn of its own (the shape's orientation is computed
@@ -428,6 +429,22 @@ void WorldState::place_body(Body& b, const Vec2& position, double angle, const c
     if (teleport && p.continuous) continuous_[p.step].start = pose_of(p.shape);
     refresh_box(k);
   }
+}
+
+// The body's pose at the update before the last, and at the last (before any move since), from
+// its runs of moves; a point carried from the one to the other.
+Vec2 WorldState::displacement(BodyId id, const Vec2& point) const {
+  const Body& b = body(id);
+  validate_point(point, "displacement point");
+  const auto it = std::find_if(b.moved.begin(), b.moved.end(),
+                               [this](const Body::Moved& m) { return updates_ > 0 && m.after == updates_ - 1; });
+  if (it == b.moved.end()) return Vec2::Zero();  // it did not move between the last two updates
+  const Pose& before = it->from;
+  const Pose after = b.moved[1].after == updates_ ? b.moved[1].from : b.pose();
+  if (after.angle == before.angle) return after.position - before.position;
+  using Turn = detail::Rotation<double>;
+  const Vec2 local = Turn::of(before.angle).apply_inverse(Vec2(point - before.position));
+  return Vec2(after.position + Turn::of(after.angle).apply(local) - point);
 }
 
 void WorldState::set_static(BodyId id, bool is_static) {

@@ -5,6 +5,7 @@
 // smaller than a strip, and a tree answers both in O(log n + hits).
 #include "engine/world_state.h"
 
+#include <collide2d/kernels.h>
 #include <collide2d/ray_cast.h>
 
 #include <atomic>
@@ -132,6 +133,51 @@ void WorldState::cast(const Shape& shape, const Vec2& translation, FunctionRef<d
   };
   each(
       swept(pose_of(shape), end), filter, [](const Shape&) { return true; }, meet);
+}
+
+// A mover query's checks: the shape, the skin, the mover's own body (a stale handle is refused).
+void WorldState::validate_mover(const Shape& mover, const MoverQuery& query) const {
+  validate(mover);
+  require_margin(query.skin, "mover skin");
+  if (query.self) body(*query.self);
+}
+
+double WorldState::cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query) const {
+  validate_mover(mover, query);
+  require_finite(translation.x(), "mover translation x");
+  require_finite(translation.y(), "mover translation y");
+  const Shape end = at_time(mover, {translation, 0.0}, 1.0);
+  validate(end);  // the range of the centre
+  const Orientation turn = Orientation::of(angle_of(mover));
+  double reach = 1.0;
+  const auto meet = [&](const BodyShape& found) {
+    const ShapeEntry& p = entries_[found.shape.index];
+    if (found.body == query.self || (p.chain && !in_front(chain_of(found.shape.index), mover))) return true;
+    reach = mover_cast(mover, turn, translation, p.shape, p.orientation, query.skin, reach);
+    return reach > 0.0;
+  };
+  // A shape stops the mover only within the skin of its path.
+  each(
+      grown(swept(pose_of(mover), end), query.skin), query.filter, [](const Shape&) { return true; }, meet);
+  return reach;
+}
+
+void WorldState::collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit,
+                               const MoverQuery& query) const {
+  validate_mover(mover, query);
+  const Orientation turn = Orientation::of(angle_of(mover));
+  const ContactOptions within_skin{.max_separation = query.skin};
+  const auto meet = [&](const BodyShape& found) {
+    if (found.body == query.self) return true;
+    const std::uint32_t index = found.shape.index;
+    const ShapeEntry& p = entries_[index];
+    const Contact c = p.chain ? contact(chain_of(index), p.orientation, mover, turn, within_skin)
+                              : contact(p.shape, p.orientation, mover, turn, within_skin);
+    if (c.empty() || c.separation > query.skin) return true;
+    return visit({found.body, found.shape, p.body_user_id, c.point_a, c.normal, c.separation});
+  };
+  each(
+      grown(aabb(mover), query.skin), query.filter, [](const Shape&) { return true; }, meet);
 }
 
 void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,

@@ -172,6 +172,7 @@ void WorldState::update() {
   stats_.contacts = contacts_.size();
   stats_.impacts = impacts_.size();
   stats_.sensing = sensing_.size();
+  ++updates_;
 }
 
 // The candidate pairs in chunks, in order, on the pool with the moving tree's refresh beside them;

@@ -51,6 +51,7 @@ bool World::contains(ShapeId id) const { return state_->contains(id); }
 std::size_t World::size() const { return state_->size(); }
 unsigned World::threads() const { return state_->threads(); }
 Pose World::pose(BodyId id) const { return state_->pose(id); }
+Vec2 World::displacement(BodyId id, const Vec2& point) const { return state_->displacement(id, point); }
 const Shape& World::shape(BodyId id) const { return state_->shape(id); }
 std::uint64_t World::user_id(BodyId id) const { return state_->user_id(id); }
 const Filter& World::filter(BodyId id) const { return state_->filter(id); }
@@ -199,6 +200,28 @@ std::optional<BodyCastHit> World::cast(const Shape& shape, const Vec2& translati
   };
   cast(shape, translation, keep, filter, options);
   return best;
+}
+
+double World::cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query) const {
+  return state_->cast_mover(mover, translation, query);
+}
+void World::collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit,
+                          const MoverQuery& query) const {
+  state_->collide_mover(mover, visit, query);
+}
+std::vector<MoverPlane> World::collide_mover(const Shape& mover, const MoverQuery& query) const {
+  std::vector<MoverPlane> planes;
+  collide_mover(
+      mover,
+      [&planes](const MoverPlane& p) {
+        planes.push_back(p);
+        return true;
+      },
+      query);
+  std::sort(planes.begin(), planes.end(), [](const MoverPlane& p, const MoverPlane& q) {
+    return std::pair(p.body.index, p.shape.index) < std::pair(q.body.index, q.shape.index);
+  });
+  return planes;
 }
 
 }  // namespace collide2d

@@ -109,6 +109,9 @@ class WorldState {
   // update.cpp
   void update();
 
+  // bodies.cpp
+  Vec2 displacement(BodyId id, const Vec2& point) const;
+
   // queries.cpp: the callback forms, on which world.cpp builds the others.
   void overlapping(const Shape& shape, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter) const;
   void overlapping(const Aabb& box, FunctionRef<bool(const BodyShape&)> visit, const QueryFilter& filter) const;
@@ -120,6 +123,9 @@ class WorldState {
                 FunctionRef<double(const RayHit&)> visit, const QueryFilter& filter, const RayOptions& options) const;
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter, const CastOptions& options) const;
+  void validate_mover(const Shape& mover, const MoverQuery& query) const;
+  double cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query) const;
+  void collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit, const MoverQuery& query) const;
 
   // update.cpp
   std::vector<ShapePair> candidates() const;
@@ -144,6 +150,7 @@ class WorldState {
   std::vector<SensorVisit> body_sensor_began_;
   std::vector<SensorVisit> body_sensor_ended_;
   FrameStats stats_;
+  std::uint64_t updates_ = 0;  // update() calls so far
 
   // update.cpp
   std::span<const std::uint32_t> contacts_of(BodyId id) const;
@@ -166,6 +173,13 @@ class WorldState {
     std::uint32_t first = kNone;  // its first shape
     std::uint32_t last = kNone;   // its last shape, where the next one joins
     std::uint32_t count = 0;      // its shapes
+    // Its pose where each of its two latest runs of moves began, and the count of updates then
+    // ([1] the latest): what displacement() reads, kept by its moves so that an update copies no pose.
+    struct Moved {
+      std::uint64_t after = ~std::uint64_t{0};
+      Pose from;
+    };
+    std::array<Moved, 2> moved{};
 
     Pose pose() const { return {position, angle}; }
   };

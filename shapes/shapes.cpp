@@ -66,6 +66,15 @@ Vec2 center_of(const Shape& s) {
   return std::visit([](const auto& x) { return x.center; }, s);
 }
 
+Shape moved_to(const Shape& s, const Vec2& center) {
+  return std::visit(
+      [&center](auto x) -> Shape {
+        x.center = center;
+        return x;
+      },
+      s);
+}
+
 double angle_of(const Shape& s) {
   return std::visit(
       [](const auto& x) {

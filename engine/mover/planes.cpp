@@ -32,10 +32,15 @@ struct Plane {
 };
 
 void validate(const Vec2& v, std::span<const CollisionPlane> planes, const char* what) {
-  detail::require_finite(v.x(), (std::string(what) + " x").c_str());
-  detail::require_finite(v.y(), (std::string(what) + " y").c_str());
+  if (!std::isfinite(v.x()) || !std::isfinite(v.y())) {
+    detail::require_finite(v.x(), (std::string(what) + " x").c_str());
+    detail::require_finite(v.y(), (std::string(what) + " y").c_str());
+  }
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const CollisionPlane& p = planes[i];
+    const bool valid = std::isfinite(p.normal.x()) && std::isfinite(p.normal.y()) && std::isfinite(p.offset) &&
+                       std::abs(p.normal.squaredNorm() - 1.0) <= 1e-12 && p.push_limit >= 0.0;
+    if (valid) continue;  // names are built for a refusal only: a mover solves planes every frame
     const std::string name = "plane " + std::to_string(i);
     detail::require_finite(p.normal.x(), (name + " normal x").c_str());
     detail::require_finite(p.normal.y(), (name + " normal y").c_str());
@@ -44,12 +49,22 @@ void validate(const Vec2& v, std::span<const CollisionPlane> planes, const char*
       throw std::invalid_argument(name + " normal must be of unit length (got length " +
                                   detail::shortest(p.normal.norm()) + ')');
     }
-    if (!(p.push_limit >= 0.0)) {
-      throw std::invalid_argument(name + " push limit must not be negative (got " + detail::shortest(p.push_limit) +
-                                  ')');
-    }
+    throw std::invalid_argument(name + " push limit must not be negative (got " + detail::shortest(p.push_limit) + ')');
   }
 }
+
+// Room for the pushes: on the stack for the few planes a mover touches.
+class Pushes {
+ public:
+  explicit Pushes(std::size_t count) {
+    if (count > local_.size()) heap_.resize(count);
+  }
+  double* data() { return heap_.empty() ? local_.data() : heap_.data(); }
+
+ private:
+  std::array<double, 32> local_{};
+  std::vector<double> heap_;
+};
 
 // The size rounding is relative to: the target's and the offsets' largest magnitude.
 template <class At>
@@ -163,19 +178,19 @@ PlaneSolution solve(const Vec2& target, int count, At at, double* push) {
 
 PlaneSolution solve_planes(const Vec2& target_delta, std::span<CollisionPlane> planes) {
   validate(target_delta, planes, "target delta");
-  std::vector<double> push(planes.size());
+  Pushes push(planes.size());
   const auto at = [&](int i) {
     const CollisionPlane& p = planes[static_cast<std::size_t>(i)];
     return Plane{p.normal, p.offset, p.push_limit};
   };
   const PlaneSolution s = solve(target_delta, static_cast<int>(planes.size()), at, push.data());
-  for (std::size_t i = 0; i < planes.size(); ++i) planes[i].push = push[i];
+  for (std::size_t i = 0; i < planes.size(); ++i) planes[i].push = push.data()[i];
   return s;
 }
 
 Vec2 clip_vector(const Vec2& v, std::span<const CollisionPlane> planes) {
   validate(v, planes, "vector");
-  std::vector<double> push(planes.size());
+  Pushes push(planes.size());
   // A plane that does not clip is one that may push nothing and asks for nothing.
   const auto at = [&](int i) {
     const CollisionPlane& p = planes[static_cast<std::size_t>(i)];

@@ -194,6 +194,8 @@ const char* shape_name(const Shape& s);
 
 /// The centre of any shape (a segment's first point).
 Vec2 center_of(const Shape& s);
+/// The same shape with its centre at `center`, turned as it is.
+Shape moved_to(const Shape& s, const Vec2& center);
 /// The angle of an ellipse, rectangle, capsule, polygon or segment; 0 for a circle.
 double angle_of(const Shape& s);
 /// The distance from the centre to the farthest point: the radius, the longer semi-axis, the half

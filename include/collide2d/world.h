@@ -263,6 +263,24 @@ struct BodyCastHit {
   Vec2 normal = Vec2::UnitX();  ///< the body's outward normal there, towards the cast shape
 };
 
+/// What a mover's queries see (World::cast_mover(), World::collide_mover(), move() in mover.h).
+struct MoverQuery {
+  double skin = 0.01;  ///< the gap the mover keeps from surfaces, >= 0
+  QueryFilter filter{};
+  std::optional<BodyId> self;  ///< the mover's own body, where it is one: left out
+};
+
+/// A surface a mover touches: its nearest point to the mover while apart, its deepest while they
+/// overlap (contact() of the surface's shape with the mover).
+struct MoverPlane {
+  BodyId body;
+  ShapeId shape;
+  std::uint64_t user_id = 0;    ///< the body's
+  Vec2 point = Vec2::Zero();    ///< on the surface
+  Vec2 normal = Vec2::UnitY();  ///< unit, from the surface towards the mover
+  double separation = 0.0;      ///< of the mover from the surface; < 0 overlapping
+};
+
 /// A shape a ray meets.
 struct RayHit {
   BodyId body;
@@ -402,6 +420,12 @@ class World {
   /// unknown or stale handle. The first shape is where it is (the only one of a body added with
   /// one); the shapes come in the order added.
   Pose pose(BodyId id) const;
+  /// How far the body's motion over the last update carried a point on it: the change of its pose
+  /// from the update before to the last one (before any move since), applied to the point; zero
+  /// for a body that did not move between them (or a World not updated twice). A character on a
+  /// moving platform moves with it by this (move() in mover.h). Throws std::out_of_range for an
+  /// unknown or stale handle.
+  Vec2 displacement(BodyId id, const Vec2& point) const;
   const Shape& shape(BodyId id) const;
   std::uint64_t user_id(BodyId id) const;
   const Filter& filter(BodyId id) const;
@@ -527,6 +551,20 @@ class World {
   /// In fractions of the translation: the reach starts at 1.
   void cast(const Shape& shape, const Vec2& translation, FunctionRef<double(const BodyCastHit&)> visit,
             const QueryFilter& filter = {}, const CastOptions& options = {}) const;
+
+  /// The fraction of `translation` the mover can move (no turn), 1 where nothing stops it.
+  /// The least over the solid shapes the query lets through of cast_mover() (mover.h) with its skin. A mover
+  /// within the skin of a surface, or slightly inside it, moves along and away from it; a chain's
+  /// segment stops only a mover that starts in front of it.
+  double cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query = {}) const;
+  /// visit(plane) for each surface the mover touches, until visit returns false.
+  /// Touches: each solid shape the query lets through within the skin of the mover or overlapping
+  /// it. Against a chain's segment, its rules (chain.h) hold apart too: no plane from behind it, nor
+  /// one whose normal leaves a vertex's cone.
+  void collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit,
+                     const MoverQuery& query = {}) const;
+  /// Every such plane, by body index, then shape index.
+  std::vector<MoverPlane> collide_mover(const Shape& mover, const MoverQuery& query = {}) const;
 
  private:
   std::unique_ptr<detail::WorldState> state_;

@@ -1,6 +1,7 @@
 // A steady World frame allocates nothing: the broad phase's strips and pair lists, the narrow
 // phase's result lists and the trees keep their storage from frame to frame. This binary counts
 // every operator new, so it holds these tests alone.
+#include <collide2d/mover.h>
 #include <collide2d/world.h>
 
 #include "tests/support/allocation_counter.h"
@@ -97,9 +98,9 @@ TEST(WorldAllocations, SteadyFramesWithContactsAndProximityAllocateNothing) {
             0);
 }
 
-// Every callback query allocates nothing: 100 of each over a steady World, counted the second time
-// they run (the first lets the curved kernels' per-thread scratch grow to the largest these need).
-// The vector forms of the same queries do allocate, so the counter sees what they collect.
+// Every callback query, and a character's move, allocates nothing: 100 of each over a steady World, counted the second
+// time they run (the first lets the curved kernels' per-thread scratch grow to the largest these need). The vector
+// forms of the same queries do allocate, so the counter sees what they collect.
 TEST(WorldAllocations, CallbackQueriesAllocateNothing) {
   Scene scene({.fat_margin = 0.1, .threads = 1});
   for (int k = 0; k < 400; ++k) scene.frame();
@@ -136,6 +137,9 @@ TEST(WorldAllocations, CallbackQueriesAllocateNothing) {
       scene.world.within(probe, 1.0, count);
       scene.world.ray_cast(p, direction, 40.0, hit);
       scene.world.cast(probe, Vec2(10, 3), hit);
+      reach_sum += scene.world.cast_mover(probe, Vec2(10, 3));
+      scene.world.collide_mover(probe, [&found](const MoverPlane&) { return ++found > 0; }, {.skin = 0.5});
+      reach_sum += move(scene.world, probe, Vec2(3, -5), 0.1, {.step_height = 0.2, .snap_distance = 0.2}).position.x();
     }
   };
   callbacks();

@@ -1,0 +1,334 @@
+// A character's move: the loop of Box2D v3's mover sample (collide, solve the planes, cast, at most
+// a few times), with the rules a game's character needs on top (as Jolt's CharacterVirtual and
+// Godot's move_and_slide have them). A floor holds the mover up vertically, so that it stands on a
+// slope without sliding and walks along it at the commanded horizontal speed; a wall too steep to
+// stand on also blocks horizontally, so that pushing into it never climbs it; after the move the
+// mover follows the ground down by the snap distance and, blocked while on the ground, tries the
+// step up, across and down.
+#include <collide2d/mover.h>
+
+#include <collide2d/query.h>
+
+#include "engine/internal.h"
+#include "narrowphase/internal.h"
+#include "shapes/internal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+// How far beyond the skin a surface still counts as touched: above the 1e-9 of the reach at which
+// a cast stops short of the skin, so that a mover resting there keeps its floor.
+constexpr double kBand = 1e-6;
+
+void validate(const Vec2& velocity, double dt, const MoverOptions& o) {
+  detail::require_finite(velocity.x(), "move velocity x");
+  detail::require_finite(velocity.y(), "move velocity y");
+  detail::require_margin(dt, "move dt");
+  detail::require_margin(o.step_height, "mover step height");
+  detail::require_margin(o.snap_distance, "mover snap distance");
+  if (!(o.max_slope >= 0.0 && o.max_slope < std::numbers::pi / 2)) {
+    throw std::invalid_argument("mover max slope must lie in [0, pi/2) (got " + detail::shortest(o.max_slope) + ')');
+  }
+  if (!(std::abs(o.up.squaredNorm() - 1.0) <= 1e-12)) {
+    throw std::invalid_argument("mover up must be of unit length (got length " + detail::shortest(o.up.norm()) + ')');
+  }
+  if (o.max_iterations < 1) {
+    throw std::invalid_argument("mover max iterations must be at least 1 (got " + std::to_string(o.max_iterations) +
+                                ')');
+  }
+  if (!(o.soft_push_limit >= 0.0)) {
+    throw std::invalid_argument("mover soft push limit must not be negative (got " +
+                                detail::shortest(o.soft_push_limit) + ')');
+  }
+}
+
+// One move's surroundings: the surfaces touched where the mover is, and the planes that keep it out
+// of them. The floors hold the mover up by their exact separation where it is going, not by their
+// planes: a plane is its surface linearised where the mover is, exact for a face but conservative
+// for a corner or a curve, which it would make the mover climb (walking over the seam between two
+// tiles, the next tile's corner is within the skin, and its plane would lift the mover over an
+// edge it never comes near). The cast keeps the whole path the skin from every surface.
+class Mover {
+ public:
+  Mover(const World& world, const Shape& mover, const MoverOptions& options, double travel)
+      : world_(world),
+        mover_(mover),
+        o_(options),
+        cos_slope_(Orientation::of(options.max_slope).c),
+        hair_(detail::mover_floor_hair(mover)),
+        base_(support(mover, Vec2(-options.up)).dot(options.up)),
+        touch_query_{options.query.skin + kBand * reach_of(mover), options.query.filter, options.query.self},
+        soft_query_{touch_query_.skin + (options.soft_categories != 0 ? travel : 0.0), options.query.filter,
+                    options.query.self},
+        cast_query_{options.query.skin,
+                    {options.query.filter.category, options.query.filter.mask & ~options.soft_categories},
+                    options.query.self} {}
+
+  Shape at(const Vec2& c) const { return moved_to(mover_, c); }
+
+  // The fraction of `delta` the mover at c can move; soft surfaces do not stop it.
+  double cast(const Vec2& c, const Vec2& delta) const { return world_.cast_mover(at(c), delta, cast_query_); }
+
+  // The surfaces touched at c.
+  void collide(const Vec2& c) {
+    where_ = c;
+    touching(c, touched_);
+  }
+
+  // The floor touched whose normal lies nearest up, if any.
+  Ground ground() const {
+    Ground g;
+    for (const MoverPlane& p : touched_) {
+      if (floor(p, where_) && (!g.on_ground || p.normal.dot(o_.up) > g.normal.dot(o_.up)))
+        g = {true, p.normal, p.body, p.shape, p.user_id};
+    }
+    return g;
+  }
+
+  // The translation from c nearest `target` that the surfaces allow: the target held up by the
+  // floors where it ends, then kept out of the planes of the other surfaces touched at c, and of a
+  // floor's where they push it nearer that floor than the skin (a crease of a wall and a floor).
+  Vec2 solve(const Vec2& c, const Vec2& target) {
+    const double lifted = lift(c + target);
+    lifted_ = lifted > 0.0;
+    const Vec2 held = target + lifted * o_.up;
+    planes_.clear();
+    pending_.clear();
+    for (const MoverPlane& p : touched_) {
+      if (floor(p, c)) {
+        pending_.push_back(&p);
+      } else {
+        add_planes(p);
+      }
+    }
+    Vec2 delta = solve_planes(held, planes_).delta;
+    for (bool added = true; added;) {
+      added = false;
+      for (const MoverPlane*& p : pending_) {
+        if (p == nullptr || !(separation(*p, c + delta) < o_.query.skin - hair_)) continue;
+        add_planes(*p);
+        p = nullptr;
+        added = true;
+      }
+      if (added) delta = solve_planes(held, planes_).delta;
+    }
+    return delta;
+  }
+
+  // Moves c along delta as far as the cast allows, and says whether all of it was free. On the
+  // ground (a floor touched at c, or one that held the target up) a translation rises first and
+  // then goes across, or goes across and then comes down, so that a floor that steps up or down
+  // by a hair (tiles of uneven height) or turns down (a ledge's rounded edge) is followed rather
+  // than cut into: a straight path between two points the skin above a convex edge passes nearer.
+  bool travel(Vec2& c, const Vec2& delta) const {
+    const bool grounded = lifted_ || ground().on_ground;
+    const Vec2 rise = (grounded ? delta.dot(o_.up) : 0.0) * o_.up, across = delta - rise;
+    bool free = true;
+    const bool up_first = rise.dot(o_.up) > 0.0;
+    for (const Vec2& part : {up_first ? rise : across, up_first ? across : rise}) {
+      if (part == Vec2::Zero()) continue;
+      const double f = cast(c, part);
+      c += f * part;
+      free = free && f == 1.0;
+    }
+    return free;
+  }
+
+  // The velocity with what moves into the ground or a surface that pushed removed, the ground
+  // holding it up.
+  Vec2 clip(const Vec2& v) const {
+    const Ground g = ground();
+    const double rise = g.normal.dot(o_.up);
+    Vec2 held = v;
+    // A step's edge holds up only what falls.
+    if (g.on_ground) held -= std::min(0.0, rise >= cos_slope_ ? g.normal.dot(v) / rise : v.dot(o_.up)) * o_.up;
+    return clip_vector(held, planes_);
+  }
+
+ private:
+  bool soft(const MoverPlane& p) const { return (world_.filter(p.shape).category & o_.soft_categories) != 0; }
+  // Whether a surface touched by the mover centred at c holds it up: a floor, or with a step height
+  // the edge of a step, so that a rounded mover rides up onto it as onto a floor.
+  bool floor(const MoverPlane& p, const Vec2& c) const {
+    if (soft(p)) return false;
+    const double rise = p.normal.dot(o_.up);
+    return rise >= cos_slope_ || (o_.step_height > 0 && rise > 0 && step_edge(p, c));
+  }
+
+  // Whether the surface's point lies at most the step height above the mover's lowest point where
+  // the move started, with a floor just beyond it: a ray down from over that point, a little farther from the mover,
+  // meets a floor (a slope too steep to stand on meets itself).
+  bool step_edge(const MoverPlane& p, const Vec2& c) const {
+    if (!(p.point.dot(o_.up) - base_ <= o_.step_height)) return false;
+    const Vec2 away = p.point - c, ahead = away - away.dot(o_.up) * o_.up;
+    if (!(ahead.norm() > 0)) return false;
+    const double probe = 1e-2 * reach_of(mover_);
+    const Vec2 from = p.point + probe * (ahead.normalized() + o_.up);
+    bool found = false;
+    world_.ray_cast(
+        from, Vec2(-o_.up), 2 * probe,
+        [&](const RayHit& hit) {
+          if (hit.body == o_.query.self) return -1.0;
+          found = hit.normal.dot(o_.up) >= cos_slope_;
+          return hit.distance;
+        },
+        cast_query_.filter);
+    return found;
+  }
+
+  // The surfaces touched at c, and the soft ones the move may reach: the cast passes those, so
+  // their planes, conservative while apart, keep the mover the skin from them.
+  void touching(const Vec2& c, std::vector<MoverPlane>& out) const {
+    out.clear();
+    world_.collide_mover(
+        at(c),
+        [&](const MoverPlane& p) {
+          if (p.separation <= touch_query_.skin || soft(p)) out.push_back(p);
+          return true;
+        },
+        soft_query_);
+  }
+
+  // The exact separation of a surface from the mover centred at c.
+  double separation(const MoverPlane& p, const Vec2& c) const {
+    return contact(world_.shape(p.shape), at(c)).separation;
+  }
+
+  // How far up the mover centred at e must go to be the skin from every floor it touches there:
+  // Newton's method on each floor's separation, convex in the height, which from below steps past
+  // the height and from above comes down to it, never below.
+  double lift(const Vec2& e) {
+    touching(e, below_);
+    double most = 0.0;
+    for (const MoverPlane& p : below_) {
+      if (!floor(p, e)) continue;
+      double h = 0.0;
+      for (int k = 0; k < 16; ++k) {
+        const Contact c = contact(world_.shape(p.shape), at(e + h * o_.up));
+        const double rise = c.normal.dot(o_.up);
+        if (!(rise > 0.0) || (h == 0.0 && c.separation >= o_.query.skin)) break;
+        const double step = (o_.query.skin - c.separation) / rise;
+        h = std::max(0.0, h + step);
+        if (std::abs(step) <= hair_) break;
+      }
+      most = std::max(most, h);
+    }
+    return most;
+  }
+
+  // A surface's plane; a wall too steep to stand on that faces up also blocks horizontally, so
+  // that pushing into it never climbs it.
+  void add_planes(const MoverPlane& p) {
+    const bool is_soft = soft(p);
+    const CollisionPlane plane{.normal = p.normal,
+                               .offset = o_.query.skin - p.separation,
+                               .push_limit = is_soft ? o_.soft_push_limit : INFINITY,
+                               .clip_velocity = !is_soft};
+    planes_.push_back(plane);
+    const double rise = p.normal.dot(o_.up);
+    if (is_soft || !(rise > 0.0 && rise < cos_slope_)) return;
+    const Vec2 level = p.normal - rise * o_.up;
+    const double length = level.norm();
+    planes_.push_back({.normal = level / length, .offset = plane.offset / length});
+  }
+
+  const World& world_;
+  const Shape& mover_;
+  const MoverOptions& o_;
+  double cos_slope_;
+  double hair_;
+  double base_;             // the height of the mover's lowest point where the move started
+  MoverQuery touch_query_;  // the skin and a hair more: a cast stops that far above the skin
+  MoverQuery soft_query_;   // that, and the move's length where there are soft surfaces
+  MoverQuery cast_query_;
+  Vec2 where_ = Vec2::Zero();
+  bool lifted_ = false;  // whether the last solve's floors held the target up
+  // The lists, kept by the thread from move to move, so that a move allocates nothing.
+  struct Lists {
+    std::vector<MoverPlane> touched;         // where the mover is, at where_
+    std::vector<MoverPlane> below;           // where a translation ends
+    std::vector<const MoverPlane*> pending;  // floors touched whose planes are not in the solve
+    std::vector<CollisionPlane> planes;
+  };
+  static thread_local Lists lists_;
+  std::vector<MoverPlane>& touched_ = lists_.touched;
+  std::vector<MoverPlane>& below_ = lists_.below;
+  std::vector<const MoverPlane*>& pending_ = lists_.pending;
+  std::vector<CollisionPlane>& planes_ = lists_.planes;
+};
+
+thread_local Mover::Lists Mover::lists_;
+
+// Where a mover on the ground that the loop left short of `target` gets by stepping: up by the
+// step height (less where a ceiling stops it), across the rest of the move's level part, and down
+// as far as it went up onto a floor; c itself where it gains nothing or lands on no floor.
+Vec2 stepped(Mover& m, const Vec2& c, const Vec2& target, double stuck, const MoverOptions& o) {
+  const Vec2 rest = target - c, across = rest - rest.dot(o.up) * o.up;
+  if (!(across.norm() > stuck)) return c;
+  const Vec2 rise = o.step_height * o.up;
+  const Vec2 raised = c + m.cast(c, rise) * rise;
+  const double f = m.cast(raised, across);
+  if (!(f * across.norm() > stuck)) return c;
+  const Vec2 over = raised + f * across, fall = c - raised;
+  const double g = m.cast(over, fall);
+  if (g == 1.0) return c;  // no floor within the height it rose
+  const Vec2 landed = over + g * fall;
+  m.collide(landed);
+  return m.ground().on_ground ? landed : c;
+}
+
+}  // namespace
+
+CollisionPlane plane_of(const MoverPlane& plane, double skin) {
+  return {.normal = plane.normal, .offset = skin - plane.separation};
+}
+
+MoveResult move(const World& world, const Shape& mover, const Vec2& velocity, double dt, const MoverOptions& options,
+                const Ground& ground) {
+  validate(velocity, dt, options);
+  const Vec2 start = center_of(mover);
+  const bool carried = ground.on_ground && world.contains(ground.body);
+  const Vec2 target = start + dt * velocity + (carried ? world.displacement(ground.body, start) : Vec2::Zero());
+  Mover m(world, mover, options, (target - start).norm());
+  // Below this, a step of the loop has not moved the mover: it is blocked.
+  const double stuck = 1e-3 * (dt * velocity).norm();
+  MoveResult r;
+  Vec2 c = start;
+  bool stood = false;
+  for (r.iterations = 1;; ++r.iterations) {
+    m.collide(c);
+    if (r.iterations == 1) stood = m.ground().on_ground;
+    const Vec2 from = c;
+    const bool free = m.travel(c, m.solve(c, target - c));
+    // A first cast may stop at once at a surface it did not touch before; the next one slides on it.
+    if (free || (r.iterations > 1 && (c - from).norm() <= stuck) || r.iterations == options.max_iterations) break;
+  }
+  if (stood && options.step_height > 0) c = stepped(m, c, target, stuck, options);
+  m.collide(c);
+  if (stood && !m.ground().on_ground && options.snap_distance > 0 && velocity.dot(options.up) <= 0.0) {
+    const Vec2 down = -options.snap_distance * options.up;
+    const double f = m.cast(c, down);
+    if (f < 1.0) {
+      const Vec2 landed = c + f * down;
+      m.collide(landed);
+      if (m.ground().on_ground) {
+        c = landed;
+      } else {
+        m.collide(c);
+      }
+    }
+  }
+  r.position = c;
+  r.ground = m.ground();
+  r.velocity = m.clip(velocity);
+  return r;
+}
+
+}  // namespace collide2d
