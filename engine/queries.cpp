@@ -146,9 +146,12 @@ double WorldState::cast_mover(const Shape& mover, const Vec2& translation, const
   validate_mover(mover, query);
   require_finite(translation.x(), "mover translation x");
   require_finite(translation.y(), "mover translation y");
-  const Shape end = at_time(mover, {translation, 0.0}, 1.0);
-  validate(end);  // the range of the centre
-  const Orientation turn = Orientation::of(angle_of(mover));
+  validate(at_time(mover, {translation, 0.0}, 1.0));  // the range of the centre
+  return cast_mover(mover, Orientation::of(angle_of(mover)), translation, query);
+}
+
+double WorldState::cast_mover(const Shape& mover, const Orientation& turn, const Vec2& translation,
+                              const MoverQuery& query) const {
   double reach = 1.0;
   const auto meet = [&](const BodyShape& found) {
     const ShapeEntry& p = entries_[found.shape.index];
@@ -157,6 +160,7 @@ double WorldState::cast_mover(const Shape& mover, const Vec2& translation, const
     return reach > 0.0;
   };
   // A shape stops the mover only within the skin of its path.
+  const Shape end = at_time(mover, {translation, 0.0}, 1.0);
   each(
       grown(swept(pose_of(mover), end), query.skin), query.filter, [](const Shape&) { return true; }, meet);
   return reach;
@@ -165,7 +169,11 @@ double WorldState::cast_mover(const Shape& mover, const Vec2& translation, const
 void WorldState::collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit,
                                const MoverQuery& query) const {
   validate_mover(mover, query);
-  const Orientation turn = Orientation::of(angle_of(mover));
+  collide_mover(mover, Orientation::of(angle_of(mover)), visit, query);
+}
+
+void WorldState::collide_mover(const Shape& mover, const Orientation& turn, FunctionRef<bool(const MoverPlane&)> visit,
+                               const MoverQuery& query) const {
   const ContactOptions within_skin{.max_separation = query.skin};
   const auto meet = [&](const BodyShape& found) {
     if (found.body == query.self) return true;
@@ -177,7 +185,12 @@ void WorldState::collide_mover(const Shape& mover, FunctionRef<bool(const MoverP
     return visit({found.body, found.shape, p.body_user_id, c.point_a, c.normal, c.separation});
   };
   each(
-      grown(aabb(mover), query.skin), query.filter, [](const Shape&) { return true; }, meet);
+      grown(aabb(mover, turn), query.skin), query.filter, [](const Shape&) { return true; }, meet);
+}
+
+Contact WorldState::contact_with(ShapeId id, const Shape& other, const Orientation& turn) const {
+  const ShapeEntry& p = entry(id);
+  return contact(p.shape, p.orientation, other, turn);
 }
 
 void WorldState::ray_cast(const Vec2& origin, const Vec2& direction, double max_distance,

@@ -50,6 +50,8 @@ bool World::contains(BodyId id) const { return state_->contains(id); }
 bool World::contains(ShapeId id) const { return state_->contains(id); }
 std::size_t World::size() const { return state_->size(); }
 unsigned World::threads() const { return state_->threads(); }
+const detail::WorldState& detail::state_of(const World& world) { return *world.state_; }
+
 Pose World::pose(BodyId id) const { return state_->pose(id); }
 Vec2 World::displacement(BodyId id, const Vec2& point) const { return state_->displacement(id, point); }
 const Shape& World::shape(BodyId id) const { return state_->shape(id); }

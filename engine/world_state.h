@@ -126,6 +126,13 @@ class WorldState {
   void validate_mover(const Shape& mover, const MoverQuery& query) const;
   double cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query) const;
   void collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit, const MoverQuery& query) const;
+  // The same with the mover's kept orientation, nothing validated (move(), engine/mover/move.cpp), and
+  // a shape's exact contact with a shape of kept orientation.
+  double cast_mover(const Shape& mover, const Orientation& turn, const Vec2& translation,
+                    const MoverQuery& query) const;
+  void collide_mover(const Shape& mover, const Orientation& turn, FunctionRef<bool(const MoverPlane&)> visit,
+                     const MoverQuery& query) const;
+  Contact contact_with(ShapeId id, const Shape& other, const Orientation& turn) const;
 
   // update.cpp
   std::vector<ShapePair> candidates() const;

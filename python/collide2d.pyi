@@ -110,6 +110,18 @@ def time_of_impact(a: Shape, b: Shape, a_velocity: PointLike = (0.0, 0.0), a_tur
                    b_velocity: PointLike = (0.0, 0.0), b_turn: float = 0.0) -> TimeOfImpact: ...
 def ray_cast(shape: Shape, origin: PointLike, direction: PointLike, max_distance: float = ...) -> Optional[RayHit]: ...
 
+class CollisionPlane:
+    def __init__(self, normal: PointLike, offset: float = 0.0, push_limit: float = ...,
+                 clip_velocity: bool = True) -> None: ...
+    normal: Point
+    offset: float
+    push_limit: float
+    clip_velocity: bool
+    push: float
+
+def solve_planes(target_delta: PointLike, planes: list[CollisionPlane]) -> Point: ...
+def clip_vector(v: PointLike, planes: list[CollisionPlane]) -> Point: ...
+
 # Shapes of one kind a row, (n, k) float64: circle (cx cy r), ellipse (cx cy a b theta), rect (cx cy
 # hx hy theta), capsule (cx cy h r theta); row i of a with row i of b.
 def overlaps_arrays(a_kind: str, a: npt.ArrayLike, b_kind: str, b: npt.ArrayLike) -> npt.NDArray[np.bool_]: ...
@@ -127,6 +139,26 @@ class BodyCastHit:
     fraction: float
     point: Point
     normal: Point
+
+class MoverPlane:
+    body: int
+    user_id: int
+    point: Point
+    normal: Point
+    separation: float
+
+class Ground:
+    def __init__(self) -> None: ...
+    on_ground: bool
+    normal: Point
+    body: int
+    user_id: int
+
+class MoveResult:
+    position: Point
+    velocity: Point
+    ground: Ground
+    iterations: int
 
 # Body ids are uint64: generation << 32 | index. Queries take the keywords category and mask, the
 # query's own filter.
@@ -171,3 +203,14 @@ class World:
                      from_inside: bool = False, category: int = 1, mask: int = ...) -> list[BodyRayHit]: ...
     def cast(self, shape: Shape, translation: PointLike, *, skip_initial_overlap: bool = False, category: int = 1,
              mask: int = ...) -> Optional[BodyCastHit]: ...
+    def add_chain(self, points: Sequence[PointLike], *, loop: bool = False, user_id: int = 0, category: int = 1,
+                  mask: int = ..., group: int = 0) -> int: ...
+    def cast_mover(self, shape: Shape, translation: PointLike, *, skin: float = 0.01, own_body: Optional[int] = None,
+                   category: int = 1, mask: int = ...) -> float: ...
+    def collide_mover(self, shape: Shape, *, skin: float = 0.01, own_body: Optional[int] = None, category: int = 1,
+                      mask: int = ...) -> list[MoverPlane]: ...
+    def displacement(self, id: int, point: PointLike) -> Point: ...
+    def move(self, shape: Shape, velocity: PointLike, dt: float, ground: Ground = ..., *, skin: float = 0.01,
+             own_body: Optional[int] = None, category: int = 1, mask: int = ..., max_slope: float = ...,
+             step_height: float = 0.0, snap_distance: float = 0.0, up: PointLike = (0.0, 1.0),
+             max_iterations: int = 5, soft_categories: int = 0, soft_push_limit: float = 0.0) -> MoveResult: ...

@@ -18,6 +18,47 @@
 
 namespace collide2d::python {
 
+namespace {
+
+// The planes of a Python list, and each plane's push written back into its object.
+std::vector<CollisionPlane> planes_of(const py::list& planes) {
+  std::vector<CollisionPlane> out;
+  for (const py::handle p : planes) out.push_back(p.cast<CollisionPlane>());
+  return out;
+}
+
+void add_planes(py::module_& m) {
+  py::class_<CollisionPlane>(m, "CollisionPlane",
+                             "A surface a mover touches as a plane: a translation d respects it where\n"
+                             "normal . d >= offset; push_limit for soft surfaces; push written by solve_planes().")
+      .def(py::init([](const Pair& normal, double offset, double push_limit, bool clip_velocity) {
+             return CollisionPlane{vec(normal), offset, push_limit, clip_velocity};
+           }),
+           py::arg("normal"), py::arg("offset") = 0.0, py::arg("push_limit") = std::numeric_limits<double>::infinity(),
+           py::arg("clip_velocity") = true)
+      .def_property_readonly("normal", [](const CollisionPlane& p) { return tuple(p.normal); })
+      .def_readonly("offset", &CollisionPlane::offset)
+      .def_readonly("push_limit", &CollisionPlane::push_limit)
+      .def_readonly("clip_velocity", &CollisionPlane::clip_velocity)
+      .def_readonly("push", &CollisionPlane::push);
+  m.def(
+      "solve_planes",
+      [](const Pair& target, const py::list& planes) {
+        std::vector<CollisionPlane> solved = planes_of(planes);
+        const PlaneSolution s = solve_planes(vec(target), solved);
+        for (std::size_t i = 0; i < solved.size(); ++i) planes[i].cast<CollisionPlane&>().push = solved[i].push;
+        return tuple(s.delta);
+      },
+      py::arg("target_delta"), py::arg("planes"),
+      "The translation nearest target_delta that the planes allow; each plane's push is written.");
+  m.def(
+      "clip_vector", [](const Pair& v, const py::list& planes) { return tuple(clip_vector(vec(v), planes_of(planes))); },
+      py::arg("v"), py::arg("planes"),
+      "The velocity with its components into the planes that pushed and clip velocity removed.");
+}
+
+}  // namespace
+
 void add_queries(py::module_& m) {
   m.def("overlaps", py::overload_cast<const Shape&, const Shape&>(&overlaps), py::arg("a"), py::arg("b"),
         "Whether the solids overlap (touching counts).");
@@ -52,6 +93,7 @@ void add_queries(py::module_& m) {
       py::arg("shape"), py::arg("origin"), py::arg("direction"),
       py::arg("max_distance") = std::numeric_limits<double>::infinity(),
       "The first point of the shape on origin + t direction, 0 <= t <= max_distance, or None.");
+  add_planes(m);
 }
 
 }  // namespace collide2d::python

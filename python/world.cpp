@@ -169,6 +169,28 @@ void add_world_hits(py::module_& m) {
       .def_readonly("fraction", &BodyCastHit::fraction)
       .def_property_readonly("point", [](const BodyCastHit& h) { return tuple(h.point); })
       .def_property_readonly("normal", [](const BodyCastHit& h) { return tuple(h.normal); });
+  py::class_<MoverPlane>(m, "MoverPlane",
+                         "A surface a mover touches (World.collide_mover()): the body, its user id, the surface's\n"
+                         "nearest point (deepest, overlapping), the normal towards the mover, the separation.")
+      .def_property_readonly("body", [](const MoverPlane& p) { return id_of(p.body); })
+      .def_readonly("user_id", &MoverPlane::user_id)
+      .def_property_readonly("point", [](const MoverPlane& p) { return tuple(p.point); })
+      .def_property_readonly("normal", [](const MoverPlane& p) { return tuple(p.normal); })
+      .def_readonly("separation", &MoverPlane::separation);
+  py::class_<Ground>(m, "Ground",
+                     "Where a mover stands (MoveResult.ground): on_ground, the floor's normal, body and user id.")
+      .def(py::init<>())
+      .def_readonly("on_ground", &Ground::on_ground)
+      .def_property_readonly("normal", [](const Ground& g) { return tuple(g.normal); })
+      .def_property_readonly("body", [](const Ground& g) { return id_of(g.body); })
+      .def_readonly("user_id", &Ground::user_id);
+  py::class_<MoveResult>(m, "MoveResult",
+                         "What World.move() did: the mover's new centre, its clipped velocity, its ground and the\n"
+                         "iterations of collide, solve and cast.")
+      .def_property_readonly("position", [](const MoveResult& r) { return tuple(r.position); })
+      .def_property_readonly("velocity", [](const MoveResult& r) { return tuple(r.velocity); })
+      .def_readonly("ground", &MoveResult::ground)
+      .def_readonly("iterations", &MoveResult::iterations);
 }
 
 using Bodies = py::class_<PyWorld>;
@@ -405,6 +427,66 @@ void add_world_queries(Bodies& c) {
       "start is met at fraction 0 unless skip_initial_overlap.");
 }
 
+// The mover's query from Python's keywords: the skin, the filter and the mover's own body.
+MoverQuery mover_query(double skin, std::optional<std::uint64_t> own_body, std::uint64_t cat, std::uint64_t msk) {
+  return {skin, {cat, msk}, own_body ? std::optional<BodyId>(body_of(*own_body)) : std::nullopt};
+}
+
+void add_world_movers(Bodies& c) {
+  const auto [kw, category, mask] = query_filter_args();
+  const auto skin = py::arg("skin") = 0.01;
+  const auto own_body = py::arg("own_body") = py::none();
+  c.def(
+      "add_chain",
+      [](PyWorld& w, const std::vector<Pair>& points, bool loop, std::uint64_t user_id, std::uint64_t cat,
+         std::uint64_t msk, std::int32_t group) {
+        std::vector<Vec2> at;
+        for (const Pair& p : points) at.push_back(vec(p));
+        return id_of(w.world().add_chain(at, loop, {user_id, {cat, msk, group}}));
+      },
+      py::arg("points"), kw, py::arg("loop") = false, py::arg("user_id") = 0, py::arg("category") = 1,
+      py::arg("mask") = ~std::uint64_t{0}, py::arg("group") = 0,
+      "Adds a chain, a static body of one-sided segments (collide2d.h's chain.h): a loop closes on its\n"
+      "first point; an open chain takes its first and last points as ghosts only. Returns its id.");
+  c.def(
+      "cast_mover",
+      [](PyWorld& w, const Shape& shape, const Pair& translation, double skin, std::optional<std::uint64_t> own,
+         std::uint64_t cat, std::uint64_t msk) {
+        return w.world().cast_mover(shape, vec(translation), mover_query(skin, own, cat, msk));
+      },
+      py::arg("shape"), py::arg("translation"), kw, skin, own_body, category, mask,
+      "The fraction of translation the mover can move before it comes nearer a surface than the\n"
+      "smaller of the skin and its starting separation (docs/movers.md).");
+  c.def(
+      "collide_mover",
+      [](PyWorld& w, const Shape& shape, double skin, std::optional<std::uint64_t> own, std::uint64_t cat,
+         std::uint64_t msk) { return w.world().collide_mover(shape, mover_query(skin, own, cat, msk)); },
+      py::arg("shape"), kw, skin, own_body, category, mask,
+      "The surfaces within the skin of the mover or overlapping it, as MoverPlanes, by body.");
+  c.def(
+      "displacement",
+      [](PyWorld& w, std::uint64_t id, const Pair& point) {
+        return tuple(w.world().displacement(body_of(id), vec(point)));
+      },
+      py::arg("id"), py::arg("point"), "How far the body's motion over the last update carried the point.");
+  c.def(
+      "move",
+      [](PyWorld& w, const Shape& shape, const Pair& velocity, double dt, const Ground& ground, double skin,
+         std::optional<std::uint64_t> own, std::uint64_t cat, std::uint64_t msk, double max_slope, double step_height,
+         double snap_distance, const Pair& up, int max_iterations, std::uint64_t soft_categories,
+         double soft_push_limit) {
+        const MoverOptions options{mover_query(skin, own, cat, msk), max_slope,       step_height,    snap_distance,
+                                   vec(up),                          max_iterations, soft_categories, soft_push_limit};
+        return move(w.world(), shape, vec(velocity), dt, options, ground);
+      },
+      py::arg("shape"), py::arg("velocity"), py::arg("dt"), py::arg("ground") = Ground{}, kw, skin, own_body,
+      category, mask, py::arg("max_slope") = MoverOptions{}.max_slope, py::arg("step_height") = 0.0,
+      py::arg("snap_distance") = 0.0, py::arg("up") = Pair{0.0, 1.0}, py::arg("max_iterations") = 5,
+      py::arg("soft_categories") = 0, py::arg("soft_push_limit") = 0.0,
+      "Moves a character by velocity * dt as move() in C++ does (docs/movers.md) and returns a\n"
+      "MoveResult; ground is the last move's, so that it rides a body that moved.");
+}
+
 }  // namespace
 
 void add_world(py::module_& m) {
@@ -417,6 +499,7 @@ void add_world(py::module_& m) {
   add_world_reads(c);
   add_world_pairs(c);
   add_world_queries(c);
+  add_world_movers(c);
 }
 
 }  // namespace collide2d::python

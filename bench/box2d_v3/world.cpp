@@ -6,6 +6,7 @@
 // world; its time is the pose loop's plus the step's pair update and narrow phase (b2Profile::pairs
 // and b2Profile::collide), which make the contacts collide2d's update() makes: the solver that
 // follows is v3's own work and is not counted.
+#include "bench/box2d_v3/bodies.h"
 #include "bench/box2d_v3/shapes.h"
 #include "bench/movers.h"
 #include "tools/scene/scene.h"
@@ -25,38 +26,8 @@
 namespace collide2d {
 namespace {
 
-using box2d_v3::posed;
-
-b2Filter filter_of(const Filter& f) { return {f.category, f.mask, f.group}; }
-
-// A body of one shape, at the shape's pose.
-b2BodyId add_body(b2WorldId world, const Shape& shape, b2BodyType type = b2_dynamicBody, const Filter& filter = {},
-                  bool sensor = false) {
-  return std::visit(
-      [&](const auto& s) {
-        const auto p = posed(s);
-        b2BodyDef body = b2DefaultBodyDef();
-        body.type = type;
-        body.position = p.transform.p;
-        body.rotation = p.transform.q;
-        const b2BodyId id = b2CreateBody(world, &body);
-        b2ShapeDef def = b2DefaultShapeDef();
-        def.filter = filter_of(filter);
-        def.isSensor = sensor;
-        using S = std::decay_t<decltype(p.shape)>;
-        if constexpr (std::is_same_v<S, b2Circle>) {
-          b2CreateCircleShape(id, &def, &p.shape);
-        } else if constexpr (std::is_same_v<S, b2Capsule>) {
-          b2CreateCapsuleShape(id, &def, &p.shape);
-        } else if constexpr (std::is_same_v<S, b2Segment>) {
-          b2CreateSegmentShape(id, &def, &p.shape);
-        } else {
-          b2CreatePolygonShape(id, &def, &p.shape);
-        }
-        return id;
-      },
-      shape);
-}
+using box2d_v3::add_body;
+using box2d_v3::filter_of;
 
 // A static chain of b2ChainShape's segments.
 void add_chain(b2WorldId world, const tool::SceneBody& b) {

@@ -10,6 +10,7 @@
 #include <collide2d/query.h>
 
 #include "engine/internal.h"
+#include "engine/world_state.h"
 #include "narrowphase/internal.h"
 #include "shapes/internal.h"
 
@@ -26,6 +27,13 @@ namespace {
 // How far beyond the skin a surface still counts as touched: above the 1e-9 of the reach at which
 // a cast stops short of the skin, so that a mover resting there keeps its floor.
 constexpr double kBand = 1e-6;
+
+// The cosine of the max slope, which a game's moves share: the last one's is kept.
+double cosine(double angle) {
+  thread_local double last_angle = 0.0, last_cosine = 1.0;
+  if (angle != last_angle) last_angle = angle, last_cosine = Orientation::of(angle).c;
+  return last_cosine;
+}
 
 void validate(const Vec2& velocity, double dt, const MoverOptions& o) {
   detail::require_finite(velocity.x(), "move velocity x");
@@ -58,10 +66,11 @@ void validate(const Vec2& velocity, double dt, const MoverOptions& o) {
 class Mover {
  public:
   Mover(const World& world, const Shape& mover, const MoverOptions& options, double travel)
-      : world_(world),
+      : world_(detail::state_of(world)),
         mover_(mover),
         o_(options),
-        cos_slope_(Orientation::of(options.max_slope).c),
+        turn_(Orientation::of(angle_of(mover))),
+        cos_slope_(cosine(options.max_slope)),
         hair_(detail::mover_floor_hair(mover)),
         base_(support(mover, Vec2(-options.up)).dot(options.up)),
         touch_query_{options.query.skin + kBand * reach_of(mover), options.query.filter, options.query.self},
@@ -74,7 +83,7 @@ class Mover {
   Shape at(const Vec2& c) const { return moved_to(mover_, c); }
 
   // The fraction of `delta` the mover at c can move; soft surfaces do not stop it.
-  double cast(const Vec2& c, const Vec2& delta) const { return world_.cast_mover(at(c), delta, cast_query_); }
+  double cast(const Vec2& c, const Vec2& delta) const { return world_.cast_mover(at(c), turn_, delta, cast_query_); }
 
   // The surfaces touched at c.
   void collide(const Vec2& c) {
@@ -172,14 +181,13 @@ class Mover {
     const double probe = 1e-2 * reach_of(mover_);
     const Vec2 from = p.point + probe * (ahead.normalized() + o_.up);
     bool found = false;
-    world_.ray_cast(
-        from, Vec2(-o_.up), 2 * probe,
-        [&](const RayHit& hit) {
-          if (hit.body == o_.query.self) return -1.0;
-          found = hit.normal.dot(o_.up) >= cos_slope_;
-          return hit.distance;
-        },
-        cast_query_.filter);
+    world_.ray_cast(from, Vec2(-o_.up), 2 * probe,
+                    [&](const RayHit& hit) {
+                      if (hit.body == o_.query.self) return -1.0;
+                      found = hit.normal.dot(o_.up) >= cos_slope_;
+                      return hit.distance;
+                    },
+                    cast_query_.filter, {});
     return found;
   }
 
@@ -188,7 +196,7 @@ class Mover {
   void touching(const Vec2& c, std::vector<MoverPlane>& out) const {
     out.clear();
     world_.collide_mover(
-        at(c),
+        at(c), turn_,
         [&](const MoverPlane& p) {
           if (p.separation <= touch_query_.skin || soft(p)) out.push_back(p);
           return true;
@@ -198,7 +206,7 @@ class Mover {
 
   // The exact separation of a surface from the mover centred at c.
   double separation(const MoverPlane& p, const Vec2& c) const {
-    return contact(world_.shape(p.shape), at(c)).separation;
+    return world_.contact_with(p.shape, at(c), turn_).separation;
   }
 
   // How far up the mover centred at e must go to be the skin from every floor it touches there:
@@ -211,7 +219,7 @@ class Mover {
       if (!floor(p, e)) continue;
       double h = 0.0;
       for (int k = 0; k < 16; ++k) {
-        const Contact c = contact(world_.shape(p.shape), at(e + h * o_.up));
+        const Contact c = world_.contact_with(p.shape, at(e + h * o_.up), turn_);
         const double rise = c.normal.dot(o_.up);
         if (!(rise > 0.0) || (h == 0.0 && c.separation >= o_.query.skin)) break;
         const double step = (o_.query.skin - c.separation) / rise;
@@ -239,9 +247,10 @@ class Mover {
     planes_.push_back({.normal = level / length, .offset = plane.offset / length});
   }
 
-  const World& world_;
+  const detail::WorldState& world_;
   const Shape& mover_;
   const MoverOptions& o_;
+  Orientation turn_;  // the mover's, kept for every query of the move
   double cos_slope_;
   double hair_;
   double base_;             // the height of the mover's lowest point where the move started
@@ -296,6 +305,8 @@ MoveResult move(const World& world, const Shape& mover, const Vec2& velocity, do
   const Vec2 start = center_of(mover);
   const bool carried = ground.on_ground && world.contains(ground.body);
   const Vec2 target = start + dt * velocity + (carried ? world.displacement(ground.body, start) : Vec2::Zero());
+  detail::state_of(world).validate_mover(mover, options.query);
+  validate(moved_to(mover, target));  // the range of the centre
   Mover m(world, mover, options, (target - start).norm());
   // Below this, a step of the loop has not moved the mover: it is blocked.
   const double stuck = 1e-3 * (dt * velocity).norm();

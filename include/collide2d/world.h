@@ -42,9 +42,12 @@
 #include <vector>
 
 namespace collide2d {
+class World;  ///< bodies, their pairs frame by frame, and queries on them (below)
 namespace detail {
 class WorldState;
-}
+// The World's state, for the library's own helpers built on it (move(), mover.h).
+const WorldState& state_of(const World& world);
+}  // namespace detail
 
 /// A body's handle: its slot and the generation of that slot (as Box2D v3's b2BodyId). remove()
 /// frees the slot and moves its generation on, so a handle kept past remove() is refused instead of
@@ -567,6 +570,7 @@ class World {
   std::vector<MoverPlane> collide_mover(const Shape& mover, const MoverQuery& query = {}) const;
 
  private:
+  friend const detail::WorldState& detail::state_of(const World& world);
   std::unique_ptr<detail::WorldState> state_;
 };
 
