@@ -16,6 +16,11 @@
 namespace collide2d::detail {
 namespace {
 
+// Whether box a lies within box b.
+bool inside(const Aabb& a, const Aabb& b) {
+  return (a.min.array() >= b.min.array()).all() && (a.max.array() <= b.max.array()).all();
+}
+
 bool lets_through(const QueryFilter& q, const Filter& f) {
   return (f.category & q.mask) != 0 && (f.mask & q.category) != 0;
 }
@@ -66,8 +71,8 @@ void WorldState::need_moving_tree() const {
 // visit(found) for the solid shapes the filter lets through whose tight box meets `box` and that
 // pass `test`, in the trees' order, until visit returns false.
 template <class Test>
-void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
-                      FunctionRef<bool(const BodyShape&)> visit) const {
+void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(const BodyShape&)> visit,
+                      const Nearby* near) const {
   const Querying guard(querying_);
   bool go = true;
   const auto consider = [&](std::uint32_t index) {
@@ -76,6 +81,10 @@ void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test,
       go = visit({p.body, shape_id(index)});
     return go;
   };
+  if (near && inside(box, near->box)) {
+    for (std::size_t k = 0; go && k < near->shapes.size(); ++k) consider(near->shapes[k]);
+    return;
+  }
   need_moving_tree();
   // A shape whose tree leaf is stale is tested from stale_leaves_ instead (see below).
   moving_tree_.query(box, [&](std::uint32_t index) { return entries_[index].stale_at >= 0 || consider(index); });
@@ -150,8 +159,19 @@ double WorldState::cast_mover(const Shape& mover, const Vec2& translation, const
   return cast_mover(mover, Orientation::of(angle_of(mover)), translation, query);
 }
 
+void WorldState::gather(const Aabb& box, const QueryFilter& filter, Nearby& out) const {
+  out.box = box;
+  out.shapes.clear();
+  each(
+      box, filter, [](const Shape&) { return true; },
+      [&](const BodyShape& found) {
+        out.shapes.push_back(found.shape.index);
+        return true;
+      });
+}
+
 double WorldState::cast_mover(const Shape& mover, const Orientation& turn, const Vec2& translation,
-                              const MoverQuery& query) const {
+                              const MoverQuery& query, const Nearby* near) const {
   double reach = 1.0;
   const auto meet = [&](const BodyShape& found) {
     const ShapeEntry& p = entries_[found.shape.index];
@@ -162,7 +182,7 @@ double WorldState::cast_mover(const Shape& mover, const Orientation& turn, const
   // A shape stops the mover only within the skin of its path.
   const Shape end = at_time(mover, {translation, 0.0}, 1.0);
   each(
-      grown(swept(pose_of(mover), end), query.skin), query.filter, [](const Shape&) { return true; }, meet);
+      grown(swept(pose_of(mover), end), query.skin), query.filter, [](const Shape&) { return true; }, meet, near);
   return reach;
 }
 
@@ -173,7 +193,7 @@ void WorldState::collide_mover(const Shape& mover, FunctionRef<bool(const MoverP
 }
 
 void WorldState::collide_mover(const Shape& mover, const Orientation& turn, FunctionRef<bool(const MoverPlane&)> visit,
-                               const MoverQuery& query) const {
+                               const MoverQuery& query, const Nearby* near) const {
   const ContactOptions within_skin{.max_separation = query.skin};
   const auto meet = [&](const BodyShape& found) {
     if (found.body == query.self) return true;
@@ -185,7 +205,7 @@ void WorldState::collide_mover(const Shape& mover, const Orientation& turn, Func
     return visit({found.body, found.shape, p.body_user_id, c.point_a, c.normal, c.separation});
   };
   each(
-      grown(aabb(mover, turn), query.skin), query.filter, [](const Shape&) { return true; }, meet);
+      grown(aabb(mover, turn), query.skin), query.filter, [](const Shape&) { return true; }, meet, near);
 }
 
 Contact WorldState::contact_with(ShapeId id, const Shape& other, const Orientation& turn) const {

@@ -126,12 +126,20 @@ class WorldState {
   void validate_mover(const Shape& mover, const MoverQuery& query) const;
   double cast_mover(const Shape& mover, const Vec2& translation, const MoverQuery& query) const;
   void collide_mover(const Shape& mover, FunctionRef<bool(const MoverPlane&)> visit, const MoverQuery& query) const;
-  // The same with the mover's kept orientation, nothing validated (move(), engine/mover/move.cpp), and
-  // a shape's exact contact with a shape of kept orientation.
-  double cast_mover(const Shape& mover, const Orientation& turn, const Vec2& translation,
-                    const MoverQuery& query) const;
+  // A move's neighbourhood (move(), engine/mover/move.cpp): the solid shapes whose boxes meet `box`
+  // and that `filter` lets through, so that the move's queries whose boxes lie within it walk no
+  // tree.
+  struct Nearby {
+    Aabb box;
+    std::vector<std::uint32_t> shapes;
+  };
+  void gather(const Aabb& box, const QueryFilter& filter, Nearby& out) const;
+  // The same with the mover's kept orientation and its neighbourhood, nothing validated, and a
+  // shape's exact contact with a shape of kept orientation.
+  double cast_mover(const Shape& mover, const Orientation& turn, const Vec2& translation, const MoverQuery& query,
+                    const Nearby* near = nullptr) const;
   void collide_mover(const Shape& mover, const Orientation& turn, FunctionRef<bool(const MoverPlane&)> visit,
-                     const MoverQuery& query) const;
+                     const MoverQuery& query, const Nearby* near = nullptr) const;
   Contact contact_with(ShapeId id, const Shape& other, const Orientation& turn) const;
 
   // update.cpp
@@ -388,7 +396,8 @@ class WorldState {
 
   // queries.cpp
   template <class Test>
-  void each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(const BodyShape&)> visit) const;
+  void each(const Aabb& box, const QueryFilter& filter, Test test, FunctionRef<bool(const BodyShape&)> visit,
+            const Nearby* near = nullptr) const;
   // Throws std::logic_error naming `call` while a query's callback runs: the trees it walks must
   // stay as they are.
   void require_not_querying(const char* call) const;

@@ -65,7 +65,7 @@ void validate(const Vec2& velocity, double dt, const MoverOptions& o) {
 // edge it never comes near). The cast keeps the whole path the skin from every surface.
 class Mover {
  public:
-  Mover(const World& world, const Shape& mover, const MoverOptions& options, double travel)
+  Mover(const World& world, const Shape& mover, const MoverOptions& options, const Vec2& target)
       : world_(detail::state_of(world)),
         mover_(mover),
         o_(options),
@@ -74,16 +74,23 @@ class Mover {
         hair_(detail::mover_floor_hair(mover)),
         base_(support(mover, Vec2(-options.up)).dot(options.up)),
         touch_query_{options.query.skin + kBand * reach_of(mover), options.query.filter, options.query.self},
-        soft_query_{touch_query_.skin + (options.soft_categories != 0 ? travel : 0.0), options.query.filter,
-                    options.query.self},
+        soft_query_{touch_query_.skin + (options.soft_categories != 0 ? travel(mover, target) : 0.0),
+                    options.query.filter, options.query.self},
         cast_query_{options.query.skin,
                     {options.query.filter.category, options.query.filter.mask & ~options.soft_categories},
-                    options.query.self} {}
+                    options.query.self} {
+    // The move's neighbourhood: its path, grown by what the loop, a step and a snap can add to it.
+    const double room = soft_query_.skin + travel(mover, target) + options.step_height + options.snap_distance;
+    world_.gather(detail::grown(detail::swept(pose_of(mover), moved_to(mover, target)), room), options.query.filter,
+                  near_);
+  }
 
   Shape at(const Vec2& c) const { return moved_to(mover_, c); }
 
   // The fraction of `delta` the mover at c can move; soft surfaces do not stop it.
-  double cast(const Vec2& c, const Vec2& delta) const { return world_.cast_mover(at(c), turn_, delta, cast_query_); }
+  double cast(const Vec2& c, const Vec2& delta) const {
+    return world_.cast_mover(at(c), turn_, delta, cast_query_, &near_);
+  }
 
   // The surfaces touched at c.
   void collide(const Vec2& c) {
@@ -172,8 +179,8 @@ class Mover {
   }
 
   // Whether the surface's point lies at most the step height above the mover's lowest point where
-  // the move started, with a floor just beyond it: a ray down from over that point, a little farther from the mover,
-  // meets a floor (a slope too steep to stand on meets itself).
+  // the move started, with a floor just beyond it: a ray down from over that point, a little
+  // farther from the mover, meets a floor (a slope too steep to stand on meets itself).
   bool step_edge(const MoverPlane& p, const Vec2& c) const {
     if (!(p.point.dot(o_.up) - base_ <= o_.step_height)) return false;
     const Vec2 away = p.point - c, ahead = away - away.dot(o_.up) * o_.up;
@@ -201,7 +208,7 @@ class Mover {
           if (p.separation <= touch_query_.skin || soft(p)) out.push_back(p);
           return true;
         },
-        soft_query_);
+        soft_query_, &near_);
   }
 
   // The exact separation of a surface from the mover centred at c.
@@ -259,8 +266,11 @@ class Mover {
   MoverQuery cast_query_;
   Vec2 where_ = Vec2::Zero();
   bool lifted_ = false;  // whether the last solve's floors held the target up
+  static double travel(const Shape& mover, const Vec2& target) { return (target - center_of(mover)).norm(); }
+
   // The lists, kept by the thread from move to move, so that a move allocates nothing.
   struct Lists {
+    detail::WorldState::Nearby near;
     std::vector<MoverPlane> touched;         // where the mover is, at where_
     std::vector<MoverPlane> below;           // where a translation ends
     std::vector<const MoverPlane*> pending;  // floors touched whose planes are not in the solve
@@ -271,6 +281,7 @@ class Mover {
   std::vector<MoverPlane>& below_ = lists_.below;
   std::vector<const MoverPlane*>& pending_ = lists_.pending;
   std::vector<CollisionPlane>& planes_ = lists_.planes;
+  detail::WorldState::Nearby& near_ = lists_.near;
 };
 
 thread_local Mover::Lists Mover::lists_;
@@ -307,7 +318,7 @@ MoveResult move(const World& world, const Shape& mover, const Vec2& velocity, do
   const Vec2 target = start + dt * velocity + (carried ? world.displacement(ground.body, start) : Vec2::Zero());
   detail::state_of(world).validate_mover(mover, options.query);
   validate(moved_to(mover, target));  // the range of the centre
-  Mover m(world, mover, options, (target - start).norm());
+  Mover m(world, mover, options, target);
   // Below this, a step of the loop has not moved the mover: it is blocked.
   const double stuck = 1e-3 * (dt * velocity).norm();
   MoveResult r;
