@@ -16,11 +16,6 @@
 namespace collide2d::detail {
 namespace {
 
-// Whether box a lies within box b.
-bool inside(const Aabb& a, const Aabb& b) {
-  return (a.min.array() >= b.min.array()).all() && (a.max.array() <= b.max.array()).all();
-}
-
 bool lets_through(const QueryFilter& q, const Filter& f) {
   return (f.category & q.mask) != 0 && (f.mask & q.category) != 0;
 }
@@ -81,7 +76,7 @@ void WorldState::each(const Aabb& box, const QueryFilter& filter, Test test, Fun
       go = visit({p.body, shape_id(index)});
     return go;
   };
-  if (near && inside(box, near->box)) {
+  if (near && encloses(near->box, box)) {
     for (std::size_t k = 0; go && k < near->shapes.size(); ++k) consider(near->shapes[k]);
     return;
   }
