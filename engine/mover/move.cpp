@@ -242,10 +242,8 @@ class Mover {
   // that pushing into it never climbs it.
   void add_planes(const MoverPlane& p) {
     const bool is_soft = soft(p);
-    const CollisionPlane plane{.normal = p.normal,
-                               .offset = o_.query.skin - p.separation,
-                               .push_limit = is_soft ? o_.soft_push_limit : INFINITY,
-                               .clip_velocity = !is_soft};
+    CollisionPlane plane = plane_of(p, o_.query.skin);
+    if (is_soft) plane.push_limit = o_.soft_push_limit, plane.clip_velocity = false;
     planes_.push_back(plane);
     const double rise = p.normal.dot(o_.up);
     if (is_soft || !(rise > 0.0 && rise < cos_slope_)) return;
