@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,19 +95,16 @@ class Mover {
 
   // The surfaces touched at c.
   void collide(const Vec2& c) {
-    where_ = c;
     touching(c, touched_);
+    ground_ = {};
+    for (const MoverPlane& p : touched_) {
+      if (floor(p, c) && (!ground_.on_ground || p.normal.dot(o_.up) > ground_.normal.dot(o_.up)))
+        ground_ = {true, p.normal, p.body, p.shape, p.user_id};
+    }
   }
 
   // The floor touched whose normal lies nearest up, if any.
-  Ground ground() const {
-    Ground g;
-    for (const MoverPlane& p : touched_) {
-      if (floor(p, where_) && (!g.on_ground || p.normal.dot(o_.up) > g.normal.dot(o_.up)))
-        g = {true, p.normal, p.body, p.shape, p.user_id};
-    }
-    return g;
-  }
+  const Ground& ground() const { return ground_; }
 
   // The translation from c nearest `target` that the surfaces allow: the target held up by the
   // floors where it ends, then kept out of the planes of the other surfaces touched at c, and of a
@@ -262,14 +260,14 @@ class Mover {
   MoverQuery touch_query_;  // the skin and a hair more: a cast stops that far above the skin
   MoverQuery soft_query_;   // that, and the move's length where there are soft surfaces
   MoverQuery cast_query_;
-  Vec2 where_ = Vec2::Zero();
+  Ground ground_;        // of the surfaces touched, found once a collide: a step's edge costs a ray
   bool lifted_ = false;  // whether the last solve's floors held the target up
   static double travel(const Shape& mover, const Vec2& target) { return (target - center_of(mover)).norm(); }
 
   // The lists, kept by the thread from move to move, so that a move allocates nothing.
   struct Lists {
     detail::WorldState::Nearby near;
-    std::vector<MoverPlane> touched;         // where the mover is, at where_
+    std::vector<MoverPlane> touched;         // where the mover is
     std::vector<MoverPlane> below;           // where a translation ends
     std::vector<const MoverPlane*> pending;  // floors touched whose planes are not in the solve
     std::vector<CollisionPlane> planes;
@@ -284,22 +282,30 @@ class Mover {
 
 thread_local Mover::Lists Mover::lists_;
 
-// Where a mover on the ground that the loop left short of `target` gets by stepping: up by the
-// step height (less where a ceiling stops it), across the rest of the move's level part, and down
-// as far as it went up onto a floor; c itself where it gains nothing or lands on no floor.
-Vec2 stepped(Mover& m, const Vec2& c, const Vec2& target, double stuck, const MoverOptions& o) {
+// c moved to `landed` where the mover stands on a floor there; the surfaces touched are c's after.
+void land(Mover& m, Vec2& c, const Vec2& landed) {
+  m.collide(landed);
+  if (m.ground().on_ground) {
+    c = landed;
+  } else {
+    m.collide(c);
+  }
+}
+
+// Where a mover on the ground that the loop left short of `target` would get by stepping: up by
+// the step height (less where a ceiling stops it), across the rest of the move's level part, and
+// down as far as it went up; nothing where it gains nothing or meets nothing coming down.
+std::optional<Vec2> step(Mover& m, const Vec2& c, const Vec2& target, double stuck, const MoverOptions& o) {
   const Vec2 rest = target - c, across = rest - rest.dot(o.up) * o.up;
-  if (!(across.norm() > stuck)) return c;
+  if (!(across.norm() > stuck)) return std::nullopt;
   const Vec2 rise = o.step_height * o.up;
   const Vec2 raised = c + m.cast(c, rise) * rise;
   const double f = m.cast(raised, across);
-  if (!(f * across.norm() > stuck)) return c;
+  if (!(f * across.norm() > stuck)) return std::nullopt;
   const Vec2 over = raised + f * across, fall = c - raised;
   const double g = m.cast(over, fall);
-  if (g == 1.0) return c;  // no floor within the height it rose
-  const Vec2 landed = over + g * fall;
-  m.collide(landed);
-  return m.ground().on_ground ? landed : c;
+  if (g == 1.0) return std::nullopt;  // nothing within the height it rose
+  return Vec2(over + g * fall);
 }
 
 }  // namespace
@@ -330,20 +336,15 @@ MoveResult move(const World& world, const Shape& mover, const Vec2& velocity, do
     // A first cast may stop at once at a surface it did not touch before; the next one slides on it.
     if (free || (r.iterations > 1 && (c - from).norm() <= stuck) || r.iterations == options.max_iterations) break;
   }
-  if (stood && options.step_height > 0) c = stepped(m, c, target, stuck, options);
-  m.collide(c);
+  if (const auto landed = stood && options.step_height > 0 ? step(m, c, target, stuck, options) : std::nullopt) {
+    land(m, c, *landed);
+  } else {
+    m.collide(c);
+  }
   if (stood && !m.ground().on_ground && options.snap_distance > 0 && velocity.dot(options.up) <= 0.0) {
     const Vec2 down = -options.snap_distance * options.up;
     const double f = m.cast(c, down);
-    if (f < 1.0) {
-      const Vec2 landed = c + f * down;
-      m.collide(landed);
-      if (m.ground().on_ground) {
-        c = landed;
-      } else {
-        m.collide(c);
-      }
-    }
+    if (f < 1.0) land(m, c, c + f * down);
   }
   r.position = c;
   r.ground = m.ground();
