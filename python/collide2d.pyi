@@ -159,6 +159,7 @@ class MoveResult:
     velocity: Point
     ground: Ground
     iterations: int
+    blocked: bool
 
 # Body ids are uint64: generation << 32 | index. Queries take the keywords category and mask, the
 # query's own filter.

@@ -185,12 +185,13 @@ void add_world_hits(py::module_& m) {
       .def_property_readonly("body", [](const Ground& g) { return id_of(g.body); })
       .def_readonly("user_id", &Ground::user_id);
   py::class_<MoveResult>(m, "MoveResult",
-                         "What World.move() did: the mover's new centre, its clipped velocity, its ground and the\n"
-                         "iterations of collide, solve and cast.")
+                         "What World.move() did: the mover's new centre, its clipped velocity, its ground, the\n"
+                         "iterations of collide, solve and cast, and whether its last cast stopped at a surface.")
       .def_property_readonly("position", [](const MoveResult& r) { return tuple(r.position); })
       .def_property_readonly("velocity", [](const MoveResult& r) { return tuple(r.velocity); })
       .def_readonly("ground", &MoveResult::ground)
-      .def_readonly("iterations", &MoveResult::iterations);
+      .def_readonly("iterations", &MoveResult::iterations)
+      .def_readonly("blocked", &MoveResult::blocked);
 }
 
 using Bodies = py::class_<PyWorld>;

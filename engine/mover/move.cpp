@@ -20,6 +20,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace collide2d {
@@ -98,10 +99,15 @@ class Mover {
     touching(c, touched_);
     ground_ = {};
     for (const MoverPlane& p : touched_) {
-      if (floor(p, c) && (!ground_.on_ground || p.normal.dot(o_.up) > ground_.normal.dot(o_.up)))
+      if (stands_on(p, c) && (!ground_.on_ground || p.normal.dot(o_.up) > ground_.normal.dot(o_.up)))
         ground_ = {true, p.normal, p.body, p.shape, p.user_id};
     }
   }
+
+  // From now on the floors touched keep the mover out by their planes too: stalled on a floor's
+  // convex edge (a ridge's top) with the target beyond it, their planes lift the path over it.
+  // Whether they did already.
+  bool plane_floors() { return std::exchange(floor_planes_, true); }
 
   // The floor touched whose normal lies nearest up, if any.
   const Ground& ground() const { return ground_; }
@@ -116,24 +122,54 @@ class Mover {
     planes_.clear();
     pending_.clear();
     for (const MoverPlane& p : touched_) {
-      if (floor(p, c)) {
+      if (floor(p, c) && !floor_planes_) {
         pending_.push_back(&p);
       } else {
         add_planes(p);
       }
     }
     Vec2 delta = solve_planes(held, planes_).delta;
-    for (bool added = true; added;) {
-      added = false;
-      for (const MoverPlane*& p : pending_) {
-        if (p == nullptr || !(separation(*p, c + delta) < o_.query.skin - hair_)) continue;
-        add_planes(*p);
-        p = nullptr;
-        added = true;
-      }
-      if (added) delta = solve_planes(held, planes_).delta;
+    if (delta != held) add_floors_ahead(c, c + held);
+    // One floor a pass, the one facing nearest up: a tile's face, not the next tile's corner
+    // beside it, whose plane the face's keeps it clear of, as one long box would.
+    for (const MoverPlane** p; (p = nearest_up_crossed(c + delta)) != nullptr;) {
+      add_planes(**p);
+      *p = nullptr;
+      delta = solve_planes(held, planes_).delta;
+    }
+    // Planes that moved the target (a soft push, a wall) may have moved it over a floor not touched
+    // at c: the floors where it ends now hold it up too.
+    if (delta != held) {
+      const double more = lift(c + delta);
+      lifted_ = lifted_ || more > 0.0;
+      delta += more * o_.up;
     }
     return delta;
+  }
+
+  // The floors touched at the held target e and not at c, their planes moved to pass through c,
+  // wait with those touched at c: the other planes may push the target off the floor at c onto
+  // them (the next tile), where they hold it as one long floor would.
+  void add_floors_ahead(const Vec2& c, const Vec2& e) {
+    touching(e, ahead_);
+    std::erase_if(ahead_, [&](const MoverPlane& p) {
+      return !floor(p, e) || std::ranges::any_of(touched_, [&](const MoverPlane& q) { return q.shape == p.shape; });
+    });
+    for (MoverPlane& p : ahead_) {
+      p.separation -= p.normal.dot(e - c);
+      pending_.push_back(&p);
+    }
+  }
+
+  // Of the floors not yet in the solve that the mover centred at e comes nearer than the skin, the
+  // one whose normal lies nearest up.
+  const MoverPlane** nearest_up_crossed(const Vec2& e) {
+    const MoverPlane** best = nullptr;
+    for (const MoverPlane*& p : pending_) {
+      if (p == nullptr || (best != nullptr && !(p->normal.dot(o_.up) > (*best)->normal.dot(o_.up)))) continue;
+      if (separation(*p, e) < o_.query.skin - hair_) best = &p;
+    }
+    return best;
   }
 
   // Moves c along delta as far as the cast allows, and says whether all of it was free. On the
@@ -168,6 +204,12 @@ class Mover {
 
  private:
   bool soft(const MoverPlane& p) const { return (world_.filter(p.shape).category & o_.soft_categories) != 0; }
+  // Whether the mover stands on a surface touched: a floor, or a soft surface as level (another
+  // character's head), which holds its fall as a floor does while its plane pushes it out softly.
+  bool stands_on(const MoverPlane& p, const Vec2& c) const {
+    if (!soft(p)) return floor(p, c);
+    return p.separation <= touch_query_.skin && p.normal.dot(o_.up) >= cos_slope_;
+  }
   // Whether a surface touched by the mover centred at c holds it up: a floor, or with a step height
   // the edge of a step, so that a rounded mover rides up onto it as onto a floor.
   bool floor(const MoverPlane& p, const Vec2& c) const {
@@ -262,6 +304,7 @@ class Mover {
   MoverQuery cast_query_;
   Ground ground_;        // of the surfaces touched, found once a collide: a step's edge costs a ray
   bool lifted_ = false;  // whether the last solve's floors held the target up
+  bool floor_planes_ = false;
   static double travel(const Shape& mover, const Vec2& target) { return (target - center_of(mover)).norm(); }
 
   // The lists, kept by the thread from move to move, so that a move allocates nothing.
@@ -269,12 +312,14 @@ class Mover {
     detail::WorldState::Nearby near;
     std::vector<MoverPlane> touched;         // where the mover is
     std::vector<MoverPlane> below;           // where a translation ends
+    std::vector<MoverPlane> ahead;           // floors there, not touched where it starts
     std::vector<const MoverPlane*> pending;  // floors touched whose planes are not in the solve
     std::vector<CollisionPlane> planes;
   };
   static thread_local Lists lists_;
   std::vector<MoverPlane>& touched_ = lists_.touched;
   std::vector<MoverPlane>& below_ = lists_.below;
+  std::vector<MoverPlane>& ahead_ = lists_.ahead;
   std::vector<const MoverPlane*>& pending_ = lists_.pending;
   std::vector<CollisionPlane>& planes_ = lists_.planes;
   detail::WorldState::Nearby& near_ = lists_.near;
@@ -282,14 +327,16 @@ class Mover {
 
 thread_local Mover::Lists Mover::lists_;
 
-// c moved to `landed` where the mover stands on a floor there; the surfaces touched are c's after.
-void land(Mover& m, Vec2& c, const Vec2& landed) {
+// c moved to `landed` where the mover stands on a floor there, and whether it did; the surfaces
+// touched are c's after.
+bool land(Mover& m, Vec2& c, const Vec2& landed) {
   m.collide(landed);
-  if (m.ground().on_ground) {
-    c = landed;
-  } else {
+  if (!m.ground().on_ground) {
     m.collide(c);
+    return false;
   }
+  c = landed;
+  return true;
 }
 
 // Where a mover on the ground that the loop left short of `target` would get by stepping: up by
@@ -332,19 +379,21 @@ MoveResult move(const World& world, const Shape& mover, const Vec2& velocity, do
     m.collide(c);
     if (r.iterations == 1) stood = m.ground().on_ground;
     const Vec2 from = c;
-    const bool free = m.travel(c, m.solve(c, target - c));
-    // A first cast may stop at once at a surface it did not touch before; the next one slides on it.
-    if (free || (r.iterations > 1 && (c - from).norm() <= stuck) || r.iterations == options.max_iterations) break;
+    r.blocked = !m.travel(c, m.solve(c, target - c));
+    if (!r.blocked || r.iterations == options.max_iterations) break;
+    // A first cast may stop at once at a surface it did not touch before; the next one slides on
+    // it, or goes over the floor's edge it stalled on.
+    if ((c - from).norm() <= stuck && m.plane_floors() && r.iterations > 1) break;
   }
   if (const auto landed = stood && options.step_height > 0 ? step(m, c, target, stuck, options) : std::nullopt) {
-    land(m, c, *landed);
+    r.blocked = land(m, c, *landed) || r.blocked;
   } else {
     m.collide(c);
   }
   if (stood && !m.ground().on_ground && options.snap_distance > 0 && velocity.dot(options.up) <= 0.0) {
     const Vec2 down = -options.snap_distance * options.up;
     const double f = m.cast(c, down);
-    if (f < 1.0) land(m, c, c + f * down);
+    if (f < 1.0) r.blocked = land(m, c, c + f * down) || r.blocked;
   }
   r.position = c;
   r.ground = m.ground();

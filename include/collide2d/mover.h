@@ -105,6 +105,10 @@ struct MoveResult {
   Vec2 velocity = Vec2::Zero();  ///< clipped by the surfaces it touches where it ends
   Ground ground{};
   int iterations = 0;  ///< of collide, solve and cast
+  /// Whether the move ended where a cast stopped it, the skin from a surface.
+  /// That cast is its last, or its step's or snap's landing. A surface touched where the move
+  /// starts holds the mover by its plane instead: the clipped velocity shows that.
+  bool blocked = false;
 };
 
 /// Moves `mover` (no turn) by velocity * dt through the World as a character does: it slides along

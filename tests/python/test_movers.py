@@ -34,7 +34,7 @@ def test_walks_a_floor_and_a_chain_at_the_commanded_speed():
         for k, (shape, r) in enumerate(walk(world, player(x, y), 120, 3.0)):
             assert r.position[0] == pytest.approx(x + 3.0 * DT * (k + 1), abs=1e-12)
             assert r.position[1] == pytest.approx(y, abs=1e-12)
-            assert r.ground.on_ground
+            assert r.ground.on_ground and not r.blocked
             if body:
                 assert r.ground.body == body and r.ground.user_id == 7
 

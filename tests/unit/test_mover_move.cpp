@@ -75,6 +75,7 @@ TEST(MoverMove, WalksAFlatFloorAtTheCommandedSpeed) {
       ASSERT_NEAR(center_of(c.shape).x() - x, 3.0 * kDt, 1e-12) << frame;
       ASSERT_NEAR(center_of(c.shape).y(), height, 1e-12) << frame;
       ASSERT_TRUE(c.last.ground.on_ground) << frame;
+      ASSERT_FALSE(c.last.blocked) << frame;  // the floor holds it up; nothing stops it
       ASSERT_EQ(c.last.velocity.y(), 0.0) << frame;
     }
   }
