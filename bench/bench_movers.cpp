@@ -5,11 +5,13 @@
 // moves) after 60 frames in which the movers land.
 #include <collide2d/collide2d.h>
 
+#include "bench/mover_course.h"
 #include "bench/mover_level.h"
 
 #include <benchmark/benchmark.h>
 
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace collide2d {
@@ -64,6 +66,20 @@ void run(benchmark::State& state, const Shape& mover) {
 
 const Shape kCapsule = Capsule{Vec2::Zero(), 0.3, 0.3, std::numbers::pi / 2};
 const Shape kEllipse = Ellipse{Vec2::Zero(), 0.3, 0.6, 0.0};
+
+// The mover suite once: its worst values as counters.
+void course(benchmark::State& state, const Shape& mover) {
+  for (auto _ : state)
+    report_verdict(state, testing::run_course<testing::Collide2dMovers>(mover, testing::kCourseFrames));
+}
+
+const bool kCourseRegistered = [] {
+  for (const testing::CourseMover& m : testing::course_movers())
+    benchmark::RegisterBenchmark((std::string("mover_course/") + m.name + "/collide2d").c_str(), course, m.shape)
+        ->Iterations(1)
+        ->Repetitions(1);
+  return true;
+}();
 
 BENCHMARK_CAPTURE(run, capsule, kCapsule)->Name("movers/capsule/collide2d")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, ellipse, kEllipse)->Name("movers/ellipse/collide2d")->Unit(benchmark::kMillisecond);

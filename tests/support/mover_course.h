@@ -10,8 +10,10 @@
 // for every library.
 #pragma once
 
+#include <collide2d/mover.h>
 #include <collide2d/query.h>
 #include <collide2d/shapes.h>
+#include <collide2d/world.h>
 
 #include "tools/random.h"
 
@@ -28,7 +30,7 @@ namespace collide2d::testing {
 
 constexpr double kCourseDt = 1.0 / 60, kCourseGravity = 20, kCourseJump = 6, kCourseSkin = 0.01;
 constexpr double kCourseMaxSlope = std::numbers::pi / 4, kCoursePushLimit = 0.25;
-constexpr int kCourseMovers = 6, kCourseIterations = 5;
+constexpr int kCourseMovers = 6, kCourseIterations = 5, kCourseFrames = 10000;
 constexpr std::uint64_t kCourseSoft = 2;  // the movers' category; the level's is 1
 
 // Where the tiles lie, their tops at 0.
@@ -102,6 +104,20 @@ inline Level level(Seams seams) {
   hills.insert(hills.end(), {Vec2(110, 0), Vec2(112, 0)});
   l.chains.push_back(chain_right_to_left(hills));
   return l;
+}
+
+// The suite's movers of every kind, about a unit tall, named.
+struct CourseMover {
+  const char* name;
+  Shape shape;
+};
+inline std::vector<CourseMover> course_movers() {
+  return {{"capsule", Capsule{Vec2::Zero(), 0.25, 0.25, std::numbers::pi / 2}},
+          {"circle", Circle{Vec2::Zero(), 0.5}},
+          {"ellipse", Ellipse{Vec2::Zero(), 0.3, 0.5, 0.0}},
+          {"rect", Rect{Vec2::Zero(), Vec2(0.3, 0.5), 0.0}},
+          {"polygon", ConvexPolygon::regular(6, 0.5).at(Vec2::Zero(), 0.1)},
+          {"rounded_polygon", ConvexPolygon::box(0.2, 0.4, 0.1).at(Vec2::Zero())}};
 }
 
 inline std::array<Vec2, kCourseMovers> course_spawns() {
@@ -219,7 +235,6 @@ class Referee {
       w.soft = std::min(w.soft, gap);
       crowded = crowded || gap < reach;
     }
-    const Vec2 target = start + v * kCourseDt;
     if (after.blocked && !crowded && !near.moving) {
       ++w.blocked;
       w.blocked_low = std::min(w.blocked_low, near.separation - kCourseSkin);
@@ -233,7 +248,8 @@ class Referee {
       w.bump_high = std::max(w.bump_high, bump);
     }
     const bool still = before.on_ground && after.on_ground && in.walk == 0 && !in.jump && !crowded;
-    if (before.on_ground && after.on_ground && in.walk != 0 && !in.jump && !crowded && near.only_flat_floor) {
+    const bool on_level = before.ground == Part::level && after.ground == Part::level;
+    if (on_level && in.walk != 0 && !in.jump && !crowded && near.only_flat_floor) {
       ++w.clear;
       w.progress = std::max(w.progress, std::abs(end.x() - start.x() - in.walk * kCourseDt) / scale);
       w.progress = std::max(w.progress, std::abs(end.y() - start.y()) / scale);
@@ -345,5 +361,68 @@ Verdict run_course(const Shape& mover, int frames) {
   v.bump_high = referees[2].verdict.bump_high;
   return v;
 }
+
+// collide2d's movers on one twin of the level, each also a body the others see as soft.
+class Collide2dMovers {
+ public:
+  Collide2dMovers(const Level& level, const Shape& mover) {
+    for (const Shape& s : level.statics) world_.add(s, {.is_static = true});
+    for (const auto& chain : level.chains) world_.add_chain(chain, false);
+    platform_ = world_.add(moved_to(level.platform, Level::platform_at(0)));
+    lift_ = world_.add(moved_to(level.lift, Level::lift_at(0)));
+    for (const Vec2& at : course_spawns()) {
+      states_.push_back({moved_to(mover, at)});
+      bodies_.push_back(world_.add(states_.back().shape, {.filter = {.category = kCourseSoft}}));
+      ground_.emplace_back();
+    }
+    world_.update();
+  }
+
+  void place(int frame) {
+    world_.move_to(platform_, Level::platform_at(frame), 0.0);
+    world_.move_to(lift_, Level::lift_at(frame), 0.0);
+    world_.update();
+  }
+
+  const MoverState& state(std::size_t k) const { return states_[k]; }
+
+  const MoverState& move(std::size_t k, const Vec2& velocity) {
+    const MoverOptions options{.query = {.skin = kCourseSkin, .self = bodies_[k]},
+                               .max_slope = kCourseMaxSlope,
+                               .step_height = 0.25,
+                               .snap_distance = 0.3,
+                               .max_iterations = kCourseIterations,
+                               .soft_categories = kCourseSoft,
+                               .soft_push_limit = kCoursePushLimit};
+    const MoveResult r = collide2d::move(world_, states_[k].shape, velocity, kCourseDt, options, ground_[k]);
+    ground_[k] = r.ground;
+    MoverState& s = states_[k];
+    s.shape = moved_to(s.shape, r.position);
+    s.velocity = r.velocity;
+    s.on_ground = r.ground.on_ground;
+    s.ground_normal = r.ground.normal;
+    s.blocked = r.blocked;
+    s.ground = !r.ground.on_ground                          ? Part::none
+               : r.ground.body == platform_                 ? Part::platform
+               : r.ground.body == lift_                     ? Part::lift
+               : std::ranges::count(bodies_, r.ground.body) ? Part::mover
+                                                            : Part::level;
+    world_.move_to(bodies_[k], r.position, angle_of(s.shape));
+    return s;
+  }
+
+  void respawn(std::size_t k, const Vec2& at) {
+    states_[k] = {moved_to(states_[k].shape, at)};
+    ground_[k] = {};
+    world_.move_to(bodies_[k], at, angle_of(states_[k].shape));
+  }
+
+ private:
+  World world_;
+  BodyId platform_, lift_;
+  std::vector<BodyId> bodies_;
+  std::vector<MoverState> states_;
+  std::vector<Ground> ground_;
+};
 
 }  // namespace collide2d::testing
