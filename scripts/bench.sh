@@ -23,7 +23,7 @@ v3_dir=${BOX2D_V3_DIR:+$(cd "$BOX2D_V3_DIR" && pwd)}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE2D_BUILD_BENCHMARKS=ON -DCOLLIDE2D_BUILD_TESTS=OFF \
   -DCOLLIDE2D_BUILD_PYTHON=ON -DCOLLIDE2D_BOX2D_SOURCE="$source_dir" \
   -DCOLLIDE2D_BOX2D_V3_SOURCE="$v3_dir" > /dev/null
-programs=(bench_narrowphase bench_contact bench_toi bench_broadphase bench_world bench_queries)
+programs=(bench_narrowphase bench_contact bench_toi bench_broadphase bench_world bench_queries bench_movers)
 cmake --build "$build" -j "$(nproc)" --target "${programs[@]}" collide2d_report collide2d_python python_rival
 
 runs=$(mktemp -d)

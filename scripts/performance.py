@@ -166,6 +166,20 @@ WORLD_V3 = [(f'{n:,} moving bodies, contacts', f'frame/alone_contacts/{n}/1',
              f'box2d_v3_frame/alone_contacts/{n}/manual_time') for n in (1000, 10000)] + [
     ('the built-in scene (4,036 bodies), contacts', 'frame/scene_contacts/4000/1',
      'box2d_v3_frame/scene_contacts/4000/manual_time')]
+MOVERS = [('1,000 capsule movers, one move() each', 'movers/capsule/collide2d', 'movers/capsule/box2d_v3')]
+# The mover suite's checks (tests/support/mover_course.h): a label, and the figure from a run's counters.
+COURSE_CHECKS = [
+    ('deepest overlap of a level shape after a move', lambda c: max(0.0, -c['depth'])),
+    ('a stopped move\'s separation less the skin (0.01), least', lambda c: c['blocked_low']),
+    ('the same, greatest', lambda c: c['blocked_high']),
+    ('seam: distance from the path over one box and one segment, relative', lambda c: c['seam']),
+    ('tiles jittered by 1e-9: spread of the standing height', lambda c: c['bump_high'] - c['bump_low']),
+    ('clear flat floor: progress off the commanded, relative', lambda c: c['progress']),
+    ('standing on a slope: slide a frame, relative', lambda c: c['slide']),
+    ('riding the platform or the lift: drift a frame, relative', lambda c: c['drift']),
+    ('soft movers: deepest overlap of two', lambda c: max(0.0, -c['soft'])),
+    ('crushed frames (reported, excluded)', lambda c: c['crushed']),
+]
 
 
 def collect(args):
@@ -580,6 +594,53 @@ a `b2ChainShape` loop in v3, its sensors sensor shapes, its layers `b2Filter`s.
 """
 
 
+def course_runs(result):
+    """The mover suite's counters by (shape, library): one run each, never repeated."""
+    program = result['benchmarks'].get('bench_movers', {'benchmarks': []})
+    return {tuple(b['name'].split('/')[1:3]): b for b in program['benchmarks'] if b['name'].startswith('mover_course/')}
+
+
+def fmt_figure(x):
+    return f'{x:.0f}' if x == int(x) and abs(x) >= 1 else f'{x:.2g}'
+
+
+def movers_section(result, med):
+    """The character movers' crowd against Box2D v3's mover loop, and the mover suite's worst values."""
+    if not has_runs(med, 'movers/'):
+        return ''
+    runs = course_runs(result)
+    ours = [c for (shape, library), c in runs.items() if library == 'collide2d']
+    rows = []
+    for label, figure in COURSE_CHECKS:
+        capsule, v3 = runs.get(('capsule', 'collide2d')), runs.get(('capsule', 'box2d_v3'))
+        worst = max((figure(c) for c in ours), key=abs, default=None)
+        cells = [fmt_figure(figure(c)) if c else '—' for c in (capsule,)] + [
+            fmt_figure(worst) if worst is not None else '—', fmt_figure(figure(v3)) if v3 else '—']
+        rows.append(f'| {label} | ' + ' | '.join(cells) + ' |')
+    crowd = table(MOVERS, med, False)
+    return f"""## Character movers
+
+1,000 movers walking and jumping at random in a level of 10,000 static shapes, one `move()` each a
+frame on one thread, the movers not seeing each other (bench/bench_movers.cpp); Box2D v3: its
+mover sample's loop on capsules (`b2World_CollideMover`, `b2SolvePlanes`, `b2World_CastMover`, at
+most 5 times, then `b2ClipVector`). The ellipse crowd has no Box2D counterpart:
+{fmt_time(med.get('movers/ellipse/collide2d'))} a frame.
+
+{crowd}
+
+The mover suite ([moving characters](movers.md#tests)), 10,000 frames of six movers at once on a
+scripted level, every move judged with collide2d's exact `contact()`: collide2d's capsule, the
+worst of its six mover shapes, and Box2D v3's capsule moved as its geometric mover sample moves it
+(a spring on a ray down holds the capsule 0.1 above the ground). Relative figures are over
+max(|position|, size).
+
+| check | collide2d capsule | collide2d, worst shape | Box2D v3 capsule |
+| --- | --- | --- | --- |
+{chr(10).join(rows)}
+
+"""
+
+
 def tree_rival(med):
     """The box tree against Box2D v3's b2DynamicTree where the run has it, else 2.4.1's."""
     if has_runs(med, 'box/box2d_v3/'):
@@ -721,7 +782,7 @@ as `b2ContactManager` applies them).
 
 {table(WORLD, med, False)}
 
-{v3_world_section(med)}{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
+{v3_world_section(med)}{movers_section(newest, med)}{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
 
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,
