@@ -177,7 +177,7 @@ COURSE_CHECKS = [
     ('clear flat floor: progress off the commanded, relative', lambda c: c['progress']),
     ('standing on a slope: slide a frame, relative', lambda c: c['slide']),
     ('riding the platform or the lift: drift a frame, relative', lambda c: c['drift']),
-    ('soft movers: deepest overlap of two', lambda c: max(0.0, -c['soft'])),
+    ('soft movers: deepest overlap of two (the platform sweeps to 1.5 m of a wall)', lambda c: max(0.0, -c['soft'])),
     ('crushed frames (reported, excluded)', lambda c: c['crushed']),
 ]
 
