@@ -153,7 +153,8 @@ class Mover {
   void add_floors_ahead(const Vec2& c, const Vec2& e) {
     touching(e, ahead_);
     std::erase_if(ahead_, [&](const MoverPlane& p) {
-      return !floor(p, e) || std::ranges::any_of(touched_, [&](const MoverPlane& q) { return q.shape == p.shape; });
+      const auto same = [&](const MoverPlane& q) { return q.shape == p.shape; };
+      return !floor(p, e) || std::any_of(touched_.begin(), touched_.end(), same);
     });
     for (MoverPlane& p : ahead_) {
       p.separation -= p.normal.dot(e - c);
