@@ -15,6 +15,7 @@
 #include <array>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -27,7 +28,7 @@ namespace {
 using Bytes = std::vector<std::uint8_t>;
 using Pair = std::pair<std::uint32_t, std::uint32_t>;  // two entries of the table
 constexpr std::uint32_t kNone = ~std::uint32_t{0};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 // The sections, in the order they are written after the table.
 enum Section : std::size_t {
@@ -40,9 +41,10 @@ enum Section : std::size_t {
   contacts,
   impacts,
   sensing,
-  stats
+  stats,
+  movers
 };
-constexpr std::size_t kSections = 10;
+constexpr std::size_t kSections = 11;
 
 void put(Bytes& out, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) out.push_back(static_cast<std::uint8_t>(v >> (8 * k)));
@@ -186,6 +188,7 @@ struct Recorder::State {
   void record_shapes(const World& world);
   void record_pairs(const World& world);
   void record_stats(const FrameStats& s);
+  void record_movers(std::span<const MoverRecord> movers);
 };
 
 void Recorder::State::record_shapes(const World& world) {
@@ -275,15 +278,36 @@ void Recorder::State::record_stats(const FrameStats& s) {
   put(out, s.narrow_seconds * 1e3);
 }
 
+// Each mover whole, every frame: its kind and sizes, its pose, its ground, its planes.
+void Recorder::State::record_movers(std::span<const MoverRecord> movers) {
+  Bytes& out = sections[Section::movers];
+  put(out, static_cast<std::uint32_t>(movers.size()));
+  for (const MoverRecord& m : movers) {
+    put(out, detail::kind_number(m.shape));
+    put_sizes(out, m.shape);
+    put(out, center_of(m.shape));
+    put(out, angle_of(m.shape));
+    put(out, m.ground.on_ground ? 1u : 0u);
+    put(out, m.ground.normal);
+    put(out, static_cast<std::uint32_t>(m.planes.size()));
+    for (const MoverPlane& p : m.planes) {
+      put(out, p.point);
+      put(out, p.normal);
+      put(out, p.separation);
+    }
+  }
+}
+
 Recorder::Recorder() : state_(std::make_unique<State>()) {}
 Recorder::~Recorder() = default;
 Recorder::Recorder(Recorder&&) noexcept = default;
 Recorder& Recorder::operator=(Recorder&&) noexcept = default;
 
-void Recorder::record(const World& world) {
+void Recorder::record(const World& world, std::span<const MoverRecord> movers) {
   state_->record_shapes(world);
   state_->record_pairs(world);
   state_->record_stats(world.last_frame());
+  state_->record_movers(movers);
   ++state_->frames;
 }
 

@@ -1,9 +1,10 @@
 // The replay page in a real browser (Debian's chromium, driven by puppeteer-core):
 //   node replay.test.mjs COLLIDE2D WORK_DIR
 // runs a small scene whose events are known by construction (a bullet meeting a wall, two circles
-// meeting, a box entering a sensor) with `collide2d run --html`, and checks that the page reports
-// the run's frames, bodies and per-frame pair counts, draws the bullet's impact where the geometry
-// puts it, names a clicked body, lists events by the bodies' user ids, and fits its layout to a
+// meeting, a box entering a sensor, a character walking a floor) with `collide2d run --html`, and
+// checks that the page reports the run's frames, bodies and per-frame pair counts, draws the
+// bullet's impact where the geometry puts it, draws the character where it walked, on the ground,
+// with the floor's plane, names a clicked body, lists events by the bodies' user ids, and fits its layout to a
 // window of 1280 x 800 and of 1920 x 1080. Then it loads the built-in scene's page (600 frames), checks
 // its size, and prints the median time to draw a frame in a 1920 x 1080 window. Exits 77 (ctest: skipped),
 // saying why, where no browser or no puppeteer-core is installed (scripts/deps.sh --test installs both).
@@ -19,6 +20,8 @@ const [collide2d, work] = process.argv.slice(2);
 // The scene: 20 x 10, 30 frames at 60 Hz. The bullet (radius 0.1) moves 5 a frame from x = 2 and
 // meets the wall's face x = 9.5 in the step of update 1 (0-based) from x = 7, at t = (9.4 - 7) / 5,
 // at (9.5, 5). The circles 2 apart close 4/60 a frame; the box reaches the sensor after 24 frames.
+// The character (a circle of radius 0.4) stands the skin (0.01) over the floor's top, y = 0.5, and
+// walks 1 a second to the left: after 30 frames it is at (15.5, 0.91).
 const scene = {
   arena: { min: [0, 0], max: [20, 10] },
   frames: 30,
@@ -33,7 +36,9 @@ const scene = {
     { shape: 'circle', center: [5, 2], radius: 0.5, velocity: [-2, 0], id: 12 },
     { shape: 'circle', center: [15, 8], radius: 1.5, static: true, sensor: true, id: 20 },
     { shape: 'rect', center: [12, 8], half_extents: [0.3, 0.3], velocity: [3, 0], id: 21 },
+    { shape: 'rect', center: [16, 0.25], half_extents: [3, 0.25], static: true, id: 30 },
   ],
+  movers: [{ shape: 'circle', center: [16, 0.91], radius: 0.4, walk: [[0, -1]] }],
 };
 
 mkdirSync(work, { recursive: true });
@@ -91,6 +96,22 @@ try {
   const pixel = await page.evaluate(([x, y]) => Array.from(document.getElementById('view').getContext('2d')
     .getImageData(Math.round(x), Math.round(y), 1, 1).data), [sx, sy]);
   check(pixel[0] > 200 && pixel[1] < 60 && pixel[2] < 60, `the impact's mark is drawn at its point (pixel ${pixel})`);
+
+  // The character at the last frame: where it walked, on the ground, the floor's plane under it,
+  // and drawn in the ground's green.
+  await page.evaluate(`replayApi.setFrame(${frames - 1})`);
+  const mover = await page.evaluate(`replayPage.replay.frames[${frames - 1}].movers[0]`);
+  check(Math.abs(mover.center[0] - 15.5) < 1e-5 && Math.abs(mover.center[1] - 0.91) < 1e-5 && mover.onGround,
+        `the character ends at (15.5, 0.91) on the ground: the page's (${mover.center}), ${mover.onGround}`);
+  check(mover.planes.length === 1 && Math.abs(mover.planes[0].normal[1] - 1) < 1e-6 &&
+        Math.abs(mover.planes[0].separation - 0.01) < 1e-6,
+        `its one plane is the floor's, facing up, the skin away: ${JSON.stringify(mover.planes)}`);
+  const told = await page.$eval('#pair-counts', (d) => d.textContent);
+  check(/movers 1, 1 on the ground/.test(told), `the frame's line counts it: ${told}`);
+  const [mx, my] = await page.evaluate('replayApi.toScreen(15.5, 0.91)');
+  const green = await page.evaluate(([x, y]) => Array.from(document.getElementById('view').getContext('2d')
+    .getImageData(Math.round(x), Math.round(y), 1, 1).data), [mx, my]);
+  check(green[1] > green[0] + 20 && green[1] > green[2] + 10, `the character is drawn green (pixel ${green})`);
 
   // A click on the wall names it.
   const [wx, wy] = await page.evaluate('replayApi.toScreen(10, 8)');

@@ -1,9 +1,10 @@
 // The Recorder against docs/replay-format.md: a decoder written from that page reads back, frame by
 // frame, what the World held when each frame was recorded (its shapes, their float32 poses and
 // broad-phase boxes, the candidate, overlapping and sensor pairs, the proximity pairs, contacts and
-// impacts, and the frame's counts), through bodies added and removed, a filter changed, and shapes
-// of every kind.
+// impacts, the frame's counts and the character movers), through bodies added and removed, a filter
+// changed, and shapes of every kind.
 #include <collide2d/chain.h>
+#include <collide2d/mover.h>
 #include <collide2d/replay.h>
 #include <collide2d/world.h>
 
@@ -34,7 +35,22 @@ struct Expected {
   std::size_t proximity = 0, contacts = 0, impacts = 0;
   std::vector<float> impact_times;
   std::array<std::uint32_t, 7> counts{};
+  // Each mover's kind, centre, angle, ground flag and normal, and its planes' point, normal and
+  // separation, as float32.
+  std::vector<std::vector<float>> movers;
 };
+
+std::vector<float> mover_floats(const MoverRecord& m) {
+  std::vector<float> v{static_cast<float>(m.shape.index()),        static_cast<float>(center_of(m.shape).x()),
+                       static_cast<float>(center_of(m.shape).y()), static_cast<float>(angle_of(m.shape)),
+                       m.ground.on_ground ? 1.0f : 0.0f,           static_cast<float>(m.ground.normal.x()),
+                       static_cast<float>(m.ground.normal.y())};
+  for (const MoverPlane& p : m.planes) {
+    for (const double x : {p.point.x(), p.point.y(), p.normal.x(), p.normal.y(), p.separation})
+      v.push_back(static_cast<float>(x));
+  }
+  return v;
+}
 
 ShapeKey key(ShapeId id) { return {id.index, id.generation}; }
 
@@ -110,12 +126,12 @@ void expect_replay(const std::string& bytes, const std::vector<Expected>& frames
   Reader head(bytes);
   ASSERT_EQ(bytes.substr(0, 4), "C2DR");
   head.skip(4);
-  ASSERT_EQ(head.u32(), 1u);
+  ASSERT_EQ(head.u32(), 2u);
   ASSERT_EQ(head.u32(), frames.size());
   const std::uint32_t entry_count = head.u32();
-  std::array<std::uint32_t, 11> sizes{};
+  std::array<std::uint32_t, 12> sizes{};
   for (auto& s : sizes) s = head.u32();
-  std::size_t at = 20 + 4 * 10;
+  std::size_t at = 20 + 4 * 11;
   std::vector<Reader> parts;
   for (const std::uint32_t s : sizes) {
     ASSERT_LE(at + s, bytes.size());
@@ -137,7 +153,8 @@ void expect_replay(const std::string& bytes, const std::vector<Expected>& frames
   }
   EXPECT_TRUE(table.done());
   Reader &live_r = parts[1], &poses_r = parts[2], &boxes_r = parts[3], &cand_r = parts[4], &over_r = parts[5],
-         &near_r = parts[6], &touch_r = parts[7], &hit_r = parts[8], &sense_r = parts[9], &stats_r = parts[10];
+         &near_r = parts[6], &touch_r = parts[7], &hit_r = parts[8], &sense_r = parts[9], &stats_r = parts[10],
+         &movers_r = parts[11];
   std::set<std::uint32_t> live;
   std::set<std::pair<std::uint32_t, std::uint32_t>> candidates, overlapping, sensing;
   std::vector<std::array<std::uint32_t, 7>> last(entry_count, std::array<std::uint32_t, 7>{}), before_last = last;
@@ -209,6 +226,20 @@ void expect_replay(const std::string& bytes, const std::vector<Expected>& frames
     for (auto& c : counts) c = stats_r.u32();
     EXPECT_EQ(counts, x.counts);
     stats_r.skip(8);
+    // Movers: the kind's registry number is the Shape's alternative index (shapes/kinds.h).
+    std::vector<std::vector<float>> movers(movers_r.u32());
+    for (std::vector<float>& m : movers) {
+      const std::uint32_t kind = movers_r.u32();
+      m.push_back(static_cast<float>(kind));
+      movers_r.skip(8);
+      if (kind == 4) movers_r.skip(8 * movers_r.u32());
+      for (int k = 0; k < 3; ++k) m.push_back(movers_r.f32());
+      m.push_back(static_cast<float>(movers_r.u32()));
+      for (int k = 0; k < 2; ++k) m.push_back(movers_r.f32());
+      const std::uint32_t planes = movers_r.u32();
+      for (std::uint32_t k = 0; k < 5 * planes; ++k) m.push_back(movers_r.f32());
+    }
+    EXPECT_EQ(movers, x.movers);
   }
   for (const Reader& r : parts) EXPECT_TRUE(r.done());
 }
@@ -227,6 +258,9 @@ TEST(Recorder, WritesWhatTheWorldHeldFrameByFrame) {
   world.add_chain(std::vector<Vec2>{{6, -2}, {6, 4}, {-6, 4}, {-6, -2}}, false);
   const BodyId bullet = world.add(Circle{{-5, 3}, 0.05});
   world.set_continuous(bullet);
+  // Two characters falling onto the floor and walking: a capsule and a polygon.
+  std::vector<MoverRecord> movers{{Capsule{{-2, 0}, 0.3, 0.2, 1.5}}, {ConvexPolygon::regular(6, 0.4).at({2, 0}, 0.1)}};
+  std::vector<Vec2> velocity(movers.size(), Vec2::Zero());
   Recorder recorder;
   std::vector<Expected> frames;
   for (int f = 0; f < 40; ++f) {
@@ -239,10 +273,22 @@ TEST(Recorder, WritesWhatTheWorldHeldFrameByFrame) {
     if (f == 15) moving[1] = world.add(Circle{{1, 1}, 0.3});
     if (f == 20) world.set_filter(moving[2], Filter{.category = 2, .mask = 2});
     world.update();
-    recorder.record(world);
+    for (std::size_t k = 0; k < movers.size(); ++k) {
+      MoverRecord& m = movers[k];
+      velocity[k] += Vec2(k == 0 ? 0.5 : -0.5, -1.0);
+      const MoveResult r = move(world, m.shape, velocity[k], 0.1, {}, m.ground);
+      m.shape = moved_to(m.shape, r.position);
+      m.ground = r.ground;
+      m.planes = world.collide_mover(m.shape);
+      velocity[k] = r.velocity;
+    }
+    recorder.record(world, movers);
     frames.push_back(expected_of(world));
+    for (const MoverRecord& m : movers) frames.back().movers.push_back(mover_floats(m));
   }
   EXPECT_EQ(recorder.frames(), 40u);
+  const auto landed = [](const Expected& e) { return e.movers[0][4] == 1.0f && e.movers[1][4] == 1.0f; };
+  EXPECT_TRUE(landed(frames.back()));  // the movers reached the floor and stand on it
   const auto total = [&](auto member) {
     std::size_t n = 0;
     for (const Expected& e : frames) n += (e.*member).size();
@@ -262,7 +308,7 @@ TEST(Recorder, WritesNoFramesAsAHeaderAlone) {
   std::ostringstream out;
   recorder.write(out);
   expect_replay(out.str(), {});
-  EXPECT_EQ(out.str().size(), 60u);
+  EXPECT_EQ(out.str().size(), 64u);
 }
 
 }  // namespace

@@ -33,8 +33,16 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
        .shapes = {Segment::between(Vec2(-2, 0), Vec2(0.5, 0.25)), Segment::between(Vec2(0.5, 0.25), Vec2(3, 0))},
        .id = 1001,
        .is_static = true});
+  scene.movers.push_back({.shape = Capsule{Vec2(20, 5), 0.25, 0.25, 1.5},
+                          .walk = {{0, 3.0}, {120, -2.5}},
+                          .jumps = {30, 90},
+                          .gravity = 15.0,
+                          .options = {.query = {.skin = 0.02}, .step_height = 0.25, .snap_distance = 0.5}});
+  scene.movers.push_back({.shape = ConvexPolygon::regular(6, 0.5).at(Vec2(25, 5), 0.1)});
   const Scene back = parse_scene(write_scene(scene));
   EXPECT_TRUE(back == scene);
+  ASSERT_EQ(back.movers.size(), 2u);
+  EXPECT_EQ(back.movers[0].jumps, (std::vector<int>{30, 90}));
   EXPECT_EQ(back.bodies.size(), 60u + level(60) + 3u);  // and the ship, the lamp and the ledge
   EXPECT_FALSE(back.bodies[60].chain.empty()) << "the level's cave, a chain loop";
   EXPECT_TRUE(back.bodies[60].loop);
@@ -121,6 +129,10 @@ std::size_t occurrences(const std::string& text, const std::string& needle) {
 
 std::string with_body(const std::string& body) {
   return R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [)" + body + "]}";
+}
+
+std::string with_mover(const std::string& mover) {
+  return R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [], "movers": [)" + mover + "]}";
 }
 
 TEST(Scene, BrokenFilesNameTheField) {
@@ -234,6 +246,26 @@ TEST(Scene, BrokenFilesNameTheField) {
       {with_body(R"({"center": [1, 1], "shapes": [{"shape": "rect", "center": [0, 0], "half_extents": [1, -1]}]})"),
        "bodies[0].shapes[0].half_extents[1]: must be positive (got -1)"},
       {with_body(R"({"center": [1, 1], "shapes": [3]})"), "bodies[0].shapes[0]: expected an object"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "speed": 3})"),
+       "movers[0]: unknown field 'speed'"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "walk": [[10, 1], [5, 2]]})"),
+       "movers[0].walk[1][0]: expected a frame after 10 (the frames ascend), got 5"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "walk": [[0, "fast"]]})"),
+       "movers[0].walk[0][1]: expected a number"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "walk": [3]})"),
+       "movers[0].walk[0]: expected [frame, speed], got 3"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "jumps": [-1]})"),
+       "movers[0].jumps[0]: expected a frame after -1"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "skin": -0.1})"),
+       "movers[0].skin: must not be negative (got -0.1)"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "max_slope": 2})"),
+       "movers[0].max_slope: expected an angle from 0 to pi/2 radians, got 2"},
+      {with_mover(R"({"shape": "segment", "points": [[0, 0], [1, 0]]})"),
+       "movers[0].shape: a segment is level geometry, not a mover"},
+      {with_mover(R"({"shape": "circle", "center": [1, 1], "radius": 0.5, "gravity": 1e300})"),
+       "movers[0]: its walk, jumps and fall over the run could carry it beyond the supported range of +-1e50"},
+      {R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 3, "bodies": [], "movers": 3})",
+       "movers: expected an array, got 3"},
   };
   for (const auto& [text, expected] : cases) {
     try {
@@ -243,6 +275,28 @@ TEST(Scene, BrokenFilesNameTheField) {
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what() << "\n  for " << text;
     }
   }
+}
+
+// A circle standing on a floor walks at 3 per second and jumps at frame 60: it keeps the commanded
+// pace, rises the jump's height (6 per second against 20 per second squared: 0.9), lands, and ends
+// on the floor the skin above it; the summary counts it.
+TEST(SceneRun, MoversWalkAndJumpAsScripted) {
+  const Scene scene = parse_scene(R"({"arena": {"min": [0, -2], "max": [40, 10]}, "frames": 120,
+    "bodies": [{"shape": "rect", "center": [20, -1], "half_extents": [20, 1], "static": true}],
+    "movers": [{"shape": "circle", "center": [2, 0.51], "radius": 0.5, "walk": [[0, 3]], "jumps": [60]}]})");
+  SceneRun run(scene, 1);
+  double highest = 0.0;
+  for (int f = 0; f < scene.frames; ++f) {
+    run.frame();
+    highest = std::max(highest, center_of(run.movers()[0].shape).y());
+  }
+  const MoverRecord& m = run.movers()[0];
+  EXPECT_NEAR(center_of(m.shape).x(), 2 + 3.0 * scene.frames * scene.dt, 1e-9);
+  EXPECT_NEAR(highest - 0.51, 0.9, 0.06);  // a frame's step of the rise
+  EXPECT_TRUE(m.ground.on_ground);
+  ASSERT_EQ(m.planes.size(), 1u);
+  EXPECT_NEAR(m.planes[0].separation, 0.01, 1e-9);
+  EXPECT_EQ(scene_totals(scene).movers, 1u);
 }
 
 // A scene changed in code after parsing is checked again before its first frame.

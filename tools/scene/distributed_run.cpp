@@ -47,6 +47,8 @@ std::vector<RunSummary::Sensor> gathered_sensors(const Scene& scene, Distributed
 
 RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::ostream* progress) {
   check_motion(scene);
+  // A mover reads the whole World each move; the ranks hold a slab each.
+  if (!scene.movers.empty()) throw SceneError("movers: a scene with movers runs in one process, not under mpirun");
   for (const SceneBody& b : scene.bodies) {
     if (b.chain.empty() && b.shapes.size() != 1) {
       throw SceneError("body " + std::to_string(b.id) + " has " + std::to_string(b.shapes.size()) +

@@ -71,6 +71,8 @@ constexpr std::initializer_list<const char*> kCompoundFields = {
     "shapes",     "center",   "angle", "velocity", "angular_velocity", "id",
     "continuous", "category", "mask",  "group",    "static",           "sensor"};
 constexpr std::initializer_list<const char*> kPartFields = {"shape", "center"};
+constexpr std::initializer_list<const char*> kMoverFields = {
+    "shape", "center", "walk", "jumps", "gravity", "jump_speed", "skin", "max_slope", "step_height", "snap_distance"};
 
 // Each kind's own fields (its entry in shapes/kinds.h), and a chain body's.
 struct ShapeFields {
@@ -304,6 +306,61 @@ SceneBody parse_body(const json& b, std::size_t index) {
   return body;
 }
 
+std::string mover_field(std::size_t index) { return "movers[" + std::to_string(index) + "]"; }
+
+void require_not_negative(double x, const std::string& field) {
+  if (!(x >= 0)) fail(field, "must not be negative (got " + json(x).dump() + ")");
+}
+
+// A frame number of a mover's script, after `after`.
+int script_frame(const json& value, const std::string& field, long long after) {
+  if (!value.is_number_integer() || value.get<long long>() <= after || value.get<long long>() > 100000000)
+    fail(field, "expected a frame after " + std::to_string(after) + " (the frames ascend), got " + value.dump());
+  return static_cast<int>(value.get<long long>());
+}
+
+// The script's frames as they come; the list itself may be absent.
+const json& script_list(const json& m, const char* key, const std::string& field) {
+  static const json none = json::array();
+  const auto it = m.find(key);
+  if (it == m.end()) return none;
+  if (!it->is_array()) fail(child(field, key), "expected an array, got " + it->dump());
+  return *it;
+}
+
+SceneMover parse_mover(const json& m, std::size_t index) {
+  const std::string field = mover_field(index);
+  SceneMover mover{valid_shape(parse_shape(m, field, kMoverFields), field)};
+  if (detail::is_level_geometry(mover.shape)) fail(field + ".shape", "a segment is level geometry, not a mover");
+  const json& walk = script_list(m, "walk", field);
+  for (std::size_t k = 0; k < walk.size(); ++k) {
+    const std::string entry = field + ".walk[" + std::to_string(k) + "]";
+    if (!walk[k].is_array() || walk[k].size() != 2) fail(entry, "expected [frame, speed], got " + walk[k].dump());
+    const long long after = mover.walk.empty() ? -1 : mover.walk.back().first;
+    mover.walk.emplace_back(script_frame(walk[k][0], entry + "[0]", after), number(walk[k][1], entry + "[1]"));
+  }
+  const json& jumps = script_list(m, "jumps", field);
+  for (std::size_t k = 0; k < jumps.size(); ++k)
+    mover.jumps.push_back(script_frame(jumps[k], field + ".jumps[" + std::to_string(k) + "]",
+                                       mover.jumps.empty() ? -1 : mover.jumps.back()));
+  mover.gravity = optional_number(m, "gravity", field, mover.gravity);
+  mover.jump_speed = optional_number(m, "jump_speed", field, mover.jump_speed);
+  MoverOptions& o = mover.options;
+  o.query.skin = optional_number(m, "skin", field, o.query.skin);
+  o.max_slope = optional_number(m, "max_slope", field, o.max_slope);
+  o.step_height = optional_number(m, "step_height", field, o.step_height);
+  o.snap_distance = optional_number(m, "snap_distance", field, o.snap_distance);
+  for (const auto& [key, x] : {std::pair{"gravity", mover.gravity},
+                               {"jump_speed", mover.jump_speed},
+                               {"skin", o.query.skin},
+                               {"step_height", o.step_height},
+                               {"snap_distance", o.snap_distance}})
+    require_not_negative(x, field + "." + key);
+  if (!(o.max_slope >= 0 && o.max_slope <= std::numbers::pi / 2))
+    fail(field + ".max_slope", "expected an angle from 0 to pi/2 radians, got " + json(o.max_slope).dump());
+  return mover;
+}
+
 json shape_json(const Shape& s) {
   return std::visit(
       [](const auto& x) -> json {
@@ -412,10 +469,18 @@ bool SceneBody::operator==(const SceneBody& o) const {
          filter == o.filter && is_static == o.is_static && sensor == o.sensor && chain == o.chain && loop == o.loop;
 }
 
+bool SceneMover::operator==(const SceneMover& o) const {
+  const MoverOptions& a = options;
+  const MoverOptions& b = o.options;
+  return same_shape(shape, o.shape) && walk == o.walk && jumps == o.jumps && gravity == o.gravity &&
+         jump_speed == o.jump_speed && a.query.skin == b.query.skin && a.max_slope == b.max_slope &&
+         a.step_height == b.step_height && a.snap_distance == b.snap_distance;
+}
+
 bool Scene::operator==(const Scene& o) const {
   return arena.min == o.arena.min && arena.max == o.arena.max && frames == o.frames && dt == o.dt &&
          fat_margin == o.fat_margin && proximity_margin == o.proximity_margin && contacts == o.contacts &&
-         bodies == o.bodies;
+         bodies == o.bodies && movers == o.movers;
 }
 
 Scene parse_scene(std::string_view text) {
@@ -426,7 +491,8 @@ Scene parse_scene(std::string_view text) {
     throw SceneError(std::string("scene is not valid JSON: ") + e.what());
   }
   if (!root.is_object()) fail("scene", "expected a JSON object");
-  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "contacts", "bodies"}, "scene");
+  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "contacts", "bodies", "movers"},
+                      "scene");
   Scene scene;
   const json& arena = member(root, "arena", "");
   if (!arena.is_object()) fail("arena", "expected an object with min and max");
@@ -460,6 +526,8 @@ Scene parse_scene(std::string_view text) {
                               " (a body's id defaults to its index)");
     }
   }
+  const json& movers = script_list(root, "movers", "");
+  for (std::size_t k = 0; k < movers.size(); ++k) scene.movers.push_back(parse_mover(movers[k], k));
   check_motion(scene);
   return scene;
 }
@@ -487,7 +555,39 @@ void check_motion(const Scene& scene) {
       fail(body_field(k) + ".angular_velocity", "turns the body to an angle beyond the finite numbers over the run");
     }
   }
+  // A mover goes no farther than its fastest walk, its jumps and its fall over the run take it.
+  const double time = static_cast<double>(scene.frames) * scene.dt;
+  for (std::size_t k = 0; k < scene.movers.size(); ++k) {
+    const SceneMover& m = scene.movers[k];
+    double walk = 0.0;
+    for (const auto& [frame, speed] : m.walk) walk = std::max(walk, std::abs(speed));
+    const double far =
+        center_of(m.shape).cwiseAbs().maxCoeff() + time * (walk + m.jump_speed) + 0.5 * m.gravity * time * time;
+    if (!(far <= kMaxMagnitude))
+      fail(mover_field(k), "its walk, jumps and fall over the run could carry it beyond the supported range of +-1e50");
+  }
 }
+
+namespace {
+
+json movers_json(const std::vector<SceneMover>& movers) {
+  json out = json::array();
+  for (const SceneMover& m : movers) {
+    json j = shape_json(m.shape);
+    j["walk"] = m.walk;
+    j["jumps"] = m.jumps;
+    j["gravity"] = m.gravity;
+    j["jump_speed"] = m.jump_speed;
+    j["skin"] = m.options.query.skin;
+    j["max_slope"] = m.options.max_slope;
+    j["step_height"] = m.options.step_height;
+    j["snap_distance"] = m.options.snap_distance;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string write_scene(const Scene& scene) {
   json bodies = json::array();
@@ -519,7 +619,7 @@ std::string write_scene(const Scene& scene) {
     if (b.filter.group != pairs_with_all.group) j["group"] = b.filter.group;
     bodies.push_back(std::move(j));
   }
-  const json root{
+  json root{
       {"arena",
        {{"min", {scene.arena.min.x(), scene.arena.min.y()}}, {"max", {scene.arena.max.x(), scene.arena.max.y()}}}},
       {"frames", scene.frames},
@@ -528,6 +628,7 @@ std::string write_scene(const Scene& scene) {
       {"proximity_margin", scene.proximity_margin},
       {"contacts", scene.contacts},
       {"bodies", bodies}};
+  if (!scene.movers.empty()) root["movers"] = movers_json(scene.movers);
   return root.dump(1);
 }
 

@@ -7,12 +7,14 @@
 // of several shapes gives its pose ("center", "angle") and "shapes", each placed in its frame.
 // Moving bodies move in straight lines and bounce off the arena walls (the velocity component
 // towards a wall flips when the body's box crosses it); there is no physics: they pass through
-// static bodies, which only report the overlaps.
+// static bodies, which only report the overlaps. "movers" (optional) are characters moved by
+// move() after each update, by a script of walking speeds and jumps (SceneMover).
 //
 // Errors: parse_scene throws SceneError naming the field, e.g. `bodies[3].radius: must be positive
 // (got -1)`, `frames: missing`, `bodies[0]: a circle has no field 'a' (its own are radius)`.
 #pragma once
 
+#include <collide2d/mover.h>
 #include <collide2d/shapes.h>
 #include <collide2d/world.h>
 
@@ -20,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace collide2d::tool {
@@ -46,6 +49,20 @@ struct SceneBody {
   bool operator==(const SceneBody&) const;
 };
 
+// A character the run moves with move() (mover.h) every frame, after the update: it walks at the
+// script's speed (from each (frame, speed) entry's frame on; none before the first), falls under
+// gravity, and jumps at the script's frames where it stands on the ground. The World does not hold
+// it: the bodies do not meet it, nor it the other movers.
+struct SceneMover {
+  Shape shape;  // where it starts
+  std::vector<std::pair<int, double>> walk{};
+  std::vector<int> jumps{};
+  double gravity = 20.0;
+  double jump_speed = 6.0;
+  MoverOptions options{};  // its skin, max_slope, step_height and snap_distance
+  bool operator==(const SceneMover&) const;
+};
+
 struct Scene {
   Aabb arena{Vec2(0, 0), Vec2(100, 100)};
   int frames = 1;
@@ -54,6 +71,7 @@ struct Scene {
   double proximity_margin = 0.0;
   bool contacts = false;  // a contact for every overlapping pair (WorldOptions::contacts)
   std::vector<SceneBody> bodies;
+  std::vector<SceneMover> movers;
   bool operator==(const Scene&) const;
 };
 

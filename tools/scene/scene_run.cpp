@@ -66,6 +66,8 @@ SceneRun::SceneRun(Scene scene, unsigned threads)
     ids_.push_back(world_.add(b.pose, shapes, def));
     if (b.continuous) world_.set_continuous(ids_.back());
   }
+  for (const SceneMover& m : scene_.movers) movers_.push_back({.shape = m.shape, .ground = {}, .planes = {}});
+  mover_velocity_.assign(movers_.size(), Vec2::Zero());
 }
 
 RunSummary scene_totals(const Scene& scene) {
@@ -79,6 +81,7 @@ RunSummary scene_totals(const Scene& scene) {
   s.continuous = count(&SceneBody::continuous);
   s.statics = count(&SceneBody::is_static);
   s.sensors = count(&SceneBody::sensor);
+  s.movers = scene.movers.size();
   return s;
 }
 
@@ -89,6 +92,7 @@ void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> nar
   s.overlapping_per_frame /= n;
   s.proximity_per_frame /= n;
   s.sensing_per_frame /= n;
+  s.movers_on_ground /= n * static_cast<double>(std::max<std::size_t>(1, s.movers));
   s.broad = phase_times(std::move(broad_ms));
   s.narrow = phase_times(std::move(narrow_ms));
 }
@@ -100,6 +104,31 @@ void SceneRun::frame() {
     if (!b.is_static) world_.move_to(ids_[k], b.pose.position, b.pose.angle);
   }
   world_.update();
+  move_movers();
+  ++frame_;
+}
+
+// The script's walk and jump for this frame, gravity, then move(); the planes the replay shows are
+// those of the surfaces within twice the skin of where it ends.
+void SceneRun::move_movers() {
+  for (std::size_t k = 0; k < movers_.size(); ++k) {
+    const SceneMover& script = scene_.movers[k];
+    MoverRecord& m = movers_[k];
+    Vec2& v = mover_velocity_[k];
+    const auto walking =
+        std::find_if(script.walk.rbegin(), script.walk.rend(), [this](const auto& w) { return w.first <= frame_; });
+    v.x() = walking == script.walk.rend() ? 0.0 : walking->second;
+    v.y() -= script.gravity * scene_.dt;
+    if (m.ground.on_ground && std::binary_search(script.jumps.begin(), script.jumps.end(), frame_))
+      v.y() = script.jump_speed;
+    const MoveResult r = move(world_, m.shape, v, scene_.dt, script.options, m.ground);
+    m.shape = moved_to(m.shape, r.position);
+    m.ground = r.ground;
+    MoverQuery near = script.options.query;
+    near.skin *= 2;  // a surface it rests on is the skin away, give or take rounding
+    m.planes = world_.collide_mover(m.shape, near);
+    v = r.velocity;
+  }
 }
 
 RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
@@ -109,7 +138,8 @@ RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
   const int every = std::max(1, scene_.frames / 50);
   for (int frame = 0; frame < scene_.frames; ++frame) {
     this->frame();
-    if (recorder) recorder->record(world_);
+    if (recorder) recorder->record(world_, movers_);
+    for (const MoverRecord& m : movers_) s.movers_on_ground += m.ground.on_ground;
     const FrameStats& f = world_.last_frame();
     broad.push_back(1e3 * f.broad_seconds);
     narrow.push_back(1e3 * f.narrow_seconds);
@@ -163,9 +193,12 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "static bodies               " << s.statics << " (level geometry; sensors included)\n"
       << "sensors                     " << s.sensors << ", " << s.sensing_per_frame << " bodies inside them per frame, "
       << s.sensor_began << " entries and " << s.sensor_ended << " exits over the run\n"
-      << "threads                     " << s.threads << (s.ranks > 1 ? " on each rank\n" : "\n")
-      << "broad phase per frame       " << s.broad << '\n'
-      << "narrow phase per frame      " << s.narrow << '\n';
+      << "threads                     " << s.threads << (s.ranks > 1 ? " on each rank\n" : "\n");
+  if (s.movers > 0) {
+    out << "movers                      " << s.movers << ", on the ground " << 100 * s.movers_on_ground
+        << "% of their frames\n";
+  }
+  out << "broad phase per frame       " << s.broad << '\n' << "narrow phase per frame      " << s.narrow << '\n';
   if (s.state_hash) {
     out << "state hash                  " << std::hex << std::setw(16) << std::setfill('0') << *s.state_hash << std::dec
         << std::setfill(' ') << " (World::state_hash() after the last frame)\n";

@@ -45,6 +45,8 @@ struct RunSummary {
     std::vector<std::uint64_t> visitors;  // scene ids, at the last frame
   };
   std::vector<Sensor> sensor_contents;
+  std::size_t movers = 0;         // the scene's character movers
+  double movers_on_ground = 0.0;  // the share of their moves that ended on the ground
   PhaseTimes broad;
   PhaseTimes narrow;
   std::optional<std::uint64_t> state_hash;  // World::state_hash() after the last frame (one process)
@@ -59,16 +61,24 @@ class SceneRun {
   // Runs every frame: kinematics, poses into the World, update. Draws a progress bar on `progress`
   // and records each frame into `recorder` when they are not null.
   RunSummary run(std::ostream* progress, Recorder* recorder = nullptr);
-  // One frame of it (bench_world times this).
+  // One frame of it (bench_world times this): the bodies' kinematics, poses into the World, update,
+  // then each mover's move().
   void frame();
 
   const World& world() const { return world_; }
   const Scene& scene() const { return scene_; }
+  // The movers where the last frame left them, as the replay records them.
+  const std::vector<MoverRecord>& movers() const { return movers_; }
 
  private:
+  void move_movers();
+
   Scene scene_;
   World world_;
   std::vector<BodyId> ids_;  // World id of each scene body
+  std::vector<MoverRecord> movers_;
+  std::vector<Vec2> mover_velocity_;
+  int frame_ = 0;  // the frames run
 };
 
 // The scene's counts (frames, bodies, continuous, static, sensors) with nothing run.
