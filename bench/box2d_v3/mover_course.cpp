@@ -3,19 +3,19 @@
 // its worst values the counters (the docs' table of checks). v3's game is its geometric mover
 // sample's: a ray down from the capsule's lower centre (the pogo) finds the ground, a spring holds
 // the capsule at its rest length over it (here 0.1 m over the capsule's bottom, kPogoClearance) and
-// no gravity pulls while it is on the ground; then at most 5 times
-// b2World_CollideMover, b2SolvePlanes and b2World_CastMover (past the other movers, whose planes are
-// soft: the push limit, no clip), stopping on a move under 0.01 m, and b2ClipVector. The suite's
+// no gravity pulls while it is on the ground; then the sample's loop (bench/box2d_v3/mover_loop.h;
+// its casts past the other movers, whose planes are soft: the push limit, no clip) and
+// b2ClipVector. The suite's
 // game adds the walk, the jump and the carry of the platform or lift the pogo stands on.
 #include "bench/mover_course.h"
 #include "bench/box2d_v3/bodies.h"
+#include "bench/box2d_v3/mover_loop.h"
 
 #include <box2d/box2d.h>
 #include <box2d/collision.h>
 
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <cfloat>
 #include <cmath>
 #include <numbers>
@@ -27,7 +27,6 @@ namespace {
 using namespace testing;
 using bench::report_verdict;
 
-constexpr int kPlaneCapacity = 8;                        // as the sample's
 constexpr float kPogoHertz = 5.0f, kPogoDamping = 0.8f;  // as the sample's
 // How far the pogo holds the capsule over the ground (the sample's 0.6 m): near standing on it,
 // yet clear of it after a landing; a capsule that ends within v3's linear slop of a floor sticks
@@ -79,18 +78,11 @@ class V3Movers {
         b2Add(b2Add(at, b2MulSV(static_cast<float>(kCourseDt), velocity)), b2Add(rise, box2d_v3::to_float(carry)));
     const b2QueryFilter filter = b2DefaultQueryFilter();
     const b2QueryFilter cast_filter{filter.categoryBits, filter.maskBits & ~kCourseSoft};
-    float fraction = 1.0f;
-    for (int iteration = 0; iteration < kCourseIterations; ++iteration) {
-      count_ = 0;
-      const b2Capsule mover = capsule_at(at);
-      b2World_CollideMover(world_, b2Pos{0.0f, 0.0f}, &mover, filter, keep_plane, this);
-      const b2PlaneSolverResult solved = b2SolvePlanes(b2Sub(target, at), planes_.data(), count_);
-      fraction = b2World_CastMover(world_, b2Pos{0.0f, 0.0f}, &mover, solved.delta, cast_filter);
-      const b2Vec2 delta = b2MulSV(fraction, solved.delta);
-      at = b2Add(at, delta);
-      if (b2LengthSquared(delta) < 0.01f * 0.01f) break;  // the sample's tolerance
-    }
-    const b2Vec2 v = b2ClipVector(velocity, planes_.data(), count_);
+    const auto half = static_cast<float>(capsule_.half_length), radius = static_cast<float>(capsule_.radius);
+    const float fraction = box2d_v3::mover_loop(world_, at, target, half, radius, filter, cast_filter, keep_plane, this,
+                                                planes_, kCourseIterations)
+                               .fraction;
+    const b2Vec2 v = b2ClipVector(velocity, planes_.planes.data(), planes_.count);
     s.shape = moved_to(s.shape, Vec2(at.x, at.y));
     s.velocity = Vec2(v.x, v.y);
     s.blocked = fraction < 1.0f;
@@ -116,18 +108,12 @@ class V3Movers {
     b2CreateChain(id, &def);
   }
 
-  // The mover's capsule, upright about its centre (the suite's capsule stands at a right angle).
-  b2Capsule capsule_at(const b2Vec2& c) const {
-    const auto half = static_cast<float>(capsule_.half_length);
-    return {{c.x, c.y - half}, {c.x, c.y + half}, static_cast<float>(capsule_.radius)};
-  }
-
   static bool keep_plane(b2ShapeId shape, const b2PlaneResult* result, void* context) {
     auto* m = static_cast<V3Movers*>(context);
     const b2BodyId body = b2Shape_GetBody(shape);
-    if (!result->hit || B2_ID_EQUALS(body, m->self_) || m->count_ == kPlaneCapacity) return true;
+    if (!result->hit || B2_ID_EQUALS(body, m->self_)) return true;
     const bool soft = b2Shape_GetFilter(shape).categoryBits == kCourseSoft;
-    m->planes_[m->count_++] = {result->plane, soft ? static_cast<float>(kCoursePushLimit) : FLT_MAX, 0.0f, !soft};
+    m->planes_.add({result->plane, soft ? static_cast<float>(kCoursePushLimit) : FLT_MAX, 0.0f, !soft});
     return true;
   }
 
@@ -182,10 +168,9 @@ class V3Movers {
   b2BodyId platform_, lift_, self_{};
   std::vector<b2BodyId> bodies_;
   std::vector<MoverState> states_;
-  std::array<b2CollisionPlane, kPlaneCapacity> planes_{};
+  box2d_v3::MoverPlanes planes_;
   std::vector<float> pogo_velocity_;
   Hit hit_;
-  int count_ = 0;
   int frame_ = 0;
 };
 

@@ -1,10 +1,10 @@
 // Box2D v3's character mover on the movers' benchmark level (bench/mover_level.h; linked into
 // bench_movers when a Box2D v3 source is given): the level's shapes as static bodies, and for each
-// of the 1,000 capsule movers a frame of its mover sample's loop, at most 5 times
-// b2World_CollideMover, b2SolvePlanes and b2World_CastMover, stopping on a move under 0.01 m, then
-// b2ClipVector; on the ground where a plane's normal lies within 45 degrees of up, as move()
+// of the 1,000 capsule movers a frame of its mover sample's loop (bench/box2d_v3/mover_loop.h),
+// then b2ClipVector; on the ground where a plane's normal lies within 45 degrees of up, as move()
 // decides with its default max_slope.
 #include "bench/box2d_v3/bodies.h"
+#include "bench/box2d_v3/mover_loop.h"
 #include "bench/mover_level.h"
 
 #include <box2d/box2d.h>
@@ -12,7 +12,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <cfloat>
 #include <vector>
 
@@ -21,17 +20,10 @@ namespace {
 
 using namespace bench;
 
-constexpr int kPlaneCapacity = 8;  // as the sample's
 constexpr float kRadius = 0.3f, kHalf = 0.3f;
 
-struct Planes {
-  std::array<b2CollisionPlane, kPlaneCapacity> planes;
-  int count = 0;
-};
-
 bool keep_plane(b2ShapeId, const b2PlaneResult* result, void* context) {
-  auto* p = static_cast<Planes*>(context);
-  if (result->hit && p->count < kPlaneCapacity) p->planes[p->count++] = {result->plane, FLT_MAX, 0.0f, true};
+  if (result->hit) static_cast<box2d_v3::MoverPlanes*>(context)->add({result->plane, FLT_MAX, 0.0f, true});
   return true;
 }
 
@@ -66,20 +58,10 @@ struct Crowd {
     const b2Vec2 wanted{static_cast<float>(v.x()), static_cast<float>(v.y())};
     const b2Vec2 target = b2MulAdd(position[k], static_cast<float>(kFrame), wanted);
     const b2QueryFilter filter = b2DefaultQueryFilter();
-    const float tolerance = 0.01f;
-    Planes p;
-    b2Vec2& at = position[k];
-    for (int iteration = 0; iteration < kIterations; ++iteration) {
-      ++iterations;
-      p.count = 0;
-      const b2Capsule mover{{at.x, at.y - kHalf}, {at.x, at.y + kHalf}, kRadius};
-      b2World_CollideMover(world, b2Pos{0.0, 0.0}, &mover, filter, keep_plane, &p);
-      const b2PlaneSolverResult solved = b2SolvePlanes(b2Sub(target, at), p.planes.data(), p.count);
-      const float fraction = b2World_CastMover(world, b2Pos{0.0, 0.0}, &mover, solved.delta, filter);
-      const b2Vec2 delta = b2MulSV(fraction, solved.delta);
-      at = b2Add(at, delta);
-      if (b2LengthSquared(delta) < tolerance * tolerance) break;
-    }
+    box2d_v3::MoverPlanes p;
+    iterations +=
+        box2d_v3::mover_loop(world, position[k], target, kHalf, kRadius, filter, filter, keep_plane, &p, p, kIterations)
+            .iterations;
     velocity[k] = b2ClipVector(wanted, p.planes.data(), p.count);
     bool ground = false;
     for (int i = 0; i < p.count; ++i) ground = ground || p.planes[i].plane.normal.y >= 0.70710678f;
