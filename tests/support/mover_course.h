@@ -183,10 +183,6 @@ inline double course_size(const Shape& mover) {
   return (b.max - b.min).maxCoeff();
 }
 
-inline bool boxes_meet(const Aabb& a, const Aabb& b) {
-  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() && b.min.y() <= a.max.y();
-}
-
 inline Aabb grown(Aabb b, double by) {
   b.min -= Vec2(by, by);
   b.max += Vec2(by, by);
@@ -301,7 +297,7 @@ class Referee {
       if (c.separation < 2 * kCourseSkin) touching.push_back({c.normal, moving});
     };
     for (std::size_t i = 0; i < solids_.size(); ++i)
-      if (boxes_meet(boxes_[i], box)) judge_one(solids_[i], false, i == Level::kFlatFloor);
+      if (intersects(boxes_[i], box)) judge_one(solids_[i], false, i == Level::kFlatFloor);
     judge_one(platform_, true, false);
     judge_one(lift_, true, false);
     for (const Touch& a : touching)

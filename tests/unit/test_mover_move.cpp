@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mover_course.h"
 #include "refusals.h"
 #include "tools/random.h"
 
@@ -27,14 +28,11 @@ using Rng = std::mt19937_64;
 
 constexpr double kDt = 1.0 / 60, kGravity = 20.0, kSkin = 0.01;
 
-// The movers of every kind, about a unit tall, centred at the origin.
+// The movers of every kind, about a unit tall, centred at the origin: the mover suite's.
 std::vector<Shape> movers() {
-  return {Capsule{Vec2::Zero(), 0.25, 0.25, std::numbers::pi / 2},
-          Circle{Vec2::Zero(), 0.5},
-          Ellipse{Vec2::Zero(), 0.3, 0.5, 0.0},
-          Rect{Vec2::Zero(), Vec2(0.3, 0.5), 0.0},
-          ConvexPolygon::regular(6, 0.5).at(Vec2::Zero(), 0.1),
-          ConvexPolygon::box(0.2, 0.4, 0.1).at(Vec2::Zero())};
+  std::vector<Shape> out;
+  for (const testing::CourseMover& m : testing::course_movers()) out.push_back(m.shape);
+  return out;
 }
 
 // The height of a shape's lowest point: its support point's along -up.
