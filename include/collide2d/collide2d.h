@@ -8,6 +8,7 @@
 #pragma once
 
 #include <collide2d/aabb_tree.h>
+#include <collide2d/area.h>
 #include <collide2d/batch.h>
 #include <collide2d/broad_phase.h>
 #include <collide2d/chain.h>

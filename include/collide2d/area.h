@@ -1,0 +1,46 @@
+/// @file
+/// Areas: the area of a solid shape, and the exact area, centroid and IoU of the overlap of two.
+///
+/// The overlap of two convex solids is convex; its boundary is made of the two shapes' edges and
+/// arcs (circular on circles, capsules and rounded polygons, elliptic on ellipses) between the
+/// points where their boundaries cross. Its area and centroid come from Green's theorem over that
+/// boundary, each arc by the area between it and its chord, so that no curve is approximated by a
+/// polygon. docs/overlap-area.md gives the method and the accuracy the tests assert.
+///
+/// Every function here validates its shapes and throws InvalidShape for NaN, infinity or a size out
+/// of range, and for a segment, which has no area.
+#pragma once
+
+#include <collide2d/shapes.h>
+
+#include <array>
+
+namespace collide2d {
+
+/// The area of the solid shape (a rounded polygon's and a capsule's rounding included).
+double area(const Shape& s);
+
+/// The overlap of two solids. Solids that share no open region (apart, or touching) overlap with
+/// area 0, centroid at A's centre and no crossings.
+struct OverlapArea {
+  double area = 0.0;
+  Vec2 centroid = Vec2::Zero();  ///< of the overlap, in the world frame
+  /// How many points the two boundaries cross at: 0 when the solids are apart or one holds the
+  /// other, 2 when they cross once in and once out, at most twice the pieces (edges and arcs) of the
+  /// shape with fewer (an ellipse and a rectangle cross 8 times at most).
+  int crossings = 0;
+  /// Where there are exactly two crossings, the chord between them (the DEM models' contact line):
+  /// A's boundary enters B at chord[0] and leaves it at chord[1].
+  std::array<Vec2, 2> chord{Vec2::Zero(), Vec2::Zero()};
+};
+
+/// The area and centroid of A ∩ B. Symmetric to the bit: overlap_area(b, a) gives the same area
+/// and centroid, and the chord reversed.
+OverlapArea overlap_area(const Shape& a, const Shape& b);
+
+/// Intersection over union, |A ∩ B| / |A ∪ B|, in [0, 1].
+double iou(const Shape& a, const Shape& b);
+/// Intersection over the first, |A ∩ B| / |A| (mmcv's "iof" mode), in [0, 1].
+double iof(const Shape& a, const Shape& b);
+
+}  // namespace collide2d

@@ -1,0 +1,38 @@
+// Private: the points where two convex boundaries cross, each with its place on both loops.
+#pragma once
+
+#include "narrowphase/area/boundary.h"
+
+#include <array>
+
+namespace collide2d::detail::areas {
+
+// A crossing's place on one loop: the piece, the position along it (the edge's parameter in
+// [0, 1), or turn_key() from the arc's start), and the unit vector there when the piece is an arc.
+struct Place {
+  int piece = 0;
+  double key = 0;
+  Vec2 u = Vec2::UnitX();
+};
+
+struct Crossing {
+  Vec2 p = Vec2::Zero();
+  Place a;
+  Place b;
+  // The sine of the angle from B's tangent to A's: positive where A's boundary enters B.
+  double entering = 0;
+};
+
+// Two convex curves cross at most 4 times per pair of conics; the pieces of two rounded octagons
+// cross at most 2 per edge pair, and in total as many times as the two loops have pieces.
+inline constexpr int kMaxCrossings = 2 * kMaxPieces;
+
+struct Crossings {
+  std::array<Crossing, kMaxCrossings> list{};
+  int count = 0;
+};
+
+// Each crossing once: an edge owns its start and not its end, an arc its u0 and not its u1.
+Crossings crossings_of(const Boundary& a, const Boundary& b);
+
+}  // namespace collide2d::detail::areas

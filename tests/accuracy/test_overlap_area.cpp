@@ -1,0 +1,271 @@
+// The overlap area and centroid of every pair of solid kinds against the 50-digit reference of
+// area_reference.h (crossings by a search on bounded slopes, Green's theorem by quadrature), on
+// generic, nested, disjoint, near-tangent, near-identical, far-off and extreme-scale families;
+// symmetry to the bit; and the answer zero exactly where the exact overlap test says the solids are
+// apart.
+#include "area_reference.h"
+#include "core_families.h"
+
+#include <collide2d/area.h>
+#include <collide2d/query.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace collide2d {
+namespace {
+
+using testing::Form;
+using testing::random_shape;
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr Form kSolids[] = {Form::rect, Form::polygon, Form::rounded, Form::capsule, Form::circle, Form::ellipse};
+
+// The scale of a pair: the larger of the two shapes' bounding-box areas, and its side.
+struct Scale {
+  double area = 0;
+  double size = 0;
+};
+Scale scale_of(const Shape& a, const Shape& b) {
+  Scale s;
+  for (const Shape* x : {&a, &b}) {
+    const Aabb box = aabb(*x);
+    const Vec2 side = box.max - box.min;
+    s.area = std::max(s.area, side.x() * side.y());
+    s.size = std::max(s.size, side.maxCoeff());
+  }
+  return s;
+}
+
+// The error of the area in units of eps times the scale's area, and of the first moment (area
+// times centroid) in units of eps times the scale's area and its size or, far from the origin, the
+// magnitude of the coordinates that the centroid is rounded to.
+struct Errors {
+  double area = 0;
+  double moment = 0;
+};
+Errors errors_of(const Shape& a, const Shape& b) {
+  const OverlapArea got = overlap_area(a, b);
+  const reference::AreaReference want = reference::overlap_area(a, b);
+  const Scale s = scale_of(a, b);
+  Errors e;
+  e.area = std::abs(static_cast<double>(want.area - got.area)) / (kEps * s.area);
+  if (want.area > 0 && got.area > 0) {
+    const Vec2 c = center_of(a);  // moments about A's centre, where both are exact to their rounding
+    const double mx =
+        static_cast<double>(want.area * (want.centroid.x - c.x())) - got.area * (got.centroid.x() - c.x());
+    const double my =
+        static_cast<double>(want.area * (want.centroid.y - c.y())) - got.area * (got.centroid.y() - c.y());
+    e.moment = std::hypot(mx, my) / (kEps * s.area * std::max(s.size, got.centroid.cwiseAbs().maxCoeff()));
+  }
+  return e;
+}
+
+// The bound every family meets, in the units of Errors.
+constexpr double kBound = 2;
+
+// The errors of the pair, expected within the bound.
+Errors expect_close(const Shape& a, const Shape& b, const std::string& what) {
+  const Errors e = errors_of(a, b);
+  EXPECT_LE(e.area, kBound) << what;
+  EXPECT_LE(e.moment, kBound) << what;
+  return e;
+}
+
+void keep_worst(Errors& worst, const Errors& e) {
+  worst.area = std::max(worst.area, e.area);
+  worst.moment = std::max(worst.moment, e.moment);
+}
+
+std::string pair_name(Form a, Form b) { return std::string(testing::name_of(a)) + "-" + testing::name_of(b); }
+
+TEST(OverlapArea, GenericPairsOfEveryKind) {
+  std::mt19937_64 rng(56);
+  std::uniform_real_distribution<double> offset(-1.2, 1.2);
+  for (const Form fa : kSolids) {
+    for (const Form fb : kSolids) {
+      Errors worst;
+      for (int k = 0; k < 12; ++k) {
+        const Shape a = random_shape(fa, 1.0, 4.0, rng);
+        const Shape b = moved_to(random_shape(fb, 1.0, 4.0, rng), Vec2(offset(rng), offset(rng)));
+        keep_worst(worst, expect_close(a, b, pair_name(fa, fb)));
+      }
+      std::printf("%-18s area %5.2f eps  moment %5.2f eps\n", pair_name(fa, fb).c_str(), worst.area, worst.moment);
+    }
+  }
+}
+
+bool solid(Form f) { return f != Form::segment; }
+
+// The near-tangent, deep, sliver, far-off, small, large, face and parallel families of the core
+// tests (core_families.h), each overlapping case against the reference.
+TEST(OverlapArea, CoreFamilies) {
+  for (const testing::CoreFamily& f : testing::core_families()) {
+    if (!solid(f.a) || !solid(f.b)) continue;
+    Errors worst;
+    for (const testing::CoreCase& c : testing::cases_of(f)) {
+      if (c.delta >= 0) continue;
+      keep_worst(worst, expect_close(c.a, c.b, f.name + " depth " + std::to_string(-c.delta)));
+    }
+    std::printf("%-30s area %5.2f eps  moment %5.2f eps\n", f.name.c_str(), worst.area, worst.moment);
+  }
+}
+
+// Zero exactly where the exact overlap test (query.h) finds the solids apart, and more than zero
+// where it finds them overlapping, on every pair whose gap or depth (contact()'s separation: a
+// family's nominal one is a needle's only to the rounding of its support point) is at least 1e-9 of
+// the size.
+TEST(OverlapArea, ZeroExactlyWhereApart) {
+  int checked = 0;
+  for (const testing::CoreFamily& f : testing::core_families()) {
+    if (!solid(f.a) || !solid(f.b)) continue;
+    for (const testing::CoreCase& c : testing::cases_of(f)) {
+      if (std::abs(contact(c.a, c.b).separation) < 1e-9 * f.size) continue;
+      EXPECT_EQ(overlap_area(c.a, c.b).area > 0, overlaps(c.a, c.b)) << f.name << " gap " << c.delta;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+// The same shape nudged by 1e-3 ... 1e-13 of its size along a random direction (IoU near 1).
+TEST(OverlapArea, NearIdenticalShapes) {
+  std::mt19937_64 rng(57);
+  std::uniform_real_distribution<double> turn(0, 2 * std::numbers::pi);
+  for (const Form f : kSolids) {
+    Errors worst;
+    for (const double nudge : {1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-13}) {
+      const Shape a = random_shape(f, 1.0, 4.0, rng);
+      const double t = turn(rng);
+      const Shape b = moved_to(a, center_of(a) + nudge * Vec2(std::cos(t), std::sin(t)));
+      keep_worst(worst, expect_close(a, b, std::string(testing::name_of(f)) + " nudged by " + std::to_string(nudge)));
+    }
+    std::printf("%-18s area %5.2f eps  moment %5.2f eps\n", testing::name_of(f), worst.area, worst.moment);
+  }
+}
+
+// Rectangles at equal angles, a right angle apart and sharing an edge: against the reference, and
+// where the construction gives the answer exactly (axis-aligned, dyadic), against that.
+TEST(OverlapArea, RotatedBoxes) {
+  std::mt19937_64 rng(58);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < 24; ++k) {
+    const double angle = 2 * std::numbers::pi * unit(rng);
+    const Rect a{Vec2(unit(rng), unit(rng)), Vec2(0.5 + unit(rng), 0.5 + unit(rng)), angle};
+    const Vec2 shift(unit(rng) - 0.5, unit(rng) - 0.5);
+    const double turns[] = {0.0, std::numbers::pi / 2, std::numbers::pi, -std::numbers::pi / 2};
+    const Rect b{a.center + shift, Vec2(0.5 + unit(rng), 0.5 + unit(rng)), angle + turns[k % 4]};
+    expect_close(a, b, "boxes " + std::to_string(k));
+  }
+  // Axis-aligned dyadic boxes: the overlap is the box of the larger lows and the smaller highs.
+  for (int k = 0; k < 200; ++k) {
+    const auto dyadic = [&] { return std::ldexp(std::floor(unit(rng) * 64), -5) - 1; };
+    const Vec2 c1(dyadic(), dyadic()), c2(dyadic(), dyadic()), h1(0.25 + dyadic() / 4 + 0.25, 0.5),
+        h2(0.75, 0.25 + dyadic() / 4 + 0.25);
+    const Vec2 lo = (c1 - h1).cwiseMax(c2 - h2), hi = (c1 + h1).cwiseMin(c2 + h2), side = (hi - lo).cwiseMax(0.0);
+    const OverlapArea got = overlap_area(Rect{c1, h1, 0}, Rect{c2, h2, 0});
+    EXPECT_NEAR(got.area, side.x() * side.y(), 2 * kEps) << k;
+    if (got.area > 0) EXPECT_LE((got.centroid - (lo + hi) / 2).norm() * got.area, 2 * kEps) << k;
+  }
+}
+
+// The shape grown by k about its centre (a polygon's about the origin of its outline, inside it).
+Shape scaled(const Shape& s, double k) {
+  return std::visit(
+      [k](auto x) -> Shape {
+        using T = decltype(x);
+        if constexpr (std::is_same_v<T, Circle>) x.radius *= k;
+        if constexpr (std::is_same_v<T, Ellipse>) x.a *= k, x.b *= k;
+        if constexpr (std::is_same_v<T, Rect>) x.half_extents *= k;
+        if constexpr (std::is_same_v<T, Capsule>) x.half_length *= k, x.radius *= k;
+        if constexpr (std::is_same_v<T, ConvexPolygon>) {
+          std::vector<Vec2> v(x.vertices().begin(), x.vertices().end());
+          for (Vec2& p : v) p *= k;
+          return ConvexPolygon::of(v, x.radius() * k).at(x.center, x.angle);
+        }
+        return x;
+      },
+      s);
+}
+
+// The area of each kind against the reference's quadrature over its boundary.
+TEST(OverlapArea, AreaOfEachKind) {
+  std::mt19937_64 rng(61);
+  for (const Form f : kSolids) {
+    for (int k = 0; k < 4; ++k) {
+      const Shape s = random_shape(f, 1.0, 4.0, rng);
+      const double want = static_cast<double>(reference::area(s));
+      EXPECT_NEAR(area(s), want, 2 * kEps * want) << testing::name_of(f);
+    }
+  }
+}
+
+// B inside A: the overlap is B. B grown about a point inside A: the overlap never shrinks (to the
+// rounding of the scale) and never exceeds either shape.
+TEST(OverlapArea, NestedAndMonotone) {
+  std::mt19937_64 rng(59);
+  for (const Form fa : kSolids) {
+    for (const Form fb : kSolids) {
+      const Shape a = random_shape(fa, 1.0, 2.0, rng);
+      const Shape b = moved_to(random_shape(fb, 1.0, 2.0, rng), center_of(a));
+      const OverlapArea inner = overlap_area(a, scaled(b, 1e-3));
+      EXPECT_NEAR(inner.area, area(scaled(b, 1e-3)), 2 * kEps * inner.area) << pair_name(fa, fb);
+      EXPECT_EQ(inner.crossings, 0);
+      const Shape off = moved_to(b, center_of(a) + Vec2(0.2, -0.1));
+      double last = 0;
+      for (double k = 0.05; k < 4; k *= 1.1) {
+        const Shape grown = scaled(off, k);
+        const double now = overlap_area(a, grown).area;
+        EXPECT_GE(now, last - 4 * kEps * scale_of(a, grown).area) << pair_name(fa, fb) << " grown by " << k;
+        EXPECT_LE(now, std::min(area(a), area(grown)) + 4 * kEps * scale_of(a, grown).area)
+            << pair_name(fa, fb) << " grown by " << k;
+        last = now;
+      }
+    }
+  }
+}
+
+// Bad input: a clear error naming the problem.
+TEST(OverlapArea, RefusesBadShapes) {
+  EXPECT_THROW(overlap_area(Circle{{0, 0}, std::nan("")}, Circle{}), InvalidShape);
+  EXPECT_THROW(overlap_area(Circle{}, Ellipse{{0, 0}, -1, 1, 0}), InvalidShape);
+  EXPECT_THROW(iou(Circle{}, Rect{{std::numeric_limits<double>::infinity(), 0}, {1, 1}, 0}), InvalidShape);
+  try {
+    area(Segment{});
+    ADD_FAILURE() << "a segment has an area";
+  } catch (const InvalidShape& e) {
+    EXPECT_NE(std::string(e.what()).find("segment"), std::string::npos) << e.what();
+  }
+}
+
+// Swapping A and B gives the same area and centroid to the bit, and the chord reversed.
+TEST(OverlapArea, SymmetricToTheBit) {
+  std::mt19937_64 rng(60);
+  std::uniform_real_distribution<double> offset(-1.2, 1.2);
+  for (const Form fa : kSolids) {
+    for (const Form fb : kSolids) {
+      for (int k = 0; k < 20; ++k) {
+        const Shape a = random_shape(fa, 1.0, 4.0, rng);
+        const Shape b = moved_to(random_shape(fb, 1.0, 4.0, rng), Vec2(offset(rng), offset(rng)));
+        const OverlapArea ab = overlap_area(a, b), ba = overlap_area(b, a);
+        EXPECT_EQ(ab.area, ba.area) << pair_name(fa, fb);
+        EXPECT_EQ(ab.crossings, ba.crossings);
+        if (ab.area > 0) EXPECT_EQ(ab.centroid, ba.centroid);
+        if (ab.crossings == 2) EXPECT_EQ(ab.chord[0], ba.chord[1]);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace collide2d
