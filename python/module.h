@@ -22,7 +22,16 @@ inline py::tuple tuple(const Vec2& v) { return py::make_tuple(v.x(), v.y()); }
 
 // A number and a point as Python writes them, for the shapes' repr.
 inline std::string number(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
-inline std::string point(const Vec2& v) { return "(" + number(v.x()) + ", " + number(v.y()) + ")"; }
+// Appended piece by piece: GCC 12 warns falsely of an overlapping copy in "(" + std::string&&
+// (its bug 105329).
+inline std::string point(const Vec2& v) {
+  std::string out = "(";
+  out += number(v.x());
+  out += ", ";
+  out += number(v.y());
+  out += ")";
+  return out;
+}
 
 void add_shapes(py::module_& m);
 void add_results(py::module_& m);

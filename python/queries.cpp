@@ -93,6 +93,11 @@ void add_queries(py::module_& m) {
       py::arg("shape"), py::arg("origin"), py::arg("direction"),
       py::arg("max_distance") = std::numeric_limits<double>::infinity(),
       "The first point of the shape on origin + t direction, 0 <= t <= max_distance, or None.");
+  m.def("area", &area, py::arg("shape"), "The area of the solid (a segment has none).");
+  m.def("overlap_area", &overlap_area, py::arg("a"), py::arg("b"),
+        "The area and centroid of the solids' overlap, exactly (0 where they are apart or touch).");
+  m.def("iou", &iou, py::arg("a"), py::arg("b"), "Intersection over union, |A & B| / |A | B|.");
+  m.def("iof", &iof, py::arg("a"), py::arg("b"), "Intersection over the first, |A & B| / |A|.");
   add_planes(m);
 }
 

@@ -111,6 +111,14 @@ void add_results(py::module_& m) {
       .def_readonly("distance", &DistanceResult::distance)
       .def_property_readonly("point_a", [](const DistanceResult& d) { return tuple(d.point_a); })
       .def_property_readonly("point_b", [](const DistanceResult& d) { return tuple(d.point_b); });
+  py::class_<OverlapArea>(m, "OverlapArea",
+                          "area of A & B, its centroid, the boundaries' crossings and, with two, the chord\n"
+                          "from where A's boundary enters B to where it leaves.")
+      .def_readonly("area", &OverlapArea::area)
+      .def_property_readonly("centroid", [](const OverlapArea& o) { return tuple(o.centroid); })
+      .def_readonly("crossings", &OverlapArea::crossings)
+      .def_property_readonly("chord",
+                             [](const OverlapArea& o) { return py::make_tuple(tuple(o.chord[0]), tuple(o.chord[1])); });
   py::class_<ContactPoint>(m, "ContactPoint", "A manifold point: on A, on B, its separation and feature id.")
       .def_property_readonly("point_a", [](const ContactPoint& c) { return tuple(c.point_a); })
       .def_property_readonly("point_b", [](const ContactPoint& c) { return tuple(c.point_b); })
