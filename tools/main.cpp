@@ -1,5 +1,5 @@
 // collide2d: the command line.
-//   collide2d query [--method NAME]... [--boundary | --contact | --toi] < queries   (query_command.h)
+//   collide2d query [--method NAME]... [--boundary | --contact | --toi | --area] < queries   (query_command.h)
 //   collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N] [--threads N]
 //       (scene_run.h)
 //   collide2d replay FILE.c2dr --html FILE                       (replay_page.h)
@@ -23,7 +23,7 @@
 namespace {
 
 const std::string kQueryUsage =
-    "usage: collide2d query [--method NAME]... [--boundary | --contact | --toi]\n"
+    "usage: collide2d query [--method NAME]... [--boundary | --contact | --toi | --area]\n"
     "  Reads '<shapeA> ; <shapeB>' lines from stdin, a shape being one of\n" +
     collide2d::tool::shape_grammar("    ") +
     "  (angles in radians), and shape A also chain gx1 gy1 x1 y1 x2 y2 gx2 gy2, a chain\n"
@@ -44,7 +44,9 @@ const std::string kQueryUsage =
     "  --toi       reads '<shapeA> @ vx vy w ; <shapeB> @ vx vy w' (velocity and turn per\n"
     "      step; a shape without '@' is at rest) and writes 'hit t nx ny px py': hit 1 and\n"
     "      the first time of contact in [0, 1] (0 if they overlap at the start), or hit 0\n"
-    "      and t 1; the normal from A to B and the midpoint of the closest points at t\n";
+    "      and t 1; the normal from A to B and the midpoint of the closest points at t\n"
+    "  --area      writes 'area cx cy iou' instead: the exact area of the overlap, its\n"
+    "      centroid (A's centre where they share no area) and the intersection over union\n";
 
 constexpr const char* kRunUsage =
     "usage: collide2d run [scene.json] [--svg FILE] [--html FILE] [--replay FILE] [--frames N] [--threads N]\n"
@@ -93,11 +95,14 @@ int query(int argc, char** argv) {
       } catch (const collide2d::tool::ParseError& e) {
         throw collide2d::cli::UsageError(e.what());
       }
-    } else if (arg == "--boundary" || arg == "--contact" || arg == "--toi") {
+    } else if (arg == "--boundary" || arg == "--contact" || arg == "--toi" || arg == "--area") {
       using collide2d::tool::Answer;
-      const Answer chosen = arg == "--boundary" ? Answer::boundary : arg == "--contact" ? Answer::contact : Answer::toi;
+      const Answer chosen = arg == "--boundary"  ? Answer::boundary
+                            : arg == "--contact" ? Answer::contact
+                            : arg == "--toi"     ? Answer::toi
+                                                 : Answer::area;
       if (options.answer != Answer::distance && options.answer != chosen) {
-        throw collide2d::cli::UsageError("--boundary, --contact and --toi cannot be combined");
+        throw collide2d::cli::UsageError("--boundary, --contact, --toi and --area cannot be combined");
       }
       options.answer = chosen;
     } else {

@@ -229,8 +229,9 @@ void apply_method(std::string_view name, QueryOptions& options) {
 
 void check_options(const QueryOptions& options) {
   if ((options.rect_ellipse || options.ellipse) &&
-      (options.answer == Answer::contact || options.answer == Answer::toi)) {
-    throw ParseError("--method picks an overlap test or a distance solver: it does not go with --contact or --toi");
+      (options.answer == Answer::contact || options.answer == Answer::toi || options.answer == Answer::area)) {
+    throw ParseError(
+        "--method picks an overlap test or a distance solver: it does not go with --contact, --toi or --area");
   }
 }
 
@@ -245,6 +246,11 @@ std::string answer(const QueryLine& q, const QueryOptions& options) {
         q.chain && !in_front(*q.chain, q.b) ? TimeOfImpact{} : time_of_impact(q.a, q.a_motion, q.b, q.b_motion);
     n = std::snprintf(buf, sizeof buf, "%d %.17g %.17g %.17g %.17g %.17g", r.status == ToiStatus::miss ? 0 : 1,
                       r.t + 0.0, r.normal.x() + 0.0, r.normal.y() + 0.0, r.point.x() + 0.0, r.point.y() + 0.0);
+  } else if (options.answer == Answer::area) {
+    if (q.chain) throw ParseError("a chain segment has no area: --area takes two solid shapes");
+    const OverlapArea o = overlap_area(q.a, q.b);
+    n = std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g", o.area, o.centroid.x() + 0.0, o.centroid.y() + 0.0,
+                      iou(q.a, q.b));
   } else if (options.answer == Answer::contact) {
     const Contact c = q.chain ? contact(*q.chain, q.b) : contact(q.a, q.b);
     if (c.empty()) return "none";

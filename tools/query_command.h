@@ -19,11 +19,14 @@
 // they overlap at the start; when the iteration stalls, the time up to which they certainly do not
 // touch, still hit 1, so that nothing tunnels), or hit 0 and t 1 for a miss; the normal from A to B
 // and the midpoint of the closest points at t (for a miss, at the last time evaluated). A motion on
-// a line without Answer::toi is an error.
+// a line without Answer::toi is an error. With Answer::area, the line is `area cx cy iou`: the
+// area of the overlap, its centroid (A's centre when the area is 0) and the intersection over
+// union (area.h); a chain segment or a segment, which have no area, give an error line.
 // A malformed or invalid line prints `error: <reason>` in its place and `line N: <reason>` on the
 // error stream; processing goes on.
 #pragma once
 
+#include <collide2d/area.h>
 #include <collide2d/chain.h>
 #include <collide2d/query.h>
 #include <collide2d/time_of_impact.h>
@@ -61,7 +64,7 @@ std::string shape_grammar(std::string_view indent);
 // nullopt for blank and comment lines. Throws ParseError or InvalidShape.
 std::optional<QueryLine> parse_query_line(std::string_view line);
 
-enum class Answer { distance, boundary, contact, toi };
+enum class Answer { distance, boundary, contact, toi, area };
 
 // A method named on the command line: its word, and the reference method it picks (nullopt: the
 // kernel).

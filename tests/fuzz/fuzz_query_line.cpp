@@ -1,7 +1,8 @@
-// Query-line fuzzer: any bytes as `collide2d query` input, answered for distances and for times of
-// impact. Every line must be answered or refused with an `error:` line (ParseError, InvalidShape),
-// never crash; answers carry six finite numbers (a distance 0 exactly when overlapping; a time in
-// [0, 1], 1 on a miss), and the output keeps one line per query line.
+// Query-line fuzzer: any bytes as `collide2d query` input, answered for distances, for times of
+// impact and for overlap areas. Every line must be answered or refused with an `error:` line
+// (ParseError, InvalidShape), never crash; answers carry six finite numbers (a distance 0 exactly
+// when overlapping; a time in [0, 1], 1 on a miss), an area's four (the area not negative, the IoU
+// in [0, 1]), and the output keeps one line per query line.
 #include "tools/query_command.h"
 
 #include <cmath>
@@ -32,6 +33,14 @@ void check(const std::string& text, collide2d::tool::Answer mode) {
   for (std::string line; std::getline(produced, line); ++answers) {
     if (line.rfind("error: ", 0) == 0) continue;
     std::istringstream fields(line);
+    if (mode == collide2d::tool::Answer::area) {  // area cx cy iou: finite, the area not negative, iou in [0, 1]
+      double area = -1, cx = 0, cy = 0, iou = -1;
+      fields >> area >> cx >> cy >> iou;
+      if (!fields || !(area >= 0) || !std::isfinite(area) || !std::isfinite(cx) || !std::isfinite(cy) ||
+          !(iou >= 0 && iou <= 1))
+        std::abort();
+      continue;
+    }
     int hit = -1;
     double v[5];
     fields >> hit >> v[0] >> v[1] >> v[2] >> v[3] >> v[4];
@@ -53,5 +62,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 4096));
   check(text, collide2d::tool::Answer::distance);
   check(text, collide2d::tool::Answer::toi);
+  check(text, collide2d::tool::Answer::area);
   return 0;
 }

@@ -344,6 +344,8 @@ TEST(QueryCommand, MethodRefusesPairsItDoesNotCover) {
   EXPECT_THROW(tool::check_options(options), tool::ParseError);
   options.answer = tool::Answer::boundary;
   EXPECT_NO_THROW(tool::check_options(options));
+  options.answer = tool::Answer::area;
+  EXPECT_THROW(tool::check_options(options), tool::ParseError);
 }
 
 // The numbers of an answer line; empty when it does not hold N of them.
@@ -415,6 +417,29 @@ TEST(QueryCommand, TimeOfImpactLines) {
   EXPECT_EQ(plain.status, 2);
   ASSERT_EQ(plain.out.size(), 1u);
   EXPECT_NE(plain.out[0].find("error: a motion ('@ vx vy w') needs --toi"), std::string::npos) << plain.out[0];
+}
+
+// --area: the overlap's area, centroid and IoU, on constructions whose answer is known: two unit
+// circles a radius apart share 2 pi / 3 - sqrt(3) / 2 about (0.5, 0); two squares half over each
+// other share half of each, a third of their union; touching boxes share nothing. A chain or a
+// segment has no area.
+TEST(QueryCommand, AreaWritesTheOverlap) {
+  const CommandRun r =
+      run("circle 0 0 1 ; circle 1 0 1\nrect 0 0 1 1 0 ; rect 1 0 1 1 0\nrect 0 0 1 1 0 ; rect 2 0 1 1 0\n"
+          "chain 2 0 0 0 -2 0 -3 0 ; circle 0 0 1\nsegment 0 0 1 0 ; circle 0 0 1\n",
+          nullptr, tool::Answer::area);
+  EXPECT_EQ(r.status, 2);
+  ASSERT_EQ(r.out.size(), 5u);
+  const double lens = 2 * std::numbers::pi / 3 - std::sqrt(3.0) / 2;
+  const std::vector<std::array<double, 4>> expected = {
+      {lens, 0.5, 0, lens / (2 * std::numbers::pi - lens)}, {2, 0.5, 0, 1.0 / 3}, {0, 0, 0, 0}};
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const auto got = numbers_of<4>(r.out[k]);
+    ASSERT_TRUE(got) << r.out[k];
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR((*got)[i], expected[k][i], 4e-16) << r.out[k];
+  }
+  EXPECT_EQ(r.out[3], "error: a chain segment has no area: --area takes two solid shapes");
+  EXPECT_EQ(r.out[4].rfind("error: a segment has no area", 0), 0u) << r.out[4];
 }
 
 }  // namespace
