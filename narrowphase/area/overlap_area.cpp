@@ -192,7 +192,8 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
     return nested(a, b);
   else
     r = along_crossings(pa, pb, w);
-  OverlapArea out{r.area, r.area > 0 ? Vec2(origin + r.centroid) : origin, w.x.count};
+  if (!(r.area > 0)) return {0.0, origin};  // touching: no crossing into an open region
+  OverlapArea out{r.area, origin + r.centroid, w.x.count};
   if (w.x.count == 2) {
     const int in = w.first_enters ? 0 : 1;
     out.chord = {origin + w.x.list[in].p, origin + w.x.list[1 - in].p};

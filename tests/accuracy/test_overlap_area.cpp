@@ -19,6 +19,7 @@
 #include <random>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -232,6 +233,21 @@ TEST(OverlapArea, NestedAndMonotone) {
         last = now;
       }
     }
+  }
+}
+
+// Solids that touch share no open region: area 0 at A's centre, and no crossing.
+TEST(OverlapArea, TouchingSharesNothing) {
+  const std::pair<Shape, Shape> touching[] = {
+      {Rect{Vec2(0, 0), Vec2(1, 1), 0}, Rect{Vec2(2, 0.5), Vec2(1, 1), 0}},
+      {Circle{Vec2(0, 0), 1}, Circle{Vec2(2, 0), 1}},
+      {Rect{Vec2(0, 0), Vec2(1, 1), 0}, Capsule{Vec2(0, 1.5), 2, 0.5, 0}},
+  };
+  for (const auto& [a, b] : touching) {
+    const OverlapArea o = overlap_area(a, b);
+    EXPECT_EQ(o.area, 0.0);
+    EXPECT_EQ(o.crossings, 0);
+    EXPECT_EQ(o.centroid, center_of(a));
   }
 }
 
