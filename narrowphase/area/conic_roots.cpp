@@ -7,7 +7,6 @@
 
 #include "narrowphase/shared/frames/unit_vector.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 

@@ -10,6 +10,7 @@
 
 #include "narrowphase/area/boundary.h"
 #include "narrowphase/area/crossings.h"
+#include "narrowphase/dispatch.h"
 #include "shapes/internal.h"
 #include "shapes/kinds.h"
 
@@ -58,9 +59,10 @@ class Green {
   // The region between the arc from u0 counter-clockwise to u1 and its chord.
   void bulge(const Arc& arc, const Vec2& u0, const Vec2& u1) {
     const Vec2 d = u1 - u0;
+    const double sine = cross(u0, u1);
     double half = arc_tangent(d.norm(), (u0 + u1).norm());
-    if (cross(u0, u1) < 0) half = std::numbers::pi - half;
-    const double segment = x_minus_sin(2 * half, cross(u0, u1)) / 2;
+    if (sine < 0) half = std::numbers::pi - half;
+    const double segment = x_minus_sin(2 * half, sine) / 2;
     bulge_area_ += arc.det * segment;
     bulge_moment_ += arc.det * (segment * (arc.c - origin_) + arc.m * ((d.squaredNorm() / 12) * Vec2(d.y(), -d.x())));
   }
@@ -163,20 +165,19 @@ Vec2 centroid_of(const Shape& s) {
   return center_of(s);
 }
 
-// Whether the pair is in its kernel's order: by kind, then by precedes() (shapes/kinds.h).
-bool in_order(const Shape& a, const Shape& b) {
-  if (a.index() != b.index()) return a.index() < b.index();
-  return std::visit(
-      [&](const auto& x) {
-        const auto& y = std::get<std::decay_t<decltype(x)>>(b);
-        return !precedes(y, x);
-      },
-      a);
+// The area of a solid already validated.
+double solid_area(const Shape& s) {
+  constexpr double pi = std::numbers::pi;
+  if (const auto* c = std::get_if<Circle>(&s)) return pi * c->radius * c->radius;
+  if (const auto* e = std::get_if<Ellipse>(&s)) return pi * e->a * e->b;
+  if (const auto* r = std::get_if<Rect>(&s)) return 4 * r->half_extents.x() * r->half_extents.y();
+  if (const auto* c = std::get_if<Capsule>(&s)) return 4 * c->half_length * c->radius + pi * c->radius * c->radius;
+  return std::get<ConvexPolygon>(s).area();
 }
 
 // Neither boundary crosses the other: one holds the other, or they share no open region.
 OverlapArea nested(const Shape& a, const Shape& b) {
-  const double area_a = area(a), area_b = area(b);
+  const double area_a = solid_area(a), area_b = solid_area(b);
   if (!contains(b, centroid_of(a)) && !contains(a, centroid_of(b))) return {0.0, center_of(a)};
   return area_a <= area_b ? OverlapArea{area_a, centroid_of(a)} : OverlapArea{area_b, centroid_of(b)};
 }
@@ -187,7 +188,7 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
   const Walk w = walk_of(pa, pb);
   Region r;
   if (pa.polygonal && pb.polygonal)
-    r = area(b) < area(a) ? clipped(pb, pa) : clipped(pa, pb);  // the smaller one's corners pass exactly
+    r = solid_area(b) < solid_area(a) ? clipped(pb, pa) : clipped(pa, pb);  // the smaller one's corners pass exactly
   else if (w.x.count == 0)
     return nested(a, b);
   else
@@ -211,29 +212,29 @@ void require_solid(const Shape& s) {
 
 double area(const Shape& s) {
   detail::areas::require_solid(s);
-  constexpr double pi = std::numbers::pi;
-  if (const auto* c = std::get_if<Circle>(&s)) return pi * c->radius * c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return pi * e->a * e->b;
-  if (const auto* r = std::get_if<Rect>(&s)) return 4 * r->half_extents.x() * r->half_extents.y();
-  if (const auto* c = std::get_if<Capsule>(&s)) return 4 * c->half_length * c->radius + pi * c->radius * c->radius;
-  return std::get<ConvexPolygon>(s).area();
+  return detail::areas::solid_area(s);
 }
 
 OverlapArea overlap_area(const Shape& a, const Shape& b) {
   detail::areas::require_solid(a);
   detail::areas::require_solid(b);
-  if (detail::areas::in_order(a, b)) return detail::areas::overlap_in_order(a, b);
-  OverlapArea out = detail::areas::overlap_in_order(b, a);
-  std::swap(out.chord[0], out.chord[1]);
-  if (out.area == 0) out.centroid = center_of(a);
-  return out;
+  return detail::in_rank_order<detail::Kinds>(a, b, [&a](const auto& x, const auto& y, bool swapped) {
+    OverlapArea out = detail::areas::overlap_in_order(x, y);
+    if (!swapped) return out;
+    std::swap(out.chord[0], out.chord[1]);
+    if (out.area == 0) out.centroid = center_of(a);
+    return out;
+  });
 }
 
 double iou(const Shape& a, const Shape& b) {
-  const double overlap = overlap_area(a, b).area, joint = area(a) + area(b) - overlap;
+  const double overlap = overlap_area(a, b).area;
+  const double joint = detail::areas::solid_area(a) + detail::areas::solid_area(b) - overlap;
   return std::clamp(overlap / joint, 0.0, 1.0);
 }
 
-double iof(const Shape& a, const Shape& b) { return std::clamp(overlap_area(a, b).area / area(a), 0.0, 1.0); }
+double iof(const Shape& a, const Shape& b) {
+  return std::clamp(overlap_area(a, b).area / detail::areas::solid_area(a), 0.0, 1.0);
+}
 
 }  // namespace collide2d
