@@ -1,5 +1,6 @@
 #include "narrowphase/area/boundary.h"
 
+#include "narrowphase/area/clip.h"
 #include "narrowphase/shared/frames/unit_vector.h"
 #include "shapes/internal.h"
 
@@ -66,12 +67,9 @@ Boundary boundary(const Ellipse& e, const Vec2& origin) {
 
 Boundary boundary(const Rect& r, const Vec2& origin) {
   const Rot rot = Rot::of(r.angle);
-  const Vec2 c = r.center - origin, h = r.half_extents;
-  const std::array<Vec2, 4> corners{c + rot.apply(Vec2(-h.x(), -h.y())), c + rot.apply(Vec2(h.x(), -h.y())),
-                                    c + rot.apply(Vec2(h.x(), h.y())), c + rot.apply(Vec2(-h.x(), h.y()))};
   const std::array<Vec2, 4> normals{rot.apply(Vec2(0, -1)), rot.apply(Vec2(1, 0)), rot.apply(Vec2(0, 1)),
                                     rot.apply(Vec2(-1, 0))};
-  return rounded_polygon(corners.data(), normals.data(), 4, 0);
+  return rounded_polygon(corners_of<double>(r, origin).v.data(), normals.data(), 4, 0);
 }
 
 Boundary boundary(const Capsule& c, const Vec2& origin) {
@@ -85,12 +83,9 @@ Boundary boundary(const Capsule& c, const Vec2& origin) {
 Boundary boundary(const ConvexPolygon& p, const Vec2& origin) {
   const Rot rot = Rot::of(p.angle);
   const PolygonOutline& o = *p.outline;
-  std::array<Vec2, kMaxPolygonVertices> vertices, normals;
-  for (int i = 0; i < o.count; ++i) {
-    vertices[i] = p.center - origin + rot.apply(o.vertices[i]);
-    normals[i] = rot.apply(o.normals[i]);
-  }
-  return rounded_polygon(vertices.data(), normals.data(), o.count, o.radius);
+  std::array<Vec2, kMaxPolygonVertices> normals;
+  for (int i = 0; i < o.count; ++i) normals[i] = rot.apply(o.normals[i]);
+  return rounded_polygon(corners_of<double>(p, origin).v.data(), normals.data(), o.count, o.radius);
 }
 
 Boundary boundary(const Segment&, const Vec2&) { throw InvalidShape("a segment has no area"); }

@@ -199,6 +199,78 @@ Shape scaled(const Shape& s, double k) {
       s);
 }
 
+// The shape turned by t about its centre.
+Shape turned(const Shape& s, double t) {
+  return std::visit(
+      [t](auto x) -> Shape {
+        if constexpr (requires { x.angle; }) x.angle += t;
+        return x;
+      },
+      s);
+}
+
+bool sharp(Form f) { return f == Form::rect || f == Form::polygon; }
+
+// Two sharp polygons overlapping by a sliver (the core families' overlapping cases whose overlap
+// is at least 1e-6 of the scale): the area within 256 eps of itself, far inside 1e-12. A double
+// clip, a few eps of the scale, is kept only where the overlap is at least 2^-7 of the larger
+// area; below that the clip in double-double gives the area to its rounding.
+TEST(OverlapArea, SliversOfSharpPolygonsKeepTheirDigits) {
+  double worst = 0;
+  int checked = 0;
+  for (const testing::CoreFamily& f : testing::core_families()) {
+    if (!sharp(f.a) || !sharp(f.b)) continue;
+    for (const testing::CoreCase& c : testing::cases_of(f)) {
+      const double want = static_cast<double>(reference::overlap_area(c.a, c.b).area);
+      if (c.delta >= 0 || want < 1e-6 * scale_of(c.a, c.b).area) continue;
+      const double error = std::abs(overlap_area(c.a, c.b).area - want) / (kEps * want);
+      EXPECT_LE(error, 256) << f.name << " depth " << -c.delta;
+      worst = std::max(worst, error);
+      ++checked;
+    }
+  }
+  std::printf("%d slivers, worst %.2f eps of the area\n", checked, worst);
+  EXPECT_GT(checked, 100);
+}
+
+// The reference's |A delta B| / |A u B|, from its overlap and the two areas.
+double reference_distance(const Shape& a, const Shape& b) {
+  const reference::Real both = reference::area(a) + reference::area(b), shared = reference::overlap_area(a, b).area;
+  return static_cast<double>((both - 2 * shared) / (both - shared));
+}
+
+// The same shape moved, turned and grown by 1e-3 ... 1e-12 of its size: between sharp polygons
+// iou_distance within a few units in its own last place, between any others within a few eps (the
+// overlap's error, a few eps of the scale, over the union).
+TEST(OverlapArea, IouDistanceOfNearIdenticalShapes) {
+  std::mt19937_64 rng(62);
+  std::uniform_real_distribution<double> turn(0, 2 * std::numbers::pi);
+  for (const Form f : kSolids) {
+    double worst = 0;
+    for (const double nudge : {1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12}) {
+      const Shape a = random_shape(f, 1.0, 4.0, rng);
+      const double t = turn(rng);
+      const Shape moved = moved_to(a, center_of(a) + nudge * Vec2(std::cos(t), std::sin(t)));
+      for (const Shape& b : {moved, scaled(a, 1 + nudge), turned(a, nudge)}) {
+        const double got = iou_distance(a, b), want = reference_distance(a, b);
+        const double error = std::abs(got - want) / (kEps * (sharp(f) ? want : 1.0));
+        EXPECT_LE(error, sharp(f) ? 2 : 8) << testing::name_of(f) << " nudged by " << nudge;
+        worst = std::max(worst, error);
+      }
+    }
+    std::printf("%-10s worst %.3g eps%s\n", testing::name_of(f), worst, sharp(f) ? " of the distance" : "");
+  }
+}
+
+TEST(OverlapArea, IouDistanceOfEqualAndApartShapes) {
+  std::mt19937_64 rng(63);
+  for (const Form f : kSolids) {
+    const Shape a = random_shape(f, 1.0, 4.0, rng);
+    EXPECT_EQ(iou_distance(a, a), 0.0) << testing::name_of(f);
+    EXPECT_EQ(iou_distance(a, moved_to(a, center_of(a) + Vec2(20, 0))), 1.0) << testing::name_of(f);
+  }
+}
+
 // The area of each kind against the reference's quadrature over its boundary.
 TEST(OverlapArea, AreaOfEachKind) {
   std::mt19937_64 rng(61);
@@ -256,6 +328,7 @@ TEST(OverlapArea, RefusesBadShapes) {
   EXPECT_THROW(overlap_area(Circle{{0, 0}, std::nan("")}, Circle{}), InvalidShape);
   EXPECT_THROW(overlap_area(Circle{}, Ellipse{{0, 0}, -1, 1, 0}), InvalidShape);
   EXPECT_THROW(iou(Circle{}, Rect{{std::numeric_limits<double>::infinity(), 0}, {1, 1}, 0}), InvalidShape);
+  EXPECT_THROW(iou_distance(Rect{}, Segment{}), InvalidShape);
   try {
     area(Segment{});
     ADD_FAILURE() << "a segment has an area";
@@ -264,7 +337,7 @@ TEST(OverlapArea, RefusesBadShapes) {
   }
 }
 
-// Swapping A and B gives the same area and centroid to the bit, and the chord reversed.
+// Swapping A and B gives the same area, centroid and IoU distance to the bit, and the chord reversed.
 TEST(OverlapArea, SymmetricToTheBit) {
   std::mt19937_64 rng(60);
   std::uniform_real_distribution<double> offset(-1.2, 1.2);
@@ -278,6 +351,7 @@ TEST(OverlapArea, SymmetricToTheBit) {
         EXPECT_EQ(ab.crossings, ba.crossings);
         if (ab.area > 0) EXPECT_EQ(ab.centroid, ba.centroid);
         if (ab.crossings == 2) EXPECT_EQ(ab.chord[0], ba.chord[1]);
+        EXPECT_EQ(iou_distance(a, b), iou_distance(b, a)) << pair_name(fa, fb);
       }
     }
   }

@@ -22,6 +22,14 @@ def test_iou_of_boxes_sharing_half_their_width():
     assert collide2d.overlap_area(b, a).area == collide2d.overlap_area(a, b).area
 
 
+def test_iou_distance_of_boxes_apart_by_a_hair():
+    # |A ^ B| = 2 * 2d and |A | B| = 2 (2 + d): the distance is 2d / (2 + d), of which 1 - IoU keeps 12 digits
+    d = 2.0**-40
+    a, b = collide2d.Rect((0, 0), (1, 1)), collide2d.Rect((d, 0), (1, 1))
+    assert collide2d.iou_distance(a, b) == pytest.approx(2 * d / (2 + d), rel=4e-16)
+    assert collide2d.iou_distance(a, a) == 0.0
+
+
 def test_areas_of_the_solids():
     assert collide2d.area(collide2d.Ellipse((3, 4), 2, 0.5, 1.0)) == pytest.approx(math.pi, rel=4e-16)
     assert collide2d.area(collide2d.Capsule((0, 0), 1, 0.5)) == pytest.approx(2 + math.pi / 4, rel=4e-16)
