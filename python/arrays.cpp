@@ -2,6 +2,8 @@
 // through the batched kernels where the pair of kinds has one.
 #include "python/module.h"
 
+#include <collide2d/area.h>
+
 #include "narrowphase/internal.h"
 #include "shapes/kinds.h"
 
@@ -13,6 +15,8 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numbers>
+#include <stdexcept>
 #include <optional>
 #include <tuple>
 #include <span>
@@ -248,6 +252,117 @@ py::dict contact_arrays(const std::string& a_kind, const Rows& a, const std::str
                   py::arg("point_b") = pb);
 }
 
+// Rotated boxes in a detector's rows, (cx, cy, w, h, angle), as rect rows (cx, cy, hx, hy, theta):
+// detectron2's angle in degrees, mmcv's in radians. Whether the angle turns clockwise (mmcv's flag)
+// mirrors every box alike and leaves every area and IoU as it is.
+Rows rect_rows(const Rows& rows, const std::string& format) {
+  if (format == "collide2d") return rows;
+  double to_radians = 1;
+  if (format == "detectron2")
+    to_radians = std::numbers::pi / 180;
+  else if (format != "mmcv")
+    throw py::value_error("unknown box_format '" + format + "' (collide2d, detectron2 or mmcv)");
+  if (rows.ndim() != 2 || rows.shape(1) != 5)
+    throw py::value_error(format + " boxes need an (n, 5) array (cx cy w h angle)");
+  Rows out({rows.shape(0), py::ssize_t{5}});
+  auto in = rows.unchecked<2>();
+  auto o = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    o(i, 0) = in(i, 0), o(i, 1) = in(i, 1), o(i, 2) = in(i, 2) / 2, o(i, 3) = in(i, 3) / 2;
+    o(i, 4) = in(i, 4) * to_radians;
+  }
+  return out;
+}
+
+std::vector<Shape> solids_of(const char* which, const std::string& kind, const Rows& rows, const std::string& format) {
+  if (format != "collide2d" && kind != "rect")
+    throw py::value_error("box_format '" + format + "' is for rect rows, not " + kind);
+  return shapes_of(which, kind, rect_rows(rows, format));
+}
+
+PairLists solid_pairs(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
+                      const std::string& format) {
+  PairLists p{solids_of("a", a_kind, a, format), solids_of("b", b_kind, b, format)};
+  check_lengths(p.a.size(), p.b.size());
+  return p;
+}
+
+// A library call on shapes already checked, the GIL released; its refusals come out as ValueError.
+template <class Call>
+auto released(Call call) {
+  py::gil_scoped_release unlocked;
+  try {
+    return call();
+  } catch (const std::invalid_argument& e) {  // InvalidShape too
+    throw py::value_error(e.what());
+  }
+}
+
+py::dict overlap_area_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
+                             const std::string& box_format) {
+  const PairLists p = solid_pairs(a_kind, a, b_kind, b, box_format);
+  std::vector<OverlapArea> results(p.a.size());
+  released([&] { overlap_areas(p.a, p.b, results); });
+  const auto n = static_cast<py::ssize_t>(p.a.size());
+  py::array_t<double> areas(n), centroids = points(p.a.size());
+  py::array_t<std::int32_t> crossings(n);
+  auto ar = areas.mutable_unchecked<1>();
+  auto c = centroids.mutable_unchecked<2>();
+  auto x = crossings.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const OverlapArea& r = results[static_cast<std::size_t>(i)];
+    ar(i) = r.area, c(i, 0) = r.centroid.x(), c(i, 1) = r.centroid.y(), x(i) = r.crossings;
+  }
+  return py::dict(py::arg("area") = areas, py::arg("centroid") = centroids, py::arg("crossings") = crossings);
+}
+
+py::array_t<double> iou_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
+                               const std::string& mode, const std::string& box_format) {
+  double (*measure)(const Shape&, const Shape&) = nullptr;
+  if (mode == "iou") measure = &iou;
+  if (mode == "iof") measure = &iof;
+  if (mode == "distance") measure = &iou_distance;
+  if (!measure) throw py::value_error("unknown mode '" + mode + "' (iou, iof or distance)");
+  const PairLists p = solid_pairs(a_kind, a, b_kind, b, box_format);
+  py::array_t<double> out(static_cast<py::ssize_t>(p.a.size()));
+  const std::span<double> values(out.mutable_data(), p.a.size());
+  released([&] {
+    if (measure == &iou) return ious(p.a, p.b, values);  // the batch
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = measure(p.a[i], p.b[i]);
+  });
+  return out;
+}
+
+py::dict iou_matrix(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b, double min_iou,
+                    const std::string& box_format) {
+  const std::vector<Shape> x = solids_of("a", a_kind, a, box_format), y = solids_of("b", b_kind, b, box_format);
+  const std::vector<IouPair> pairs = released([&] { return iou_pairs(x, y, min_iou); });
+  const auto n = static_cast<py::ssize_t>(pairs.size());
+  py::array_t<std::int64_t> i(n), j(n);
+  py::array_t<double> values(n);
+  auto ui = i.mutable_unchecked<1>(), uj = j.mutable_unchecked<1>();
+  auto uv = values.mutable_unchecked<1>();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const IouPair& p = pairs[static_cast<std::size_t>(k)];
+    ui(k) = p.a, uj(k) = p.b, uv(k) = p.iou;
+  }
+  return py::dict(py::arg("i") = i, py::arg("j") = j, py::arg("iou") = values);
+}
+
+using Labels = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+using Scores = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+py::array_t<std::int64_t> non_maximum_suppression(const Rows& rows, const Scores& scores, double iou_threshold,
+                                                  const std::optional<Labels>& labels, const std::string& kind,
+                                                  const std::string& box_format) {
+  const std::vector<Shape> shapes = solids_of("rows", kind, rows, box_format);
+  const std::span<const double> s(scores.data(), static_cast<std::size_t>(scores.size()));
+  std::span<const std::int64_t> l;
+  if (labels) l = {labels->data(), static_cast<std::size_t>(labels->size())};
+  const std::vector<std::uint32_t> kept = released([&] { return nms(shapes, s, iou_threshold, l); });
+  return py::array_t<std::int64_t>(static_cast<py::ssize_t>(kept.size()), std::vector<std::int64_t>(kept.begin(), kept.end()).data());
+}
+
 }  // namespace
 
 void add_arrays(py::module_& m) {
@@ -263,6 +378,31 @@ void add_arrays(py::module_& m) {
         (std::string("contact() of every pair: a dict of arrays separation (n,), normal, point_a and\n"
                      "point_b (n, 2).") +
          kinds)
+            .c_str());
+  const std::string boxes =
+      "\n\nbox_format: 'collide2d' (the rows above), or rotated boxes as (n, 5) rows cx cy w h angle,\n"
+      "'detectron2' (angle in degrees) or 'mmcv' (radians), for rect rows.";
+  m.def("overlap_area_arrays", &overlap_area_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        py::kw_only(), py::arg("box_format") = "collide2d",
+        (std::string("overlap_area() of every pair: a dict of arrays area (n,), centroid (n, 2) and\n"
+                     "crossings (n,).") +
+         kinds + boxes)
+            .c_str());
+  m.def("iou_arrays", &iou_arrays, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"), py::kw_only(),
+        py::arg("mode") = "iou", py::arg("box_format") = "collide2d",
+        ("iou() of every pair, or iof() with mode='iof', iou_distance() with mode='distance'." + kinds + boxes)
+            .c_str());
+  m.def("iou_matrix", &iou_matrix, py::arg("a_kind"), py::arg("a"), py::arg("b_kind"), py::arg("b"),
+        py::arg("min_iou") = 0.0, py::kw_only(), py::arg("box_format") = "collide2d",
+        (std::string("Every pair (i, j) of a row of a and a row of b with IoU above 0 and at least min_iou, as\n"
+                     "a dict of arrays i, j and iou sorted by i then j; only pairs whose boxes meet are measured.") +
+         boxes)
+            .c_str());
+  m.def("nms", &non_maximum_suppression, py::arg("rows"), py::arg("scores"), py::arg("iou_threshold"),
+        py::arg("labels") = py::none(), py::kw_only(), py::arg("kind") = "rect", py::arg("box_format") = "collide2d",
+        (std::string("Greedy non-maximum suppression: the indices kept, highest score first (equal scores by\n"
+                     "index); a row is dropped when a kept one of its label has IoU strictly above the threshold.") +
+         boxes)
             .c_str());
 }
 

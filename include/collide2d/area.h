@@ -14,6 +14,9 @@
 #include <collide2d/shapes.h>
 
 #include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 namespace collide2d {
 
@@ -46,5 +49,35 @@ double iou(const Shape& a, const Shape& b);
 double iou_distance(const Shape& a, const Shape& b);
 /// Intersection over the first, |A ∩ B| / |A| (mmcv's "iof" mode), in [0, 1].
 double iof(const Shape& a, const Shape& b);
+
+/// overlap_area() and iou() in bulk, pair i being a[i] with b[i].
+/// Every shape is checked before any result is written: a bad one throws InvalidShape naming its
+/// pair ("pair 7, b: ..."), and spans of different lengths std::invalid_argument, leaving `out` as
+/// it was.
+void overlap_areas(std::span<const Shape> a, std::span<const Shape> b, std::span<OverlapArea> out);
+void ious(std::span<const Shape> a, std::span<const Shape> b, std::span<double> out);
+
+/// A pair of an N x M problem: a's index, b's, and their IoU.
+struct IouPair {
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+  double iou = 0.0;
+};
+
+/// The pairs of a shape of `a` and one of `b` with IoU above 0 and at least `min_iou`.
+/// Sorted by a's index and then b's. Only pairs whose bounding boxes meet are measured (b's boxes in
+/// a tree, aabb_tree.h), so that sparse overlaps cost time and memory in proportion to the pairs
+/// found, not to N x M. Throws as the batches do, and std::invalid_argument for a min_iou outside
+/// [0, 1].
+std::vector<IouPair> iou_pairs(std::span<const Shape> a, std::span<const Shape> b, double min_iou = 0.0);
+
+/// Greedy non-maximum suppression: the indices of the shapes kept, in order of score.
+/// The shapes go highest score first, equal scores by index; each one is kept unless a kept one
+/// overlaps it with IoU above `iou_threshold` (strictly, as detectron2 and torchvision do). With
+/// labels, only shapes of one label suppress each other. Throws std::invalid_argument for scores or
+/// labels of another length than the shapes, a score that is NaN, or a threshold outside [0, 1], and
+/// InvalidShape naming a bad shape's index.
+std::vector<std::uint32_t> nms(std::span<const Shape> shapes, std::span<const double> scores, double iou_threshold,
+                               std::span<const std::int64_t> labels = {});
 
 }  // namespace collide2d

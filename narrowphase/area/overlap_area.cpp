@@ -204,10 +204,22 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
   return out;
 }
 
+// The area of A ∩ B alone: two sharp polygons are clipped without the crossings, which only the
+// chord needs.
+double shared_area(const Shape& a, const Shape& b) {
+  if (sharp(a) && sharp(b)) return polygons(a, b, center_of(a)).area;
+  return overlap_in_order(a, b).area;
+}
+
+double iou_in_order(const Shape& a, const Shape& b) {
+  const double overlap = shared_area(a, b);
+  return std::clamp(overlap / (solid_area(a) + solid_area(b) - overlap), 0.0, 1.0);
+}
+
 // |A delta B| / |A u B|. Where it is small, two sharp polygons are near-identical and their overlap
 // and areas are taken again in double-double, so that the difference keeps its digits.
 double distance_in_order(const Shape& a, const Shape& b) {
-  const double area_a = solid_area(a), area_b = solid_area(b), overlap = overlap_in_order(a, b).area;
+  const double area_a = solid_area(a), area_b = solid_area(b), overlap = shared_area(a, b);
   const double d = (area_a + area_b - 2 * overlap) / (area_a + area_b - overlap);
   if (!(d < kSliver) || !sharp(a) || !sharp(b)) return std::clamp(d, 0.0, 1.0);
   const Vec2 origin = center_of(a);
@@ -243,9 +255,10 @@ OverlapArea overlap_area(const Shape& a, const Shape& b) {
 }
 
 double iou(const Shape& a, const Shape& b) {
-  const double overlap = overlap_area(a, b).area;
-  const double joint = detail::areas::solid_area(a) + detail::areas::solid_area(b) - overlap;
-  return std::clamp(overlap / joint, 0.0, 1.0);
+  detail::areas::require_solid(a);
+  detail::areas::require_solid(b);
+  return detail::in_rank_order<detail::Kinds>(
+      a, b, [](const auto& x, const auto& y, bool) { return detail::areas::iou_in_order(x, y); });
 }
 
 double iou_distance(const Shape& a, const Shape& b) {
@@ -256,7 +269,11 @@ double iou_distance(const Shape& a, const Shape& b) {
 }
 
 double iof(const Shape& a, const Shape& b) {
-  return std::clamp(overlap_area(a, b).area / detail::areas::solid_area(a), 0.0, 1.0);
+  detail::areas::require_solid(a);
+  detail::areas::require_solid(b);
+  const double overlap = detail::in_rank_order<detail::Kinds>(
+      a, b, [](const auto& x, const auto& y, bool) { return detail::areas::shared_area(x, y); });
+  return std::clamp(overlap / detail::areas::solid_area(a), 0.0, 1.0);
 }
 
 }  // namespace collide2d
