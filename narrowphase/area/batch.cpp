@@ -4,6 +4,8 @@
 #include <collide2d/area.h>
 #include <collide2d/query.h>
 
+#include "narrowphase/area/measures.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,17 +16,19 @@
 namespace collide2d {
 namespace {
 
-void require_area(const Shape& s, const std::string& where) {
+// Checks a solid; the message of a bad one starts with where it is, which `where()` names only then.
+template <class Where>
+void require_area(const Shape& s, Where where) {
   try {
     area(s);
   } catch (const InvalidShape& e) {
-    throw InvalidShape(where + ": " + e.what());
+    throw InvalidShape(where() + ": " + e.what());
   }
 }
 
 void require_all(std::span<const Shape> shapes, const char* which) {
   for (std::size_t i = 0; i < shapes.size(); ++i)
-    require_area(shapes[i], std::string(which) + "[" + std::to_string(i) + "]");
+    require_area(shapes[i], [&] { return std::string(which) + "[" + std::to_string(i) + "]"; });
 }
 
 void require_pairs(std::span<const Shape> a, std::span<const Shape> b, std::size_t out) {
@@ -33,8 +37,8 @@ void require_pairs(std::span<const Shape> a, std::span<const Shape> b, std::size
                                 " and out " + std::to_string(out) + ": a batch needs as many of each");
   }
   for (std::size_t i = 0; i < a.size(); ++i) {
-    require_area(a[i], "pair " + std::to_string(i) + ", a");
-    require_area(b[i], "pair " + std::to_string(i) + ", b");
+    require_area(a[i], [i] { return "pair " + std::to_string(i) + ", a"; });
+    require_area(b[i], [i] { return "pair " + std::to_string(i) + ", b"; });
   }
 }
 
@@ -55,12 +59,12 @@ AabbTree tree_of(std::span<const Shape> shapes) {
 
 void overlap_areas(std::span<const Shape> a, std::span<const Shape> b, std::span<OverlapArea> out) {
   require_pairs(a, b, out.size());
-  for (std::size_t i = 0; i < a.size(); ++i) out[i] = overlap_area(a[i], b[i]);
+  for (std::size_t i = 0; i < a.size(); ++i) out[i] = detail::areas::overlap_of(a[i], b[i]);
 }
 
 void ious(std::span<const Shape> a, std::span<const Shape> b, std::span<double> out) {
   require_pairs(a, b, out.size());
-  for (std::size_t i = 0; i < a.size(); ++i) out[i] = iou(a[i], b[i]);
+  for (std::size_t i = 0; i < a.size(); ++i) out[i] = detail::areas::iou_of(a[i], b[i]);
 }
 
 std::vector<IouPair> iou_pairs(std::span<const Shape> a, std::span<const Shape> b, double min_iou) {
@@ -75,7 +79,7 @@ std::vector<IouPair> iou_pairs(std::span<const Shape> a, std::span<const Shape> 
     tree.query(aabb(a[i]), [&met](std::uint32_t j) { met.push_back(j); });
     std::sort(met.begin(), met.end());
     for (const std::uint32_t j : met) {
-      const double x = iou(a[i], b[j]);
+      const double x = detail::areas::iou_of(a[i], b[j]);
       if (x > 0 && x >= min_iou) out.push_back({static_cast<std::uint32_t>(i), j, x});
     }
   }
@@ -106,7 +110,7 @@ std::vector<std::uint32_t> nms(std::span<const Shape> shapes, std::span<const do
     kept.push_back(i);
     tree.query(aabb(shapes[i]), [&](std::uint32_t j) {
       if (rank[j] <= rank[i] || suppressed[j] || (!labels.empty() && labels[j] != labels[i])) return;
-      if (iou(shapes[i], shapes[j]) > iou_threshold) suppressed[j] = true;
+      if (detail::areas::iou_of(shapes[i], shapes[j]) > iou_threshold) suppressed[j] = true;
     });
   }
   return kept;

@@ -5,12 +5,15 @@
 // polygon fanned from the first crossing, and each arc the segment between it and its chord:
 // for the unit disc, area (phi - sin phi) / 2 and first moment |d|^2 perp(d) / 12 about the centre
 // (d the chord), carried onto the ellipse by its affine map. Two sharp polygons are clipped
-// instead (clip.h), which keeps shared edges exact, and a sliver's digits in double-double.
+// instead (narrowphase/area/clip.h), which keeps shared edges exact, and a sliver's digits in
+// double-double.
 #include <collide2d/area.h>
 
 #include "narrowphase/area/boundary.h"
 #include "narrowphase/area/clip.h"
 #include "narrowphase/area/crossings.h"
+#include "narrowphase/area/measures.h"
+#include "narrowphase/area/overlap_rect_rect.h"
 #include "narrowphase/dispatch.h"
 #include "shapes/internal.h"
 #include "shapes/kinds.h"
@@ -170,11 +173,24 @@ Region region_of(const Moments<Real>& m) {
   return {static_cast<double>(m.area), Vec2(static_cast<double>(centroid.x()), static_cast<double>(centroid.y()))};
 }
 
+// Whether an overlap of two sharp polygons found in double is a sliver, to be taken again.
+bool sliver(double area, const Shape& a, const Shape& b) {
+  return area > 0 && area < kSliver * std::max(solid_area(a), solid_area(b));
+}
+
 Region polygons(const Shape& a, const Shape& b, const Vec2& origin) {
   const Moments<double> m = polygon_overlap<double>(a, b, origin);
-  if (m.area > 0 && m.area < kSliver * std::max(solid_area(a), solid_area(b)))
-    return region_of(polygon_overlap<DoubleDouble>(a, b, origin));
+  if (sliver(m.area, a, b)) return region_of(polygon_overlap<DoubleDouble>(a, b, origin));
   return region_of(m);
+}
+
+// The area alone: two rectangles without forming their overlap's
+// corners (narrowphase/area/overlap_rect_rect.h).
+double polygons_area(const Shape& a, const Shape& b, const Vec2& origin) {
+  const auto *ra = std::get_if<Rect>(&a), *rb = std::get_if<Rect>(&b);
+  const double area = ra && rb ? rect_rect_area(*ra, *rb) : polygon_overlap<double>(a, b, origin).area;
+  if (sliver(area, a, b)) return region_of(polygon_overlap<DoubleDouble>(a, b, origin)).area;
+  return std::max(area, 0.0);
 }
 
 // Neither boundary crosses the other: one holds the other, or they share no open region.
@@ -207,7 +223,7 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
 // The area of A ∩ B alone: two sharp polygons are clipped without the crossings, which only the
 // chord needs.
 double shared_area(const Shape& a, const Shape& b) {
-  if (sharp(a) && sharp(b)) return polygons(a, b, center_of(a)).area;
+  if (sharp(a) && sharp(b)) return polygons_area(a, b, center_of(a));
   return overlap_in_order(a, b).area;
 }
 
@@ -235,6 +251,21 @@ void require_solid(const Shape& s) {
 }
 
 }  // namespace
+
+OverlapArea overlap_of(const Shape& a, const Shape& b) {
+  return in_rank_order<Kinds>(a, b, [&a](const auto& x, const auto& y, bool swapped) {
+    OverlapArea out = overlap_in_order(x, y);
+    if (!swapped) return out;
+    std::swap(out.chord[0], out.chord[1]);
+    if (out.area == 0) out.centroid = center_of(a);
+    return out;
+  });
+}
+
+double iou_of(const Shape& a, const Shape& b) {
+  return in_rank_order<Kinds>(a, b, [](const auto& x, const auto& y, bool) { return iou_in_order(x, y); });
+}
+
 }  // namespace detail::areas
 
 double area(const Shape& s) {
@@ -245,20 +276,13 @@ double area(const Shape& s) {
 OverlapArea overlap_area(const Shape& a, const Shape& b) {
   detail::areas::require_solid(a);
   detail::areas::require_solid(b);
-  return detail::in_rank_order<detail::Kinds>(a, b, [&a](const auto& x, const auto& y, bool swapped) {
-    OverlapArea out = detail::areas::overlap_in_order(x, y);
-    if (!swapped) return out;
-    std::swap(out.chord[0], out.chord[1]);
-    if (out.area == 0) out.centroid = center_of(a);
-    return out;
-  });
+  return detail::areas::overlap_of(a, b);
 }
 
 double iou(const Shape& a, const Shape& b) {
   detail::areas::require_solid(a);
   detail::areas::require_solid(b);
-  return detail::in_rank_order<detail::Kinds>(
-      a, b, [](const auto& x, const auto& y, bool) { return detail::areas::iou_in_order(x, y); });
+  return detail::areas::iou_of(a, b);
 }
 
 double iou_distance(const Shape& a, const Shape& b) {
