@@ -5,13 +5,20 @@
 #include <collide2d/query.h>
 
 #include "narrowphase/area/measures.h"
+#include "narrowphase/area/overlap_rect_rect.h"
+#include "narrowphase/shared/frames/rect_pair_frame.h"
+#include "shapes/kinds.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <variant>
 
 namespace collide2d {
 namespace {
@@ -55,6 +62,33 @@ AabbTree tree_of(std::span<const Shape> shapes) {
   return tree;
 }
 
+// Each rectangle and the other in rank order, as the one-off IoU takes them.
+std::pair<const Rect*, const Rect*> ranked(const Shape& a, const Shape& b) {
+  const Rect &x = std::get<Rect>(a), &y = std::get<Rect>(b);
+  return detail::precedes(y, x) ? std::pair(&y, &x) : std::pair(&x, &y);
+}
+
+// The IoU of the pairs `which`, each two rectangles, their areas found a chunk at a time in vectors.
+void rect_ious(std::span<const Shape> a, std::span<const Shape> b, std::span<const std::size_t> which,
+               std::span<double> out) {
+  using Chunk = detail::Chunk<8>;
+  const auto chunk = std::make_unique<Chunk>();
+  std::array<double, Chunk::kPairs> areas;
+  for (std::size_t start = 0; start < which.size(); start += Chunk::kPairs) {
+    const std::size_t count = std::min(Chunk::kPairs, which.size() - start);
+    detail::fill_chunk(*chunk, start, count, [&](std::size_t k) {
+      const auto [x, y] = ranked(a[which[k]], b[which[k]]);
+      return detail::rect_rect_lanes(*x, Orientation::of(x->angle), *y, Orientation::of(y->angle));
+    });
+    detail::areas::rect_rect_areas(*chunk, count, areas.data());
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = which[start + k];
+      const auto [x, y] = ranked(a[i], b[i]);
+      out[i] = detail::areas::rect_iou(*x, *y, areas[k]);
+    }
+  }
+}
+
 }  // namespace
 
 void overlap_areas(std::span<const Shape> a, std::span<const Shape> b, std::span<OverlapArea> out) {
@@ -64,7 +98,14 @@ void overlap_areas(std::span<const Shape> a, std::span<const Shape> b, std::span
 
 void ious(std::span<const Shape> a, std::span<const Shape> b, std::span<double> out) {
   require_pairs(a, b, out.size());
-  for (std::size_t i = 0; i < a.size(); ++i) out[i] = detail::areas::iou_of(a[i], b[i]);
+  std::vector<std::size_t> rects;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::holds_alternative<Rect>(a[i]) && std::holds_alternative<Rect>(b[i]))
+      rects.push_back(i);
+    else
+      out[i] = detail::areas::iou_of(a[i], b[i]);
+  }
+  rect_ious(a, b, rects, out);
 }
 
 std::vector<IouPair> iou_pairs(std::span<const Shape> a, std::span<const Shape> b, double min_iou) {

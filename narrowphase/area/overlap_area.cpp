@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 #include <variant>
 
 namespace collide2d {
@@ -139,12 +140,14 @@ Vec2 centroid_of(const Shape& s) {
   return center_of(s);
 }
 
+double rect_area(const Rect& r) { return 4 * r.half_extents.x() * r.half_extents.y(); }
+
 // The area of a solid already validated.
 double solid_area(const Shape& s) {
   constexpr double pi = std::numbers::pi;
   if (const auto* c = std::get_if<Circle>(&s)) return pi * c->radius * c->radius;
   if (const auto* e = std::get_if<Ellipse>(&s)) return pi * e->a * e->b;
-  if (const auto* r = std::get_if<Rect>(&s)) return 4 * r->half_extents.x() * r->half_extents.y();
+  if (const auto* r = std::get_if<Rect>(&s)) return rect_area(*r);
   if (const auto* c = std::get_if<Capsule>(&s)) return 4 * c->half_length * c->radius + pi * c->radius * c->radius;
   return std::get<ConvexPolygon>(s).area();
 }
@@ -174,9 +177,8 @@ Region region_of(const Moments<Real>& m) {
 }
 
 // Whether an overlap of two sharp polygons found in double is a sliver, to be taken again.
-bool sliver(double area, const Shape& a, const Shape& b) {
-  return area > 0 && area < kSliver * std::max(solid_area(a), solid_area(b));
-}
+bool sliver(double area, double area_a, double area_b) { return area > 0 && area < kSliver * std::max(area_a, area_b); }
+bool sliver(double area, const Shape& a, const Shape& b) { return sliver(area, solid_area(a), solid_area(b)); }
 
 Region polygons(const Shape& a, const Shape& b, const Vec2& origin) {
   const Moments<double> m = polygon_overlap<double>(a, b, origin);
@@ -184,13 +186,17 @@ Region polygons(const Shape& a, const Shape& b, const Vec2& origin) {
   return region_of(m);
 }
 
-// The area alone: two rectangles without forming their overlap's
-// corners (narrowphase/area/overlap_rect_rect.h).
-double polygons_area(const Shape& a, const Shape& b, const Vec2& origin) {
+// The area of a sliver of two sharp polygons, clipped in double-double.
+double polygons_area_exactly(const Shape& a, const Shape& b) {
+  return region_of(polygon_overlap<DoubleDouble>(a, b, center_of(a))).area;
+}
+
+// The area alone: two rectangles without forming their overlap's corners
+// (narrowphase/area/overlap_rect_rect.h).
+double polygons_area(const Shape& a, const Shape& b) {
   const auto *ra = std::get_if<Rect>(&a), *rb = std::get_if<Rect>(&b);
-  const double area = ra && rb ? rect_rect_area(*ra, *rb) : polygon_overlap<double>(a, b, origin).area;
-  if (sliver(area, a, b)) return region_of(polygon_overlap<DoubleDouble>(a, b, origin)).area;
-  return std::max(area, 0.0);
+  const double area = ra && rb ? rect_rect_area(*ra, *rb) : polygon_overlap<double>(a, b, center_of(a)).area;
+  return sliver(area, a, b) ? polygons_area_exactly(a, b) : std::max(area, 0.0);
 }
 
 // Neither boundary crosses the other: one holds the other, or they share no open region.
@@ -223,7 +229,7 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
 // The area of A ∩ B alone: two sharp polygons are clipped without the crossings, which only the
 // chord needs.
 double shared_area(const Shape& a, const Shape& b) {
-  if (sharp(a) && sharp(b)) return polygons_area(a, b, center_of(a));
+  if (sharp(a) && sharp(b)) return polygons_area(a, b);
   return overlap_in_order(a, b).area;
 }
 
@@ -262,8 +268,19 @@ OverlapArea overlap_of(const Shape& a, const Shape& b) {
   });
 }
 
+double rect_iou(const Rect& a, const Rect& b, double area) {
+  const double area_a = rect_area(a), area_b = rect_area(b);
+  const double overlap = sliver(area, area_a, area_b) ? polygons_area_exactly(a, b) : std::max(area, 0.0);
+  return std::clamp(overlap / (area_a + area_b - overlap), 0.0, 1.0);
+}
+
 double iou_of(const Shape& a, const Shape& b) {
-  return in_rank_order<Kinds>(a, b, [](const auto& x, const auto& y, bool) { return iou_in_order(x, y); });
+  return in_rank_order<Kinds>(a, b, [](const auto& x, const auto& y, bool) {
+    if constexpr (std::is_same_v<decltype(x), const Rect&> && std::is_same_v<decltype(y), const Rect&>)
+      return rect_iou(x, y, rect_rect_area(x, y));
+    else
+      return iou_in_order(x, y);
+  });
 }
 
 }  // namespace detail::areas
