@@ -112,9 +112,18 @@ S checked_row(const char* which, const Rows& rows, py::ssize_t i) {
   return shape;
 }
 
-// The rows of an (n, k) array as shapes of one kind, each checked.
-std::vector<Shape> shapes_of(const char* which, const std::string& kind_name, const Rows& rows) {
-  std::vector<Shape> out;
+// Storage the thread keeps from call to call (`slot` 0 for a, 1 for b), so that a large array does
+// not take fresh pages from the system on every call.
+template <class T>
+T& kept(int slot) {
+  thread_local std::array<T, 2> storage;
+  return storage[static_cast<std::size_t>(slot)];
+}
+
+// The rows of an (n, k) array as shapes of one kind, each checked, in the thread's kept storage.
+const std::vector<Shape>& shapes_of(const char* which, const std::string& kind_name, const Rows& rows, int slot) {
+  std::vector<Shape>& out = kept<std::vector<Shape>>(slot);
+  out.clear();
   std::visit(
       [&](auto tag) {
         using S = typename decltype(tag)::type;
@@ -134,11 +143,12 @@ void check_lengths(std::size_t a, std::size_t b) {
 }
 
 struct PairLists {
-  std::vector<Shape> a, b;
+  const std::vector<Shape>& a;
+  const std::vector<Shape>& b;
 };
 
 PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
-  PairLists p{shapes_of("a", a_kind, a), shapes_of("b", b_kind, b)};
+  PairLists p{shapes_of("a", a_kind, a, 0), shapes_of("b", b_kind, b, 1)};
   check_lengths(p.a.size(), p.b.size());
   return p;
 }
@@ -150,12 +160,6 @@ template <class Query, class Out>
 void each_pair(const PairLists& p, Query query, Out out) {
   py::gil_scoped_release released;
   for (std::size_t i = 0; i < p.a.size(); ++i) out(i, query(p.a[i], p.b[i]));
-}
-
-template <class T>
-T& kept(int slot) {
-  thread_local std::array<T, 2> storage;
-  return storage[static_cast<std::size_t>(slot)];
 }
 
 // An array's rows as checked shapes of one kind and their orientations, as the batches take them,
@@ -274,15 +278,16 @@ Rows rect_rows(const Rows& rows, const std::string& format) {
   return out;
 }
 
-std::vector<Shape> solids_of(const char* which, const std::string& kind, const Rows& rows, const std::string& format) {
+const std::vector<Shape>& solids_of(const char* which, const std::string& kind, const Rows& rows,
+                                    const std::string& format, int slot) {
   if (format != "collide2d" && kind != "rect")
     throw py::value_error("box_format '" + format + "' is for rect rows, not " + kind);
-  return shapes_of(which, kind, rect_rows(rows, format));
+  return shapes_of(which, kind, rect_rows(rows, format), slot);
 }
 
 PairLists solid_pairs(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
                       const std::string& format) {
-  PairLists p{solids_of("a", a_kind, a, format), solids_of("b", b_kind, b, format)};
+  PairLists p{solids_of("a", a_kind, a, format, 0), solids_of("b", b_kind, b, format, 1)};
   check_lengths(p.a.size(), p.b.size());
   return p;
 }
@@ -301,7 +306,8 @@ auto released(Call call) {
 py::dict overlap_area_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
                              const std::string& box_format) {
   const PairLists p = solid_pairs(a_kind, a, b_kind, b, box_format);
-  std::vector<OverlapArea> results(p.a.size());
+  std::vector<OverlapArea>& results = kept<std::vector<OverlapArea>>(0);
+  results.resize(p.a.size());
   released([&] { overlap_areas(p.a, p.b, results); });
   const auto n = static_cast<py::ssize_t>(p.a.size());
   py::array_t<double> areas(n), centroids = points(p.a.size());
@@ -335,7 +341,7 @@ py::array_t<double> iou_arrays(const std::string& a_kind, const Rows& a, const s
 
 py::dict iou_matrix(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b, double min_iou,
                     const std::string& box_format) {
-  const std::vector<Shape> x = solids_of("a", a_kind, a, box_format), y = solids_of("b", b_kind, b, box_format);
+  const std::vector<Shape>&x = solids_of("a", a_kind, a, box_format, 0), &y = solids_of("b", b_kind, b, box_format, 1);
   const std::vector<IouPair> pairs = released([&] { return iou_pairs(x, y, min_iou); });
   const auto n = static_cast<py::ssize_t>(pairs.size());
   py::array_t<std::int64_t> i(n), j(n);
@@ -355,7 +361,7 @@ using Scores = py::array_t<double, py::array::c_style | py::array::forcecast>;
 py::array_t<std::int64_t> non_maximum_suppression(const Rows& rows, const Scores& scores, double iou_threshold,
                                                   const std::optional<Labels>& labels, const std::string& kind,
                                                   const std::string& box_format) {
-  const std::vector<Shape> shapes = solids_of("rows", kind, rows, box_format);
+  const std::vector<Shape>& shapes = solids_of("rows", kind, rows, box_format, 0);
   const std::span<const double> s(scores.data(), static_cast<std::size_t>(scores.size()));
   std::span<const std::int64_t> l;
   if (labels) l = {labels->data(), static_cast<std::size_t>(labels->size())};

@@ -5,7 +5,9 @@
 # the medians kept, runs the speed-against-error report, and writes
 # bench/results/<date>-<cpu>.json: every program's Google Benchmark JSON, the report's, and the
 # machine (CPU model, cores, compiler, flags); then the Python module against the same work in C++
-# (bench/python/bench_python.py) into bench/results/python/<date>-<cpu>.json. Then regenerates
+# (bench/python/bench_python.py) into bench/results/python/<date>-<cpu>.json, the overlap areas
+# (bench/bench_areas.cpp, bench/python/bench_areas.py) into bench/results/areas/, and DistributedWorld
+# under mpirun into bench/results/mpi/. Then regenerates
 # docs/performance.md and its plots from bench/results alone (scripts/performance.py).
 # BOX2D_V3_DIR names a copy of Box2D v3's source: the suite then races v3 too (bench/box2d_v3/).
 #
@@ -48,6 +50,15 @@ slug=$(tr 'A-Z' 'a-z' <<< "$cpu" | sed -E 's/[^a-z0-9]+/-/g; s/^-//; s/-$//')
 echo "bench_python.py" >&2
 PYTHONPATH="$build/python" /usr/bin/python3 "$root/bench/python/bench_python.py" --rival "$build/bench/python_rival" \
   --json "$root/bench/results/python/$(date +%F)-$slug.json"
+# Overlap areas and IoU: the C++ benchmarks and the Python side (shapely, iou_matrix), into one file.
+cmake --build "$build" -j "$(nproc)" --target bench_areas
+echo "bench_areas" >&2
+"$build/bench/bench_areas" --benchmark_enable_random_interleaving=true --benchmark_repetitions="$repetitions" \
+  --benchmark_report_aggregates_only=true --benchmark_min_time="$min_time" \
+  --benchmark_out="$runs/areas.json" --benchmark_out_format=json > /dev/null
+mkdir -p "$root/bench/results/areas"
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/bench/python/bench_areas.py" --benchmarks "$runs/areas.json" \
+  --json "$root/bench/results/areas/$(date +%F)-$slug.json"
 # DistributedWorld under mpirun with 1 and 2 ranks (Open MPI refuses root unless told).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cmake --build "$build" -j "$(nproc)" --target bench_distributed

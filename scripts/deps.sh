@@ -14,7 +14,7 @@ esac
 if ((test_tools)); then
   packages+=(ccache python3 clang-format libbox2d-dev googletest libgtest-dev libbenchmark-dev libboost-dev clang
     libclang-rt-14-dev pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-venv
-    python3-matplotlib libopenmpi-dev openmpi-bin)
+    python3-matplotlib python3-shapely libopenmpi-dev openmpi-bin)
 fi
 missing=()
 for p in "${packages[@]}"; do

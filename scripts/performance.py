@@ -444,6 +444,65 @@ the median of the rounds kept. The ratio is Python's time over C++'s. From
 '''
 
 
+AREA_ROWS = [
+    ('rotated-box IoU, batch of 4,096 pairs', 'ours/iou_rotated_boxes_batch', 'detectron2_method/iou_rotated_boxes_batch'),
+    ('rotated-box IoU, one pair', 'ours/iou_rotated_boxes', 'detectron2_method/iou_rotated_boxes'),
+]
+AREA_KINDS = ['circle_circle', 'rect_rect', 'capsule_capsule', 'rect_ellipse', 'circle_ellipse', 'ellipse_ellipse']
+
+
+def areas_section(folder):
+    """Overlap areas and IoU, from the newest bench/results/areas file."""
+    path, data = newest(folder)
+    if not path:
+        return ''
+    bench, py, machine = data['benchmarks'], data['results'], data['machine']
+    ns = lambda key: bench[key]['ns'] if key in bench else None
+    rival = ['| what | collide2d | rival | ratio |', '| --- | --- | --- | --- |']
+    for label, ours, theirs in AREA_ROWS:
+        rival.append(f'| {label} | {fmt_time(ns(ours))} | {fmt_time(ns(theirs))} | **{fmt_ratio(ns(ours), ns(theirs))}** |')
+    kinds = ['| pair | time |', '| --- | --- |']
+    for name in AREA_KINDS:
+        kinds.append(f"| {name.replace('_', '–')} | {fmt_time(ns(f'ours/overlap_area/{name}/candidates:3'))} |")
+    small, large, dense = (bench.get(k, {}) for k in ('ours/iou_pairs/2000', 'ours/iou_pairs/100000', 'ours/iou_dense/2000'))
+    m, sm, d = py['matrix'], py['small_matrix'], py['dense']
+    mib = lambda b: f'{b / 2**20:.1f} MiB'
+    return f'''## Overlap areas and IoU
+
+`bench/bench_areas.cpp` and `bench/python/bench_areas.py` (run by `bash scripts/bench.sh`), from
+`bench/results/areas/{path.name}` ({data['date']}, one thread). Rotated boxes as a detector scores
+them: a box and a noisy copy of it (centre moved by up to a fifth of its size, sides changed by up to
+a tenth, angle by up to 0.3 rad). The rival is double-precision code written from detectron2's
+published method for rotated-box IoU (`narrowphase/baselines/rotated_box_iou.h`: crossings with
+fixed epsilons, a Graham hull, a fan), compiled alike; its accuracy beside collide2d's is on the
+[overlap area page](overlap-area.md#accuracy). The batch is `ious()` over spans against a loop of the
+rival over the same pairs.
+
+{chr(10).join(rival)}
+
+`overlap_area()`, one pair at a time, on the overlapping candidate pairs of each kind
+(bench/shape_pairs.h):
+
+{chr(10).join(kinds)}
+
+The N × N problem, `iou_pairs()`: {large.get('pairs', 0):,} pairs with IoU above 0 among 100,000 boxes
+against 100,000 in {fmt_time(ns('ours/iou_pairs/100000'))}; at 2,000 against 2,000,
+{fmt_time(ns('ours/iou_pairs/2000'))} against {fmt_time(ns('ours/iou_dense/2000'))} for `iou()` of every
+pair ({small.get('pairs', 0):,} and {dense.get('pairs', 0):,} pairs found).
+
+From Python ({machine['python']}, NumPy {machine['numpy']}, shapely {machine['shapely']}), on
+{data['method']['pairs']:,} pairs, the median of {data['method']['rounds']} alternating rounds:
+`iou_arrays` takes {fmt_time(py['iou_arrays_ns'])} per pair, shapely's polygon intersection (polygons
+built beforehand) {fmt_time(py['shapely_ns'])}: **{py['shapely_ns'] / py['iou_arrays_ns']:.0f}x**; the
+largest difference of their IoUs is {py['largest_difference']:.1e}. `iou_matrix` of
+{m['n']:,} boxes against {m['n']:,} takes {m['seconds']:.3g} s and adds {mib(m['peak_bytes'])} to the
+process's peak memory ({m['pairs']:,} pairs); at {d['n']:,} against {d['n']:,}, {sm['seconds'] * 1e3:.3g} ms
+and {mib(sm['peak_bytes'])}, where `iou_arrays` over every pair (the rows repeated) takes
+{d['seconds']:.3g} s and {mib(d['peak_bytes'])}.
+
+'''
+
+
 # The network a model of many ranks assumes: one message's latency and a link's bandwidth, those of
 # a common InfiniBand cluster, not measured here.
 LATENCY_S = 2e-6
@@ -658,7 +717,7 @@ def page(args):
     files = sorted(pathlib.Path(args.results).glob('*.json'))
     if not files:
         sys.exit('no results in ' + args.results)
-    side_files = [f for folder in ('python', 'mpi') for f in sorted((pathlib.Path(args.results) / folder).glob('*.json'))]
+    side_files = [f for folder in ('python', 'mpi', 'areas') for f in sorted((pathlib.Path(args.results) / folder).glob('*.json'))]
     newest = json.loads(files[-1].read_text())
     med = medians(newest)
     machine, method = newest['machine'], newest['method']
@@ -782,7 +841,7 @@ as `b2ContactManager` applies them).
 
 {table(WORLD, med, False)}
 
-{v3_world_section(med)}{movers_section(newest, med)}{python_section(pathlib.Path(args.results) / 'python')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
+{v3_world_section(med)}{movers_section(newest, med)}{python_section(pathlib.Path(args.results) / 'python')}{areas_section(pathlib.Path(args.results) / 'areas')}{mpi_section(pathlib.Path(args.results) / 'mpi')}## Speed against error
 
 `collide2d_report`: {report['pairs']} ellipse pairs of the random generator, time the median of
 {report['repetitions']} passes, error against the 50-digit reference as a fraction of max(size,

@@ -1,13 +1,13 @@
 // Green's theorem over the overlap's boundary, which is the part of each rectangle's boundary inside
-// the other. Each rectangle's edges are clipped to the other in the other's frame, where that one
-// is the box |x| <= h.x, |y| <= h.y and clipping a line to it is four slabs (Liang and Barsky, "A
-// new concept and method for line clipping", 1984). An edge through m along the unit u, clipped to
-// the lengths s0 ... s1 from m, adds cross(m + s0 u, m + s1 u) = (s1 - s0) cross(m, u) to twice the
-// area about the frame's centre: no crossing point is formed and no polygon assembled, and the two
-// reciprocals of the relative rotation's cosine and sine serve every slab of both rectangles. The
-// cross product is the same in either frame; moving the origin of A's clipped edges from B's centre
-// to A's adds cross(B's centre, their sum). Rectangles turned a whole number of right angles from
-// each other overlap in a box. The kernel itself is narrowphase/area/rect_rect_area-inl.h.
+// the other, in A's frame, where A is the box |x| <= ax, |y| <= ay and clipping a line to it is four
+// slabs (Liang and Barsky, "A new concept and method for line clipping", 1984). An edge of B through
+// m along the unit u, clipped to the lengths s0 ... s1 from m, adds cross(m + s0 u, m + s1 u) =
+// (s1 - s0) cross(m, u) to twice the area about A's centre; a side of A adds its length inside B
+// times its distance from the centre, that length read from where B's edge lines cross the side:
+// the same slab parameters, so that each crossing is computed once for both curves. No crossing
+// point is formed, no polygon assembled, and the reciprocals of the relative rotation's cosine and
+// sine serve every slab. Rectangles turned a whole number of right angles from each other overlap
+// in a box. The kernel is narrowphase/area/rect_rect_area-inl.h.
 #include "narrowphase/area/overlap_rect_rect.h"
 
 #include "narrowphase/shared/frames/rect_pair_frame.h"

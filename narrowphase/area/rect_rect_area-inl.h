@@ -11,41 +11,36 @@
 #define COLLIDE2D_RECT_RECT_AREA_INL_H_
 #endif
 
-// The lengths along the edge through (mx, my) with the reciprocals (ix, iy) of its unit direction
-// inside the slabs |x| <= bx, |y| <= by, from its half length back to its half length forward.
+// The length inside [lo, hi] of the interval [a0, a1] or [a1, a0] and [b0, b1] or [b1, b0]: 0 where
+// they do not meet.
 template <class V>
-V inside_length(V mx, V my, V ix, V iy, V half, V bx, V by) {
-  const V x0 = (Neg(bx) - mx) * ix, x1 = (bx - mx) * ix;
-  const V y0 = (Neg(by) - my) * iy, y1 = (by - my) * iy;
-  const V s0 = Max(Max(Neg(half), Min(x0, x1)), Min(y0, y1));
-  const V s1 = Min(Min(half, Max(x0, x1)), Max(y0, y1));
-  return Max(s0, s1) - s0;  // 0 where the part is empty
+V shared_length(V a0, V a1, V b0, V b1, V lo, V hi) {
+  const V from = Max(Max(Min(a0, a1), Min(b0, b1)), lo), to = Min(Min(Max(a0, a1), Max(b0, b1)), hi);
+  return Max(from, to) - from;
 }
 
-// A rectangle's edges clipped to a box: twice the area they add about the box's centre, and the
-// sum of their clipped vectors.
+// One of B's edges in A's frame: its midpoint, direction (unit), the reciprocals of the direction,
+// and the parameters along it (lengths from the midpoint) where its line meets A's four sides.
 template <class V>
-struct ClippedEdges {
-  V twice_area;
-  V sum_x, sum_y;
+struct EdgeInA {
+  V mx, my, dx, dy;
+  V left, right, bottom, top;  // at x = -ax, x = ax, y = -ay, y = ay
+
+  EdgeInA(V mx_, V my_, V dx_, V dy_, V ix, V iy, V ax, V ay)
+      : mx(mx_),
+        my(my_),
+        dx(dx_),
+        dy(dy_),
+        left((Neg(ax) - mx_) * ix),
+        right((ax - mx_) * ix),
+        bottom((Neg(ay) - my_) * iy),
+        top((ay - my_) * iy) {}
+  // The length of the edge inside A, from its half length back to its half length forward.
+  V inside(V half) const { return shared_length(left, right, bottom, top, Neg(half), half); }
+  // Where its line meets A's side x = +-ax (the parameter given) in y, or y = +-ay in x.
+  V y_at(V t) const { return my + t * dy; }
+  V x_at(V t) const { return mx + t * dx; }
 };
-
-// The rectangle of centre (cx, cy), first axis (ux, uy) with reciprocals (iux, iuy), half extents
-// (hx, hy), turned parallel to neither axis, clipped to the box |x| <= bx, |y| <= by. Edge k runs
-// through its midpoint along u, v, -u, -v (v = perp(u)); a part of length w adds w cross(m, dir),
-// which for these midpoints is +-cross(c, u) or +-cross(c, v) plus the half extent across.
-template <class V>
-ClippedEdges<V> clip_edges(V cx, V cy, V ux, V uy, V iux, V iuy, V hx, V hy, V bx, V by) {
-  const V vx = Neg(uy), vy = ux, ivx = Neg(iuy), ivy = iux;
-  const V w0 = inside_length(cx - hy * vx, cy - hy * vy, iux, iuy, hx, bx, by);
-  const V w2 = inside_length(cx + hy * vx, cy + hy * vy, Neg(iux), Neg(iuy), hx, bx, by);
-  const V w1 = inside_length(cx + hx * ux, cy + hx * uy, ivx, ivy, hy, bx, by);
-  const V w3 = inside_length(cx - hx * ux, cy - hx * uy, Neg(ivx), Neg(ivy), hy, bx, by);
-  const V cu = cx * uy - cy * ux, cv = cx * vy - cy * vx;
-  const V along = w0 - w2, across = w1 - w3;
-  return {w0 * (cu + hy) + w2 * (hy - cu) + w1 * (cv + hx) + w3 * (hx - cv), along * ux + across * vx,
-          along * uy + across * vy};
-}
 
 // The overlap of A's box and the box of B's centre (tx, ty) and half extents (ex, ey) in A's frame.
 template <class V>
@@ -54,20 +49,34 @@ V box_overlap(V ax, V ay, V tx, V ty, V ex, V ey, V zero) {
   return Max(width, zero) * Max(height, zero);
 }
 
-// The area of the overlap, lane by lane: 0 or a little either side of it where the rectangles are
-// apart or touch. A rotation within 2^-60 of a whole number of right angles is taken for one: what
+// The area of the overlap, lane by lane, in A's frame: 0 or a little either side of it where the
+// rectangles are apart or touch. B's edge k runs through its midpoint along u, v, -u, -v
+// (v = perp(u)); its part of length w adds w cross(m, direction), which for these midpoints is
+// +-cross(t, u) or +-cross(t, v) plus the half extent across. A's side x = ax adds ax times its
+// length inside B, and so on round. The part of A's side inside B lies between the points where B's
+// two pairs of parallel edge lines cross it, the very parameters that clip B's edges: each crossing
+// is computed once for both, so that where edges are nearly parallel its error slides it along both
+// lines alike. A rotation within 2^-60 of a whole number of right angles is taken for one: what
 // that moves is far inside the rounding of the rest.
 template <class D, class V>
 V rect_rect_area(D d, const detail::RectRectLanes<V>& f) {
   const V zero = Set(d, 0.0), one = Set(d, 1.0), aligned = Set(d, 0x1p-60);
-  const V ic = one / f.c, is = one / f.s;
-  const ClippedEdges<V> b_in_a = clip_edges(f.tx, f.ty, f.c, f.s, ic, is, f.bx, f.by, f.ax, f.ay);
-  // A's centre in B's frame, and A's edges clipped there.
-  const V ax_in_b = Neg(f.c * f.tx + f.s * f.ty), ay_in_b = Neg(Neg(f.s) * f.tx + f.c * f.ty);
-  const ClippedEdges<V> a_in_b = clip_edges(ax_in_b, ay_in_b, f.c, Neg(f.s), ic, Neg(is), f.ax, f.ay, f.bx, f.by);
-  // Their sum turned into A's axes, for the move of their origin from B's centre to A's.
-  const V sum_x = f.c * a_in_b.sum_x - f.s * a_in_b.sum_y, sum_y = f.s * a_in_b.sum_x + f.c * a_in_b.sum_y;
-  const V turned = (b_in_a.twice_area + a_in_b.twice_area + (f.tx * sum_y - f.ty * sum_x)) * Set(d, 0.5);
+  const V ux = f.c, uy = f.s, vx = Neg(f.s), vy = f.c;
+  const V iux = one / ux, iuy = one / uy, ivx = Neg(iuy), ivy = iux;
+  const EdgeInA<V> e0(f.tx - f.by * vx, f.ty - f.by * vy, ux, uy, iux, iuy, f.ax, f.ay);
+  const EdgeInA<V> e1(f.tx + f.bx * ux, f.ty + f.bx * uy, vx, vy, ivx, ivy, f.ax, f.ay);
+  const EdgeInA<V> e2(f.tx + f.by * vx, f.ty + f.by * vy, Neg(ux), Neg(uy), Neg(iux), Neg(iuy), f.ax, f.ay);
+  const EdgeInA<V> e3(f.tx - f.bx * ux, f.ty - f.bx * uy, Neg(vx), Neg(vy), Neg(ivx), Neg(ivy), f.ax, f.ay);
+  const V cu = f.tx * uy - f.ty * ux, cv = f.tx * vy - f.ty * vx;
+  const V b_edges = e0.inside(f.bx) * (cu + f.by) + e2.inside(f.bx) * (f.by - cu) + e1.inside(f.by) * (cv + f.bx) +
+                    e3.inside(f.by) * (f.bx - cv);
+  const V ax = f.ax, ay = f.ay, nax = Neg(f.ax), nay = Neg(f.ay);
+  const V right = shared_length(e0.y_at(e0.right), e2.y_at(e2.right), e1.y_at(e1.right), e3.y_at(e3.right), nay, ay);
+  const V left = shared_length(e0.y_at(e0.left), e2.y_at(e2.left), e1.y_at(e1.left), e3.y_at(e3.left), nay, ay);
+  const V top = shared_length(e0.x_at(e0.top), e2.x_at(e2.top), e1.x_at(e1.top), e3.x_at(e3.top), nax, ax);
+  const V bottom =
+      shared_length(e0.x_at(e0.bottom), e2.x_at(e2.bottom), e1.x_at(e1.bottom), e3.x_at(e3.bottom), nax, ax);
+  const V turned = (b_edges + ax * (right + left) + ay * (top + bottom)) * Set(d, 0.5);
   return IfThenElse(Abs(f.s) <= aligned, box_overlap(f.ax, f.ay, f.tx, f.ty, f.bx, f.by, zero),
                     IfThenElse(Abs(f.c) <= aligned, box_overlap(f.ax, f.ay, f.tx, f.ty, f.by, f.bx, zero), turned));
 }
