@@ -1,7 +1,7 @@
 // Private: the area of two rectangles' overlap (narrowphase/area/overlap_rect_rect.cpp gives the
 // method), written once over lanes like the overlap tests (narrowphase/shared/lanes.h): the one-off
-// kernel runs it on a double, the IoU batch (narrowphase/area/iou_batch.cpp) on vectors, with the
-// same operations in the same order.
+// kernel runs it on a double, the IoU batch (narrowphase/area/overlap_rect_rect_batch.cpp) on
+// vectors, with the same operations in the same order.
 //
 // Included inside a namespace, once per Highway target (no #pragma once, no includes).
 #if defined(COLLIDE2D_RECT_RECT_AREA_INL_H_) == defined(HWY_TARGET_TOGGLE)
