@@ -4,11 +4,13 @@
 // (narrowphase/baselines/rotated_box_iou.h), a loop of it over the same pairs; and one pair at a
 // time against one pair at a time. Then overlap_area() one pair at a time on the generator's
 // overlapping candidate pairs of each kind (bench/shape_pairs.h), and the N x M problem of
-// 100,000 boxes against 100,000 through iou_pairs().
+// 100,000 boxes against 100,000 through iou_pairs(). Two ellipses also against a rival that follows
+// Hughes and Chraibi (narrowphase/baselines/ellipse_overlap_area.h), one pair at a time.
 #include <collide2d/area.h>
 
 #include "bench/scene_workload.h"
 #include "bench/workload.h"
+#include "narrowphase/baselines/ellipse_overlap_area.h"
 #include "narrowphase/baselines/rotated_box_iou.h"
 
 #include <benchmark/benchmark.h>
@@ -102,6 +104,11 @@ void overlap_area_pairs(benchmark::State& state) {
   bench::time_queries(state, [&](std::size_t k) { return overlap_area(w.a[k], w.b[k]).area; });
 }
 
+void hughes_chraibi(benchmark::State& state) {
+  const auto& w = bench::pairs<Ellipse, Ellipse>(state);
+  bench::time_queries(state, [&](std::size_t k) { return baselines::ellipse_overlap_area(w.a[k], w.b[k]); });
+}
+
 // The overlapping pairs among the generator's candidates (workload 3).
 void overlapping_candidates(benchmark::internal::Benchmark* b) { b->ArgName("candidates")->Arg(3); }
 
@@ -115,6 +122,7 @@ BENCHMARK(overlap_area_pairs<Rect, Ellipse>)->Name("ours/overlap_area/rect_ellip
 BENCHMARK(overlap_area_pairs<Ellipse, Ellipse>)
     ->Name("ours/overlap_area/ellipse_ellipse")
     ->Apply(overlapping_candidates);
+BENCHMARK(hughes_chraibi)->Name("hughes_chraibi/overlap_area/ellipse_ellipse")->Apply(overlapping_candidates);
 
 // N boxes against N over a square that keeps a box's expected overlaps near 3, and the pairs of
 // them with IoU above 0 by `count`, reported with the time.

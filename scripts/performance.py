@@ -447,6 +447,8 @@ the median of the rounds kept. The ratio is Python's time over C++'s. From
 AREA_ROWS = [
     ('rotated-box IoU, batch of 4,096 pairs', 'ours/iou_rotated_boxes_batch', 'detectron2_method/iou_rotated_boxes_batch'),
     ('rotated-box IoU, one pair', 'ours/iou_rotated_boxes', 'detectron2_method/iou_rotated_boxes'),
+    ('ellipse–ellipse overlap area, one pair', 'ours/overlap_area/ellipse_ellipse/candidates:3',
+     'hughes_chraibi/overlap_area/ellipse_ellipse/candidates:3'),
 ]
 AREA_KINDS = ['circle_circle', 'rect_rect', 'capsule_capsule', 'rect_ellipse', 'circle_ellipse', 'ellipse_ellipse']
 
@@ -474,7 +476,10 @@ def areas_section(folder):
 them: a box and a noisy copy of it (centre moved by up to a fifth of its size, sides changed by up to
 a tenth, angle by up to 0.3 rad). The rival is double-precision code written from detectron2's
 published method for rotated-box IoU (`narrowphase/baselines/rotated_box_iou.h`: crossings with
-fixed epsilons, a Graham hull, a fan), compiled alike; its accuracy beside collide2d's is on the
+fixed epsilons, a Graham hull, a fan), and for two ellipses double-precision code following Hughes
+and Chraibi, "Calculating ellipse overlap areas" (`narrowphase/baselines/ellipse_overlap_area.h`: a
+quartic solved in closed form, sectors less triangles), on the overlapping candidate pairs
+(bench/shape_pairs.h); both compiled alike, their accuracy beside collide2d's on the
 [overlap area page](overlap-area.md#accuracy). The batch is `ious()` over spans against a loop of the
 rival over the same pairs.
 

@@ -1,8 +1,9 @@
 // The crossings are the roots of f(u) = |N u + h|^2 - 1 on the unit circle, a trigonometric
 // polynomial of degree 2. Each half circle, u = +-((1 - t^2), 2t) / (1 + t^2) for t in [-1, 1), makes
 // it a quartic in t on a bounded interval, whose real roots are isolated between the roots of its
-// derivative (recursively down to a line) and found by bisection, so that none is lost to a poor
-// starting point; Newton steps on f itself then restore the digits the quartic's coefficients lose.
+// derivative (recursively down to a line), so that none is lost to a poor starting point, and found
+// in their brackets by Newton's steps safeguarded by halving; Newton steps on f itself then restore
+// the digits the quartic's coefficients lose.
 #include "narrowphase/area/conic_roots.h"
 
 #include "narrowphase/shared/frames/unit_vector.h"
@@ -19,18 +20,46 @@ double evaluate(const double* c, int degree, double x) {
   return value;
 }
 
-// The root of the polynomial in [lo, hi], whose ends have signs opposite and f(lo) = f_lo.
-double bisect(const double* c, int degree, double lo, double hi, double f_lo) {
-  for (;;) {
-    const double mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) return mid;
-    const double f = evaluate(c, degree, mid);
-    if (f == 0) return mid;
-    if ((f < 0) == (f_lo < 0))
-      lo = mid, f_lo = f;
-    else
-      hi = mid;
+// The polynomial's value and derivative at x.
+struct ValueSlope {
+  double value = 0;
+  double slope = 0;
+};
+ValueSlope evaluate_with_slope(const double* c, int degree, double x) {
+  ValueSlope v{c[degree], 0};
+  for (int k = degree - 1; k >= 0; --k) {
+    v.slope = v.slope * x + v.value;
+    v.value = v.value * x + c[k];
   }
+  return v;
+}
+
+// The root of the polynomial in [lo, hi], whose ends have signs opposite and f(lo) = f_lo: Newton's
+// steps, each taken only where it stays inside the bracket the signs keep and shrinks faster than
+// halving would, else a halving; until a step no longer moves x.
+double root_between(const double* c, int degree, double lo, double hi, double f_lo) {
+  double x = 0.5 * (lo + hi), step = hi - lo, last_step = step;
+  for (int i = 0; i < 200; ++i) {
+    const ValueSlope f = evaluate_with_slope(c, degree, x);
+    if (f.value == 0) return x;
+    if ((f.value < 0) == (f_lo < 0))
+      lo = x, f_lo = f.value;
+    else
+      hi = x;
+    const double newton = f.slope != 0 ? x - f.value / f.slope : lo;
+    const double before = x;
+    if (newton > lo && newton < hi && std::abs(2 * f.value) <= std::abs(last_step * f.slope)) {
+      last_step = step;
+      step = x - newton;
+      x = newton;
+    } else {
+      last_step = step;
+      step = 0.5 * (hi - lo);
+      x = lo + step;
+    }
+    if (x == before || !(x >= lo && x <= hi)) return before;
+  }
+  return x;
 }
 
 // The real roots in [lo, hi) of c[0] + c[1] x + ... + c[degree] x^degree, ascending.
@@ -52,7 +81,7 @@ int roots_in(const double* c, int degree, double lo, double hi, double* out) {
     if (f0 == 0 && (count == 0 || out[count - 1] != x0))
       out[count++] = x0;
     else if (f0 != 0 && f1 != 0 && (f0 < 0) != (f1 < 0))
-      out[count++] = bisect(c, degree, x0, x1, f0);
+      out[count++] = root_between(c, degree, x0, x1, f0);
     x0 = x1, f0 = f1;
   }
   return count;
