@@ -147,8 +147,38 @@ struct PairLists {
   const std::vector<Shape>& b;
 };
 
-PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b) {
-  PairLists p{shapes_of("a", a_kind, a, 0), shapes_of("b", b_kind, b, 1)};
+// Rotated boxes in a detector's rows, (cx, cy, w, h, angle), as rect rows (cx, cy, hx, hy, theta):
+// detectron2's angle in degrees, mmcv's in radians. Whether the angle turns clockwise (mmcv's flag)
+// mirrors every box alike and leaves every area and IoU as it is.
+Rows rect_rows(const Rows& rows, const std::string& format) {
+  if (format == "collide2d") return rows;
+  double to_radians = 1;
+  if (format == "detectron2")
+    to_radians = std::numbers::pi / 180;
+  else if (format != "mmcv")
+    throw py::value_error("unknown box_format '" + format + "' (collide2d, detectron2 or mmcv)");
+  if (rows.ndim() != 2 || rows.shape(1) != 5)
+    throw py::value_error(format + " boxes need an (n, 5) array (cx cy w h angle)");
+  Rows out({rows.shape(0), py::ssize_t{5}});
+  auto in = rows.unchecked<2>();
+  auto o = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+    o(i, 0) = in(i, 0), o(i, 1) = in(i, 1), o(i, 2) = in(i, 2) / 2, o(i, 3) = in(i, 3) / 2;
+    o(i, 4) = in(i, 4) * to_radians;
+  }
+  return out;
+}
+
+const std::vector<Shape>& solids_of(const char* which, const std::string& kind, const Rows& rows,
+                                    const std::string& format, int slot) {
+  if (format != "collide2d" && kind != "rect")
+    throw py::value_error("box_format '" + format + "' is for rect rows, not " + kind);
+  return shapes_of(which, kind, rect_rows(rows, format), slot);
+}
+
+PairLists pair_lists(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
+                     const std::string& format = "collide2d") {
+  PairLists p{solids_of("a", a_kind, a, format, 0), solids_of("b", b_kind, b, format, 1)};
   check_lengths(p.a.size(), p.b.size());
   return p;
 }
@@ -256,42 +286,6 @@ py::dict contact_arrays(const std::string& a_kind, const Rows& a, const std::str
                   py::arg("point_b") = pb);
 }
 
-// Rotated boxes in a detector's rows, (cx, cy, w, h, angle), as rect rows (cx, cy, hx, hy, theta):
-// detectron2's angle in degrees, mmcv's in radians. Whether the angle turns clockwise (mmcv's flag)
-// mirrors every box alike and leaves every area and IoU as it is.
-Rows rect_rows(const Rows& rows, const std::string& format) {
-  if (format == "collide2d") return rows;
-  double to_radians = 1;
-  if (format == "detectron2")
-    to_radians = std::numbers::pi / 180;
-  else if (format != "mmcv")
-    throw py::value_error("unknown box_format '" + format + "' (collide2d, detectron2 or mmcv)");
-  if (rows.ndim() != 2 || rows.shape(1) != 5)
-    throw py::value_error(format + " boxes need an (n, 5) array (cx cy w h angle)");
-  Rows out({rows.shape(0), py::ssize_t{5}});
-  auto in = rows.unchecked<2>();
-  auto o = out.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-    o(i, 0) = in(i, 0), o(i, 1) = in(i, 1), o(i, 2) = in(i, 2) / 2, o(i, 3) = in(i, 3) / 2;
-    o(i, 4) = in(i, 4) * to_radians;
-  }
-  return out;
-}
-
-const std::vector<Shape>& solids_of(const char* which, const std::string& kind, const Rows& rows,
-                                    const std::string& format, int slot) {
-  if (format != "collide2d" && kind != "rect")
-    throw py::value_error("box_format '" + format + "' is for rect rows, not " + kind);
-  return shapes_of(which, kind, rect_rows(rows, format), slot);
-}
-
-PairLists solid_pairs(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
-                      const std::string& format) {
-  PairLists p{solids_of("a", a_kind, a, format, 0), solids_of("b", b_kind, b, format, 1)};
-  check_lengths(p.a.size(), p.b.size());
-  return p;
-}
-
 // A library call on shapes already checked, the GIL released; its refusals come out as ValueError.
 template <class Call>
 auto released(Call call) {
@@ -305,7 +299,7 @@ auto released(Call call) {
 
 py::dict overlap_area_arrays(const std::string& a_kind, const Rows& a, const std::string& b_kind, const Rows& b,
                              const std::string& box_format) {
-  const PairLists p = solid_pairs(a_kind, a, b_kind, b, box_format);
+  const PairLists p = pair_lists(a_kind, a, b_kind, b, box_format);
   std::vector<OverlapArea>& results = kept<std::vector<OverlapArea>>(0);
   results.resize(p.a.size());
   released([&] { overlap_areas(p.a, p.b, results); });
@@ -329,7 +323,7 @@ py::array_t<double> iou_arrays(const std::string& a_kind, const Rows& a, const s
   if (mode == "iof") measure = &iof;
   if (mode == "distance") measure = &iou_distance;
   if (!measure) throw py::value_error("unknown mode '" + mode + "' (iou, iof or distance)");
-  const PairLists p = solid_pairs(a_kind, a, b_kind, b, box_format);
+  const PairLists p = pair_lists(a_kind, a, b_kind, b, box_format);
   py::array_t<double> out(static_cast<py::ssize_t>(p.a.size()));
   const std::span<double> values(out.mutable_data(), p.a.size());
   released([&] {

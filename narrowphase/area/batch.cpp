@@ -6,6 +6,7 @@
 
 #include "narrowphase/area/measures.h"
 #include "narrowphase/area/overlap_rect_rect.h"
+#include "narrowphase/dispatch.h"
 #include "narrowphase/shared/frames/rect_pair_frame.h"
 #include "shapes/kinds.h"
 
@@ -62,10 +63,10 @@ AabbTree tree_of(std::span<const Shape> shapes) {
   return tree;
 }
 
-// Each rectangle and the other in rank order, as the one-off IoU takes them.
+// The two rectangles in the rank order the one-off IoU takes them in (narrowphase/dispatch.h).
 std::pair<const Rect*, const Rect*> ranked(const Shape& a, const Shape& b) {
-  const Rect &x = std::get<Rect>(a), &y = std::get<Rect>(b);
-  return detail::precedes(y, x) ? std::pair(&y, &x) : std::pair(&x, &y);
+  auto order = [](const Rect& x, const Rect& y, bool) { return std::pair(&x, &y); };
+  return detail::kinds_in_rank_order<detail::Kinds>(std::get<Rect>(a), std::get<Rect>(b), order);
 }
 
 // The IoU of the pairs `which`, each two rectangles, their areas found a chunk at a time in vectors.
@@ -74,18 +75,16 @@ void rect_ious(std::span<const Shape> a, std::span<const Shape> b, std::span<con
   using Chunk = detail::Chunk<8>;
   const auto chunk = std::make_unique<Chunk>();
   std::array<double, Chunk::kPairs> areas;
+  std::array<std::pair<const Rect*, const Rect*>, Chunk::kPairs> pairs;
   for (std::size_t start = 0; start < which.size(); start += Chunk::kPairs) {
     const std::size_t count = std::min(Chunk::kPairs, which.size() - start);
     detail::fill_chunk(*chunk, start, count, [&](std::size_t k) {
-      const auto [x, y] = ranked(a[which[k]], b[which[k]]);
+      const auto [x, y] = pairs[k - start] = ranked(a[which[k]], b[which[k]]);
       return detail::rect_rect_lanes(*x, Orientation::of(x->angle), *y, Orientation::of(y->angle));
     });
     detail::areas::rect_rect_areas(*chunk, count, areas.data());
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t i = which[start + k];
-      const auto [x, y] = ranked(a[i], b[i]);
-      out[i] = detail::areas::rect_iou(*x, *y, areas[k]);
-    }
+    for (std::size_t k = 0; k < count; ++k)
+      out[which[start + k]] = detail::areas::rect_iou(*pairs[k].first, *pairs[k].second, areas[k]);
   }
 }
 
