@@ -31,7 +31,8 @@ WorldState::WorldState(const WorldOptions& options)
       proximity_margin_(options.proximity_margin),
       contacts_on_(options.contacts),
       speculative_margin_(options.contacts ? options.speculative_margin : 0.0),
-      contact_tolerance_(options.contact_tolerance) {
+      contact_tolerance_(options.contact_tolerance),
+      overlap_areas_(options.overlap_areas) {
   require_margin(options.proximity_margin, "proximity margin");
   require_margin(options.speculative_margin, "speculative margin");
   require_margin(options.contact_tolerance, "contact tolerance");

@@ -47,7 +47,15 @@ class Digest {
   std::uint64_t h_ = 0xcbf29ce484222325u;
 };
 
-void contact(Digest& d, const BodyContact& c) {
+void overlap(Digest& d, const OverlapArea& o) {
+  d.real(o.area);
+  d.point(o.centroid);
+  d.word(static_cast<std::uint64_t>(o.crossings));
+  d.point(o.chord[0]);
+  d.point(o.chord[1]);
+}
+
+void contact(Digest& d, const BodyContact& c, bool areas) {
   d.ids(c);
   d.word(c.touching);
   d.real(c.contact.separation);
@@ -61,6 +69,7 @@ void contact(Digest& d, const BodyContact& c) {
     d.real(p.separation);
     d.word(p.id);
   }
+  if (areas) overlap(d, c.overlap);
 }
 
 }  // namespace
@@ -81,7 +90,8 @@ std::uint64_t World::state_hash() const {
     d.point(p.result.point_a);
     d.point(p.result.point_b);
   });
-  d.list(contacts(), [&](const BodyContact& c) { contact(d, c); });
+  const bool areas = state_->overlap_areas();
+  d.list(contacts(), [&](const BodyContact& c) { contact(d, c, areas); });
   d.list(impacts(), [&](const Impact& i) {
     d.ids(i);
     d.real(i.t);
@@ -93,6 +103,7 @@ std::uint64_t World::state_hash() const {
     d.id(p.visitor);
     d.id(p.sensor_shape);
     d.id(p.visitor_shape);
+    if (areas) overlap(d, p.overlap);
   });
   return d.value();
 }

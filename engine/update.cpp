@@ -365,6 +365,14 @@ Contact WorldState::pair_contact(std::uint32_t a, std::uint32_t b, const Contact
   return contact(x.shape, x.orientation, y.shape, y.orientation, options);
 }
 
+OverlapArea WorldState::pair_overlap(std::uint32_t a, std::uint32_t b) const {
+  const Shape& x = entries_[a].shape;
+  const Shape& y = entries_[b].shape;
+  if (!overlap_areas_ || std::holds_alternative<Segment>(x) || std::holds_alternative<Segment>(y)) return {};
+  const OverlapArea o = areas::overlap_of(x, y);
+  return o.area > 0.0 ? o : OverlapArea{};
+}
+
 // One candidate pair that passed the filters, given its overlap verdict: a sensor's overlap, or the
 // solid pair's overlap, proximity, contact and time of impact, as far as they were asked for.
 void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkResults& out) const {
@@ -380,6 +388,7 @@ void WorldState::narrow(std::uint32_t a, std::uint32_t b, bool touching, ChunkRe
     BodyContact& r = out.contacts.emplace_back(BodyContact{ids_of(a, b)});
     r.touching = solids_touch;
     r.contact = c;
+    if (solids_touch) r.overlap = pair_overlap(a, b);
   };
   if (touching) {
     // A chain's segment touches only where its rules give a contact (chain.h): its contact comes

@@ -87,6 +87,7 @@ class WorldState {
   bool is_sensor(BodyId id) const { return body(id).sensor; }
   bool is_continuous(BodyId id) const { return body(id).continuous; }
   bool is_ghost(BodyId id) const { return body(id).ghost; }
+  bool overlap_areas() const { return overlap_areas_; }
   std::vector<ShapeId> shapes(BodyId id) const;
   const Shape& shape(ShapeId id) const { return entry(id).shape; }
   // A shape at its body's origin is its world shape moved there (at_origin()): only the others
@@ -307,6 +308,7 @@ class WorldState {
   bool contacts_on_;
   double speculative_margin_;
   double contact_tolerance_;
+  bool overlap_areas_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;  // this update's, a's body < b's
   std::vector<ShapePair> frame_pairs_;  // the narrow phase's pairs joined: storage kept between frames
   std::vector<BodyPair> frame_body_pairs_;
@@ -363,6 +365,9 @@ class WorldState {
   }
   // The contact of shapes a and b, as of a chain's rules where either is a chain's segment.
   Contact pair_contact(std::uint32_t a, std::uint32_t b, const ContactOptions& options) const;
+  // The overlap of shapes a and b with overlap areas on, all zero where they share no open region or
+  // either is a segment: so that it reads the same with the pair turned (engine/distributed).
+  OverlapArea pair_overlap(std::uint32_t a, std::uint32_t b) const;
   // f(index) for each shape of the body.
   template <class F>
   void each_entry(const Body& b, F f) const {

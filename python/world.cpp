@@ -199,16 +199,18 @@ using Bodies = py::class_<PyWorld>;
 void add_world_bodies(Bodies& c) {
   c.def(py::init(
             [](double fat_margin, double proximity_margin, bool contacts, double speculative_margin, unsigned threads,
-               double contact_tolerance) {
-              return std::make_unique<PyWorld>(
-                  WorldOptions{fat_margin, proximity_margin, contacts, speculative_margin, threads, contact_tolerance});
+               double contact_tolerance, bool overlap_areas) {
+              return std::make_unique<PyWorld>(WorldOptions{
+                  fat_margin, proximity_margin, contacts, speculative_margin, threads, contact_tolerance, overlap_areas});
             }),
         py::kw_only(), py::arg("fat_margin") = 0.0, py::arg("proximity_margin") = 0.0, py::arg("contacts") = false,
         py::arg("speculative_margin") = 0.0, py::arg("threads") = 0u, py::arg("contact_tolerance") = 0.0,
+        py::arg("overlap_areas") = false,
         "fat_margin: how far a shape may move before the broad phase looks again; proximity_margin > 0:\n"
         "report pairs apart by less than it; contacts: a contact for every overlapping pair;\n"
         "speculative_margin: contacts also for pairs apart by less than it; threads: 0 for the\n"
-        "hardware's count; contact_tolerance: how far a contact with an ellipse may be off (0: exact).");
+        "hardware's count; contact_tolerance: how far a contact with an ellipse may be off (0: exact);\n"
+        "overlap_areas: the overlap's area and centroid with each touching contact and each sensor visit.");
   c.def(
       "add",
       [](PyWorld& w, const std::variant<Shape, std::vector<Shape>>& shapes, std::optional<Pair> center, double angle,
@@ -305,6 +307,16 @@ void add_world_pairs(Bodies& c) {
       "sensing", [=](PyWorld& w) { return visits(w.world().body_sensing()); },
       "(sensor, visitor) pairs of bodies: a sensor and a body with a solid shape inside it, a row per sensor shape.");
   c.def(
+      "sensing_areas",
+      [=](PyWorld& w) {
+        const auto& r = w.world().body_sensing();
+        return py::dict(py::arg("pairs") = visits(r),
+                        py::arg("area") = column(r, 1, [](const SensorVisit& v, double* o) { o[0] = v.area; }),
+                        py::arg("centroid") = column(r, 2, [](const SensorVisit& v, double* o) { put(o, v.centroid); }));
+      },
+      "With overlap_areas on, the rows of sensing() with how much of each visitor lies inside the sensor\n"
+      "shape: pairs (m, 2), area (m, 1), centroid (m, 2) (its shapes' overlaps summed).");
+  c.def(
       "sensor_began", [=](PyWorld& w) { return visits(w.world().body_sensor_began()); },
       "(sensor, visitor) pairs that began at the update: the visitor's first shape entered.");
   c.def(
@@ -330,9 +342,12 @@ void add_world_pairs(Bodies& c) {
             py::arg("separation") = column(r, 1, [](const BodyContact& c, double* o) { o[0] = c.contact.separation; }),
             py::arg("normal") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.normal); }),
             py::arg("point_a") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_a); }),
-            py::arg("point_b") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_b); }));
+            py::arg("point_b") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.contact.point_b); }),
+            py::arg("area") = column(r, 1, [](const BodyContact& c, double* o) { o[0] = c.overlap.area; }),
+            py::arg("centroid") = column(r, 2, [](const BodyContact& c, double* o) { put(o, c.overlap.centroid); }));
       },
-      "With contacts on: pairs (m, 2), separation (m, 1), normal, point_a, point_b (m, 2).");
+      "With contacts on: pairs (m, 2), separation (m, 1), normal, point_a, point_b (m, 2); with\n"
+      "overlap_areas on also each touching pair's overlap: area (m, 1), centroid (m, 2) (zero otherwise).");
   c.def(
       "contacts_of",
       [](PyWorld& w, std::uint64_t body) {

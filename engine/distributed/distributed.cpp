@@ -107,6 +107,7 @@ std::uint64_t fingerprint(const DistributedOptions& o) {
   for (const double x : {w.fat_margin, w.proximity_margin, w.speculative_margin, w.contact_tolerance})
     mix(&x, sizeof x);
   mix(&w.contacts, sizeof w.contacts);
+  mix(&w.overlap_areas, sizeof w.overlap_areas);
   mix(&o.rebalance_every, sizeof o.rebalance_every);
   for (const double b : o.bounds) mix(&b, sizeof b);
   return h;

@@ -54,6 +54,7 @@ void turn(Proximity& r) {
 void turn(BodyContact& r) {
   turn_ids(r);
   r.contact = r.contact.swapped();
+  std::swap(r.overlap.chord[0], r.overlap.chord[1]);
 }
 void turn(Impact& r) {
   turn_ids(r);

@@ -1,5 +1,6 @@
 #include "examples/settle/settle.h"
 
+#include <collide2d/area.h>
 #include <collide2d/world.h>
 #include "tools/random.h"
 #include "tools/scene/svg_shape.h"
@@ -96,7 +97,7 @@ class Pile {
       const Vec2 jitter(tool::uniform(rng, -0.02, 0.02), 0.0);
       const Shape shape = random_shape(rng, k, Vec2(cell + jitter));
       Body& b = bodies_.emplace_back();
-      b.mass = area(shape);
+      b.mass = area(shape);  // its mass at density 1
       b.inertia = b.mass * inertia_per_mass(shape);
       BodyDef def;
       def.user_id = bodies_.size() - 1;
@@ -230,13 +231,6 @@ class Pile {
 };
 
 }  // namespace
-
-double area(const Shape& s) {
-  if (const auto* c = std::get_if<Circle>(&s)) return std::numbers::pi * c->radius * c->radius;
-  if (const auto* e = std::get_if<Ellipse>(&s)) return std::numbers::pi * e->a * e->b;
-  const Vec2& h = std::get<Rect>(s).half_extents;
-  return 4 * h.x() * h.y();
-}
 
 SettleResult settle(const SettleOptions& options, std::ostream* progress) {
   Pile pile(options);

@@ -43,9 +43,6 @@ struct SettleResult {
 
 SettleResult settle(const SettleOptions& options, std::ostream* progress = nullptr);
 
-// A shape's area: its mass at density 1.
-double area(const Shape& s);
-
 // The settled pile, the walls, and a caption with the numbers above.
 void write_settle_svg(const SettleResult& result, std::ostream& out);
 

@@ -27,6 +27,7 @@
 /// says which, and each leaves the World exactly as it was.
 #pragma once
 
+#include <collide2d/area.h>
 #include <collide2d/chain.h>
 #include <collide2d/function_ref.h>
 #include <collide2d/query.h>
@@ -176,6 +177,9 @@ struct SensorPair {
   /// In sensor_ended() only: the pair ended because one of its shapes or bodies was removed since
   /// the previous update.
   bool removed = false;
+  /// With WorldOptions::overlap_areas: the part of the visiting shape inside the sensor shape, the
+  /// sensor's boundary as A.
+  OverlapArea overlap{};
   friend bool operator==(const SensorPair& p, const SensorPair& q) {
     return p.sensor == q.sensor && p.visitor == q.visitor && p.sensor_shape == q.sensor_shape &&
            p.visitor_shape == q.visitor_shape;
@@ -201,6 +205,11 @@ struct SensorVisit {
   /// In body_sensor_ended() only: the visit ended because the sensor shape or either body was
   /// removed since the previous update.
   bool removed = false;
+  /// With WorldOptions::overlap_areas: how much of the body lies inside the sensor shape (the sum
+  /// over its shapes' pairs, so that a part where two of its own shapes overlap counts twice), and
+  /// where (their centroids weighted by area; the sensor shape's centre when the area is 0).
+  double area = 0.0;
+  Vec2 centroid = Vec2::Zero();
   friend bool operator==(const SensorVisit& p, const SensorVisit& q) {
     return p.sensor == q.sensor && p.visitor == q.visitor && p.sensor_shape == q.sensor_shape;
   }
@@ -224,6 +233,10 @@ struct WorldOptions {
   unsigned threads = 0;
   /// With contacts: ContactOptions::tolerance for every contact (0: exact).
   double contact_tolerance = 0.0;
+  /// The exact overlap (area.h) of every touching pair's contact, and of every sensor pair: area,
+  /// centroid and chord, for area-based contact forces and buoyancy. All zero where the pair shares
+  /// no open region (touching only) or either shape is a segment or a chain's.
+  bool overlap_areas = false;
 };
 
 /// Two solid shapes apart by less than the proximity margin.
@@ -237,6 +250,9 @@ struct BodyContact : PairIds {
   /// separation within rounding. False for a speculative contact.
   bool touching = true;
   Contact contact{};  ///< of shape_a with shape_b: the normal points from a to b
+  /// With WorldOptions::overlap_areas and touching: the overlap of shape_a with shape_b (area.h);
+  /// otherwise zero.
+  OverlapArea overlap{};
 };
 
 /// The contact's normal pointing away from `body`, towards the pair's other body: as stored for body

@@ -127,6 +127,27 @@ def test_contacts_of_a_body_against_a_scan():
             assert normal == list(collide2d.contact(shape, shapes[other]).normal)
 
 
+def test_overlap_areas_come_with_contacts_and_sensor_visits():
+    """A 2 x 2 box centred on the line y = 0, the top of a water sensor, has half of it, 2, under the
+    line, centred 0.5 below its centre; where it overlaps a circle, its contact's area is
+    overlap_area's."""
+    world = collide2d.World(contacts=True, overlap_areas=True)
+    water = world.add(collide2d.Rect((0, -5), (50, 5)), static=True, sensor=True)
+    box = world.add(collide2d.Rect((3, 0), (1, 1)))
+    ball = world.add(collide2d.Circle((4.5, 0.5), 1))
+    world.update()
+    areas = world.sensing_areas()
+    rows = {tuple(p): (a, c) for p, a, c in zip(areas['pairs'].tolist(), areas['area'][:, 0], areas['centroid'])}
+    assert rows[(water, box)][0] == 2.0 and rows[(water, box)][1].tolist() == [3.0, -0.5]
+    assert rows[(water, ball)][0] == pytest.approx(np.pi / 3 - np.sqrt(3) / 4, rel=1e-14)
+    contacts = world.contacts()
+    assert as_set(contacts['pairs']) == {(box, ball)}
+    expected = collide2d.overlap_area(collide2d.Rect((3, 0), (1, 1)), collide2d.Circle((4.5, 0.5), 1))
+    assert contacts['area'].tolist() == [[expected.area]]
+    assert contacts['centroid'][0].tolist() == list(expected.centroid)
+    assert collide2d.World(contacts=True).contacts()['area'].shape == (0, 1)
+
+
 def test_a_body_of_three_shapes_enters_and_leaves_a_sensor_once():
     """Its shapes cross the sensor's edge on different frames; the body enters with its first and
     leaves with its last."""

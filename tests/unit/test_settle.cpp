@@ -3,6 +3,8 @@
 // flown apart, not collapsed into each other).
 #include "examples/settle/settle.h"
 
+#include <collide2d/area.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
