@@ -57,6 +57,19 @@ void AabbTree::release(std::int32_t node) {
   free_.push_back(node);
 }
 
+AabbTree::AabbTree(std::span<const Aabb> boxes) {
+  nodes_.reserve(2 * boxes.size());
+  for (const Aabb& box : boxes) {
+    Node& n = nodes_.emplace_back();
+    store(box, n.lo, n.hi);
+    n.child[0] = n.child[1] = n.parent = -1;
+    n.height = 0;
+    n.value = static_cast<std::uint32_t>(leaves_++);
+  }
+  if (leaves_ == 1) root_ = 0;
+  rebuild();
+}
+
 AabbTree::Leaf AabbTree::insert(const Aabb& box, std::uint32_t value) {
   const std::int32_t leaf = allocate();
   Node& n = nodes_[leaf];

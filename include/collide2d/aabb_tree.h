@@ -10,6 +10,7 @@
 ///     return reach;  // or the distance of a hit nearer than reach: boxes beyond it are then skipped
 ///   });
 ///   tree.rebuild();                                 // a better tree for boxes that will stay put
+///   AabbTree built(boxes);                          // or all at once: boxes[i] with value i
 ///
 /// Boxes are stored in single precision, rounded outward and then one more step out (a node takes 36
 /// bytes instead of 52, so more of the tree stays in cache; the extra step keeps a box that a ray
@@ -50,6 +51,13 @@ class AabbTree {
  public:
   /// A stored box's handle; valid until removed, across rebuild().
   using Leaf = std::int32_t;
+
+  /// An empty tree.
+  AabbTree() = default;
+  /// A tree of the boxes (each valid), boxes[i] with value i and leaf i.
+  /// Built top-down at once as rebuild() builds: the same tree as inserting them and rebuilding,
+  /// without the insertions.
+  explicit AabbTree(std::span<const Aabb> boxes);
 
   /// Stores a box (valid: finite, min <= max) with `value`, which queries report.
   Leaf insert(const Aabb& box, std::uint32_t value);

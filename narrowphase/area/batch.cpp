@@ -20,6 +20,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace collide2d {
 namespace {
@@ -57,10 +58,9 @@ void require_fraction(double x, const char* what) {
 
 // A tree of the shapes' boxes, each with its index.
 AabbTree tree_of(std::span<const Shape> shapes) {
-  AabbTree tree;
-  for (std::size_t i = 0; i < shapes.size(); ++i) tree.insert(aabb(shapes[i]), static_cast<std::uint32_t>(i));
-  tree.rebuild();
-  return tree;
+  std::vector<Aabb> boxes(shapes.size());
+  std::transform(shapes.begin(), shapes.end(), boxes.begin(), [](const Shape& s) { return aabb(s); });
+  return AabbTree(boxes);
 }
 
 // The two rectangles in the rank order the one-off IoU takes them in (narrowphase/dispatch.h).

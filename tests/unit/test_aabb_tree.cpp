@@ -136,6 +136,39 @@ TEST(AabbTree, QueriesMatchAScanThroughChurn) {
   }
 }
 
+// Built at once from a span, the tree is the one that inserting the boxes and rebuilding gives: the
+// same height, inner perimeter, and values met by each query in the same order; a leaf is its box's
+// index, which move() and remove() take.
+TEST(AabbTree, BuiltAtOnceAsInsertedAndRebuilt) {
+  for (const std::size_t n : {0u, 1u, 2u, 3u, 1000u}) {
+    Rng rng(n);
+    std::vector<Aabb> boxes;
+    for (std::size_t k = 0; k < n; ++k) boxes.push_back(random_box(rng, 30));
+    AabbTree inserted;
+    for (std::size_t k = 0; k < n; ++k) inserted.insert(boxes[k], static_cast<std::uint32_t>(k));
+    inserted.rebuild();
+    AabbTree built(boxes);
+    ASSERT_EQ(built.size(), n);
+    EXPECT_EQ(built.height(), inserted.height()) << n;
+    EXPECT_EQ(built.inner_perimeter(), inserted.inner_perimeter()) << n;
+    EXPECT_EQ(built.inserted_since_rebuild(), 0u);
+    for (int q = 0; q < 50; ++q) {
+      const Aabb box = random_box(rng, 30);
+      std::vector<std::uint32_t> a, b;
+      inserted.query(box, [&a](std::uint32_t v) { a.push_back(v); });
+      built.query(box, [&b](std::uint32_t v) { b.push_back(v); });
+      ASSERT_EQ(a, b) << n << " query " << q;
+    }
+    if (n < 2) continue;
+    built.move(0, {Vec2(100, 100), Vec2(101, 101)});
+    std::vector<std::uint32_t> found;
+    built.query({Vec2(100.5, 100.5), Vec2(100.5, 100.5)}, [&found](std::uint32_t v) { found.push_back(v); });
+    EXPECT_EQ(found, std::vector<std::uint32_t>{0});
+    built.remove(1);
+    EXPECT_EQ(built.size(), n - 1);
+  }
+}
+
 TEST(AabbTree, HeightStaysWithinTheBounds) {
   Rng rng(9);
   AabbTree tree;
