@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -37,7 +38,8 @@ void expect_same(const OverlapArea& got, const OverlapArea& want, const std::str
   EXPECT_EQ(got.chord[1], want.chord[1]) << what;
 }
 
-// A World of moving solids and sensors over a floor chain: every touching contact carries its
+// A World of moving solids and sensors of every kind (capsules, sharp and rounded polygons, bodies
+// of two shapes) over a floor chain: every touching contact carries its
 // pair's overlap, every speculative one none, every sensor pair the sensor's overlap with its
 // visitor, and every visit the sum over its pairs.
 World busy_world(unsigned threads) {
@@ -47,8 +49,14 @@ World busy_world(unsigned threads) {
   for (int k = 0; k < 300; ++k) world.add(random_shape(rng, 12.0), {.sensor = k % 10 == 0});
   const Vec2 floor[] = {{-2, 0.9}, {-1, 0.5}, {6, 0.2}, {13, 0.6}, {14, 1.0}};
   world.add_chain(floor, false);
+  const Vec2 corners[] = {{-0.4, -0.3}, {0.5, -0.2}, {0.3, 0.4}, {-0.3, 0.3}};
   const ShapeDef pair[] = {{.shape = Circle{Vec2(0, 0), 0.6}}, {.shape = Rect{Vec2(0.5, 0), Vec2(0.5, 0.3), 0.4}}};
-  for (int k = 0; k < 20; ++k) world.add(Pose{uniform_point(rng, 0, 12), 0.3}, pair);
+  for (int k = 0; k < 20; ++k) {
+    world.add(Pose{uniform_point(rng, 0, 12), 0.3}, pair);
+    world.add(Capsule{uniform_point(rng, 0, 12), 0.5, 0.2, uniform(rng, 0, 6.3)}, {.sensor = k % 5 == 0});
+    world.add(Pose{uniform_point(rng, 0, 12), uniform(rng, 0, 6.3)},
+              std::span<const ShapeDef>({ShapeDef{.shape = ConvexPolygon::of(corners, k % 2 ? 0.1 : 0.0)}}));
+  }
   return world;
 }
 
