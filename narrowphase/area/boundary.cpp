@@ -17,6 +17,8 @@ Arc ellipse_arc(const Vec2& c, double a, double b, const Rot& r) {
   arc.m << a * r.c, -b * r.s, a * r.s, b * r.c;
   arc.inverse << r.c / a, r.s / a, -r.s / b, r.c / b;
   arc.det = a * b;
+  arc.u0 = arc.u1 = Vec2::UnitX();
+  arc.full = false;
   arc.circular = a == b;
   return arc;
 }
@@ -30,7 +32,7 @@ Boundary closed_curve(const Arc& curve) {
   piece.curved = true;
   piece.arc = curve;
   piece.arc.full = true;
-  piece.start = piece.end = {curve.point(Vec2::UnitX()), Vec2::UnitX()};
+  piece.start = piece.end = End{curve.point(Vec2::UnitX()), Vec2::UnitX()};
   return b;
 }
 
@@ -43,8 +45,9 @@ Boundary rounded_polygon(const Vec2* vertices, const Vec2* normals, int count, d
     const int next = (i + 1) % count;
     const Vec2 offset = radius * normals[i];
     Piece& edge = b.pieces[b.count++];
-    edge.start.p = vertices[i] + offset;
-    edge.end.p = vertices[next] + offset;
+    edge.start = End{vertices[i] + offset, Vec2::UnitX()};
+    edge.end = End{vertices[next] + offset, Vec2::UnitX()};
+    edge.curved = false;
     if (radius == 0) continue;
     Piece& corner = b.pieces[b.count++];
     corner.curved = true;

@@ -14,15 +14,18 @@
 
 namespace collide2d::detail::areas {
 
+// The pieces and crossings below have no default member values, so that a boundary's room for a
+// rounded octagon's 16 pieces is not written for a curve that uses one: each piece is set whole
+// where it is made.
 struct Arc {
-  Vec2 c = Vec2::Zero();
-  Eigen::Matrix2d m = Eigen::Matrix2d::Identity();
-  Eigen::Matrix2d inverse = Eigen::Matrix2d::Identity();  // of m
-  double det = 1;                                         // of m: a b, or r^2
-  Vec2 u0 = Vec2::UnitX();
-  Vec2 u1 = Vec2::UnitX();
-  bool full = false;  // the whole ellipse, from u0 round to u0
-  bool circular = false;
+  Vec2 c;
+  Eigen::Matrix2d m;
+  Eigen::Matrix2d inverse;  // of m
+  double det;               // of m: a b, or r^2
+  Vec2 u0;
+  Vec2 u1;
+  bool full;  // the whole ellipse, from u0 round to u0
+  bool circular;
 
   Vec2 point(const Vec2& u) const { return c + m * u; }
   // The unit vector of a point on (or near) the curve.
@@ -33,23 +36,23 @@ struct Arc {
 
 // A point where a piece starts or ends, with its unit vector when the piece is an arc.
 struct End {
-  Vec2 p = Vec2::Zero();
-  Vec2 u = Vec2::UnitX();
+  Vec2 p;
+  Vec2 u;  // UnitX on an edge
 };
 
 // Piece k runs from start to the next piece's start, straight or along its arc.
 struct Piece {
   End start;
   End end;
-  bool curved = false;
-  Arc arc;
+  bool curved;
+  Arc arc;  // on an edge, unset
 };
 
 // At most a rounded octagon's 8 edges and 8 arcs.
 inline constexpr int kMaxPieces = 2 * kMaxPolygonVertices;
 
 struct Boundary {
-  std::array<Piece, kMaxPieces> pieces{};
+  std::array<Piece, kMaxPieces> pieces;  // the first `count` set
   int count = 0;
   bool polygonal = true;  // edges only
 };

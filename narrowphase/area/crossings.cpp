@@ -12,6 +12,7 @@ namespace {
 bool owns(const Piece& piece, double t, const Vec2& u, Place& place) {
   if (!piece.curved) {
     place.key = t;
+    place.u = Vec2::UnitX();
     return t >= 0 && t < 1;
   }
   place.u = u;

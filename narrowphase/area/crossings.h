@@ -10,17 +10,18 @@ namespace collide2d::detail::areas {
 // A crossing's place on one loop: the piece, the position along it (the edge's parameter in
 // [0, 1), or turn_key() from the arc's start), and the unit vector there when the piece is an arc.
 struct Place {
-  int piece = 0;
-  double key = 0;
-  Vec2 u = Vec2::UnitX();
+  int piece;
+  double key;
+  Vec2 u;  // UnitX on an edge
 };
 
+// Set whole where it is found (no default member values: see boundary.h's Arc).
 struct Crossing {
-  Vec2 p = Vec2::Zero();
+  Vec2 p;
   Place a;
   Place b;
   // The sine of the angle from B's tangent to A's: positive where A's boundary enters B.
-  double entering = 0;
+  double entering;
 };
 
 // Two convex curves cross at most 4 times per pair of conics; the pieces of two rounded octagons
@@ -28,7 +29,7 @@ struct Crossing {
 inline constexpr int kMaxCrossings = 2 * kMaxPieces;
 
 struct Crossings {
-  std::array<Crossing, kMaxCrossings> list{};
+  std::array<Crossing, kMaxCrossings> list;  // the first `count` set
   int count = 0;
 };
 
