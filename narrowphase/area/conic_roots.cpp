@@ -18,12 +18,6 @@
 namespace collide2d::detail::areas {
 namespace {
 
-double evaluate(const double* c, int degree, double x) {
-  double value = c[degree];
-  for (int k = degree - 1; k >= 0; --k) value = value * x + c[k];
-  return value;
-}
-
 // The polynomial's value and derivative at x.
 struct ValueSlope {
   double value = 0;
@@ -107,9 +101,9 @@ int roots_by_turns(const double* c, int degree, double lo, double hi, double* ou
   for (int k = 1; k <= degree; ++k) slope[k - 1] = k * c[k];
   const int m = roots_by_turns(slope.data(), degree - 1, lo, hi, turns.data(), kTurningWidth);
   int count = 0;
-  double x0 = lo, f0 = evaluate(c, degree, lo);
+  double x0 = lo, f0 = evaluate_with_slope(c, degree, lo).value;
   for (int k = 0; k <= m; ++k) {
-    const double x1 = k < m ? turns[k] : hi, f1 = evaluate(c, degree, x1);
+    const double x1 = k < m ? turns[k] : hi, f1 = evaluate_with_slope(c, degree, x1).value;
     if (f0 == 0 && (count == 0 || out[count - 1] != x0))
       out[count++] = x0;
     else if (f0 != 0 && f1 != 0 && (f0 < 0) != (f1 < 0))
