@@ -16,16 +16,15 @@ namespace {
 using u64 = std::uint64_t;
 __extension__ using u128 = unsigned __int128;  // GCC's and clang's, on every target they build for
 
-// The bits of 2/pi after the binary point, 64 a word, the first bits first; then pi/2, pi and
-// atan(i/8) as double-doubles (scripts/elementary_constants.py prints them; test_elementary checks
-// the results against 1,300-bit arithmetic).
+// The bits of 2/pi after the binary point, 64 a word, the first bits first; then pi/2 and atan(i/8)
+// as double-doubles, beside elementary.h's pi (scripts/elementary_constants.py prints them;
+// test_elementary checks the results against 1,300-bit arithmetic).
 constexpr std::array<u64, 19> kTwoOverPi{0xa2f9836e4e441529, 0xfc2757d1f534ddc0, 0xdb6295993c439041, 0xfe5163abdebbc561,
                                          0xb7246e3a424dd2e0, 0x06492eea09d1921c, 0xfe1deb1cb129a73e, 0xe88235f52ebb4484,
                                          0xe99c7026b45f7e41, 0x3991d639835339f4, 0x9c845f8bbdf9283b, 0x1ff897ffde05980f,
                                          0xef2f118b5a0a6d1f, 0x6d367ecf27cb09b7, 0x4f463f669e5fea2d, 0x7527bac7ebe5f17b,
                                          0x3d0739f78a5292ea, 0x6bfb5fb11f8d5d08, 0x56033046fc7b6bab};
 constexpr DoubleDouble kHalfPi{0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54};
-constexpr DoubleDouble kPi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
 constexpr std::array<DoubleDouble, 9> kAtanEighths{{{0.0, 0.0},
                                                     {0x1.fd5ba9aac2f6ep-4, -0x1.cd37686760c17p-59},
                                                     {0x1.f5b75f92c80ddp-3, 0x1.8ab6e3cf7afbdp-57},
@@ -263,11 +262,18 @@ double arc_tangent(double y, double x) {
     base = kHalfPi;
     sign = behind ? 1 : -1;
   } else if (behind) {
-    base = kPi;
+    base = kExtendedPi;
     sign = -1;
   }
   const DoubleDouble sum = two_sum(base.hi, sign * a.hi);
   return std::copysign(sum.hi + (sum.lo + (base.lo + sign * a.lo)), y);
+}
+
+DoubleDouble arc_tangent_extended(const DoubleDouble& y, const DoubleDouble& x) {
+  const double t = arc_tangent(y.hi, x.hi);
+  const ExtendedCosSin r = cos_sin_extended(t);
+  // (x, y) turned back by t lies within an ulp's angle of the x axis, where atan z is z to 2^-150.
+  return DoubleDouble(t) + (y * r.c - x * r.s) / (x * r.c + y * r.s);
 }
 
 double hypotenuse(double x, double y) {

@@ -31,6 +31,13 @@ ExtendedCosSin cos_sin_extended(double angle);
 // The angle of (x, y) in [-pi, pi], with the signs of zero and the infinities as C's atan2.
 double arc_tangent(double y, double x);
 
+// pi as a double-double.
+inline constexpr DoubleDouble kExtendedPi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
+
+// The angle of (x, y) as a double-double, for finite x and y not both zero: within 2^-102 of the
+// exact angle, and of it relatively where it is small.
+DoubleDouble arc_tangent_extended(const DoubleDouble& y, const DoubleDouble& x);
+
 // sqrt(x^2 + y^2) without overflow or underflow in between; +inf when either is infinite.
 double hypotenuse(double x, double y);
 

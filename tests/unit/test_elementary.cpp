@@ -235,6 +235,25 @@ detail::DoubleDouble random_double_double(std::mt19937_64& rng, int low, int hig
 
 Real50 exact(const detail::DoubleDouble& x) { return Real50(x.hi) + Real50(x.lo); }
 
+// The double-double angle of double-double vectors in every quadrant, from a hair off an axis to
+// the diagonals, within 2^-102 of the exact angle and of it relatively below 1.
+TEST(Elementary, ExtendedArcTangentIsWithinTwoToTheMinus102) {
+  std::mt19937_64 rng(6);
+  double worst = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const detail::DoubleDouble x = random_double_double(rng, -20, 20);
+    const detail::DoubleDouble y = random_double_double(rng, -20 - static_cast<int>(rng() % 80), 20);
+    for (const auto& [yy, xx] : {std::pair{y, x}, std::pair{x, y}}) {
+      const Real50 want = atan2(exact(yy), exact(xx));
+      const Real50 error = abs(exact(detail::arc_tangent_extended(yy, xx)) - want);
+      const Real50 unit = (abs(want) < 1 ? Real50(abs(want)) : Real50(1)) * Real50(0x1p-102);
+      worst = std::max(worst, static_cast<double>(error / unit));
+    }
+  }
+  EXPECT_LT(worst, 1.0);
+  std::printf("extended atan2: largest error %.3f of 2^-102\n", worst);
+}
+
 // The largest relative error of each operator over random operands, cancelling sums among them.
 TEST(DoubleDouble, OperatorsAreWithinTwoToTheMinus103) {
   std::mt19937_64 rng(5);
