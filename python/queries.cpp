@@ -98,7 +98,7 @@ void add_queries(py::module_& m) {
         "The area and centroid of the solids' overlap, exactly (0 where they are apart or touch).");
   m.def("iou", &iou, py::arg("a"), py::arg("b"), "Intersection over union, |A & B| / |A | B|.");
   m.def("iou_distance", &iou_distance, py::arg("a"), py::arg("b"),
-        "|A ^ B| / |A | B|, which is 1 - IoU, keeping its digits where two sharp polygons nearly coincide.");
+        "|A ^ B| / |A | B|, which is 1 - IoU, keeping its own digits however near identical the shapes are.");
   m.def("iof", &iof, py::arg("a"), py::arg("b"), "Intersection over the first, |A & B| / |A|.");
   add_planes(m);
 }

@@ -44,8 +44,8 @@ OverlapArea overlap_area(const Shape& a, const Shape& b);
 /// Intersection over union, |A ∩ B| / |A ∪ B|, in [0, 1].
 double iou(const Shape& a, const Shape& b);
 /// |A ∆ B| / |A ∪ B|, which is 1 - IoU, in [0, 1]: 0 for equal shapes, 1 for shapes that share no
-/// open region. Between two sharp polygons (rectangles included) it keeps its own digits however near
-/// identical they are; docs/overlap-area.md gives the accuracy of each pair.
+/// open region. It keeps its own digits however near identical the shapes are, taking the overlap
+/// again in double-double below 1/2; docs/overlap-area.md gives the accuracy of each pair.
 double iou_distance(const Shape& a, const Shape& b);
 /// Intersection over the first, |A ∩ B| / |A| (mmcv's "iof" mode), in [0, 1].
 double iof(const Shape& a, const Shape& b);

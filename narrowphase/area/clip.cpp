@@ -75,6 +75,8 @@ Moments<Real> moments_of(const Corners<Real>& p) {
 template Corners<double> corners_of(const Rect&, const Vec2&);
 template Corners<double> corners_of(const ConvexPolygon&, const Vec2&);
 template Corners<double> corners_of(const Shape&, const Vec2&);
+template Corners<DoubleDouble> corners_of(const Rect&, const Vec2&);
+template Corners<DoubleDouble> corners_of(const ConvexPolygon&, const Vec2&);
 template Corners<DoubleDouble> corners_of(const Shape&, const Vec2&);
 template Corners<double> clipped(const Corners<double>&, const Corners<double>&);
 template Corners<DoubleDouble> clipped(const Corners<DoubleDouble>&, const Corners<DoubleDouble>&);

@@ -3,7 +3,9 @@
 #include "narrowphase/area/conic_roots.h"
 #include "shapes/internal.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace collide2d::detail::areas {
 namespace {
@@ -107,7 +109,67 @@ void arc_arc(const Piece& p, int i, const Piece& q, int j, Collector& out) {
   }
 }
 
+using DD = DoubleDouble;
+
+// A piece's curve function at p, zero on the curve, and its gradient: the edge's cross product
+// with p, or |M^-1 (p - c)|^2 - 1 on an arc.
+struct Level {
+  DD value;
+  V2<DD> gradient;
+};
+
+Level level(const PieceOf<DD>& piece, const V2<DD>& p) {
+  if (!piece.curved) {
+    const V2<DD> e = piece.end.p - piece.start.p;
+    return {cross(e, V2<DD>(p - piece.start.p)), perp(e)};
+  }
+  const V2<DD> w = piece.arc.inverse * (p - piece.arc.c);
+  return {w.squaredNorm() - 1, DD(2) * (piece.arc.inverse.transpose() * w)};
+}
+
+// Newton's steps stop one after the first below this fraction of the point's distance from the
+// origin: the iteration converges quadratically, so that the point is then off by the rounding of
+// the curve functions across the curves and by that over the sine of the crossing angle along
+// them; kMaxSteps bound them. A point that wandered beyond kReach of that distance from the double
+// crossing is another crossing, or none.
+constexpr double kSettled = 0x1p-40;
+constexpr double kReach = 0x1p-8;
+constexpr int kMaxSteps = 8;
+
+// The larger coordinate's magnitude: the scale the steps are measured against.
+double magnitude(const V2<DD>& v) { return std::max(std::abs(v.x().hi), std::abs(v.y().hi)); }
+
+// Newton's step at p for the two pieces' curve equations; none where their gradients are parallel.
+std::optional<V2<DD>> newton_step(const PieceOf<DD>& pa, const PieceOf<DD>& pb, const V2<DD>& p) {
+  const Level f = level(pa, p), g = level(pb, p);
+  const DD det = cross(f.gradient, g.gradient);
+  if (det.hi == 0) return std::nullopt;
+  return V2<DD>(g.value * f.gradient.y() - f.value * g.gradient.y(),
+                f.value * g.gradient.x() - g.value * f.gradient.x()) /
+         det;
+}
+
 }  // namespace
+
+bool refined(const BoundaryOf<DD>& a, const BoundaryOf<DD>& b, const Crossing& x, ExtendedCrossing& out) {
+  const PieceOf<DD>&pa = a.pieces[x.a.piece], &pb = b.pieces[x.b.piece];
+  const V2<DD> start(x.p.x(), x.p.y());
+  V2<DD> p = start;
+  const double size = magnitude(start);
+  bool small = false, settled = false;
+  for (int k = 0; k < kMaxSteps && !settled; ++k) {
+    const std::optional<V2<DD>> step = newton_step(pa, pb, p);
+    if (!step) return false;
+    p += *step;
+    settled = small;
+    small = magnitude(*step) <= kSettled * size;
+  }
+  if (!settled || !(magnitude(p - start) <= kReach * size)) return false;
+  const V2<DD> unit_x = V2<DD>::UnitX();
+  out.a = {p, pa.curved ? pa.arc.unit(p) : unit_x};
+  out.b = {p, pb.curved ? pb.arc.unit(p) : unit_x};
+  return true;
+}
 
 Crossings crossings_of(const Boundary& a, const Boundary& b) {
   Crossings out;

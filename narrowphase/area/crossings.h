@@ -2,6 +2,7 @@
 #pragma once
 
 #include "narrowphase/area/boundary.h"
+#include "shapes/internal.h"
 
 #include <array>
 
@@ -35,5 +36,18 @@ struct Crossings {
 
 // Each crossing once: an edge owns its start and not its end, an arc its u0 and not its u1.
 Crossings crossings_of(const Boundary& a, const Boundary& b);
+
+// A crossing on the double-double boundaries of the same two shapes, as an end on each.
+struct ExtendedCrossing {
+  EndOf<DoubleDouble> a;
+  EndOf<DoubleDouble> b;
+};
+
+// The crossing x, found in double on the same shapes' double boundaries, refined by Newton's method
+// on the two pieces' curve equations, so that near-identical curves, which cross at a small angle
+// and leave a double crossing far off along them, meet to double-double's digits; false where
+// the iteration does not settle near x.
+bool refined(const BoundaryOf<DoubleDouble>& a, const BoundaryOf<DoubleDouble>& b, const Crossing& x,
+             ExtendedCrossing& out);
 
 }  // namespace collide2d::detail::areas

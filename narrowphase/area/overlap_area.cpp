@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -28,65 +29,102 @@ namespace collide2d {
 namespace detail::areas {
 namespace {
 
+// (-1)^(k+1) / (2k+1)! for k = 1 ... n, in double-double.
+template <std::size_t n>
+constexpr std::array<DoubleDouble, n> extended_sine_terms() {
+  std::array<DoubleDouble, n> terms{};
+  DoubleDouble term = 1;
+  for (std::size_t k = 1; k <= n; ++k) {
+    term = term / DoubleDouble(static_cast<double>(2 * k * (2 * k + 1)));
+    terms[k - 1] = k % 2 == 1 ? term : -term;
+  }
+  return terms;
+}
+
 // x - sin x for x in [0, 2 pi], given sin x: by its series below 1.5, where the difference would
 // cancel.
-double x_minus_sin(double x, double sin_x) {
+template <class Real>
+Real x_minus_sin(const Real& x, const Real& sin_x) {
   if (x > 1.5) return x - sin_x;
-  // (-1)^(k+1) / (2k+1)! for k = 1 ... 11: the last term left out is below 2^-60 of the sum.
-  static constexpr std::array<double, 11> terms{1.0 / 6,
-                                                -1.0 / 120,
-                                                1.0 / 5040,
-                                                -1.0 / 362880,
-                                                1.0 / 39916800,
-                                                -1.0 / 6227020800,
-                                                1.0 / 1307674368000,
-                                                -1.0 / 355687428096000,
-                                                1.0 / 121645100408832000,
-                                                -1.0 / 51090942171709440000.0,
-                                                1.0 / 25852016738884976640000.0};
-  const double x2 = x * x;
-  double sum = 0;
+  // In double the terms for k = 1 ... 11, in double-double for k = 1 ... 17: the first term left out
+  // is below 2^-60 of the sum, or 2^-110.
+  static constexpr auto terms = [] {
+    if constexpr (std::is_same_v<Real, double>)
+      return std::array<double, 11>{1.0 / 6,
+                                    -1.0 / 120,
+                                    1.0 / 5040,
+                                    -1.0 / 362880,
+                                    1.0 / 39916800,
+                                    -1.0 / 6227020800,
+                                    1.0 / 1307674368000,
+                                    -1.0 / 355687428096000,
+                                    1.0 / 121645100408832000,
+                                    -1.0 / 51090942171709440000.0,
+                                    1.0 / 25852016738884976640000.0};
+    else
+      return extended_sine_terms<17>();
+  }();
+  const Real x2 = x * x;
+  Real sum = 0;
   for (auto k = terms.size(); k-- > 0;) sum = sum * x2 + terms[k];
   return x * x2 * sum;
 }
 
+double angle_of(double y, double x) { return arc_tangent(y, x); }
+DoubleDouble angle_of(const DoubleDouble& y, const DoubleDouble& x) { return arc_tangent_extended(y, x); }
+
+template <class Real>
+Real length(const V2<Real>& v) {
+  using std::sqrt;
+  return sqrt(v.squaredNorm());
+}
+
+template <class Real>
+constexpr Real kPiOf = std::numbers::pi;
+template <>
+constexpr DoubleDouble kPiOf<DoubleDouble> = kExtendedPi;
+
 // The area and first moment of a region, summed over its boundary's pieces about `origin`.
+template <class Real>
 class Green {
  public:
-  explicit Green(const Vec2& origin) : origin_(origin) {}
+  using V = V2<Real>;
+  explicit Green(const V& origin) : origin_(origin) {}
 
-  void chord(const Vec2& p, const Vec2& q) { fan_.add(p - origin_, q - origin_); }
+  void chord(const V& p, const V& q) { fan_.add(p - origin_, q - origin_); }
   // The region between the arc from u0 counter-clockwise to u1 and its chord.
-  void bulge(const Arc& arc, const Vec2& u0, const Vec2& u1) {
-    const Vec2 d = u1 - u0;
-    const double sine = cross(u0, u1);
-    double half = arc_tangent(d.norm(), (u0 + u1).norm());
-    if (sine < 0) half = std::numbers::pi - half;
-    const double segment = x_minus_sin(2 * half, sine) / 2;
+  void bulge(const ArcOf<Real>& arc, const V& u0, const V& u1) {
+    const V d = u1 - u0;
+    const Real sine = cross(u0, u1);
+    Real half = angle_of(length(d), length(V(u0 + u1)));
+    if (sine < 0) half = kPiOf<Real> - half;
+    const Real segment = x_minus_sin(Real(2 * half), sine) / 2;
     bulge_area_ += arc.det * segment;
-    bulge_moment_ += arc.det * (segment * (arc.c - origin_) + arc.m * ((d.squaredNorm() / 12) * Vec2(d.y(), -d.x())));
+    bulge_moment_ += arc.det * (segment * (arc.c - origin_) + arc.m * ((d.squaredNorm() / 12) * V(d.y(), -d.x())));
   }
   // The piece from `from` to `to`.
-  void along(const Piece& piece, const End& from, const End& to) {
+  void along(const PieceOf<Real>& piece, const EndOf<Real>& from, const EndOf<Real>& to) {
     chord(from.p, to.p);
     if (piece.curved) bulge(piece.arc, from.u, to.u);
   }
 
-  double area() const { return fan_.twice_area / 2 + bulge_area_; }
+  Real area() const { return fan_.twice_area / 2 + bulge_area_; }
   // The centroid, relative to the origin the pieces were given in.
-  Vec2 centroid() const { return origin_ + (fan_.moment6 / 6 + bulge_moment_) / area(); }
+  V centroid() const { return origin_ + (fan_.moment6 / 6 + bulge_moment_) / area(); }
 
  private:
-  Vec2 origin_;
-  Fan<double> fan_;
-  double bulge_area_ = 0;
-  Vec2 bulge_moment_ = Vec2::Zero();
+  V origin_;
+  Fan<Real> fan_;
+  Real bulge_area_ = 0;
+  V bulge_moment_ = V::Zero();
 };
 
 // The run along a loop from one crossing to the next.
-void run(const Boundary& loop, const End& from, const Place& a, const End& to, const Place& b, Green& g) {
-  const Piece& first = loop.pieces[a.piece];
-  if (a.piece == b.piece && (a.key <= b.key || first.arc.full)) return g.along(first, from, to);
+template <class Real>
+void run(const BoundaryOf<Real>& loop, const EndOf<Real>& from, const Place& a, const EndOf<Real>& to, const Place& b,
+         Green<Real>& g) {
+  const PieceOf<Real>& first = loop.pieces[a.piece];
+  if (a.piece == b.piece && (a.key <= b.key || (first.curved && first.arc.full))) return g.along(first, from, to);
   g.along(first, from, first.end);
   for (int k = (a.piece + 1) % loop.count; k != b.piece; k = (k + 1) % loop.count)
     g.along(loop.pieces[k], loop.pieces[k].start, loop.pieces[k].end);
@@ -102,15 +140,25 @@ struct Walk {
 Walk walk_of(const Boundary& a, const Boundary& b) {
   Walk w{crossings_of(a, b)};
   auto* list = w.x.list.data();
-  auto by_steepness = [](const Crossing& p, const Crossing& q) { return std::abs(p.entering) < std::abs(q.entering); };
-  // An odd count is a crossing seen twice or once too few where the curves graze: the grazing one goes.
-  if (w.x.count % 2 == 1) {
-    std::swap(*std::min_element(list, list + w.x.count, by_steepness), list[w.x.count - 1]);
-    --w.x.count;
-  }
   std::sort(list, list + w.x.count, [](const Crossing& p, const Crossing& q) {
     return p.a.piece != q.a.piece ? p.a.piece < q.a.piece : p.a.key < q.a.key;
   });
+  // Two crossings at one point are a tangency, which bounds no region: both go.
+  int kept = 0;
+  for (int i = 0; i < w.x.count; ++i) {
+    if (i + 1 < w.x.count && list[i].p == list[i + 1].p)
+      ++i;
+    else
+      list[kept++] = list[i];
+  }
+  w.x.count = kept;
+  auto by_steepness = [](const Crossing& p, const Crossing& q) { return std::abs(p.entering) < std::abs(q.entering); };
+  // An odd count is a crossing seen twice or once too few where the curves graze: the grazing one goes.
+  if (w.x.count % 2 == 1) {
+    Crossing* grazing = std::min_element(list, list + w.x.count, by_steepness);
+    std::move(grazing + 1, list + w.x.count, grazing);
+    --w.x.count;
+  }
   if (w.x.count == 0) return w;
   const auto steepest = std::max_element(list, list + w.x.count, by_steepness) - list;
   w.first_enters = (list[steepest].entering > 0) == (steepest % 2 == 0);
@@ -122,16 +170,48 @@ struct Region {
   Vec2 centroid = Vec2::Zero();  // relative to the pair's origin
 };
 
-Region along_crossings(const Boundary& a, const Boundary& b, const Walk& w) {
+// Green's theorem along A and B in turn between consecutive crossings, about the first one, from
+// A's run after the first crossing if A enters B there, else from B's; meets(i) gives crossing i as
+// an end on A and an end on B.
+template <class Real, class Meets>
+Green<Real> runs(const BoundaryOf<Real>& a, const BoundaryOf<Real>& b, const Walk& w, Meets meets) {
   const auto& list = w.x.list;
-  Green g(list[0].p);
+  Green<Real> g(meets(0).first.p);
   for (int i = 0; i < w.x.count; ++i) {
-    const Crossing &x = list[i], &y = list[(i + 1) % w.x.count];
+    const int next = (i + 1) % w.x.count;
+    const auto [xa, xb] = meets(i);
+    const auto [ya, yb] = meets(next);
     if ((i % 2 == 0) == w.first_enters)
-      run(a, {x.p, x.a.u}, x.a, {y.p, y.a.u}, y.a, g);
+      run(a, xa, list[i].a, ya, list[next].a, g);
     else
-      run(b, {x.p, x.b.u}, x.b, {y.p, y.b.u}, y.b, g);
+      run(b, xb, list[i].b, yb, list[next].b, g);
   }
+  return g;
+}
+
+// The runs that leave where A enters B bound A ∩ B, and the others A ∪ B. Where the crossings all
+// graze, the steepest one's sign that first_enters was read from is rounding: a region larger than
+// the smaller shape is then the union, and the other runs are taken (first_enters turned with them).
+template <class Real, class Meets>
+Green<Real> along_crossings(const BoundaryOf<Real>& a, const BoundaryOf<Real>& b, Walk& w, Meets meets,
+                            const Real& smaller) {
+  const Green<Real> g = runs(a, b, w, meets);
+  if (!(g.area() > smaller)) return g;
+  w.first_enters = !w.first_enters;
+  const Green<Real> other = runs(a, b, w, meets);
+  if (other.area() < g.area()) return other;
+  w.first_enters = !w.first_enters;
+  return g;
+}
+
+Region along_crossings(const Boundary& a, const Boundary& b, Walk& w, double smaller) {
+  const Green<double> g = along_crossings(
+      a, b, w,
+      [&w](int i) {
+        const Crossing& x = w.x.list[i];
+        return std::pair{End{x.p, x.a.u}, End{x.p, x.b.u}};
+      },
+      smaller);
   return {std::max(g.area(), 0.0), g.centroid()};
 }
 
@@ -209,14 +289,14 @@ OverlapArea nested(const Shape& a, const Shape& b) {
 OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
   const Vec2 origin = center_of(a);
   const Boundary pa = boundary_of(a, origin), pb = boundary_of(b, origin);
-  const Walk w = walk_of(pa, pb);
+  Walk w = walk_of(pa, pb);
   Region r;
   if (pa.polygonal && pb.polygonal)
     r = polygons(a, b, origin);
   else if (w.x.count == 0)
     return nested(a, b);
   else
-    r = along_crossings(pa, pb, w);
+    r = along_crossings(pa, pb, w, std::min(solid_area(a), solid_area(b)));
   if (!(r.area > 0)) return {0.0, origin};  // touching: no crossing into an open region
   OverlapArea out{r.area, origin + r.centroid, w.x.count};
   if (w.x.count == 2) {
@@ -238,17 +318,95 @@ double iou_in_order(const Shape& a, const Shape& b) {
   return std::clamp(overlap / (solid_area(a) + solid_area(b) - overlap), 0.0, 1.0);
 }
 
-// |A delta B| / |A u B|. Where it is small, two sharp polygons are near-identical and their overlap
-// and areas are taken again in double-double, so that the difference keeps its digits.
+// The area a boundary encloses.
+template <class Real>
+Real enclosed(const BoundaryOf<Real>& b) {
+  const PieceOf<Real>& first = b.pieces[0];
+  if (first.curved && first.arc.full) return kPiOf<Real> * first.arc.det;
+  Green<Real> g(first.start.p);
+  for (int k = 0; k < b.count; ++k) g.along(b.pieces[k], b.pieces[k].start, b.pieces[k].end);
+  return g.area();
+}
+
+// |A|, |B| and |A ∩ B| in double-double, for near-identical shapes, whose difference the double
+// areas lose.
+struct ExtendedAreas {
+  DoubleDouble a;
+  DoubleDouble b;
+  DoubleDouble shared;
+};
+
+ExtendedAreas sharp_areas_exactly(const Shape& a, const Shape& b) {
+  const Vec2 origin = center_of(a);
+  return {moments_of(corners_of<DoubleDouble>(a, origin)).area, moments_of(corners_of<DoubleDouble>(b, origin)).area,
+          polygon_overlap<DoubleDouble>(a, b, origin).area};
+}
+
+// The crossings of a walk refined on double-double boundaries, in the walk's order.
+struct ExtendedWalk {
+  Walk w;
+  std::array<ExtendedCrossing, kMaxCrossings> meets;
+};
+
+// The walk's crossings refined. One that does not refine is an end of a lens thinner than double
+// resolves, which the curves may not make: each unbroken run of such crossings goes, if it has an
+// even number (both ends of its lenses); none is the answer where a run has an odd number.
+std::optional<ExtendedWalk> refined_walk(const BoundaryOf<DoubleDouble>& a, const BoundaryOf<DoubleDouble>& b,
+                                         const Walk& w) {
+  const int n = w.x.count;
+  std::array<ExtendedCrossing, kMaxCrossings> meets;
+  std::array<bool, kMaxCrossings> found;
+  for (int i = 0; i < n; ++i) found[i] = refined(a, b, w.x.list[i], meets[i]);
+  // Runs of lost crossings counted from one found crossing round to it again.
+  const int start = static_cast<int>(std::find(found.begin(), found.begin() + n, true) - found.begin());
+  int run_length = 0;
+  for (int k = 1; k <= n && start < n; ++k) {
+    const int i = (start + k) % n;
+    if (!found[i]) ++run_length;
+    if (found[i] && run_length % 2 == 1) return std::nullopt;
+    if (found[i]) run_length = 0;
+  }
+  ExtendedWalk out;
+  out.w.x.count = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!found[i]) continue;
+    if (out.w.x.count == 0) out.w.first_enters = (i % 2 == 0) == w.first_enters;
+    out.meets[out.w.x.count] = meets[i];
+    out.w.x.list[out.w.x.count++] = w.x.list[i];
+  }
+  return out;
+}
+
+// Along the crossings found in double, refined; none where they do not refine.
+std::optional<ExtendedAreas> curved_areas_exactly(const Shape& a, const Shape& b) {
+  const Vec2 origin = center_of(a);
+  const auto pa = boundary_of<DoubleDouble>(a, origin), pb = boundary_of<DoubleDouble>(b, origin);
+  std::optional<ExtendedWalk> e = refined_walk(pa, pb, walk_of(boundary_of(a, origin), boundary_of(b, origin)));
+  if (!e) return std::nullopt;
+  ExtendedAreas out{enclosed(pa), enclosed(pb), 0};
+  if (e->w.x.count == 0) {
+    if (nested(a, b).area > 0) out.shared = std::min(out.a, out.b);
+    return out;
+  }
+  const auto meets = [&e](int i) { return std::pair{e->meets[i].a, e->meets[i].b}; };
+  out.shared = along_crossings(pa, pb, e->w, meets, std::min(out.a, out.b)).area();
+  return out;
+}
+
+// Below this distance the double one, whose numerator |A| + |B| - 2 |A ∩ B| is a few eps of the
+// areas off, would be more than a few units off in its own last place.
+constexpr double kFarApart = 0.5;
+
+// |A delta B| / |A u B|. Where it is below kFarApart the areas and the overlap are taken again in
+// double-double, so that the difference keeps its digits however near-identical the shapes are.
 double distance_in_order(const Shape& a, const Shape& b) {
   const double area_a = solid_area(a), area_b = solid_area(b), overlap = shared_area(a, b);
   const double d = (area_a + area_b - 2 * overlap) / (area_a + area_b - overlap);
-  if (!(d < kSliver) || !sharp(a) || !sharp(b)) return std::clamp(d, 0.0, 1.0);
-  const Vec2 origin = center_of(a);
-  const DoubleDouble both = moments_of(corners_of<DoubleDouble>(a, origin)).area +
-                            moments_of(corners_of<DoubleDouble>(b, origin)).area,
-                     shared = polygon_overlap<DoubleDouble>(a, b, origin).area;
-  return std::clamp(static_cast<double>((both - 2 * shared) / (both - shared)), 0.0, 1.0);
+  if (!(d < kFarApart)) return std::clamp(d, 0.0, 1.0);
+  const std::optional<ExtendedAreas> e = sharp(a) && sharp(b) ? sharp_areas_exactly(a, b) : curved_areas_exactly(a, b);
+  if (!e) return std::clamp(d, 0.0, 1.0);
+  const DoubleDouble both = e->a + e->b;
+  return std::clamp(static_cast<double>((both - 2 * e->shared) / (both - e->shared)), 0.0, 1.0);
 }
 
 void require_solid(const Shape& s) {

@@ -30,6 +30,15 @@ def test_iou_distance_of_boxes_apart_by_a_hair():
     assert collide2d.iou_distance(a, a) == 0.0
 
 
+def test_iou_distance_of_circles_apart_by_a_hair():
+    # Unit circles with centres d apart: |A ^ B| = 2 (pi - |A & B|) = 4 asin(d/2) + d sqrt(4 - d^2), free
+    # of cancellation, and |A | B| = pi + |A ^ B| / 2
+    d = 2.0**-30
+    a, b = collide2d.Circle((0.25, 0.5), 1), collide2d.Circle((0.25 + d, 0.5), 1)
+    apart = 4 * math.asin(d / 2) + d * math.sqrt(4 - d * d)
+    assert collide2d.iou_distance(a, b) == pytest.approx(apart / (math.pi + apart / 2), rel=8e-16)
+
+
 def test_areas_of_the_solids():
     assert collide2d.area(collide2d.Ellipse((3, 4), 2, 0.5, 1.0)) == pytest.approx(math.pi, rel=4e-16)
     assert collide2d.area(collide2d.Capsule((0, 0), 1, 0.5)) == pytest.approx(2 + math.pi / 4, rel=4e-16)
