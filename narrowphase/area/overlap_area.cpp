@@ -241,12 +241,16 @@ bool sharp(const Shape& s) {
 // cost the result more than 1e-13 of itself: the clip is taken again in double-double.
 constexpr double kSliver = 0x1p-7;
 
-// The overlap of two sharp polygons; the smaller one is clipped, so that its corners inside the
-// other pass through exactly.
+// The overlap of two sharp polygons and their corners; the smaller one is clipped, so that its
+// corners inside the other pass through exactly.
+template <class Real>
+Moments<Real> polygon_overlap(const Shape& a, const Corners<Real>& ca, const Shape& b, const Corners<Real>& cb) {
+  return moments_of(solid_area(b) < solid_area(a) ? clipped(cb, ca) : clipped(ca, cb));
+}
+// The same, their corners taken relative to `origin`.
 template <class Real>
 Moments<Real> polygon_overlap(const Shape& a, const Shape& b, const Vec2& origin) {
-  const Corners<Real> ca = corners_of<Real>(a, origin), cb = corners_of<Real>(b, origin);
-  return moments_of(solid_area(b) < solid_area(a) ? clipped(cb, ca) : clipped(ca, cb));
+  return polygon_overlap(a, corners_of<Real>(a, origin), b, corners_of<Real>(b, origin));
 }
 
 template <class Real>
@@ -338,8 +342,8 @@ struct ExtendedAreas {
 
 ExtendedAreas sharp_areas_exactly(const Shape& a, const Shape& b) {
   const Vec2 origin = center_of(a);
-  return {moments_of(corners_of<DoubleDouble>(a, origin)).area, moments_of(corners_of<DoubleDouble>(b, origin)).area,
-          polygon_overlap<DoubleDouble>(a, b, origin).area};
+  const Corners<DoubleDouble> ca = corners_of<DoubleDouble>(a, origin), cb = corners_of<DoubleDouble>(b, origin);
+  return {moments_of(ca).area, moments_of(cb).area, polygon_overlap(a, ca, b, cb).area};
 }
 
 // The crossings of a walk refined on double-double boundaries, in the walk's order.
