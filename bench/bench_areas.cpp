@@ -5,7 +5,8 @@
 // time against one pair at a time. Then overlap_area() one pair at a time on the generator's
 // overlapping candidate pairs of each kind (bench/shape_pairs.h), and the N x M problem of
 // 100,000 boxes against 100,000 through iou_pairs(). Two ellipses also against a rival that follows
-// Hughes and Chraibi (narrowphase/baselines/ellipse_overlap_area.h), one pair at a time.
+// Hughes and Chraibi (narrowphase/baselines/ellipse_overlap_area.h), one pair at a time. And iou()
+// beside iou_distance() on near-identical pairs, the price of the distance's own digits.
 #include <collide2d/area.h>
 
 #include "bench/scene_workload.h"
@@ -123,6 +124,46 @@ BENCHMARK(overlap_area_pairs<Ellipse, Ellipse>)
     ->Name("ours/overlap_area/ellipse_ellipse")
     ->Apply(overlapping_candidates);
 BENCHMARK(hughes_chraibi)->Name("hughes_chraibi/overlap_area/ellipse_ellipse")->Apply(overlapping_candidates);
+
+// Each overlapping candidate's first shape beside itself moved by 1e-6 of its size and turned by
+// 1e-6 rad: near-identical pairs, which iou_distance() takes again in double-double.
+template <class A>
+const bench::Workload<A, A>& near_identical() {
+  static const bench::Workload<A, A> w = [] {
+    bench::Workload<A, A> out;
+    out.a = bench::overlapping(bench::candidate_workload<A, A>()).a;
+    for (const A& s : out.a) {
+      const Aabb box = aabb(s);
+      A near = s;
+      near.center += 1e-6 * (box.max - box.min).maxCoeff() * Vec2(0.6, 0.8);
+      if constexpr (requires { near.angle; }) near.angle += 1e-6;
+      out.b.push_back(near);
+    }
+    return out;
+  }();
+  return w;
+}
+
+template <class A>
+void iou_distance_near(benchmark::State& state) {
+  const auto& w = near_identical<A>();
+  bench::time_queries(state, [&](std::size_t k) { return iou_distance(w.a[k], w.b[k]); });
+}
+
+template <class A>
+void iou_near(benchmark::State& state) {
+  const auto& w = near_identical<A>();
+  bench::time_queries(state, [&](std::size_t k) { return iou(w.a[k], w.b[k]); });
+}
+
+BENCHMARK(iou_near<Rect>)->Name("ours/iou/rect_rect/near_identical");
+BENCHMARK(iou_distance_near<Rect>)->Name("ours/iou_distance/rect_rect/near_identical");
+BENCHMARK(iou_near<Circle>)->Name("ours/iou/circle_circle/near_identical");
+BENCHMARK(iou_distance_near<Circle>)->Name("ours/iou_distance/circle_circle/near_identical");
+BENCHMARK(iou_near<Capsule>)->Name("ours/iou/capsule_capsule/near_identical");
+BENCHMARK(iou_distance_near<Capsule>)->Name("ours/iou_distance/capsule_capsule/near_identical");
+BENCHMARK(iou_near<Ellipse>)->Name("ours/iou/ellipse_ellipse/near_identical");
+BENCHMARK(iou_distance_near<Ellipse>)->Name("ours/iou_distance/ellipse_ellipse/near_identical");
 
 // N boxes against N over a square that keeps a box's expected overlaps near 3, and the pairs of
 // them with IoU above 0 by `count`, reported with the time.

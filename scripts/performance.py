@@ -451,6 +451,7 @@ AREA_ROWS = [
      'hughes_chraibi/overlap_area/ellipse_ellipse/candidates:3'),
 ]
 AREA_KINDS = ['circle_circle', 'rect_rect', 'capsule_capsule', 'rect_ellipse', 'circle_ellipse', 'ellipse_ellipse']
+NEAR_IDENTICAL_KINDS = ['rect_rect', 'circle_circle', 'capsule_capsule', 'ellipse_ellipse']
 
 
 def areas_section(folder):
@@ -466,6 +467,10 @@ def areas_section(folder):
     kinds = ['| pair | time |', '| --- | --- |']
     for name in AREA_KINDS:
         kinds.append(f"| {name.replace('_', '–')} | {fmt_time(ns(f'ours/overlap_area/{name}/candidates:3'))} |")
+    near = ['| pair | `iou()` | `iou_distance()` |', '| --- | --- | --- |']
+    for name in NEAR_IDENTICAL_KINDS:
+        times = [fmt_time(ns(f'ours/{q}/{name}/near_identical')) for q in ('iou', 'iou_distance')]
+        near.append(f"| {name.replace('_', '–')} | {times[0]} | {times[1]} |")
     small, large, dense = (bench.get(k, {}) for k in ('ours/iou_pairs/2000', 'ours/iou_pairs/100000', 'ours/iou_dense/2000'))
     m, sm, d = py['matrix'], py['small_matrix'], py['dense']
     mib = lambda b: f'{b / 2**20:.1f} MiB'
@@ -489,6 +494,13 @@ rival over the same pairs.
 (bench/shape_pairs.h):
 
 {chr(10).join(kinds)}
+
+`iou()` beside `iou_distance()` on near-identical pairs, each overlapping candidate's first shape
+beside itself moved by 10⁻⁶ of its size and turned by 10⁻⁶ rad, where `iou_distance()` takes the
+overlap and both areas again in double-double to keep its own digits
+([method](overlap-area.md#method)):
+
+{chr(10).join(near)}
 
 The N × N problem, `iou_pairs()`: {large.get('pairs', 0):,} pairs with IoU above 0 among 100,000 boxes
 against 100,000 in {fmt_time(ns('ours/iou_pairs/100000'))}; at 2,000 against 2,000,
