@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <thread>
 
@@ -19,6 +21,7 @@ TEST(Scene, WrittenSceneReadsBackTheSame) {
   // The level: the cave (a chain), a slope or a rock per 200 bodies, and 4 sensors, all static.
   const auto level = [](int n) { return 1u + static_cast<std::size_t>(n / 200) + 4u; };
   Scene scene = default_scene(60, 10, 3);
+  scene.overlap_areas = true;
   scene.bodies.push_back({.pose = {Vec2(30, 30), 0.4},
                           .shapes = {Ellipse{Vec2(0, 0), 2, 0.5, 0.0}, Rect{Vec2(0, 1), Vec2(0.3, 0.8), 0.2}},
                           .velocity = Vec2(1, 2),
@@ -75,6 +78,25 @@ TEST(SceneRun, BulletsHitWithinAFrame) {
   print_summary(s, out);
   EXPECT_NE(out.str().find("continuous bodies           1, 1 impacts within frames over the run"), std::string::npos)
       << out.str();
+}
+
+// "overlap_areas" turns on the World's overlap areas: two unit circles 1 apart share a lens of
+// 2 pi / 3 - sqrt(3) / 2, reported with their contact, and nothing without the flag.
+TEST(SceneRun, OverlapAreasComeWithTheContacts) {
+  for (const bool areas : {false, true}) {
+    const std::string text = std::string(R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 1, "contacts": true,
+        "overlap_areas": )") +
+                             (areas ? "true" : "false") + R"(, "bodies": [
+        {"shape": "circle", "center": [4.5, 5], "radius": 1}, {"shape": "circle", "center": [5.5, 5], "radius": 1}]})";
+    const Scene scene = parse_scene(text);
+    EXPECT_EQ(scene.overlap_areas, areas);
+    EXPECT_TRUE(parse_scene(write_scene(scene)) == scene);
+    SceneRun run(scene);
+    run.run(nullptr);
+    ASSERT_EQ(run.world().contacts().size(), 1u);
+    const double lens = 2 * std::numbers::pi / 3 - std::sqrt(3.0) / 2;
+    EXPECT_NEAR(run.world().contacts()[0].overlap.area, areas ? lens : 0.0, 1e-15) << areas;
+  }
 }
 
 // Two circles that overlap all run long: on layers that refuse each other, or sharing a negative

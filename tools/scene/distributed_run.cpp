@@ -60,7 +60,8 @@ RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::os
   DistributedWorld world(comm, {.world = {.fat_margin = scene.fat_margin,
                                           .proximity_margin = scene.proximity_margin,
                                           .contacts = scene.contacts,
-                                          .threads = threads},
+                                          .threads = threads,
+                                          .overlap_areas = scene.overlap_areas},
                                 .bounds = starting_bounds(scene, ranks),
                                 .rebalance_every = 30});
   add_bodies(scene, world);

@@ -480,7 +480,7 @@ bool SceneMover::operator==(const SceneMover& o) const {
 bool Scene::operator==(const Scene& o) const {
   return arena.min == o.arena.min && arena.max == o.arena.max && frames == o.frames && dt == o.dt &&
          fat_margin == o.fat_margin && proximity_margin == o.proximity_margin && contacts == o.contacts &&
-         bodies == o.bodies && movers == o.movers;
+         overlap_areas == o.overlap_areas && bodies == o.bodies && movers == o.movers;
 }
 
 Scene parse_scene(std::string_view text) {
@@ -491,8 +491,10 @@ Scene parse_scene(std::string_view text) {
     throw SceneError(std::string("scene is not valid JSON: ") + e.what());
   }
   if (!root.is_object()) fail("scene", "expected a JSON object");
-  reject_unknown_keys(root, {"arena", "frames", "dt", "fat_margin", "proximity_margin", "contacts", "bodies", "movers"},
-                      "scene");
+  reject_unknown_keys(
+      root,
+      {"arena", "frames", "dt", "fat_margin", "proximity_margin", "contacts", "overlap_areas", "bodies", "movers"},
+      "scene");
   Scene scene;
   const json& arena = member(root, "arena", "");
   if (!arena.is_object()) fail("arena", "expected an object with min and max");
@@ -515,6 +517,7 @@ Scene parse_scene(std::string_view text) {
   if (scene.fat_margin < 0) fail("fat_margin", "must not be negative");
   if (scene.proximity_margin < 0) fail("proximity_margin", "must not be negative");
   scene.contacts = flag(root, "contacts", "");
+  scene.overlap_areas = flag(root, "overlap_areas", "");
   const json& bodies = member(root, "bodies", "");
   if (!bodies.is_array()) fail("bodies", "expected an array");
   std::map<std::uint64_t, std::size_t> owners;
@@ -627,6 +630,7 @@ std::string write_scene(const Scene& scene) {
       {"fat_margin", scene.fat_margin},
       {"proximity_margin", scene.proximity_margin},
       {"contacts", scene.contacts},
+      {"overlap_areas", scene.overlap_areas},
       {"bodies", bodies}};
   if (!scene.movers.empty()) root["movers"] = movers_json(scene.movers);
   return root.dump(1);

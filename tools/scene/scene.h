@@ -2,13 +2,12 @@
 //
 // The file is JSON; docs/command-line.md lists its fields, and examples/scene.json is a whole scene
 // (tested). "arena" (min and max corners) and "frames" are required; "dt", "fat_margin",
-// "proximity_margin" and "contacts" are optional, and so is every body field but the shape's own ("shape",
-// "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents"). A body
-// of several shapes gives its pose ("center", "angle") and "shapes", each placed in its frame.
-// Moving bodies move in straight lines and bounce off the arena walls (the velocity component
-// towards a wall flips when the body's box crosses it); there is no physics: they pass through
-// static bodies, which only report the overlaps. "movers" (optional) are characters moved by
-// move() after each update, by a script of walking speeds and jumps (SceneMover).
+// "proximity_margin", "contacts" and "overlap_areas" are optional, and so is every body field but the shape's own
+// ("shape", "center", and a circle's "radius", an ellipse's "a" and "b", a rectangle's "half_extents"). A body of
+// several shapes gives its pose ("center", "angle") and "shapes", each placed in its frame. Moving bodies move in
+// straight lines and bounce off the arena walls (the velocity component towards a wall flips when the body's box
+// crosses it); there is no physics: they pass through static bodies, which only report the overlaps. "movers"
+// (optional) are characters moved by move() after each update, by a script of walking speeds and jumps (SceneMover).
 //
 // Errors: parse_scene throws SceneError naming the field, e.g. `bodies[3].radius: must be positive
 // (got -1)`, `frames: missing`, `bodies[0]: a circle has no field 'a' (its own are radius)`.
@@ -69,7 +68,8 @@ struct Scene {
   double dt = 1.0 / 60.0;
   double fat_margin = 0.1;
   double proximity_margin = 0.0;
-  bool contacts = false;  // a contact for every overlapping pair (WorldOptions::contacts)
+  bool contacts = false;       // a contact for every overlapping pair (WorldOptions::contacts)
+  bool overlap_areas = false;  // the exact overlap of contacts and sensor pairs (WorldOptions::overlap_areas)
   std::vector<SceneBody> bodies;
   std::vector<SceneMover> movers;
   bool operator==(const Scene&) const;

@@ -52,7 +52,8 @@ SceneRun::SceneRun(Scene scene, unsigned threads)
       world_({.fat_margin = scene_.fat_margin,
               .proximity_margin = scene_.proximity_margin,
               .contacts = scene_.contacts,
-              .threads = threads}) {
+              .threads = threads,
+              .overlap_areas = scene_.overlap_areas}) {
   check_motion(scene_);
   std::vector<ShapeDef> shapes;
   for (const SceneBody& b : scene_.bodies) {
