@@ -352,6 +352,18 @@ struct ExtendedWalk {
   std::array<ExtendedCrossing, kMaxCrossings> meets;
 };
 
+// Whether every unbroken run of crossings not found (round the loop of n) has an even number.
+bool lost_in_pairs(const std::array<bool, kMaxCrossings>& found, int n) {
+  const int start = static_cast<int>(std::find(found.begin(), found.begin() + n, true) - found.begin());
+  int run_length = 0;
+  for (int k = 1; k <= n && start < n; ++k) {
+    const int i = (start + k) % n;
+    if (found[i] && run_length % 2 == 1) return false;
+    run_length = found[i] ? 0 : run_length + 1;
+  }
+  return true;
+}
+
 // The walk's crossings refined. One that does not refine is an end of a lens thinner than double
 // resolves, which the curves may not make: each unbroken run of such crossings goes, if it has an
 // even number (both ends of its lenses); none is the answer where a run has an odd number.
@@ -361,15 +373,7 @@ std::optional<ExtendedWalk> refined_walk(const BoundaryOf<DoubleDouble>& a, cons
   std::array<ExtendedCrossing, kMaxCrossings> meets;
   std::array<bool, kMaxCrossings> found;
   for (int i = 0; i < n; ++i) found[i] = refined(a, b, w.x.list[i], meets[i]);
-  // Runs of lost crossings counted from one found crossing round to it again.
-  const int start = static_cast<int>(std::find(found.begin(), found.begin() + n, true) - found.begin());
-  int run_length = 0;
-  for (int k = 1; k <= n && start < n; ++k) {
-    const int i = (start + k) % n;
-    if (!found[i]) ++run_length;
-    if (found[i] && run_length % 2 == 1) return std::nullopt;
-    if (found[i]) run_length = 0;
-  }
+  if (!lost_in_pairs(found, n)) return std::nullopt;
   ExtendedWalk out;
   out.w.x.count = 0;
   for (int i = 0; i < n; ++i) {

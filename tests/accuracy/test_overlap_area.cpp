@@ -320,6 +320,9 @@ TEST(OverlapArea, IouDistanceOfNearIdenticalShapes) {
       }
     }
     std::printf("%-10s worst %.3g ulps; touching inside %.3g ulps\n", testing::name_of(f), worst, worst_inside);
+    // Circles of the test's radius 1 touch to the last bit, where a lens below double's resolution
+    // is missed.
+    EXPECT_LE(worst_inside, f == Form::circle ? 64 : 3) << testing::name_of(f);
   }
 }
 
