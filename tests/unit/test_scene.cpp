@@ -81,21 +81,35 @@ TEST(SceneRun, BulletsHitWithinAFrame) {
 }
 
 // "overlap_areas" turns on the World's overlap areas: two unit circles 1 apart share a lens of
-// 2 pi / 3 - sqrt(3) / 2, reported with their contact, and nothing without the flag.
+// 2 pi / 3 - sqrt(3) / 2, reported with their contact, and a sensor box whose top edge runs through
+// both centres holds half of each, pi in all; the summary gives both, and nothing without the flag.
 TEST(SceneRun, OverlapAreasComeWithTheContacts) {
   for (const bool areas : {false, true}) {
-    const std::string text = std::string(R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 1, "contacts": true,
+    const std::string text = std::string(R"({"arena": {"min": [0, 0], "max": [10, 10]}, "frames": 2, "contacts": true,
         "overlap_areas": )") +
                              (areas ? "true" : "false") + R"(, "bodies": [
-        {"shape": "circle", "center": [4.5, 5], "radius": 1}, {"shape": "circle", "center": [5.5, 5], "radius": 1}]})";
+        {"shape": "circle", "center": [4.5, 5], "radius": 1}, {"shape": "circle", "center": [5.5, 5], "radius": 1},
+        {"shape": "rect", "center": [5, 4], "half_extents": [2, 1], "static": true, "sensor": true}]})";
     const Scene scene = parse_scene(text);
     EXPECT_EQ(scene.overlap_areas, areas);
     EXPECT_TRUE(parse_scene(write_scene(scene)) == scene);
     SceneRun run(scene);
-    run.run(nullptr);
+    const RunSummary s = run.run(nullptr);
     ASSERT_EQ(run.world().contacts().size(), 1u);
     const double lens = 2 * std::numbers::pi / 3 - std::sqrt(3.0) / 2;
     EXPECT_NEAR(run.world().contacts()[0].overlap.area, areas ? lens : 0.0, 1e-15) << areas;
+    std::ostringstream out;
+    print_summary(s, out);
+    ASSERT_EQ(s.contact_area_per_frame.has_value(), areas);
+    if (!areas) {
+      EXPECT_EQ(out.str().find("overlap area"), std::string::npos) << out.str();
+      continue;
+    }
+    EXPECT_NEAR(*s.contact_area_per_frame, lens, 1e-15);
+    EXPECT_NEAR(*s.sensed_area_per_frame, std::numbers::pi, 1e-15);
+    EXPECT_NE(out.str().find("overlap area per frame      1.22837 in contacts, 3.14159 inside sensors\n"),
+              std::string::npos)
+        << out.str();
   }
 }
 

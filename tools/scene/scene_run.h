@@ -6,9 +6,11 @@
 #include <collide2d/world.h>
 #include "tools/scene/scene.h"
 
+#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -40,6 +42,10 @@ struct RunSummary {
   double sensing_per_frame = 0.0;  // sensor-visitor pairs, mean
   std::size_t sensor_began = 0;    // entries into sensors over the run
   std::size_t sensor_ended = 0;
+  // With the scene's overlap_areas: the contacts' overlap areas and the sensor pairs', summed over a
+  // frame, mean over frames.
+  std::optional<double> contact_area_per_frame;
+  std::optional<double> sensed_area_per_frame;
   struct Sensor {
     std::uint64_t id = 0;
     std::vector<std::uint64_t> visitors;  // scene ids, at the last frame
@@ -90,6 +96,10 @@ void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> nar
 // Each sensor of the scene and its visitors, from (sensor, visitor) pairs of scene ids.
 std::vector<RunSummary::Sensor> sensor_contents(const Scene& scene,
                                                 const std::vector<std::pair<std::uint64_t, std::uint64_t>>& sensing);
+// One frame's overlap areas, each summed: its contacts' and its sensor pairs'.
+std::array<double, 2> overlap_areas(std::span<const BodyContact> contacts, std::span<const SensorPair> sensing);
+// Adds one frame's overlap areas to the summary's sums.
+void add_overlap_areas(const std::array<double, 2>& areas, RunSummary& s);
 // A progress bar: `done` of `total` frames.
 void draw_progress(std::ostream& out, int done, int total);
 
