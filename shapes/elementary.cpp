@@ -78,22 +78,10 @@ CosSin kernel(const DoubleDouble& r) {
   return {one_less.hi + cos_rest, r.hi + sin_rest};
 }
 
-// The Taylor series of sin (first 3) and cos (first 4) as double-doubles, (-1)^(n/2) / n! for n =
-// first, first + 2, ..., each coefficient divided from the one before (relative error within
-// 2^-100). Fourteen terms: on |r| <= pi/4 the next lies below 2^-110.
-constexpr std::array<DoubleDouble, 14> extended_series(int first) {
-  std::array<DoubleDouble, 14> c{};
-  DoubleDouble term = 1;
-  for (int n = 2; n < first; ++n) term = term / DoubleDouble(n);
-  for (int k = 0; k < 14; ++k) {
-    const int n = first + 2 * k;
-    term = term / DoubleDouble(n);
-    c[k] = (n / 2) % 2 == 0 ? term : -term;
-    term = term / DoubleDouble(n + 1);
-  }
-  return c;
-}
-constexpr std::array<DoubleDouble, 14> kSinTailExtended = extended_series(3), kCosTailExtended = extended_series(4);
+// The sine's and cosine's series past their first terms. Fourteen terms: on |r| <= pi/4 the next
+// lies below 2^-110.
+constexpr std::array<DoubleDouble, 14> kSinTailExtended = extended_series<14>(3),
+                                       kCosTailExtended = extended_series<14>(4);
 
 // cos r and sin r as double-doubles for a normalized r, |r| <= pi/4: the series by Horner's rule,
 // its terms from r^17 on in double arithmetic (each below 2^-53 of the result, so that double

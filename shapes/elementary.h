@@ -7,6 +7,9 @@
 
 #include "shapes/double_double.h"
 
+#include <array>
+#include <cstddef>
+
 namespace collide2d::detail {
 
 struct CosSin {
@@ -30,6 +33,23 @@ ExtendedCosSin cos_sin_extended(double angle);
 
 // The angle of (x, y) in [-pi, pi], with the signs of zero and the infinities as C's atan2.
 double arc_tangent(double y, double x);
+
+// The Taylor series of sin (first 3) and cos (first 4) as double-doubles, (-1)^(n/2) / n! for n =
+// first, first + 2, ..., `count` of them, each coefficient divided from the one before (relative
+// error within 2^-100).
+template <std::size_t count>
+constexpr std::array<DoubleDouble, count> extended_series(int first) {
+  std::array<DoubleDouble, count> c{};
+  DoubleDouble term = 1;
+  for (int n = 2; n < first; ++n) term = term / DoubleDouble(n);
+  for (std::size_t k = 0; k < count; ++k) {
+    const int n = first + 2 * static_cast<int>(k);
+    term = term / DoubleDouble(n);
+    c[k] = (n / 2) % 2 == 0 ? term : -term;
+    term = term / DoubleDouble(n + 1);
+  }
+  return c;
+}
 
 // pi as a double-double.
 inline constexpr DoubleDouble kExtendedPi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};

@@ -29,25 +29,13 @@ namespace collide2d {
 namespace detail::areas {
 namespace {
 
-// (-1)^(k+1) / (2k+1)! for k = 1 ... n, in double-double.
-template <std::size_t n>
-constexpr std::array<DoubleDouble, n> extended_sine_terms() {
-  std::array<DoubleDouble, n> terms{};
-  DoubleDouble term = 1;
-  for (std::size_t k = 1; k <= n; ++k) {
-    term = term / DoubleDouble(static_cast<double>(2 * k * (2 * k + 1)));
-    terms[k - 1] = k % 2 == 1 ? term : -term;
-  }
-  return terms;
-}
-
 // x - sin x for x in [0, 2 pi], given sin x: by its series below 1.5, where the difference would
 // cancel.
 template <class Real>
 Real x_minus_sin(const Real& x, const Real& sin_x) {
   if (x > 1.5) return x - sin_x;
-  // In double the terms for k = 1 ... 11, in double-double for k = 1 ... 17: the first term left out
-  // is below 2^-60 of the sum, or 2^-110.
+  // (-1)^(k+1) / (2k+1)!, in double for k = 1 ... 11, in double-double for k = 1 ... 17 (the sine's
+  // series past x, negated): the first term left out is below 2^-60 of the sum, or 2^-110.
   static constexpr auto terms = [] {
     if constexpr (std::is_same_v<Real, double>)
       return std::array<double, 11>{1.0 / 6,
@@ -61,8 +49,11 @@ Real x_minus_sin(const Real& x, const Real& sin_x) {
                                     1.0 / 121645100408832000,
                                     -1.0 / 51090942171709440000.0,
                                     1.0 / 25852016738884976640000.0};
-    else
-      return extended_sine_terms<17>();
+    else {
+      std::array<DoubleDouble, 17> t = extended_series<17>(3);
+      for (DoubleDouble& c : t) c = -c;
+      return t;
+    }
   }();
   const Real x2 = x * x;
   Real sum = 0;
