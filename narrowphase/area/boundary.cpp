@@ -63,18 +63,9 @@ BoundaryOf<Real> rounded_polygon(const V2<Real>* vertices, const V2<Real>* norma
   return b;
 }
 
-// A point's offset from the origin: exact in double-double.
-template <class Real>
-V2<Real> offset(const Vec2& p, const Vec2& origin) {
-  if constexpr (std::is_same_v<Real, double>)
-    return p - origin;
-  else
-    return {two_sum(p.x(), -origin.x()), two_sum(p.y(), -origin.y())};
-}
-
 template <class Real>
 V2<Real> rotated(const Rotation<Real>& r, const Vec2& v) {
-  return r.apply(V2<Real>(Real(v.x()), Real(v.y())));
+  return r.apply(widened<Real>(v));
 }
 
 template <class Real>

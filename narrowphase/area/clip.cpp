@@ -5,21 +5,11 @@
 namespace collide2d::detail::areas {
 namespace {
 
-template <class Real>
-V2<Real> widened(const Vec2& v) {
-  return {Real(v.x()), Real(v.y())};
-}
-
-// The corners c + R(angle) v of `count` local corners v: the centre's offset from the origin is
-// exact in double-double (one two_sum per coordinate), and rounded once in double.
+// The corners c + R(angle) v of `count` local corners v, c the centre's offset from the origin.
 template <class Real>
 Corners<Real> placed(const Vec2& center, double angle, const Vec2* local, int count, const Vec2& origin) {
   const auto rot = Rotation<Real>::of(angle);
-  V2<Real> c;
-  if constexpr (std::is_same_v<Real, double>)
-    c = center - origin;
-  else
-    c = {two_sum(center.x(), -origin.x()), two_sum(center.y(), -origin.y())};
+  const V2<Real> c = offset<Real>(center, origin);
   Corners<Real> out;
   out.count = count;
   for (int i = 0; i < count; ++i) out.v[i] = c + rot.apply(widened<Real>(local[i]));

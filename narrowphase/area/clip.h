@@ -10,8 +10,24 @@
 #include "shapes/internal.h"
 
 #include <array>
+#include <type_traits>
 
 namespace collide2d::detail::areas {
+
+template <class Real>
+V2<Real> widened(const Vec2& v) {
+  return {Real(v.x()), Real(v.y())};
+}
+
+// A point's offset from the origin: exact in double-double (one two_sum per coordinate), and
+// rounded once in double.
+template <class Real>
+V2<Real> offset(const Vec2& p, const Vec2& origin) {
+  if constexpr (std::is_same_v<Real, double>)
+    return p - origin;
+  else
+    return {two_sum(p.x(), -origin.x()), two_sum(p.y(), -origin.y())};
+}
 
 // A convex polygon, counter-clockwise: one clipped by another has at most the two counts together.
 template <class Real>
