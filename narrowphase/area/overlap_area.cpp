@@ -281,10 +281,10 @@ OverlapArea nested(const Shape& a, const Shape& b) {
   return area_a <= area_b ? OverlapArea{area_a, centroid_of(a)} : OverlapArea{area_b, centroid_of(b)};
 }
 
-OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
-  const Vec2 origin = center_of(a);
-  const Boundary pa = boundary_of(a, origin), pb = boundary_of(b, origin);
-  Walk w = walk_of(pa, pb);
+// The overlap of A and B from their boundaries about `origin` and the walk along them, which comes
+// back turned where its first runs bound the union.
+OverlapArea overlap_along(const Shape& a, const Shape& b, const Vec2& origin, const Boundary& pa, const Boundary& pb,
+                          Walk& w) {
   Region r;
   if (pa.polygonal && pb.polygonal)
     r = polygons(a, b, origin);
@@ -299,6 +299,13 @@ OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
     out.chord = {origin + w.x.list[in].p, origin + w.x.list[1 - in].p};
   }
   return out;
+}
+
+OverlapArea overlap_in_order(const Shape& a, const Shape& b) {
+  const Vec2 origin = center_of(a);
+  const Boundary pa = boundary_of(a, origin), pb = boundary_of(b, origin);
+  Walk w = walk_of(pa, pb);
+  return overlap_along(a, b, origin, pa, pb, w);
 }
 
 // The area of A ∩ B alone: two sharp polygons are clipped without the crossings, which only the
@@ -376,11 +383,11 @@ std::optional<ExtendedWalk> refined_walk(const BoundaryOf<DoubleDouble>& a, cons
   return out;
 }
 
-// Along the crossings found in double, refined; none where they do not refine.
-std::optional<ExtendedAreas> curved_areas_exactly(const Shape& a, const Shape& b) {
-  const Vec2 origin = center_of(a);
+// Along the crossings of the walk found in double about `origin`, refined; none where they do not
+// refine.
+std::optional<ExtendedAreas> curved_areas_exactly(const Shape& a, const Shape& b, const Vec2& origin, const Walk& w) {
   const auto pa = boundary_of<DoubleDouble>(a, origin), pb = boundary_of<DoubleDouble>(b, origin);
-  std::optional<ExtendedWalk> e = refined_walk(pa, pb, walk_of(boundary_of(a, origin), boundary_of(b, origin)));
+  std::optional<ExtendedWalk> e = refined_walk(pa, pb, w);
   if (!e) return std::nullopt;
   ExtendedAreas out{enclosed(pa), enclosed(pb), 0};
   if (e->w.x.count == 0) {
@@ -396,16 +403,31 @@ std::optional<ExtendedAreas> curved_areas_exactly(const Shape& a, const Shape& b
 // areas off, would be more than a few units off in its own last place.
 constexpr double kFarApart = 0.5;
 
+// |A delta B| / |A u B| from |A|, |B| and |A ∩ B|, in [0, 1].
+template <class Real>
+double distance_of(const Real& area_a, const Real& area_b, const Real& shared) {
+  const Real both = area_a + area_b;
+  return std::clamp(static_cast<double>((both - 2 * shared) / (both - shared)), 0.0, 1.0);
+}
+
 // |A delta B| / |A u B|. Where it is below kFarApart the areas and the overlap are taken again in
-// double-double, so that the difference keeps its digits however near-identical the shapes are.
+// double-double, so that the difference keeps its digits however near-identical the shapes are; a
+// curved pair's crossings are the ones the double overlap walked.
 double distance_in_order(const Shape& a, const Shape& b) {
-  const double area_a = solid_area(a), area_b = solid_area(b), overlap = shared_area(a, b);
-  const double d = (area_a + area_b - 2 * overlap) / (area_a + area_b - overlap);
-  if (!(d < kFarApart)) return std::clamp(d, 0.0, 1.0);
-  const std::optional<ExtendedAreas> e = sharp(a) && sharp(b) ? sharp_areas_exactly(a, b) : curved_areas_exactly(a, b);
-  if (!e) return std::clamp(d, 0.0, 1.0);
-  const DoubleDouble both = e->a + e->b;
-  return std::clamp(static_cast<double>((both - 2 * e->shared) / (both - e->shared)), 0.0, 1.0);
+  const double area_a = solid_area(a), area_b = solid_area(b);
+  if (sharp(a) && sharp(b)) {
+    const double d = distance_of(area_a, area_b, polygons_area(a, b));
+    if (!(d < kFarApart)) return d;
+    const ExtendedAreas e = sharp_areas_exactly(a, b);
+    return distance_of(e.a, e.b, e.shared);
+  }
+  const Vec2 origin = center_of(a);
+  const Boundary pa = boundary_of(a, origin), pb = boundary_of(b, origin);
+  Walk w = walk_of(pa, pb);
+  const double d = distance_of(area_a, area_b, overlap_along(a, b, origin, pa, pb, w).area);
+  if (!(d < kFarApart)) return d;
+  const std::optional<ExtendedAreas> e = curved_areas_exactly(a, b, origin, w);
+  return e ? distance_of(e->a, e->b, e->shared) : d;
 }
 
 void require_solid(const Shape& s) {
