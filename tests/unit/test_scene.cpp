@@ -100,13 +100,13 @@ TEST(SceneRun, OverlapAreasComeWithTheContacts) {
     EXPECT_NEAR(run.world().contacts()[0].overlap.area, areas ? lens : 0.0, 1e-15) << areas;
     std::ostringstream out;
     print_summary(s, out);
-    ASSERT_EQ(s.contact_area_per_frame.has_value(), areas);
+    ASSERT_EQ(s.overlap_area_per_frame.has_value(), areas);
     if (!areas) {
       EXPECT_EQ(out.str().find("overlap area"), std::string::npos) << out.str();
       continue;
     }
-    EXPECT_NEAR(*s.contact_area_per_frame, lens, 1e-15);
-    EXPECT_NEAR(*s.sensed_area_per_frame, std::numbers::pi, 1e-15);
+    EXPECT_NEAR((*s.overlap_area_per_frame)[0], lens, 1e-15);
+    EXPECT_NEAR((*s.overlap_area_per_frame)[1], std::numbers::pi, 1e-15);
     EXPECT_NE(out.str().find("overlap area per frame      1.22837 in contacts, 3.14159 inside sensors\n"),
               std::string::npos)
         << out.str();

@@ -104,7 +104,7 @@ RunSummary run_distributed(Scene scene, MPI_Comm comm, unsigned threads, std::os
     s.sensing_per_frame += static_cast<double>(counts[7]);
     s.sensor_began += counts[8];
     s.sensor_ended += counts[9];
-    if (s.contact_area_per_frame) {
+    if (s.overlap_area_per_frame) {
       std::array<double, 2> areas = overlap_areas(r.contacts, r.sensing);
       MPI_Allreduce(MPI_IN_PLACE, areas.data(), 2, MPI_DOUBLE, MPI_SUM, comm);
       add_overlap_areas(areas, s);

@@ -83,7 +83,7 @@ RunSummary scene_totals(const Scene& scene) {
   s.statics = count(&SceneBody::is_static);
   s.sensors = count(&SceneBody::sensor);
   s.movers = scene.movers.size();
-  if (scene.overlap_areas) s.contact_area_per_frame = s.sensed_area_per_frame = 0.0;
+  if (scene.overlap_areas) s.overlap_area_per_frame = std::array<double, 2>{0.0, 0.0};
   return s;
 }
 
@@ -94,9 +94,8 @@ void finish(RunSummary& s, std::vector<double> broad_ms, std::vector<double> nar
   s.overlapping_per_frame /= n;
   s.proximity_per_frame /= n;
   s.sensing_per_frame /= n;
-  if (s.contact_area_per_frame) {
-    *s.contact_area_per_frame /= n;
-    *s.sensed_area_per_frame /= n;
+  if (s.overlap_area_per_frame) {
+    for (double& area : *s.overlap_area_per_frame) area /= n;
   }
   s.movers_on_ground /= n * static_cast<double>(std::max<std::size_t>(1, s.movers));
   s.broad = phase_times(std::move(broad_ms));
@@ -159,7 +158,7 @@ RunSummary SceneRun::run(std::ostream* progress, Recorder* recorder) {
     s.sensing_per_frame += static_cast<double>(world_.body_sensing().size());
     s.sensor_began += world_.body_sensor_began().size();
     s.sensor_ended += world_.body_sensor_ended().size();
-    if (s.contact_area_per_frame) add_overlap_areas(overlap_areas(world_.contacts(), world_.sensing()), s);
+    if (s.overlap_area_per_frame) add_overlap_areas(overlap_areas(world_.contacts(), world_.sensing()), s);
     if (progress && ((frame + 1) % every == 0 || frame + 1 == scene_.frames))
       draw_progress(*progress, frame + 1, scene_.frames);
   }
@@ -193,8 +192,7 @@ std::array<double, 2> overlap_areas(std::span<const BodyContact> contacts, std::
 }
 
 void add_overlap_areas(const std::array<double, 2>& areas, RunSummary& s) {
-  *s.contact_area_per_frame += areas[0];
-  *s.sensed_area_per_frame += areas[1];
+  for (std::size_t k = 0; k < areas.size(); ++k) (*s.overlap_area_per_frame)[k] += areas[k];
 }
 
 void print_summary(const RunSummary& s, std::ostream& out) {
@@ -213,9 +211,9 @@ void print_summary(const RunSummary& s, std::ostream& out) {
       << "sensors                     " << s.sensors << ", " << s.sensing_per_frame << " bodies inside them per frame, "
       << s.sensor_began << " entries and " << s.sensor_ended << " exits over the run\n"
       << "threads                     " << s.threads << (s.ranks > 1 ? " on each rank\n" : "\n");
-  if (s.contact_area_per_frame) {
-    out << "overlap area per frame      " << *s.contact_area_per_frame << " in contacts, " << *s.sensed_area_per_frame
-        << " inside sensors\n";
+  if (s.overlap_area_per_frame) {
+    const auto& [contacts, sensors] = *s.overlap_area_per_frame;
+    out << "overlap area per frame      " << contacts << " in contacts, " << sensors << " inside sensors\n";
   }
   if (s.movers > 0) {
     out << "movers                      " << s.movers << ", on the ground " << 100 * s.movers_on_ground

@@ -42,10 +42,9 @@ struct RunSummary {
   double sensing_per_frame = 0.0;  // sensor-visitor pairs, mean
   std::size_t sensor_began = 0;    // entries into sensors over the run
   std::size_t sensor_ended = 0;
-  // With the scene's overlap_areas: the contacts' overlap areas and the sensor pairs', summed over a
-  // frame, mean over frames.
-  std::optional<double> contact_area_per_frame;
-  std::optional<double> sensed_area_per_frame;
+  // With the scene's overlap_areas: the contacts' overlap areas and the sensor pairs', each summed
+  // over a frame, mean over frames.
+  std::optional<std::array<double, 2>> overlap_area_per_frame;
   struct Sensor {
     std::uint64_t id = 0;
     std::vector<std::uint64_t> visitors;  // scene ids, at the last frame
